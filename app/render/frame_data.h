@@ -1,0 +1,64 @@
+#pragma once
+// What the renderer is given for one frame: a read-only snapshot the app builds from the World.
+// The engine never sees this file; the renderer never sees the engine.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace rbsim::render {
+
+// One body, already transformed by the engine (seed 004: "do this transform yourself, not with a
+// graphics function"): world vertices p' = R p + x, and the body's triangle list.
+struct BodyView {
+  std::vector<glm::vec3> worldVertices;
+  const std::vector<std::array<std::uint32_t, 3>>* triangles = nullptr;  // owned by the mesh
+  glm::vec3 position{0.0f};          // x: centre of mass, world frame [m]
+  glm::mat3 rotation{1.0f};          // R: columns are the body axes in world frame
+  glm::vec3 color{0.8f, 0.5f, 0.2f};  // linear RGB in [0, 1]
+  float axisLength = 0.5f;           // length of the drawn body axes [m]
+  bool selected = false;             // the body whose variables the overlay shows
+};
+
+// A force drawn as an arrow from its application point (world frame).
+struct ForceArrow {
+  glm::vec3 point{0.0f};
+  glm::vec3 force{0.0f};  // [N]; drawn scaled by RenderOptions::forceScale
+};
+
+struct Camera {
+  glm::vec3 eye{4.0f, 3.0f, 6.0f};
+  glm::vec3 target{0.0f, 0.5f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fovYDegrees = 45.0f;
+  float nearPlane = 0.05f;  // [m]
+  float farPlane = 200.0f;  // [m]
+};
+
+struct RenderOptions {
+  bool grid = true;        // ground grid in the y = 0 plane
+  bool wireframe = false;  // triangle edges over the shaded surface
+  bool axes = true;        // body axes (columns of R) as red/green/blue lines
+  bool overlay = true;     // Dear ImGui panel with the selected body's variables
+  float forceScale = 0.1f; // arrow length per newton [m/N]
+};
+
+// Text for the overlay panel: a title and rows of (label, value) already formatted by the app.
+struct OverlayData {
+  std::string title;
+  std::string caption;  // e.g. the demo phase being shown
+  std::vector<std::pair<std::string, std::string>> rows;
+};
+
+struct FrameData {
+  std::vector<BodyView> bodies;
+  std::vector<ForceArrow> forces;
+  Camera camera;
+  RenderOptions options;
+  OverlayData overlay;
+};
+
+}  // namespace rbsim::render
