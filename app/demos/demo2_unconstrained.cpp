@@ -1,0 +1,15 @@
+// Demo 2: assignment 2, rigid body unconstrained motion (seed 004). Four phases, one video:
+// (a) x and R set by hand; (b) given v and omega; (c) a force at an off-centre point, with the
+// torque it produces; (d) a general mesh with exact inertia beside its cube approximation.
+#include "demos/demo.h"
+
+namespace rbsim::app {
+
+Demo demo2Unconstrained() {
+  return Demo{2, "assignment2", "rigid body unconstrained motion: manual pose, v and omega, "
+                                "force at a point, exact vs cube inertia",
+              {"assignment2_a_manual_pose.json", "assignment2_b_velocity.json",
+               "assignment2_c_force_at_point.json", "assignment2_d_mesh_inertia.json"}};
+}
+
+}  // namespace rbsim::app

@@ -1,0 +1,19 @@
+#include "demos/demo.h"
+
+namespace rbsim::app {
+
+Demo demo2Unconstrained();
+
+const std::vector<Demo>& allDemos() {
+  static const std::vector<Demo> demos = {demo2Unconstrained()};
+  return demos;
+}
+
+const Demo* findDemo(int number) {
+  for (const Demo& demo : allDemos()) {
+    if (demo.number == number) return &demo;
+  }
+  return nullptr;
+}
+
+}  // namespace rbsim::app

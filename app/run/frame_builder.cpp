@@ -1,0 +1,87 @@
+#include "run/frame_builder.h"
+
+#include <cstdio>
+
+namespace rbsim::app {
+
+namespace {
+
+glm::vec3 toGlm(const Vec3& v) {
+  return glm::vec3(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
+}
+
+std::string formatVec(const Vec3& v, const char* unit) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%+9.4f %+9.4f %+9.4f %s", v.x(), v.y(), v.z(), unit);
+  return buffer;
+}
+
+std::string formatNumber(double value, const char* unit) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.6g %s", value, unit);
+  return buffer;
+}
+
+}  // namespace
+
+render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle) {
+  render::FrameData frame;
+  const ViewDesc& view = scene.view;
+  frame.camera.eye = toGlm(view.eye);
+  frame.camera.target = toGlm(view.target);
+  frame.camera.up = toGlm(view.up);
+  frame.camera.fovYDegrees = static_cast<float>(view.fovDegrees);
+  frame.options.grid = view.grid;
+  frame.options.wireframe = view.wireframe;
+  frame.options.axes = view.axes;
+  frame.options.overlay = view.overlay;
+
+  const double t = world.time();
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) {
+    const RigidBody& body = world.bodies()[i];
+    render::BodyView bv;
+    bv.worldVertices.reserve(body.vertexCount());
+    for (const Vec3& p : body.worldVertices()) bv.worldVertices.push_back(toGlm(p));
+    bv.triangles = &body.mesh().triangles;
+    bv.position = toGlm(body.position());
+    const Mat3& R = body.rotation();
+    for (int c = 0; c < 3; ++c) bv.rotation[c] = toGlm(R.col(c));
+    bv.color = toGlm(body.color());
+    const Vec3 extents = body.mesh().boundsMax() - body.mesh().boundsMin();
+    bv.axisLength = static_cast<float>(0.75 * extents.maxCoeff());
+    bv.selected = i == view.selected;
+    frame.bodies.push_back(std::move(bv));
+    for (const auto& [point, force] : world.activeForces(i, t)) {
+      frame.forces.push_back({toGlm(point), toGlm(force)});
+    }
+  }
+
+  render::OverlayData& overlay = frame.overlay;
+  overlay.title = demoTitle.empty() ? scene.title : demoTitle;
+  overlay.caption = view.caption;
+  const RigidBody& body = world.bodies()[view.selected];
+  const Mat3& R = body.rotation();
+  const Quat& q = body.orientation();
+  char quat[96];
+  std::snprintf(quat, sizeof quat, "%+.4f %+.4f %+.4f %+.4f", q.w(), q.x(), q.y(), q.z());
+  overlay.rows = {
+      {"time t", formatNumber(t, "s")},
+      {"integrator", std::string(integratorName(world.settings().integrator)) + ", dt " +
+                         formatNumber(world.settings().timeStep, "s")},
+      {"body", body.name() + " (" + scene.inertiaMethods[view.selected] + " inertia, " +
+                   formatNumber(body.mass(), "kg") + ")"},
+      {"x", formatVec(body.position(), "m")},
+      {"R row 1", formatVec(R.row(0).transpose(), "")},
+      {"R row 2", formatVec(R.row(1).transpose(), "")},
+      {"R row 3", formatVec(R.row(2).transpose(), "")},
+      {"q (w x y z)", quat},
+      {"v", formatVec(body.velocity(), "m/s")},
+      {"omega", formatVec(body.angularVelocity(), "rad/s")},
+      {"P", formatVec(body.state().linearMomentum, "kg m/s")},
+      {"L", formatVec(body.state().angularMomentum, "kg m^2/s")},
+      {"kinetic energy", formatNumber(body.kineticEnergy(), "J")},
+  };
+  return frame;
+}
+
+}  // namespace rbsim::app

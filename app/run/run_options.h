@@ -1,0 +1,21 @@
+#pragma once
+// What the command line asks of one run, after CLI11 has parsed it. Scene keys are not here:
+// flags such as --dt become `--set` assignments (cli/flags_to_overrides) so there is one path.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rbsim::app {
+
+struct RunOptions {
+  std::vector<std::string> overrides;  // "path=value" scene assignments, in order
+  std::string framesDir;               // write PNG frames here when non-empty
+  std::string videoPath;               // write an MP4 here when non-empty
+  std::string tracePath;               // write the CSV trace here when non-empty
+  std::uint64_t traceEvery = 1;        // trace every K-th step
+  bool render = true;                  // --no-render turns frames and video off
+  bool quiet = false;
+};
+
+}  // namespace rbsim::app

@@ -1,0 +1,112 @@
+#include "run/runner.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "io/input_error.h"
+#include "render/frame_sink.h"
+#include "render/offscreen_renderer.h"
+#include "run/frame_builder.h"
+#include "run/trace_writer.h"
+
+namespace rbsim::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Frame k shows the state at the step nearest to k / fps.
+std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt) {
+  return static_cast<std::uint64_t>(std::llround(static_cast<double>(frame) / (fps * dt)));
+}
+
+}  // namespace
+
+RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title) {
+  RunSummary summary;
+  const auto wallStart = Clock::now();
+  const ViewDesc& first = scenes.front().view;
+  for (const Scene& scene : scenes) {
+    if (scene.view.width != first.width || scene.view.height != first.height || scene.view.fps != first.fps) {
+      throw InputError(scene.file, "view", "every phase of one video needs the same size and fps as the first");
+    }
+  }
+
+  const bool wantImages = options.render && (!options.framesDir.empty() || !options.videoPath.empty());
+  std::unique_ptr<render::OffscreenRenderer> renderer;
+  std::unique_ptr<render::FrameSink> sink;
+  if (wantImages) {
+    render::SinkOptions sinkOptions;
+    if (!options.framesDir.empty()) sinkOptions.pngDir = options.framesDir;
+    if (!options.videoPath.empty()) sinkOptions.videoPath = options.videoPath;
+    sinkOptions.fps = first.fps;
+    sinkOptions.width = first.width;
+    sinkOptions.height = first.height;
+    sink = std::make_unique<render::FrameSink>(sinkOptions);  // checks ffmpeg and folders first
+    renderer = std::make_unique<render::OffscreenRenderer>(first.width, first.height);
+  }
+  std::optional<TraceWriter> trace;
+  if (!options.tracePath.empty()) trace.emplace(options.tracePath);
+
+  for (const Scene& scene : scenes) {
+    World world = buildWorld(scene);
+    const std::uint64_t steps = scene.stepCount();
+    std::uint64_t nextFrame = 0;
+    for (std::uint64_t s = 0;; ++s) {
+      if (trace && (summary.steps % options.traceEvery == 0)) trace->write(world, summary.steps, world.time());
+      while (renderer && stepOfFrame(nextFrame, scene.view.fps, scene.settings.timeStep) == s) {
+        auto start = Clock::now();
+        const render::FrameData frame = buildFrame(world, scene, title);
+        summary.buildSeconds += secondsSince(start);
+        start = Clock::now();
+        const std::vector<std::uint8_t>& pixels = renderer->render(frame);
+        summary.renderSeconds += secondsSince(start);
+        start = Clock::now();
+        sink->submit(pixels);
+        summary.submitSeconds += secondsSince(start);
+        ++nextFrame;
+        ++summary.frames;
+      }
+      if (s == steps) break;
+      const auto start = Clock::now();
+      world.step();
+      summary.simulateSeconds += secondsSince(start);
+      ++summary.steps;
+    }
+  }
+  if (sink) {
+    const auto start = Clock::now();
+    sink->finish();
+    summary.finishSeconds = secondsSince(start);
+    const render::SinkTiming timing = sink->timing();
+    summary.encodeSeconds = 1e-3 * timing.encodeMs * static_cast<double>(timing.frames);
+  }
+  summary.wallSeconds = secondsSince(wallStart);
+  return summary;
+}
+
+void printSummary(const RunSummary& s, const RunOptions& options) {
+  if (options.quiet) return;
+  std::printf("steps %llu, frames %llu, wall %.2f s\n", static_cast<unsigned long long>(s.steps),
+              static_cast<unsigned long long>(s.frames), s.wallSeconds);
+  std::printf("simulate: %.4f ms per step\n", s.steps ? 1e3 * s.simulateSeconds / s.steps : 0.0);
+  if (s.frames > 0) {
+    const double perFrame = 1e3 / static_cast<double>(s.frames);
+    std::printf("ms per frame: simulate %.2f, build %.2f, render %.2f, hand-off %.2f "
+                "(encode %.2f on writer threads, in parallel); final flush %.0f ms\n",
+                perFrame * s.simulateSeconds, perFrame * s.buildSeconds, perFrame * s.renderSeconds,
+                perFrame * s.submitSeconds, perFrame * s.encodeSeconds, 1e3 * s.finishSeconds);
+  }
+  if (!options.videoPath.empty() && s.frames > 0) std::printf("video: %s\n", options.videoPath.c_str());
+  if (!options.framesDir.empty() && s.frames > 0) std::printf("frames: %s\n", options.framesDir.c_str());
+  if (!options.tracePath.empty()) std::printf("trace: %s\n", options.tracePath.c_str());
+}
+
+}  // namespace rbsim::app

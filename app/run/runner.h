@@ -1,0 +1,31 @@
+#pragma once
+// Runs scenes: steps the World, renders frames at the scene's fps, streams them to PNG files
+// and an MP4, writes the trace, and reports where the time went.
+#include <string>
+#include <vector>
+
+#include "run/run_options.h"
+#include "scene/scene.h"
+
+namespace rbsim::app {
+
+struct RunSummary {
+  std::uint64_t steps = 0;
+  std::uint64_t frames = 0;
+  double simulateSeconds = 0.0;  // World::step
+  double buildSeconds = 0.0;     // World -> FrameData
+  double renderSeconds = 0.0;    // GL draw, overlay, readback
+  double submitSeconds = 0.0;    // hand-off to the writer threads (blocks only on a full queue)
+  double encodeSeconds = 0.0;    // PNG + video encoding on the writer threads (in parallel)
+  double finishSeconds = 0.0;    // waiting for the writers after the last frame
+  double wallSeconds = 0.0;
+};
+
+// Plays the scenes one after another into the same frames folder and video (a demo's phases).
+// Every scene must have the same image size. `title` heads the overlay (the scene's own title
+// when empty).
+RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title);
+
+void printSummary(const RunSummary& summary, const RunOptions& options);
+
+}  // namespace rbsim::app

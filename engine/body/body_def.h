@@ -1,0 +1,24 @@
+#pragma once
+// Plain definition a RigidBody is created from (as Box2D's b2BodyDef): everything is explicit,
+// already validated and in SI units. mass/mass_model.h builds the mass part from a shape.
+#include <memory>
+#include <string>
+
+#include "geometry/mesh.h"
+#include "math/types.h"
+
+namespace rbsim {
+
+struct BodyDef {
+  std::string name = "body";
+  std::shared_ptr<const Mesh> mesh;        // body space: the origin is the centre of mass
+  double mass = 1.0;                       // [kg], > 0
+  Mat3 inertiaBody = Mat3::Identity();     // [kg m^2] about the centre of mass, body axes
+  Vec3 position = Vec3::Zero();            // x: world position of the centre of mass [m]
+  Quat orientation = Quat::Identity();     // q: body-to-world rotation (unit)
+  Vec3 velocity = Vec3::Zero();            // v of the centre of mass [m/s]
+  Vec3 angularVelocity = Vec3::Zero();     // omega, world frame [rad/s]
+  Vec3 color = Vec3(0.85, 0.45, 0.2);      // display only, linear RGB in [0, 1]
+};
+
+}  // namespace rbsim

@@ -1,0 +1,16 @@
+#pragma once
+// The state vector Y(t) of seed 004 "Rigid body representation" / seed 000 "state vector":
+// position, orientation, linear and angular momentum. Kept apart from the constants and the
+// geometry (Box2D's b2BodyState) so integrators read and write only this.
+#include "math/types.h"
+
+namespace rbsim {
+
+struct BodyState {
+  Vec3 position = Vec3::Zero();         // x(t) [m]
+  Quat orientation = Quat::Identity();  // q(t), unit; R(t) is derived from it
+  Vec3 linearMomentum = Vec3::Zero();   // P(t) = m v [kg m/s]
+  Vec3 angularMomentum = Vec3::Zero();  // L(t) = I(t) omega, world frame [kg m^2/s]
+};
+
+}  // namespace rbsim

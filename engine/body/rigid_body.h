@@ -1,0 +1,91 @@
+#pragma once
+// A rigid body: constants (m, I_body, I_body^-1, body-space vertices), state Y(t), the quantities
+// derived from it (seed 004 "Rigid body representation"; seed 000 "auxiliary quantities"), and
+// the force and torque accumulators (seed 004 "Force and torque").
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "body/body_def.h"
+#include "body/body_state.h"
+#include "geometry/mesh.h"
+
+namespace rbsim {
+
+class RigidBody {
+ public:
+  explicit RigidBody(const BodyDef& def);  // throws std::invalid_argument on an invalid def
+
+  // Constants.
+  const std::string& name() const { return name_; }
+  const Mesh& mesh() const { return *mesh_; }
+  double mass() const { return mass_; }
+  const Mat3& inertiaBody() const { return inertiaBody_; }
+  const Mat3& inverseInertiaBody() const { return inverseInertiaBody_; }
+  const Vec3& color() const { return color_; }
+
+  // State Y(t).
+  const BodyState& state() const { return state_; }
+  void setState(const BodyState& state);  // the integrators' entry point; updates all derived
+
+  // Manual set (seed 004 "TO DO: change x and R and redraw"): each updates every derived
+  // quantity and every world vertex. Orientation must be a rotation (checked, never normalised).
+  void setPosition(const Vec3& x);
+  void setOrientation(const Mat3& R);
+  void setOrientation(const Quat& q);
+  void setVelocity(const Vec3& v);             // P = m v
+  void setAngularVelocity(const Vec3& omega);  // L = I(t) omega
+
+  // Derived quantities.
+  const Vec3& position() const { return state_.position; }
+  const Quat& orientation() const { return state_.orientation; }
+  const Mat3& rotation() const { return rotation_; }  // R(t); its columns are the body axes
+  const Vec3& velocity() const { return velocity_; }  // v = P / m
+  const Vec3& angularVelocity() const { return angularVelocity_; }  // omega = I^-1 L
+  const Mat3& inverseInertiaWorld() const { return inverseInertiaWorld_; }  // R I_body^-1 R^T
+  Mat3 inertiaWorld() const;                          // R I_body R^T
+  double kineticEnergy() const;                       // (P.v + L.omega) / 2 [J]
+
+  // Transformed vertices p' = R p + x (seed 004 "you MUST have access to each individual vertex").
+  std::size_t vertexCount() const { return worldVertices_.size(); }
+  const Vec3& bodyVertex(std::size_t i) const { return mesh_->vertices[i]; }
+  const Vec3& worldVertex(std::size_t i) const { return worldVertices_[i]; }
+  const std::vector<Vec3>& worldVertices() const { return worldVertices_; }
+  Vec3 bodyToWorld(const Vec3& p) const { return rotation_ * p + state_.position; }
+
+  // Accumulators, cleared by the World after each step.
+  void applyForce(const Vec3& force);                          // at the centre of mass
+  void applyForceAtPoint(const Vec3& force, const Vec3& worldPoint);  // tau += (p - x) x f
+  void applyTorque(const Vec3& torque);
+  const Vec3& force() const { return force_; }
+  const Vec3& torque() const { return torque_; }
+  void clearAccumulators();
+
+ private:
+  void updateDerived();
+
+  std::string name_;
+  std::shared_ptr<const Mesh> mesh_;
+  double mass_ = 1.0;
+  double inverseMass_ = 1.0;
+  Mat3 inertiaBody_ = Mat3::Identity();
+  Mat3 inverseInertiaBody_ = Mat3::Identity();
+  Vec3 color_ = Vec3::Ones();
+
+  BodyState state_;
+
+  Mat3 rotation_ = Mat3::Identity();
+  Vec3 velocity_ = Vec3::Zero();
+  Vec3 angularVelocity_ = Vec3::Zero();
+  Mat3 inverseInertiaWorld_ = Mat3::Identity();
+  std::vector<Vec3> worldVertices_;
+
+  Vec3 force_ = Vec3::Zero();
+  Vec3 torque_ = Vec3::Zero();
+};
+
+// Tolerance for accepting a matrix or quaternion as a rotation: ||R^T R - I||_F and | |q| - 1 |.
+// Loose enough for values typed with 9 significant digits, tight enough to reject real errors.
+inline constexpr double kRotationTolerance = 1e-6;
+
+}  // namespace rbsim

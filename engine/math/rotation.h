@@ -1,0 +1,26 @@
+#pragma once
+// Rotation helpers shared by the integrators, the scene loader and the tests.
+#include "math/types.h"
+
+namespace rbsim {
+
+// The star (cross-product) matrix: star(a) * b == a.cross(b) (seed 004 "RB rotational update",
+// seed 000 "angular velocity").
+Mat3 star(const Vec3& a);
+
+// Drift correction of seed 004 ("Drift correction"): normalise C_x, C_y = C_z x C_x normalised,
+// C_z = C_x x C_y normalised, on the columns of R. Returns a proper rotation when R is near one.
+Mat3 orthonormalize(const Mat3& R);
+
+// The rotation of angle |axisAngle| about axisAngle's direction (Rodrigues' formula); the
+// identity for a zero vector.
+Mat3 rotationFromAxisAngle(const Vec3& axisAngle);
+Quat quatFromAxisAngle(const Vec3& axisAngle);
+
+// Angle [rad] of the relative rotation A^T B, in [0, pi]: the orientation error used by tests.
+double rotationAngleBetween(const Mat3& A, const Mat3& B);
+
+// Frobenius norm of R^T R - I: how far a matrix is from orthonormal.
+double orthonormalityError(const Mat3& R);
+
+}  // namespace rbsim

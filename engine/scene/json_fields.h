@@ -1,0 +1,58 @@
+#pragma once
+// Strict reading of one JSON object of a scene: every field is checked for type, range and
+// finiteness, unknown keys are rejected with the nearest known key suggested, and every error
+// names the file and the JSON path (e.g. "bodies[1].shape.extents").
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "math/types.h"
+
+namespace rbsim {
+
+class JsonObject {
+ public:
+  // Throws InputError if `value` is not an object or has a key outside `allowed`.
+  JsonObject(const nlohmann::json& value, std::string file, std::string path,
+             std::initializer_list<const char*> allowed);
+
+  bool has(const char* key) const { return value_.contains(key); }
+  std::string pathOf(const char* key) const;
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  const nlohmann::json& raw(const char* key) const { return value_.at(key); }
+
+  double number(const char* key, double fallback) const;
+  double requiredNumber(const char* key) const;
+  double positiveNumber(const char* key, double fallback) const;  // > 0
+  std::optional<double> optionalPositive(const char* key) const;
+  int positiveInt(const char* key, int fallback) const;
+  bool boolean(const char* key, bool fallback) const;
+  std::string string(const char* key, const std::string& fallback) const;
+  std::string requiredString(const char* key) const;
+  Vec3 vec3(const char* key, const Vec3& fallback) const;
+  std::optional<Vec3> optionalVec3(const char* key) const;
+  Vec3 positiveVec3(const char* key) const;  // required, every component > 0
+  // Orientation: {"quaternion": [w,x,y,z]} | {"matrix": [[r11,r12,r13],...]} |
+  // {"axis_angle_deg": [ax, ay, az, degrees]}; must be a rotation, never silently normalised.
+  std::optional<Quat> optionalOrientation(const char* key) const;
+  JsonObject object(const char* key, std::initializer_list<const char*> allowed) const;
+  std::vector<JsonObject> objectArray(const char* key, std::initializer_list<const char*> allowed) const;
+
+  [[noreturn]] void fail(const char* key, const std::string& problem) const;
+
+ private:
+  std::vector<double> numbers(const char* key, std::size_t count) const;
+
+  const nlohmann::json& value_;
+  std::string file_;
+  std::string path_;
+};
+
+// The known key nearest to `key` by edit distance, or "" when none is close.
+std::string nearestKey(const std::string& key, const std::vector<std::string>& known);
+
+}  // namespace rbsim

@@ -1,0 +1,71 @@
+// The --set flag: "path=value" assignments applied to a scene document before it is checked,
+// so an override is validated exactly like the same key written in the file.
+#include <string>
+#include <vector>
+
+#include "io/input_error.h"
+#include "scene/scene.h"
+
+namespace rbsim {
+
+namespace {
+
+// "bodies[1].shape.extents" and "bodies.1.shape.extents" both give {bodies, 1, shape, extents}.
+std::vector<std::string> splitPath(const std::string& path) {
+  std::vector<std::string> parts;
+  std::string current;
+  for (char c : path) {
+    if (c == '.' || c == '[' || c == ']') {
+      if (!current.empty()) parts.push_back(current);
+      current.clear();
+    } else {
+      current += c;
+    }
+  }
+  if (!current.empty()) parts.push_back(current);
+  return parts;
+}
+
+bool isIndex(const std::string& s) {
+  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+}  // namespace
+
+void applyOverride(nlohmann::json& document, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError("", "--set", "expected key=value (e.g. world.dt=0.001), got \"" + assignment + "\"");
+  }
+  const std::vector<std::string> parts = splitPath(assignment.substr(0, eq));
+  const std::string text = assignment.substr(eq + 1);
+  nlohmann::json value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (value.is_discarded()) value = text;  // a bare word such as rk4 or cube is a string
+
+  nlohmann::json* node = &document;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    if (node->is_array()) {
+      std::size_t index = node->size();
+      if (isIndex(part)) {
+        index = std::stoul(part);
+      } else {  // an element by its "name"
+        for (std::size_t k = 0; k < node->size(); ++k) {
+          if ((*node)[k].is_object() && (*node)[k].value("name", "") == part) index = k;
+        }
+      }
+      if (index >= node->size()) {
+        throw InputError("", "--set", "\"" + part + "\" names no element of the array (it has " +
+                                          std::to_string(node->size()) + ")");
+      }
+      node = &(*node)[index];
+    } else {
+      if (node->is_null()) *node = nlohmann::json::object();
+      if (!node->is_object()) throw InputError("", "--set", "\"" + part + "\" is inside a value that is not an object");
+      node = &(*node)[part];
+    }
+  }
+  *node = value;
+}
+
+}  // namespace rbsim

@@ -1,0 +1,61 @@
+#pragma once
+// A scene file (JSON) parsed into plain engine data. The format is documented in README.md
+// ("Scene format"); every error names the file, the JSON path and what was expected.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "body/body_def.h"
+#include "world/scripts.h"
+#include "world/settings.h"
+#include "world/world.h"
+
+namespace rbsim {
+
+// How the scene is shown; plain data, the app turns it into pixels.
+struct ViewDesc {
+  Vec3 eye = Vec3(4.0, 3.0, 6.0);      // camera position [m]
+  Vec3 target = Vec3(0.0, 0.5, 0.0);   // point looked at [m]
+  Vec3 up = Vec3(0.0, 1.0, 0.0);
+  double fovDegrees = 45.0;            // vertical field of view
+  int width = 1280;                    // [px]
+  int height = 720;                    // [px]
+  int fps = 30;                        // frames per simulated second
+  bool overlay = true;
+  bool wireframe = false;
+  bool axes = true;
+  bool grid = true;
+  std::size_t selected = 0;            // body shown in the overlay
+  std::string caption;
+};
+
+struct Scene {
+  std::string file;        // where it came from, for messages
+  std::string title;
+  Settings settings;
+  double duration = 5.0;   // simulated time to run [s]
+  std::vector<BodyDef> bodies;
+  std::vector<std::string> inertiaMethods;  // per body, as resolved ("cube" or "exact")
+  std::vector<ScriptedForce> forces;
+  std::vector<PoseEvent> poseEvents;
+  ViewDesc view;
+
+  std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep
+};
+
+// Reads and parses a scene file; `overrides` are "path=value" assignments (the --set flag)
+// applied to the JSON before it is checked. Throws InputError.
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Parses an in-memory document; mesh paths are relative to `baseDir`.
+Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir);
+
+// Applies one "a.b[2].c=value" (or "a.b.2.c=value") assignment; the value is JSON if it parses
+// as JSON, otherwise a string. Bodies may be named: "bodies.box.mass=2".
+void applyOverride(nlohmann::json& document, const std::string& assignment);
+
+// A World holding the scene's bodies, forces and pose events.
+World buildWorld(const Scene& scene);
+
+}  // namespace rbsim

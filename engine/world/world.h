@@ -1,0 +1,71 @@
+#pragma once
+// The World owns the bodies and advances them; step() reads as the pipeline (DESIGN.md
+// "Data flow"), one named stage per call, each skipped when the scene has nothing for it.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "body/rigid_body.h"
+#include "world/scripts.h"
+#include "world/settings.h"
+
+namespace rbsim {
+
+// Stages of World::step, in order (as Box2D v3's b2SolverStageType): names for timing and for
+// skipping. Collision stages join this list with the collision issues.
+enum class Stage : int {
+  ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step
+  AccumulateForces,  // gravity and scripted forces into F and tau
+  Integrate,         // the chosen integrator advances (x, q, P, L); accumulators are cleared
+  Count
+};
+const char* stageName(Stage stage);
+
+struct StageStats {
+  std::uint64_t runs = 0;     // steps in which the stage ran
+  std::uint64_t skipped = 0;  // steps in which it had nothing to do
+  double seconds = 0.0;       // wall time spent in it [s]
+};
+
+class World {
+ public:
+  explicit World(const Settings& settings);  // throws std::invalid_argument on a bad time step
+
+  std::size_t addBody(const BodyDef& def);
+  void addForce(const ScriptedForce& force);
+  void addPoseEvent(const PoseEvent& event);
+
+  void step();  // advances by settings().timeStep
+
+  const Settings& settings() const { return settings_; }
+  double time() const { return static_cast<double>(stepCount_) * settings_.timeStep; }
+  std::uint64_t stepCount() const { return stepCount_; }
+  std::vector<RigidBody>& bodies() { return bodies_; }
+  const std::vector<RigidBody>& bodies() const { return bodies_; }
+  const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
+  const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
+
+  // The forces acting during the step that starts at time t, in world frame: (point, force).
+  // Used by stage AccumulateForces and by renderers that draw force arrows.
+  std::vector<std::pair<Vec3, Vec3>> activeForces(std::size_t body, double t) const;
+
+  // FNV-1a over the bit patterns of every body's state: equal hashes mean bit-identical runs.
+  std::uint64_t stateHash() const;
+
+ private:
+  void applyPoseEvents();
+  void accumulateForces();
+  void integrateBodies();
+
+  template <typename Fn>
+  void runStage(Stage stage, bool needed, Fn&& fn);
+
+  Settings settings_;
+  std::vector<RigidBody> bodies_;
+  std::vector<ScriptedForce> forces_;
+  std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
+  std::uint64_t stepCount_ = 0;
+  std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};
+};
+
+}  // namespace rbsim
