@@ -1,0 +1,89 @@
+#include "frame_sink.h"
+
+#include <chrono>
+#include <string>
+
+#include "png_sequence_writer.h"
+#include "render_error.h"
+#include "video_encoder.h"
+
+namespace rbsim::render {
+
+FrameSink::FrameSink(SinkOptions options) : options_(std::move(options)) {
+  if (options_.width <= 0 || options_.height <= 0 || options_.fps <= 0) {
+    throw RenderError("frame output: width, height and fps must be positive (got " +
+                      std::to_string(options_.width) + "x" + std::to_string(options_.height) +
+                      " at " + std::to_string(options_.fps) + " fps)");
+  }
+  if (options_.videoPath) {
+    video_ = std::make_unique<VideoEncoder>(*options_.videoPath, options_.width,
+                                            options_.height, options_.fps, options_.queueFrames);
+  }
+  if (options_.pngDir) {
+    png_ = std::make_unique<PngSequenceWriter>(*options_.pngDir, options_.width, options_.height,
+                                               options_.pngThreads, options_.queueFrames);
+  }
+}
+
+FrameSink::~FrameSink() {
+  try {
+    finish();
+  } catch (...) {
+    // Destructors must not throw; callers who care call finish() themselves.
+  }
+}
+
+void FrameSink::submit(std::vector<std::uint8_t> rgbaTopDown) {
+  const std::size_t expected =
+      static_cast<std::size_t>(options_.width) * static_cast<std::size_t>(options_.height) * 4;
+  if (rgbaTopDown.size() != expected) {
+    throw RenderError("frame output: image has " + std::to_string(rgbaTopDown.size()) +
+                      " bytes, expected " + std::to_string(expected));
+  }
+  // A writer that already failed would drop every further frame: stop the run now instead.
+  if (video_) {
+    if (std::string error = video_->error(); !error.empty()) throw RenderError(error);
+  }
+  if (png_) {
+    if (std::string error = png_->error(); !error.empty()) throw RenderError(error);
+  }
+  OutputFrame frame{frames_++,
+                    std::make_shared<const std::vector<std::uint8_t>>(std::move(rgbaTopDown))};
+  const auto start = std::chrono::steady_clock::now();
+  if (video_) video_->submit(frame);
+  if (png_) png_->submit(std::move(frame));
+  blockedMs_.add(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+}
+
+void FrameSink::finish() {
+  // Finish both even if one fails, then report the video first (its message says more).
+  std::string error;
+  if (video_) {
+    try {
+      video_->finish();
+    } catch (const RenderError& e) {
+      error = e.what();
+    }
+  }
+  if (png_) {
+    try {
+      png_->finish();
+    } catch (const RenderError& e) {
+      if (error.empty()) error = e.what();
+    }
+  }
+  if (!error.empty()) throw RenderError(error);
+}
+
+SinkTiming FrameSink::timing() const {
+  SinkTiming t;
+  t.frames = frames_;
+  t.pngMs = png_ ? png_->meanWriteMs() : 0.0;
+  t.videoMs = video_ ? video_->meanWriteMs() : 0.0;
+  t.encodeMs = t.pngMs + t.videoMs;
+  t.blockedMs = blockedMs_.mean();
+  return t;
+}
+
+}  // namespace rbsim::render

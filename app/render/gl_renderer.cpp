@@ -1,0 +1,346 @@
+#include "gl_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render_error.h"
+
+namespace rbsim::render {
+
+namespace {
+
+// Background palette in display (sRGB) values: the sky and ground shaders mix these directly,
+// without lighting, so they need no per-pixel gamma encode (the costliest part on llvmpipe).
+const glm::vec3 kZenith{0.13f, 0.17f, 0.24f};
+const glm::vec3 kHorizon{0.56f, 0.61f, 0.67f};
+const glm::vec3 kNadir{0.27f, 0.28f, 0.30f};
+const glm::vec3 kGround{0.50f, 0.52f, 0.55f};
+const glm::vec3 kGridMinor{0.46f, 0.48f, 0.51f};
+const glm::vec3 kGridMajor{0.38f, 0.40f, 0.43f};
+
+// Towards the light: high, from the left and a little in front of the default camera, so the
+// top, +z and +x faces of a box get three clearly different shades, and shadows fall to the
+// right where the camera sees them rather than hiding behind the bodies.
+const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, 1.0f, 0.45f));
+constexpr float kShadowAlpha = 0.32f;
+constexpr float kXrayAlpha = 0.3f;  // axes and arrows seen through a body
+
+// Line widths in pixels for a 720-pixel-high image; scaled with the image height.
+constexpr float kEdgeWidth = 1.5f;
+constexpr float kHighlightWidth = 3.0f;
+constexpr float kAxisWidth = 3.0f;
+constexpr float kShaftWidth = 3.5f;
+
+void setMeshAttributes() {
+  const auto stride = static_cast<GLsizei>(sizeof(MeshVertex));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(MeshVertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(MeshVertex, color)));
+}
+
+void setLineAttributes() {
+  const auto stride = static_cast<GLsizei>(sizeof(LineVertex));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(LineVertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(LineVertex, color)));
+}
+
+template <typename T>
+void appendTo(std::vector<T>& all, const std::vector<T>& part) {
+  all.insert(all.end(), part.begin(), part.end());
+}
+
+}  // namespace
+
+glm::mat4 viewProjection(const Camera& camera, int width, int height) {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDegrees), aspect,
+                                                camera.nearPlane, camera.farPlane);
+  return projection * glm::lookAt(camera.eye, camera.target, camera.up);
+}
+
+GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int samples)
+    : width_(width),
+      height_(height),
+      samples_(1),
+      // Small images get thinner lines, down to 0.6 of the 720p width.
+      pixelScale_(std::max(0.6f, static_cast<float>(height) / 720.0f)),
+      skyProgram_(shaderDir, "sky.vert", "sky.frag"),
+      groundProgram_(shaderDir, "ground.vert", "ground.frag"),
+      shadowProgram_(shaderDir, "shadow.vert", "shadow.frag"),
+      meshProgram_(shaderDir, "mesh.vert", "mesh.frag"),
+      lineProgram_(shaderDir, "line.vert", "line.frag") {
+  glGenVertexArrays(1, &emptyVao_);
+  glGenVertexArrays(1, &meshVao_);
+  glGenBuffers(1, &meshVbo_);
+  glBindVertexArray(meshVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, meshVbo_);
+  setMeshAttributes();
+  glGenVertexArrays(1, &lineVao_);
+  glGenBuffers(1, &lineVbo_);
+  glBindVertexArray(lineVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, lineVbo_);
+  setLineAttributes();
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+
+  GLint maxSamples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  samples_ = std::clamp(samples, 1, std::max(1, static_cast<int>(maxSamples)));
+  if (samples_ > 1) createMultisampleTarget();
+}
+
+GlRenderer::~GlRenderer() {
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteRenderbuffers(1, &colorRb_);
+  glDeleteRenderbuffers(1, &depthRb_);
+  glDeleteBuffers(1, &meshVbo_);
+  glDeleteBuffers(1, &lineVbo_);
+  glDeleteVertexArrays(1, &meshVao_);
+  glDeleteVertexArrays(1, &lineVao_);
+  glDeleteVertexArrays(1, &emptyVao_);
+}
+
+void GlRenderer::createMultisampleTarget() {
+  glGenRenderbuffers(1, &colorRb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, colorRb_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width_, height_);
+  glGenRenderbuffers(1, &depthRb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depthRb_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH24_STENCIL8, width_,
+                                   height_);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRb_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                            depthRb_);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw RenderError("OpenGL: multisampled framebuffer incomplete (status " +
+                      std::to_string(status) + ")");
+  }
+}
+
+void GlRenderer::upload(const SceneGeometry& g) {
+  // Bodies first, arrow heads after: the body range starts at vertex 0 and every range is a
+  // multiple of 3, which mesh.vert's gl_VertexID % 3 (wireframe corners) relies on.
+  std::vector<MeshVertex> meshes;
+  meshes.reserve(g.bodies.size() + g.arrowHeads.size());
+  appendTo(meshes, g.bodies);
+  appendTo(meshes, g.arrowHeads);
+  headsFirst_ = static_cast<GLint>(g.bodies.size());
+  std::vector<LineVertex> lines;
+  lines.reserve(g.edges.size() + g.highlight.size() + g.axes.size() + g.forceShafts.size());
+  appendTo(lines, g.edges);
+  highlightFirst_ = static_cast<GLint>(lines.size());
+  appendTo(lines, g.highlight);
+  axesFirst_ = static_cast<GLint>(lines.size());
+  appendTo(lines, g.axes);
+  shaftsFirst_ = static_cast<GLint>(lines.size());
+  appendTo(lines, g.forceShafts);
+  // A fresh glBufferData each frame lets the driver orphan last frame's storage.
+  glBindBuffer(GL_ARRAY_BUFFER, meshVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(meshes.size() * sizeof(MeshVertex)),
+               meshes.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, lineVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(LineVertex)),
+               lines.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void GlRenderer::drawSky(const FrameData& frame, const glm::mat4& viewProj) {
+  // Drawn after everything opaque, on the far plane: the depth test leaves only the pixels
+  // nothing else covered, so the gradient is not computed under the ground.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  skyProgram_.use();
+  skyProgram_.set("uInvViewProj", glm::inverse(viewProj));
+  skyProgram_.set("uEye", frame.camera.eye);
+  skyProgram_.set("uZenith", kZenith);
+  skyProgram_.set("uHorizon", kHorizon);
+  // With the ground on, the plane fades into the horizon colour; keep that colour below the
+  // horizon too so no seam shows where the ground square ends.
+  skyProgram_.set("uNadir", frame.options.grid ? kHorizon : kNadir);
+  glBindVertexArray(emptyVao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void GlRenderer::drawGround(const FrameData& frame, const glm::mat4& viewProj) {
+  const Camera& cam = frame.camera;
+  const float halfSize = 0.65f * cam.farPlane;  // its far corners stay inside the far plane
+  const float viewDistance = glm::length(cam.eye - cam.target);
+  const float fadeEnd = 0.95f * halfSize;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  groundProgram_.use();
+  groundProgram_.set("uViewProj", viewProj);
+  groundProgram_.set("uCentre", glm::vec2(cam.eye.x, cam.eye.z));
+  groundProgram_.set("uHalfSize", halfSize);
+  groundProgram_.set("uEye", cam.eye);
+  groundProgram_.set("uGroundColor", kGround);
+  groundProgram_.set("uMinorColor", kGridMinor);
+  groundProgram_.set("uMajorColor", kGridMajor);
+  groundProgram_.set("uHorizon", kHorizon);
+  groundProgram_.set("uMinorSpacing", 0.25f);
+  groundProgram_.set("uMajorSpacing", 1.0f);
+  groundProgram_.set("uLineWidth", std::max(1.0f, pixelScale_));
+  groundProgram_.set("uFadeStart", std::min(3.0f * viewDistance, 0.5f * fadeEnd));
+  groundProgram_.set("uFadeEnd", fadeEnd);
+  glBindVertexArray(emptyVao_);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
+
+void GlRenderer::drawShadows(const glm::mat4& viewProj) {
+  // Blend once per pixel even where shadows of several triangles overlap: the stencil counts.
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  glDepthFunc(GL_LEQUAL);
+  glEnable(GL_POLYGON_OFFSET_FILL);  // coplanar with the ground: pull towards the camera
+  glPolygonOffset(-2.0f, -2.0f);
+  shadowProgram_.use();
+  shadowProgram_.set("uViewProj", viewProj);
+  shadowProgram_.set("uLightDir", kLightDir);
+  shadowProgram_.set("uAlpha", kShadowAlpha);
+  glBindVertexArray(meshVao_);
+  glDrawArrays(GL_TRIANGLES, 0, headsFirst_);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_BLEND);
+}
+
+void GlRenderer::drawMeshes(const FrameData& frame, const glm::mat4& viewProj, GLint first,
+                            GLsizei count, bool wireframe, float alpha) {
+  if (count <= 0) return;
+  meshProgram_.use();
+  meshProgram_.set("uViewProj", viewProj);
+  meshProgram_.set("uEye", frame.camera.eye);
+  meshProgram_.set("uLightDir", kLightDir);
+  meshProgram_.set("uLightColor", glm::vec3(0.80f, 0.78f, 0.74f));
+  meshProgram_.set("uSkyAmbient", glm::vec3(0.34f, 0.36f, 0.40f));
+  meshProgram_.set("uGroundAmbient", glm::vec3(0.12f, 0.12f, 0.12f));
+  meshProgram_.set("uWireframe", wireframe ? 1 : 0);
+  meshProgram_.set("uWireColor", glm::vec3(0.02f, 0.02f, 0.03f));
+  meshProgram_.set("uAlpha", alpha);
+  glBindVertexArray(meshVao_);
+  glDrawArrays(GL_TRIANGLES, first, count);
+}
+
+void GlRenderer::drawLines(const glm::mat4& viewProj, GLint first, GLsizei count, float widthPx,
+                           float alpha) {
+  if (count <= 0) return;
+  lineProgram_.use();
+  lineProgram_.set("uViewProj", viewProj);
+  lineProgram_.set("uAlpha", alpha);
+  glLineWidth(widthPx * pixelScale_);
+  // Without multisampling, smooth lines are the antialiasing: they also cover the bodies'
+  // silhouettes, since every silhouette edge of a box is a feature edge. Needs blending.
+  const bool smooth = samples_ == 1;
+  GLboolean blendWasOn = glIsEnabled(GL_BLEND);
+  if (smooth) {
+    glEnable(GL_LINE_SMOOTH);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  glBindVertexArray(lineVao_);
+  glDrawArrays(GL_LINES, first, count);
+  if (smooth) {
+    glDisable(GL_LINE_SMOOTH);
+    if (!blendWasOn) glDisable(GL_BLEND);
+  }
+}
+
+void GlRenderer::drawOverlays(const FrameData& frame, const glm::mat4& viewProj) {
+  const auto axesCount = static_cast<GLsizei>(geometry_.axes.size());
+  const auto shaftsCount = static_cast<GLsizei>(geometry_.forceShafts.size());
+  const auto headsCount = static_cast<GLsizei>(geometry_.arrowHeads.size());
+  // First the parts hidden inside or behind bodies, faint (depth GREATER), so a body's axes,
+  // which start at its centre of mass, can be followed through it; then the visible parts.
+  // The faint pass goes first so the arrows' own depth cannot hide it.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  glDepthFunc(GL_GREATER);
+  drawLines(viewProj, axesFirst_, axesCount, kAxisWidth, kXrayAlpha);
+  drawLines(viewProj, shaftsFirst_, shaftsCount, kShaftWidth, kXrayAlpha);
+  drawMeshes(frame, viewProj, headsFirst_, headsCount, false, kXrayAlpha);
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LEQUAL);
+  drawLines(viewProj, axesFirst_, axesCount, kAxisWidth, 1.0f);
+  drawLines(viewProj, shaftsFirst_, shaftsCount, kShaftWidth, 1.0f);
+  drawMeshes(frame, viewProj, headsFirst_, headsCount, false, 1.0f);
+}
+
+void GlRenderer::draw(const FrameData& frame) {
+  buildSceneGeometry(frame, geometry_);
+  upload(geometry_);
+  const glm::mat4 viewProj = viewProjection(frame.camera, width_, height_);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? fbo_ : 0);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);  // meshes from files may have either winding
+  glDisable(GL_BLEND);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xff);
+  glClearDepth(1.0);
+  glClearStencil(0);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // the sky covers every colour pixel
+
+  // Front to back, so llvmpipe's early depth test skips hidden ground and sky pixels: bodies,
+  // then the ground and the shadows on it, then the sky wherever nothing was drawn. Bodies are
+  // pushed slightly back so their outlines (drawn later at LEQUAL) win the depth test.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  drawMeshes(frame, viewProj, 0, headsFirst_, frame.options.wireframe, 1.0f);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  if (frame.options.grid) {
+    drawGround(frame, viewProj);
+    drawShadows(viewProj);
+  }
+  drawSky(frame, viewProj);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  drawLines(viewProj, 0, static_cast<GLsizei>(geometry_.edges.size()), kEdgeWidth, 1.0f);
+  drawLines(viewProj, highlightFirst_, static_cast<GLsizei>(geometry_.highlight.size()),
+            kHighlightWidth, 1.0f);
+  glDepthMask(GL_TRUE);
+  drawOverlays(frame, viewProj);
+
+  glBindVertexArray(0);
+  glUseProgram(0);
+  if (samples_ > 1) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace rbsim::render

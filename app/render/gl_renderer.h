@@ -1,0 +1,67 @@
+#pragma once
+// Draws one FrameData with OpenGL into the current context's default framebuffer: sky gradient,
+// ground grid with planar shadows, flat-shaded bodies with outlines (optional wireframe), body
+// axes and force arrows. Multisampled into an off-screen framebuffer, then resolved.
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "frame_data.h"
+#include "gl_api.h"
+#include "scene_geometry.h"
+#include "shader_program.h"
+
+namespace rbsim::render {
+
+// The projection shared by the renderer and anyone who needs to know where a point lands
+// (tests, labels): glm::perspective(fovY, width/height, near, far) * glm::lookAt(eye, target, up).
+glm::mat4 viewProjection(const Camera& camera, int width, int height);
+
+class GlRenderer {
+ public:
+  // Needs a current GL 4.5 compatibility context. samples > 1 renders with that many MSAA
+  // samples (clamped to GL_MAX_SAMPLES); 1 draws straight into the default framebuffer.
+  GlRenderer(int width, int height, const std::string& shaderDir, int samples);
+  ~GlRenderer();
+  GlRenderer(const GlRenderer&) = delete;
+  GlRenderer& operator=(const GlRenderer&) = delete;
+
+  // Sets every piece of GL state it relies on at the start, so whatever ran before (the ImGui
+  // overlay of the previous frame) cannot leak in. Leaves framebuffer 0 bound with the image.
+  void draw(const FrameData& frame);
+
+  int samples() const { return samples_; }
+
+ private:
+  void createMultisampleTarget();
+  void upload(const SceneGeometry& geometry);
+  void drawSky(const FrameData& frame, const glm::mat4& viewProj);
+  void drawGround(const FrameData& frame, const glm::mat4& viewProj);
+  void drawShadows(const glm::mat4& viewProj);
+  void drawMeshes(const FrameData& frame, const glm::mat4& viewProj, GLint first, GLsizei count,
+                  bool wireframe, float alpha);
+  void drawLines(const glm::mat4& viewProj, GLint first, GLsizei count, float widthPx,
+                 float alpha);
+  void drawOverlays(const FrameData& frame, const glm::mat4& viewProj);
+
+  int width_;
+  int height_;
+  int samples_;
+  float pixelScale_;  // line widths are given for a 720-pixel-high image and scaled by this
+  ShaderProgram skyProgram_;
+  ShaderProgram groundProgram_;
+  ShaderProgram shadowProgram_;
+  ShaderProgram meshProgram_;
+  ShaderProgram lineProgram_;
+  GLuint emptyVao_ = 0;  // for the buffer-less sky and ground draws
+  GLuint meshVao_ = 0, meshVbo_ = 0;
+  GLuint lineVao_ = 0, lineVbo_ = 0;
+  GLuint fbo_ = 0, colorRb_ = 0, depthRb_ = 0;
+  SceneGeometry geometry_;  // reused every frame to avoid reallocations
+  // Offsets (in vertices) of each group inside the two vertex buffers, set by upload().
+  GLint headsFirst_ = 0;
+  GLint highlightFirst_ = 0, axesFirst_ = 0, shaftsFirst_ = 0;
+};
+
+}  // namespace rbsim::render

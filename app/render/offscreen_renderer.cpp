@@ -1,0 +1,85 @@
+#include "offscreen_renderer.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+
+#include "gl_renderer.h"
+#include "osmesa_context.h"
+#include "overlay.h"
+
+namespace rbsim::render {
+
+namespace {
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+}  // namespace
+
+std::string defaultShaderDir() {
+  if (const char* dir = std::getenv("RBSIM_SHADER_DIR"); dir != nullptr && *dir != '\0') {
+    return dir;
+  }
+  return RBSIM_DEFAULT_SHADER_DIR;
+}
+
+struct OffscreenRenderer::Impl {
+  // Declaration order is construction order: the context must exist before any GL object, and
+  // is destroyed last.
+  OsmesaContext context;
+  GlRenderer scene;
+  Overlay overlay;
+  std::vector<std::uint8_t> image;
+  MeanMs renderMs;
+  MeanMs copyMs;
+  long frames = 0;
+
+  Impl(int width, int height, const std::string& shaderDir, int samples)
+      : context(width, height),
+        scene(width, height, shaderDir, samples),
+        overlay(width, height),
+        image(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {}
+};
+
+OffscreenRenderer::OffscreenRenderer(int width, int height, std::string shaderDir, int samples)
+    : impl_(std::make_unique<Impl>(width, height, shaderDir, samples)) {}
+
+OffscreenRenderer::~OffscreenRenderer() {
+  // GL objects are deleted by the members' destructors; they need this context current.
+  impl_->context.makeCurrent();
+}
+
+const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& frame) {
+  Impl& d = *impl_;
+  d.context.makeCurrent();
+  const auto start = std::chrono::steady_clock::now();
+  d.scene.draw(frame);
+  // The overlay has no animation, so its time step only has to be positive.
+  if (frame.options.overlay) d.overlay.draw(frame.overlay, 1.0f / 30.0f);
+  glFinish();  // OSMesa's buffer holds the image only once GL has finished
+  d.renderMs.add(millisecondsSince(start));
+
+  // GL's first row is the bottom one; images and video want the top row first.
+  const auto copyStart = std::chrono::steady_clock::now();
+  const std::size_t rowBytes = static_cast<std::size_t>(d.context.width()) * 4;
+  const std::uint8_t* source = d.context.pixels();
+  const int height = d.context.height();
+  for (int y = 0; y < height; ++y) {
+    std::memcpy(d.image.data() + static_cast<std::size_t>(y) * rowBytes,
+                source + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
+  }
+  d.copyMs.add(millisecondsSince(copyStart));
+  ++d.frames;
+  return d.image;
+}
+
+int OffscreenRenderer::width() const { return impl_->context.width(); }
+int OffscreenRenderer::height() const { return impl_->context.height(); }
+int OffscreenRenderer::samples() const { return impl_->scene.samples(); }
+
+RenderTiming OffscreenRenderer::timing() const {
+  return {impl_->frames, impl_->renderMs.mean(), impl_->copyMs.mean()};
+}
+
+}  // namespace rbsim::render

@@ -1,0 +1,167 @@
+#include "overlay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <backends/imgui_impl_opengl2.h>
+#include <imgui.h>
+
+#include "gl_api.h"
+#include "render_error.h"
+
+namespace rbsim::render {
+
+namespace {
+
+constexpr const char* kMonoFontPaths[] = {
+    "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf",
+    "/usr/share/fonts/TTF/DejaVuSansMono.ttf",
+};
+
+ImFont* loadFont(ImGuiIO& io, float sizePx) {
+  for (const char* path : kMonoFontPaths) {
+    if (std::filesystem::exists(path)) {
+      ImFontConfig config;
+      config.OversampleH = 2;  // sharper glyph edges at fractional positions
+      if (ImFont* font = io.Fonts->AddFontFromFileTTF(path, sizePx, &config)) return font;
+    }
+  }
+  // ProggyClean is a 13 px bitmap-style monospace font: scale it in whole steps to keep it crisp.
+  ImFontConfig config;
+  config.SizePixels = 13.0f * std::max(1.0f, std::round(sizePx / 13.0f));
+  return io.Fonts->AddFontDefault(&config);
+}
+
+void applyStyle() {
+  ImGuiStyle& style = ImGui::GetStyle();
+  ImGui::StyleColorsDark(&style);
+  style.WindowRounding = 6.0f;
+  style.WindowBorderSize = 1.0f;
+  style.WindowPadding = ImVec2(12.0f, 10.0f);
+  style.ItemSpacing = ImVec2(8.0f, 4.0f);
+  style.CellPadding = ImVec2(6.0f, 1.0f);
+  style.Colors[ImGuiCol_WindowBg] = ImVec4(0.05f, 0.06f, 0.08f, 0.78f);
+  style.Colors[ImGuiCol_Border] = ImVec4(1.0f, 1.0f, 1.0f, 0.18f);
+  style.Colors[ImGuiCol_Separator] = ImVec4(1.0f, 1.0f, 1.0f, 0.22f);
+  style.Colors[ImGuiCol_Text] = ImVec4(0.95f, 0.96f, 0.98f, 1.0f);
+  style.Colors[ImGuiCol_TableRowBgAlt] = ImVec4(1.0f, 1.0f, 1.0f, 0.05f);
+}
+
+}  // namespace
+
+Overlay::Overlay(int width, int height) : width_(width), height_(height) {
+  IMGUI_CHECKVERSION();
+  context_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini next to the videos
+  io.LogFilename = nullptr;
+  // ~17 px at 720p, scaled with the image; readable in a 1080p video and at 360p.
+  const float sizePx = std::clamp(std::round(static_cast<float>(height) * 0.0235f), 11.0f, 48.0f);
+  bodyFont_ = loadFont(io, sizePx);
+  titleFont_ = loadFont(io, std::round(sizePx * 1.2f));
+  applyStyle();
+  ImGui::GetStyle().ScaleAllSizes(std::max(0.75f, sizePx / 17.0f));
+  if (!ImGui_ImplOpenGL2_Init()) {
+    ImGui::DestroyContext(context_);
+    throw RenderError("ImGui: the OpenGL2 backend failed to initialise");
+  }
+}
+
+Overlay::~Overlay() {
+  ImGui::SetCurrentContext(context_);
+  ImGui_ImplOpenGL2_Shutdown();
+  ImGui::DestroyContext(context_);
+}
+
+void Overlay::draw(const OverlayData& data, float deltaSeconds) {
+  ImGui::SetCurrentContext(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
+  io.DeltaTime = deltaSeconds > 0.0f ? deltaSeconds : 1.0f / 60.0f;  // ImGui asserts on <= 0
+  ImGui_ImplOpenGL2_NewFrame();
+  ImGui::NewFrame();
+
+  // Measure the content to give the window a fixed size (see overlay.h for why not auto-size).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float labelWidth = 0.0f, valueWidth = 0.0f;
+  ImGui::PushFont(bodyFont_);
+  for (const auto& [label, value] : data.rows) {
+    labelWidth = std::max(labelWidth, ImGui::CalcTextSize(label.c_str()).x);
+    valueWidth = std::max(valueWidth, ImGui::CalcTextSize(value.c_str()).x);
+  }
+  const float gap = ImGui::CalcTextSize("  ").x;
+  const float tableWidth = labelWidth + gap + valueWidth + 4.0f * style.CellPadding.x;
+  ImGui::PushFont(titleFont_);
+  const ImVec2 titleSize = ImGui::CalcTextSize(data.title.c_str());
+  ImGui::PopFont();
+  const float maxInner = 0.45f * io.DisplaySize.x - 2.0f * style.WindowPadding.x;
+  const float innerWidth = std::min(maxInner, std::max({tableWidth, titleSize.x, 12.0f * gap}));
+  const ImVec2 captionSize = data.caption.empty()
+                                 ? ImVec2(0.0f, 0.0f)
+                                 : ImGui::CalcTextSize(data.caption.c_str(), nullptr, false, innerWidth);
+  const float lineHeight = ImGui::GetTextLineHeight();
+  const float rowHeight = lineHeight + 2.0f * style.CellPadding.y;
+  float contentHeight = titleSize.y;
+  if (!data.caption.empty()) contentHeight += style.ItemSpacing.y + captionSize.y;
+  if (!data.rows.empty()) {
+    contentHeight += style.ItemSpacing.y + 1.0f;  // separator
+    contentHeight += style.ItemSpacing.y + rowHeight * static_cast<float>(data.rows.size());
+  }
+  ImGui::PopFont();
+
+  const float margin = std::round(0.015f * io.DisplaySize.y) + 4.0f;
+  ImGui::SetNextWindowPos(ImVec2(margin, margin));
+  ImGui::SetNextWindowSize(ImVec2(innerWidth + 2.0f * style.WindowPadding.x,
+                                  contentHeight + 2.0f * style.WindowPadding.y));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoFocusOnAppearing;
+  if (ImGui::Begin("##rbsim-overlay", nullptr, flags)) {
+    ImGui::PushFont(titleFont_);
+    ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.35f, 1.0f), "%s", data.title.c_str());
+    ImGui::PopFont();
+    ImGui::PushFont(bodyFont_);
+    if (!data.caption.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.78f, 0.82f, 0.88f, 1.0f));
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + innerWidth);
+      ImGui::TextUnformatted(data.caption.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::PopStyleColor();
+    }
+    if (!data.rows.empty()) {
+      ImGui::Separator();
+      if (ImGui::BeginTable("rows", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("label", ImGuiTableColumnFlags_WidthFixed, labelWidth + gap);
+        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+        for (const auto& [label, value] : data.rows) {
+          ImGui::TableNextRow();
+          ImGui::TableSetColumnIndex(0);
+          ImGui::TextColored(ImVec4(0.70f, 0.76f, 0.84f, 1.0f), "%s", label.c_str());
+          ImGui::TableSetColumnIndex(1);
+          // Right-aligned: with a monospace font, same-precision numbers line up on the point.
+          const float free = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(value.c_str()).x;
+          if (free > 0.0f) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + free);
+          ImGui::TextUnformatted(value.c_str());
+        }
+        ImGui::EndTable();
+      }
+    }
+    ImGui::PopFont();
+  }
+  ImGui::End();
+  ImGui::Render();
+
+  // The OpenGL2 backend predates shaders and buffer objects: with a program or an array buffer
+  // bound, its client-side vertex pointers would be misread. It saves and restores the rest.
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glUseProgram(0);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glActiveTexture(GL_TEXTURE0);
+  ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace rbsim::render

@@ -1,0 +1,33 @@
+#pragma once
+// The text panel drawn over the 3D image: Dear ImGui (Debian's 1.86) with its OpenGL2 backend
+// and no platform backend (there is no window and no input; we set display size and time step).
+#include "frame_data.h"
+
+struct ImGuiContext;
+struct ImFont;
+
+namespace rbsim::render {
+
+class Overlay {
+ public:
+  // Needs a current GL compatibility context. Font size follows the image height; DejaVu Sans
+  // Mono is used when installed (monospace, so number columns line up), else ImGui's own font.
+  Overlay(int width, int height);
+  ~Overlay();
+  Overlay(const Overlay&) = delete;
+  Overlay& operator=(const Overlay&) = delete;
+
+  // Draws a fixed-size, fixed-position panel at the top left into framebuffer 0. Fixed size,
+  // because ImGui hides an auto-sized window on its first frame (DESIGN.md). Leaves no program,
+  // vertex array or buffer bound; the GL renderer sets everything else it needs each frame.
+  void draw(const OverlayData& data, float deltaSeconds);
+
+ private:
+  int width_;
+  int height_;
+  ImGuiContext* context_ = nullptr;
+  ImFont* bodyFont_ = nullptr;
+  ImFont* titleFont_ = nullptr;
+};
+
+}  // namespace rbsim::render

@@ -1,0 +1,43 @@
+#pragma once
+// CPU side of a frame: turns FrameData into flat vertex arrays the GL renderer uploads as they are.
+// Kept free of GL so the geometry rules (flat normals, feature edges, arrow shapes) are plain C++.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "frame_data.h"
+
+namespace rbsim::render {
+
+struct MeshVertex {
+  glm::vec3 position;
+  glm::vec3 normal;  // the triangle's own normal, repeated on its 3 vertices: flat shading
+  glm::vec3 color;   // linear RGB
+};
+
+struct LineVertex {
+  glm::vec3 position;
+  glm::vec4 color;  // linear RGB + alpha
+};
+
+struct SceneGeometry {
+  std::vector<MeshVertex> bodies;      // every body's triangles, 3 vertices each, not indexed
+  std::vector<MeshVertex> arrowHeads;  // cones at the tips of the force arrows
+  std::vector<LineVertex> edges;       // feature edges (creases, open borders) of every body
+  std::vector<LineVertex> highlight;   // the selected body's feature edges, drawn brighter
+  std::vector<LineVertex> axes;        // body axes: red x, green y, blue z (columns of R)
+  std::vector<LineVertex> forceShafts; // force arrows from the application point to the head
+  void clear();
+};
+
+// Fills `out` (reusing its capacity) from one frame. Triangle indices outside a body's vertex list
+// are skipped rather than trusted, since they come from a mesh file.
+void buildSceneGeometry(const FrameData& frame, SceneGeometry& out);
+
+// Colours shared by the geometry and the tests (linear RGB).
+inline constexpr glm::vec3 kAxisColors[3] = {
+    {0.90f, 0.10f, 0.08f}, {0.15f, 0.75f, 0.12f}, {0.10f, 0.30f, 1.00f}};
+inline constexpr glm::vec3 kForceColor{1.00f, 0.78f, 0.05f};
+inline constexpr glm::vec3 kHighlightColor{1.00f, 1.00f, 1.00f};
+
+}  // namespace rbsim::render

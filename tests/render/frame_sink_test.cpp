@@ -1,0 +1,149 @@
+// Frame output: the MP4 must be what ffprobe calls a 10-frame H.264 yuv420p video of the right
+// size, PNGs must decode to exactly the submitted pixels, and failures must be clear errors.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>  // implementation is in Debian's libstb, linked via rbsim_render
+
+#include "render/frame_sink.h"
+#include "render/offscreen_renderer.h"
+#include "render/render_error.h"
+#include "render_test_util.h"
+
+namespace rbsim::render::test {
+namespace {
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+constexpr int kFrames = 10;
+
+bool onPath(const std::string& program) {
+  return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+std::string runCommand(const std::string& command) {
+  std::string output;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return output;
+  char buffer[256];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+  pclose(pipe);
+  while (!output.empty() && (output.back() == '\n' || output.back() == '\r')) output.pop_back();
+  return output;
+}
+
+// Sets an environment variable for one scope.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old, had_ = true;
+    setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnv() { had_ ? setenv(name_, old_.c_str(), 1) : unsetenv(name_); }
+
+ private:
+  const char* name_;
+  std::string old_;
+  bool had_ = false;
+};
+
+TEST(FrameSink, TenFramesBecomeAnH264VideoAndLosslessPngs) {
+  if (!onPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
+  TempDir dir;
+  const auto video = dir.path() / "nested" / "folder" / "run.mp4";  // parents do not exist yet
+  const auto pngs = dir.path() / "frames";
+  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  std::vector<std::uint8_t> firstImage;
+  {
+    FrameSink sink(SinkOptions{pngs, video, 30, kWidth, kHeight});
+    FrameData frame;
+    frame.options.overlay = false;
+    for (int i = 0; i < kFrames; ++i) {
+      frame.bodies = {makeBox({0.2f * i, 0.5f, 0.0f}, glm::vec3(0.5f), glm::mat3(1.0f),
+                              {0.8f, 0.5f, 0.2f})};
+      const std::vector<std::uint8_t>& image = renderer.render(frame);
+      if (i == 0) firstImage = image;
+      sink.submit(image);
+    }
+    sink.finish();
+    EXPECT_EQ(sink.timing().frames, kFrames);
+    EXPECT_GT(sink.timing().pngMs, 0.0);
+    EXPECT_GT(sink.timing().videoMs, 0.0);
+  }
+  ASSERT_TRUE(std::filesystem::exists(video));
+
+  for (int i = 0; i < kFrames; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06d.png", i);
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load((pngs / name).c_str(), &w, &h, &channels, 4);
+    ASSERT_NE(pixels, nullptr) << name << ": " << stbi_failure_reason();
+    EXPECT_EQ(w, kWidth);
+    EXPECT_EQ(h, kHeight);
+    if (i == 0) {
+      EXPECT_TRUE(std::equal(firstImage.begin(), firstImage.end(), pixels))
+          << "PNG is lossless: frame 0 must decode to the rendered bytes";
+    }
+    stbi_image_free(pixels);
+  }
+  EXPECT_FALSE(std::filesystem::exists(pngs / "frame_000010.png"));
+
+  if (!onPath("ffprobe")) GTEST_SKIP() << "ffprobe is not installed; PNGs checked, video not";
+  // ffprobe prints the entries in its own order: codec_name, width, height, pix_fmt, frames.
+  const std::string probe = runCommand(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,nb_read_frames,width,height,pix_fmt -of csv=p=0 '" +
+      video.string() + "'");
+  EXPECT_EQ(probe, "h264,320,240,yuv420p,10");
+}
+
+TEST(FrameSink, MissingFfmpegIsAnErrorBeforeAnyFrame) {
+  TempDir dir;
+  ScopedEnv path("PATH", dir.path().string());  // an empty folder: no ffmpeg on PATH
+  try {
+    FrameSink sink(SinkOptions{std::nullopt, dir.path() / "out.mp4", 30, kWidth, kHeight});
+    FAIL() << "expected RenderError";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("ffmpeg"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FrameSink, UnwritableFolderIsAnErrorNamingThePath) {
+  TempDir dir;
+  const auto blocker = dir.path() / "a_file";
+  std::ofstream(blocker) << "not a folder";
+  const auto pngs = blocker / "frames";
+  try {
+    FrameSink sink(SinkOptions{pngs, std::nullopt, 30, kWidth, kHeight});
+    FAIL() << "expected RenderError";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find(pngs.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(FrameSink, FfmpegFailureIsReportedByFinish) {
+  if (!onPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
+  TempDir dir;
+  // No muxer is named by this extension, so ffmpeg exits with an error.
+  FrameSink sink(SinkOptions{std::nullopt, dir.path() / "out.not_a_format", 30, 16, 16});
+  try {
+    for (int i = 0; i < 3; ++i) sink.submit(std::vector<std::uint8_t>(16 * 16 * 4, 128));
+    sink.finish();
+    FAIL() << "expected RenderError";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("ffmpeg"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FrameSink, WrongImageSizeIsRejected) {
+  TempDir dir;
+  FrameSink sink(SinkOptions{dir.path(), std::nullopt, 30, kWidth, kHeight});
+  EXPECT_THROW(sink.submit(std::vector<std::uint8_t>(10)), RenderError);
+}
+
+}  // namespace
+}  // namespace rbsim::render::test

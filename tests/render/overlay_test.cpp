@@ -1,0 +1,72 @@
+// The overlay panel must be in the very first frame (ImGui hides auto-sized windows on their
+// first frame; the panel has a fixed size to avoid that) and must contain legible text.
+#include <gtest/gtest.h>
+
+#include "render/offscreen_renderer.h"
+#include "render_test_util.h"
+
+namespace rbsim::render::test {
+namespace {
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+
+// Text is near-white (values), light grey-blue (labels) or gold (title); the sky behind the
+// panel's top-left corner is dark blue, the panel itself near-black.
+bool isTextColoured(const Rgb& p) {
+  const bool light = p.r > 160 && p.g > 160 && p.b > 160;
+  const bool gold = p.r > 190 && p.g > 150 && p.b < 140;
+  return light || gold;
+}
+
+FrameData overlayFrame(bool overlay) {
+  FrameData frame;
+  frame.bodies.push_back(makeBox({0.0f, 0.5f, 0.0f}, glm::vec3(0.5f), glm::mat3(1.0f),
+                                 {0.8f, 0.5f, 0.2f}));
+  frame.options.overlay = overlay;
+  frame.overlay.title = "Demo 2";
+  frame.overlay.caption = "overlay test";
+  frame.overlay.rows = {{"t [s]", "1.250"}, {"KE [J]", "12.345"}};
+  return frame;
+}
+
+TEST(Overlay, PanelWithTextOnTheFirstFrame) {
+  std::vector<std::uint8_t> with, without;
+  {
+    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    with = renderer.render(overlayFrame(true));  // frame 1 of this renderer
+    // The overlay must leave no GL state behind that changes the next frame.
+    EXPECT_TRUE(renderer.render(overlayFrame(true)) == with) << "frame 2 differs from frame 1";
+  }
+  {
+    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    without = renderer.render(overlayFrame(false));
+  }
+  // The panel starts a few pixels from the top-left corner; look at the part where the title
+  // and the first rows are, whatever the exact font metrics.
+  int changed = 0, text = 0, textWithout = 0, total = 0;
+  for (int y = 10; y < 50; ++y) {
+    for (int x = 10; x < 100; ++x) {
+      const Rgb a = pixelAt(with, kWidth, x, y);
+      const Rgb b = pixelAt(without, kWidth, x, y);
+      ++total;
+      if (std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b) > 12) ++changed;
+      if (isTextColoured(a)) ++text;
+      if (isTextColoured(b)) ++textWithout;
+    }
+  }
+  EXPECT_GT(changed, total / 2) << "the panel background should cover the region";
+  EXPECT_GT(text, 40) << "title and row text should be drawn";
+  EXPECT_EQ(textWithout, 0) << "the same region without overlay has no text-like pixels";
+  // Far from the panel nothing changes: the overlay does not disturb the 3D image.
+  for (int y = kHeight - 40; y < kHeight; ++y) {
+    for (int x = kWidth - 40; x < kWidth; ++x) {
+      const Rgb a = pixelAt(with, kWidth, x, y);
+      const Rgb b = pixelAt(without, kWidth, x, y);
+      ASSERT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b) << "at " << x << "," << y;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rbsim::render::test
