@@ -138,13 +138,13 @@ void GlRenderer::createMultisampleTarget() {
 void GlRenderer::upload(const SceneGeometry& g) {
   // Bodies first, arrow heads after: the body range starts at vertex 0 and every range is a
   // multiple of 3, which mesh.vert's gl_VertexID % 3 (wireframe corners) relies on.
-  std::vector<MeshVertex> meshes;
-  meshes.reserve(g.bodies.size() + g.arrowHeads.size());
+  std::vector<MeshVertex>& meshes = meshStaging_;
+  meshes.clear();
   appendTo(meshes, g.bodies);
   appendTo(meshes, g.arrowHeads);
   headsFirst_ = static_cast<GLint>(g.bodies.size());
-  std::vector<LineVertex> lines;
-  lines.reserve(g.edges.size() + g.highlight.size() + g.axes.size() + g.forceShafts.size());
+  std::vector<LineVertex>& lines = lineStaging_;
+  lines.clear();
   appendTo(lines, g.edges);
   highlightFirst_ = static_cast<GLint>(lines.size());
   appendTo(lines, g.highlight);
@@ -182,7 +182,9 @@ void GlRenderer::drawSky(const FrameData& frame, const glm::mat4& viewProj) {
 
 void GlRenderer::drawGround(const FrameData& frame, const glm::mat4& viewProj) {
   const Camera& cam = frame.camera;
-  const float halfSize = 0.65f * cam.farPlane;  // its far corners stay inside the far plane
+  // Corners at 0.92 of the far distance: inside the far plane for any sensible eye height, and
+  // the ground has faded into the horizon colour long before, so its edge never shows.
+  const float halfSize = 0.65f * cam.farPlane;
   const float viewDistance = glm::length(cam.eye - cam.target);
   const float fadeEnd = 0.95f * halfSize;
   glEnable(GL_DEPTH_TEST);

@@ -4,6 +4,7 @@
 // axes and force arrows. Multisampled into an off-screen framebuffer, then resolved.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -58,7 +59,10 @@ class GlRenderer {
   GLuint meshVao_ = 0, meshVbo_ = 0;
   GLuint lineVao_ = 0, lineVbo_ = 0;
   GLuint fbo_ = 0, colorRb_ = 0, depthRb_ = 0;
-  SceneGeometry geometry_;  // reused every frame to avoid reallocations
+  // Reused every frame so steady-state frames allocate nothing.
+  SceneGeometry geometry_;
+  std::vector<MeshVertex> meshStaging_;  // bodies then arrow heads, as uploaded
+  std::vector<LineVertex> lineStaging_;  // edges, highlight, axes, shafts, as uploaded
   // Offsets (in vertices) of each group inside the two vertex buffers, set by upload().
   GLint headsFirst_ = 0;
   GLint highlightFirst_ = 0, axesFirst_ = 0, shaftsFirst_ = 0;

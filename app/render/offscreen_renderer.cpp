@@ -1,12 +1,14 @@
 #include "offscreen_renderer.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
 #include "gl_renderer.h"
 #include "osmesa_context.h"
 #include "overlay.h"
+#include "render_error.h"
 
 namespace rbsim::render {
 
@@ -59,6 +61,13 @@ const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& fram
   if (frame.options.overlay) d.overlay.draw(frame.overlay, 1.0f / 30.0f);
   glFinish();  // OSMesa's buffer holds the image only once GL has finished
   d.renderMs.add(millisecondsSince(start));
+  // A GL error here is a bug in this library, not bad input; fail loudly rather than write a
+  // subtly wrong video. (Mesa answers glGetError without a pipeline stall.)
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", error);
+    throw RenderError(std::string("OpenGL error ") + code + " while rendering a frame");
+  }
 
   // GL's first row is the bottom one; images and video want the top row first.
   const auto copyStart = std::chrono::steady_clock::now();

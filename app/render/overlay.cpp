@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 #include <backends/imgui_impl_opengl2.h>
 #include <imgui.h>
@@ -31,6 +32,31 @@ ImFont* loadFont(ImGuiIO& io, float sizePx) {
   ImFontConfig config;
   config.SizePixels = 13.0f * std::max(1.0f, std::round(sizePx / 13.0f));
   return io.Fonts->AddFontDefault(&config);
+}
+
+// Greedy word wrap at spaces only. ImGui's own wrapping also breaks after '.' and ',', which
+// tears numbers such as "1.5" across two lines.
+std::string wrapAtSpaces(const std::string& text, float maxWidth) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find_first_of(" \n", start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string candidate = line.empty() ? word : line + " " + word;
+    if (!line.empty() && ImGui::CalcTextSize(candidate.c_str()).x > maxWidth) {
+      out += line + "\n";
+      line = word;
+    } else {
+      line = candidate;
+    }
+    if (end < text.size() && text[end] == '\n') {
+      out += line + "\n";
+      line.clear();
+    }
+    start = end + 1;
+  }
+  return out + line;
 }
 
 void applyStyle() {
@@ -76,6 +102,7 @@ Overlay::~Overlay() {
 }
 
 void Overlay::draw(const OverlayData& data, float deltaSeconds) {
+  if (data.title.empty() && data.caption.empty() && data.rows.empty()) return;  // no empty box
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
@@ -98,9 +125,8 @@ void Overlay::draw(const OverlayData& data, float deltaSeconds) {
   ImGui::PopFont();
   const float maxInner = 0.45f * io.DisplaySize.x - 2.0f * style.WindowPadding.x;
   const float innerWidth = std::min(maxInner, std::max({tableWidth, titleSize.x, 12.0f * gap}));
-  const ImVec2 captionSize = data.caption.empty()
-                                 ? ImVec2(0.0f, 0.0f)
-                                 : ImGui::CalcTextSize(data.caption.c_str(), nullptr, false, innerWidth);
+  const std::string caption = wrapAtSpaces(data.caption, innerWidth);
+  const ImVec2 captionSize = ImGui::CalcTextSize(caption.c_str());
   const float lineHeight = ImGui::GetTextLineHeight();
   const float rowHeight = lineHeight + 2.0f * style.CellPadding.y;
   float contentHeight = titleSize.y;
@@ -125,9 +151,7 @@ void Overlay::draw(const OverlayData& data, float deltaSeconds) {
     ImGui::PushFont(bodyFont_);
     if (!data.caption.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.78f, 0.82f, 0.88f, 1.0f));
-      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + innerWidth);
-      ImGui::TextUnformatted(data.caption.c_str());
-      ImGui::PopTextWrapPos();
+      ImGui::TextUnformatted(caption.c_str());
       ImGui::PopStyleColor();
     }
     if (!data.rows.empty()) {

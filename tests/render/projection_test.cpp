@@ -2,7 +2,6 @@
 // glm::perspective * glm::lookAt says its centre and corners go.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -78,8 +77,10 @@ TEST(Projection, BoxLandsWhereTheCameraMathsSays) {
       maxY = std::max(maxY, y);
     }
   }
-  std::printf("projected corners x [%.1f, %.1f] y [%.1f, %.1f]; box pixels x [%d, %d] y [%d, %d]\n",
-              lo.x, hi.x, lo.y, hi.y, minX, maxX + 1, minY, maxY + 1);
+  SCOPED_TRACE(::testing::Message() << "projected corners x [" << lo.x << ", " << hi.x << "] y ["
+                                    << lo.y << ", " << hi.y << "]; box pixels x [" << minX
+                                    << ", " << maxX + 1 << "] y [" << minY << ", " << maxY + 1
+                                    << "]");
   EXPECT_NEAR(minX, lo.x, 2.0);
   EXPECT_NEAR(maxX + 1, hi.x, 2.0);
   EXPECT_NEAR(minY, lo.y, 2.0);
