@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct BadCase {
   std::vector<std::string> args;
   std::vector<std::string> expect;
 };
+
+// Names the case in test output instead of GoogleTest's byte dump.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
 
 std::vector<BadCase> loadCases() {
   std::ifstream in(std::string(RBSIM_BAD_DATA_DIR) + "/cases.json");
