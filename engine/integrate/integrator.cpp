@@ -1,5 +1,7 @@
 #include "integrate/integrator.h"
 
+#include <Eigen/LU>
+
 #include "math/rotation.h"
 
 namespace rbsim {
@@ -13,7 +15,59 @@ constexpr NamedIntegrator kIntegrators[] = {
     {Integrator::EulerMatrix, "euler-matrix"},
     {Integrator::EulerQuat, "euler-quat"},
     {Integrator::ExpMap, "expmap"},
+    {Integrator::SymplecticEuler, "symplectic-euler"},
+    {Integrator::Rk4, "rk4"},
+    {Integrator::ImplicitGyro, "implicit-gyro"},
 };
+
+// dY/dt of seed 004 "Rigid body representation": (v, 1/2 [0, omega] q, F, tau), with
+// omega = R(q) I_body^-1 R(q)^T L evaluated at the given state.
+struct Derivative {
+  Vec3 position;
+  Eigen::Vector4d orientation;  // (x, y, z, w), Eigen's coefficient order
+  Vec3 linearMomentum;
+  Vec3 angularMomentum;
+};
+
+Derivative derivative(const BodyState& y, const StepInputs& in) {
+  const Mat3 R = y.orientation.normalized().toRotationMatrix();
+  const Vec3 omega = R * in.inverseInertiaBody * R.transpose() * y.angularMomentum;
+  const Quat qdot = Quat(0.0, omega.x(), omega.y(), omega.z()) * y.orientation;
+  return {in.inverseMass * y.linearMomentum, 0.5 * qdot.coeffs(), in.force, in.torque};
+}
+
+BodyState advance(const BodyState& y, const Derivative& d, double h) {
+  BodyState out;
+  out.position = y.position + h * d.position;
+  out.orientation.coeffs() = y.orientation.coeffs() + h * d.orientation;
+  out.linearMomentum = y.linearMomentum + h * d.linearMomentum;
+  out.angularMomentum = y.angularMomentum + h * d.angularMomentum;
+  return out;
+}
+
+BodyState rk4Step(const BodyState& y, const StepInputs& in, double dt) {
+  const Derivative k1 = derivative(y, in);
+  const Derivative k2 = derivative(advance(y, k1, dt / 2), in);
+  const Derivative k3 = derivative(advance(y, k2, dt / 2), in);
+  const Derivative k4 = derivative(advance(y, k3, dt), in);
+  Derivative sum;
+  sum.position = k1.position + 2 * k2.position + 2 * k3.position + k4.position;
+  sum.orientation = k1.orientation + 2 * k2.orientation + 2 * k3.orientation + k4.orientation;
+  sum.linearMomentum = k1.linearMomentum + 2 * k2.linearMomentum + 2 * k3.linearMomentum + k4.linearMomentum;
+  sum.angularMomentum = k1.angularMomentum + 2 * k2.angularMomentum + 2 * k3.angularMomentum + k4.angularMomentum;
+  BodyState next = advance(y, sum, dt / 6);
+  next.orientation.normalize();  // the only projection: RK4 leaves |q| = 1 + O(dt^5)
+  return next;
+}
+
+// Catto 2015: solve I (w2 - w1) + dt w2 x (I w2) = 0 for the body-frame angular velocity w2 with
+// one Newton step from w1. Implicit in the gyroscopic term, so fast spins about unstable axes
+// cannot gain energy; it loses a little instead.
+Vec3 implicitGyroscopicOmega(const Vec3& omegaBody, const Mat3& inertia, double dt) {
+  const Vec3 residual = dt * omegaBody.cross(inertia * omegaBody);
+  const Mat3 jacobian = inertia + dt * (star(omegaBody) * inertia - star(inertia * omegaBody));
+  return omegaBody - jacobian.lu().solve(residual);
+}
 }  // namespace
 
 const char* integratorName(Integrator integrator) {
@@ -57,23 +111,68 @@ Quat expMapStep(const Quat& q, const Vec3& omega, double dt) {
   return (quatFromAxisAngle(dt * omega) * q).normalized();
 }
 
-BodyState integrate(Integrator integrator, const BodyState& y, const StepInputs& in, double dt) {
+namespace {
+
+// Seed 004 "Automatic state update": every derivative at t_n, the rotation by the chosen method.
+BodyState forwardEulerStep(Integrator integrator, const BodyState& y, const StepInputs& in, double dt) {
   BodyState next;
   next.position = y.position + dt * in.velocity;
-  switch (integrator) {
-    case Integrator::EulerMatrix:
-      next.orientation = Quat(eulerMatrixStep(in.rotation, in.angularVelocity, dt)).normalized();
-      break;
-    case Integrator::EulerQuat:
-      next.orientation = eulerQuatStep(y.orientation, in.angularVelocity, dt);
-      break;
-    case Integrator::ExpMap:
-      next.orientation = expMapStep(y.orientation, in.angularVelocity, dt);
-      break;
+  if (integrator == Integrator::EulerMatrix) {
+    next.orientation = Quat(eulerMatrixStep(in.rotation, in.angularVelocity, dt)).normalized();
+  } else if (integrator == Integrator::EulerQuat) {
+    next.orientation = eulerQuatStep(y.orientation, in.angularVelocity, dt);
+  } else {
+    next.orientation = expMapStep(y.orientation, in.angularVelocity, dt);
   }
   next.linearMomentum = y.linearMomentum + dt * in.force;
   next.angularMomentum = y.angularMomentum + dt * in.torque;
   return next;
+}
+
+// Semi-implicit Euler: momenta first, then x and q with the new v and omega = I^-1(t_n) L_{n+1}.
+// Without torque its rotation is expmap's; it differs from forward Euler under forces.
+BodyState symplecticStep(const BodyState& y, const StepInputs& in, double dt) {
+  BodyState next;
+  next.linearMomentum = y.linearMomentum + dt * in.force;
+  next.angularMomentum = y.angularMomentum + dt * in.torque;
+  const Vec3 omega = in.rotation * in.inverseInertiaBody * in.rotation.transpose() * next.angularMomentum;
+  next.position = y.position + dt * in.inverseMass * next.linearMomentum;
+  next.orientation = expMapStep(y.orientation, omega, dt);
+  return next;
+}
+
+// Catto 2015: explicit torque, implicit gyroscopic term in the body frame, then the rotation by
+// the new omega. Catto keeps omega, not L, across the rotation; with omega_body = w2 fixed the
+// kinetic energy w2.I w2/2 is exactly what the implicit step left, which never exceeds the
+// energy before it: spins about the intermediate axis cannot gain energy.
+BodyState implicitGyroStep(const BodyState& y, const StepInputs& in, double dt) {
+  BodyState next;
+  next.linearMomentum = y.linearMomentum + dt * in.force;
+  next.position = y.position + dt * in.inverseMass * next.linearMomentum;
+  const Vec3 angularMomentum = y.angularMomentum + dt * in.torque;
+  const Vec3 omegaBody = in.inverseInertiaBody * (in.rotation.transpose() * angularMomentum);
+  const Vec3 omegaBodyNext = implicitGyroscopicOmega(omegaBody, in.inertiaBody, dt);
+  next.orientation = expMapStep(y.orientation, in.rotation * omegaBodyNext, dt);
+  next.angularMomentum = next.orientation.toRotationMatrix() * (in.inertiaBody * omegaBodyNext);
+  return next;
+}
+
+}  // namespace
+
+BodyState integrate(Integrator integrator, const BodyState& y, const StepInputs& in, double dt) {
+  switch (integrator) {
+    case Integrator::EulerMatrix:
+    case Integrator::EulerQuat:
+    case Integrator::ExpMap:
+      return forwardEulerStep(integrator, y, in, dt);
+    case Integrator::SymplecticEuler:
+      return symplecticStep(y, in, dt);
+    case Integrator::ImplicitGyro:
+      return implicitGyroStep(y, in, dt);
+    case Integrator::Rk4:
+      return rk4Step(y, in, dt);
+  }
+  return y;
 }
 
 }  // namespace rbsim

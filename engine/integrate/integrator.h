@@ -1,6 +1,7 @@
 #pragma once
 // Time integrators for the rigid-body state Y = (x, q, P, L) (seed 004 "Automatic state update",
-// seed 000 "forward Euler"). All three are explicit: every derivative is taken at t_n.
+// seed 000 "forward Euler"), and better ones. Forces and torques are those accumulated at t_n and
+// are held over the step (exact for torque-free motion and constant forces).
 #include <string>
 #include <vector>
 
@@ -14,6 +15,11 @@ enum class Integrator {
   EulerQuat,    // q += dt/2 [0, omega] q, then renormalise (seed 001 "quaternions")
   ExpMap,       // q = exp(dt omega / 2) q: the exact rotation by angle |omega| dt (seed 004
                 // "alternatives": rotation about an arbitrary axis)
+  SymplecticEuler,  // momenta first, then x and q (expmap) with the new v and omega
+                    // (Hairer, Lubich, Wanner, "Geometric Numerical Integration", VI.3)
+  Rk4,              // classical Runge-Kutta 4 on (x, q, P, L), q renormalised once per step
+  ImplicitGyro,     // body-frame implicit gyroscopic step, one Newton iteration, then expmap
+                    // (Catto, "Numerical Methods", GDC 2015)
 };
 
 const char* integratorName(Integrator integrator);
@@ -27,15 +33,18 @@ Quat expMapStep(const Quat& q, const Vec3& omega, double dt);
 
 // The quantities at t_n an explicit step needs besides the state itself.
 struct StepInputs {
-  Vec3 velocity;         // v = P / m [m/s]
-  Vec3 angularVelocity;  // omega = I^-1 L [rad/s]
-  Mat3 rotation;         // R(q) (used by the matrix method)
-  Vec3 force;            // net F [N]
-  Vec3 torque;           // net tau about x [N m]
+  Vec3 velocity;             // v = P / m [m/s]
+  Vec3 angularVelocity;      // omega = I^-1 L [rad/s]
+  Mat3 rotation;             // R(q)
+  Vec3 force;                // net F [N]
+  Vec3 torque;               // net tau about x [N m]
+  double inverseMass;        // 1 / m [1/kg]
+  Mat3 inertiaBody;          // I_body [kg m^2]
+  Mat3 inverseInertiaBody;   // I_body^-1
 };
 
-// Forward Euler on Y: x += dt v, orientation by the chosen rotation step, P += dt F,
-// L += dt tau (seed 004 "Applying force and torque").
+// One step of the chosen integrator. The first three are forward Euler: x += dt v, the rotation
+// step, P += dt F, L += dt tau (seed 004 "Applying force and torque").
 BodyState integrate(Integrator integrator, const BodyState& y, const StepInputs& in, double dt);
 
 }  // namespace rbsim

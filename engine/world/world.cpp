@@ -119,8 +119,9 @@ void World::accumulateForces() {
 void World::integrateBodies() {
   const double dt = settings_.timeStep;
   for (RigidBody& body : bodies_) {
-    const StepInputs in{body.velocity(), body.angularVelocity(), body.rotation(), body.force(),
-                        body.torque()};
+    const StepInputs in{body.velocity(), body.angularVelocity(), body.rotation(),
+                        body.force(),    body.torque(),          1.0 / body.mass(),
+                        body.inertiaBody(), body.inverseInertiaBody()};
     body.setState(integrate(settings_.integrator, body.state(), in, dt));
     body.clearAccumulators();
   }

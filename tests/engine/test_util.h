@@ -26,9 +26,18 @@ inline std::string dataPath(const std::string& name) {
   return std::string(RBSIM_TEST_DATA_DIR) + "/" + name;
 }
 
+// The forward-Euler family of seed 004 (explicit in x, P, L; they differ in the rotation step).
+inline const std::vector<Integrator>& forwardEulerIntegrators() {
+  static const std::vector<Integrator> family = {Integrator::EulerMatrix, Integrator::EulerQuat,
+                                                 Integrator::ExpMap};
+  return family;
+}
+
+// Every integrator rbsim offers.
 inline const std::vector<Integrator>& allIntegrators() {
   static const std::vector<Integrator> all = {Integrator::EulerMatrix, Integrator::EulerQuat,
-                                              Integrator::ExpMap};
+                                              Integrator::ExpMap, Integrator::SymplecticEuler,
+                                              Integrator::Rk4, Integrator::ImplicitGyro};
   return all;
 }
 

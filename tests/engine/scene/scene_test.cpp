@@ -184,7 +184,7 @@ TEST(ParseScene, NonOrthonormalMatrix) {
 
 TEST(ParseScene, UnknownIntegratorListsTheValidNames) {
   json doc = minimalScene();
-  doc["world"]["integrator"] = "rk4";
+  doc["world"]["integrator"] = "verlet";
   const InputError e = parseError(doc);
   EXPECT_EQ(e.field(), "world.integrator");
   for (const std::string& name : integratorNames()) EXPECT_TRUE(contains(e.problem(), name)) << e.what();
@@ -259,7 +259,7 @@ TEST_F(SceneFiles, OverridesApplyBeforeChecking) {
   EXPECT_EQ(scene.bodies[0].mass, 3.0);
   EXPECT_TRUE(allNear(scene.bodies[0].velocity, Vec3(1, 2, 3), 0.0));
   try {
-    loadScene(path, {"world.integrator=rk4"});
+    loadScene(path, {"world.integrator=verlet"});
     FAIL() << "an override is validated like the file";
   } catch (const InputError& e) {
     EXPECT_EQ(e.field(), "world.integrator");
