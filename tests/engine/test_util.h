@@ -14,6 +14,7 @@
 #include "integrate/integrator.h"
 #include "mass/mass_properties.h"
 #include "math/types.h"
+#include "world/world.h"
 
 namespace rbsim {
 // Test names and messages show "expmap", not the enum's bytes.
@@ -74,6 +75,15 @@ testing::AssertionResult allNear(const Eigen::MatrixBase<DA>& a, const Eigen::Ma
   const Eigen::IOFormat fmt(Eigen::FullPrecision, 0, ", ", "; ", "", "", "[", "]");
   return testing::AssertionFailure() << "max |a - b| = " << err << " > " << tol
                                      << "\n  a = " << a.format(fmt) << "\n  b = " << b.format(fmt);
+}
+
+// An empty World stepping with the given integrator, time step [s] and gravity [m/s^2].
+inline World worldWith(Integrator integrator, double dt, const Vec3& gravity) {
+  Settings s;
+  s.integrator = integrator;
+  s.timeStep = dt;
+  s.gravity = gravity;
+  return World(s);
 }
 
 }  // namespace rbsim::test

@@ -17,14 +17,7 @@ namespace rbsim {
 namespace {
 
 using test::boxDef;
-
-World worldWith(Integrator integrator, double dt, const Vec3& gravity) {
-  Settings s;
-  s.integrator = integrator;
-  s.timeStep = dt;
-  s.gravity = gravity;
-  return World(s);
-}
+using test::worldWith;
 
 // Free fall from x0 with v0 after n steps of dt; t = n dt.
 Vec3 fallAfter(Integrator integrator, const Vec3& x0, const Vec3& v0, double dt, int n) {

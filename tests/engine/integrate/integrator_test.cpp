@@ -28,6 +28,7 @@ namespace {
 
 using test::allNear;
 using test::boxDef;
+using test::worldWith;
 
 // Exact turn of one step of each method about a body axis, and the bound on its truncation
 // error per step, h - stepAngle <= truncation(h) (alternating series with decreasing terms).
@@ -46,14 +47,6 @@ double truncationPerStep(Integrator integrator, double h) {
     case Integrator::EulerMatrix: return h * h * h / 3.0;
     default: return NAN;
   }
-}
-
-World worldWith(Integrator integrator, double dt, const Vec3& gravity) {
-  Settings s;
-  s.integrator = integrator;
-  s.timeStep = dt;
-  s.gravity = gravity;
-  return World(s);
 }
 
 class EachIntegrator : public testing::TestWithParam<Integrator> {};
