@@ -23,6 +23,9 @@ RigidBody::RigidBody(const BodyDef& def)
       !(eig.eigenvalues().minCoeff() > 0.0)) {
     throw std::invalid_argument("body '" + name_ + "': inertia tensor must be symmetric positive definite");
   }
+  principalMoments_ = eig.eigenvalues();
+  principalAxes_ = eig.eigenvectors();
+  if (principalAxes_.determinant() < 0.0) principalAxes_.col(2) *= -1.0;  // a rotation, not a reflection
   inverseMass_ = 1.0 / mass_;
   inverseInertiaBody_ = inertiaBody_.inverse();
   worldVertices_.resize(mesh_->vertices.size());
@@ -40,6 +43,7 @@ void RigidBody::setState(const BodyState& state) {
 
 void RigidBody::setPosition(const Vec3& x) {
   state_.position = x;
+  wake();
   updateDerived();
 }
 
@@ -50,6 +54,7 @@ void RigidBody::setOrientation(const Mat3& R) {
   // Angular momentum is a world-frame quantity: turning the body by hand keeps L, so omega
   // changes with the world inertia, exactly as for an instantaneous re-pose of a real body.
   state_.orientation = Quat(R).normalized();
+  wake();
   updateDerived();
 }
 
@@ -58,16 +63,19 @@ void RigidBody::setOrientation(const Quat& q) {
     throw std::invalid_argument("body '" + name_ + "': orientation quaternion is not unit length");
   }
   state_.orientation = q.normalized();
+  wake();
   updateDerived();
 }
 
 void RigidBody::setVelocity(const Vec3& v) {
   state_.linearMomentum = mass_ * v;
+  wake();
   updateDerived();
 }
 
 void RigidBody::setAngularVelocity(const Vec3& omega) {
   state_.angularMomentum = inertiaWorld() * omega;
+  wake();
   updateDerived();
 }
 
@@ -91,6 +99,18 @@ void RigidBody::applyTorque(const Vec3& torque) { torque_ += torque; }
 void RigidBody::clearAccumulators() {
   force_.setZero();
   torque_.setZero();
+}
+
+void RigidBody::wake() {
+  awake_ = true;
+  restingTime_ = 0.0;
+}
+
+void RigidBody::sleep() {
+  awake_ = false;
+  state_.linearMomentum.setZero();
+  state_.angularMomentum.setZero();
+  updateDerived();
 }
 
 void RigidBody::updateDerived() {

@@ -61,6 +61,18 @@ class RigidBody {
   const Vec3& torque() const { return torque_; }
   void clearAccumulators();
 
+  // Sleeping (World's UpdateSleep stage). A sleeping body has zero momenta and is not integrated.
+  // Every manual set above wakes it; setState does not (it is the integrators' path).
+  bool awake() const { return awake_; }
+  double restingTime() const { return restingTime_; }  // [s] spent below the sleep speeds
+  void setRestingTime(double seconds) { restingTime_ = seconds; }
+  void wake();
+  void sleep();  // P = L = 0, so the state read back is the state the body keeps
+
+  // Principal axes: I_body = E diag(principalMoments) E^T with E a rotation (det +1).
+  const Vec3& principalMoments() const { return principalMoments_; }  // ascending [kg m^2]
+  const Mat3& principalAxes() const { return principalAxes_; }        // E, columns in body frame
+
  private:
   void updateDerived();
 
@@ -71,6 +83,8 @@ class RigidBody {
   Mat3 inertiaBody_ = Mat3::Identity();
   Mat3 inverseInertiaBody_ = Mat3::Identity();
   Vec3 color_ = Vec3::Ones();
+  Vec3 principalMoments_ = Vec3::Ones();
+  Mat3 principalAxes_ = Mat3::Identity();
 
   BodyState state_;
 
@@ -82,6 +96,9 @@ class RigidBody {
 
   Vec3 force_ = Vec3::Zero();
   Vec3 torque_ = Vec3::Zero();
+
+  bool awake_ = true;
+  double restingTime_ = 0.0;
 };
 
 // Tolerance for accepting a matrix or quaternion as a rotation: ||R^T R - I||_F and | |q| - 1 |.

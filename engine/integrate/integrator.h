@@ -20,6 +20,8 @@ enum class Integrator {
   Rk4,              // classical Runge-Kutta 4 on (x, q, P, L), q renormalised once per step
   ImplicitGyro,     // body-frame implicit gyroscopic step, one Newton iteration, then expmap
                     // (Catto, "Numerical Methods", GDC 2015)
+  Dlm,              // symplectic splitting of the free rigid body, torque as half kicks
+                    // (Dullweber, Leimkuhler, McLachlan, J. Chem. Phys. 107, 5840, 1997)
 };
 
 const char* integratorName(Integrator integrator);
@@ -41,6 +43,8 @@ struct StepInputs {
   double inverseMass;        // 1 / m [1/kg]
   Mat3 inertiaBody;          // I_body [kg m^2]
   Mat3 inverseInertiaBody;   // I_body^-1
+  Vec3 principalMoments;     // I_body = E diag(principalMoments) E^T [kg m^2]
+  Mat3 principalAxes;        // E, a rotation; its columns are the principal axes in body frame
 };
 
 // One step of the chosen integrator. The first three are forward Euler: x += dt v, the rotation

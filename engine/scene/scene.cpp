@@ -164,13 +164,16 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
   if (root.has("world")) {
-    const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps"});
+    const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep"});
     scene.settings.gravity = w.vec3("gravity", scene.settings.gravity);
     scene.settings.timeStep = w.positiveNumber("dt", scene.settings.timeStep);
-    if (scene.settings.timeStep > kMaxTimeStep) {
-      w.fail("dt", "a time step of " + std::to_string(scene.settings.timeStep) + " s is absurd; expected at most " +
-                       std::to_string(kMaxTimeStep) + " s");
+    if (scene.settings.timeStep > kMaxTimeStep || scene.settings.timeStep < kMinTimeStep) {
+      std::ostringstream expected;
+      expected << "a time step of " << scene.settings.timeStep << " s is absurd; expected one in [" << kMinTimeStep
+               << ", " << kMaxTimeStep << "] s";
+      w.fail("dt", expected.str());
     }
+    scene.settings.allowSleep = w.boolean("sleep", scene.settings.allowSleep);
     const std::string integrator = w.string("integrator", integratorName(scene.settings.integrator));
     if (!parseIntegrator(integrator, scene.settings.integrator)) {
       std::string names;

@@ -1,6 +1,8 @@
 #pragma once
 // Every tuning value of a World, with its default and unit (as qu3e's q3Settings.h and Jolt's
 // PhysicsSettings). Scenes and `--set world.KEY=VALUE` override them.
+#include <string>
+
 #include "integrate/integrator.h"
 #include "mass/mass_properties.h"
 #include "math/types.h"
@@ -10,12 +12,32 @@ namespace rbsim {
 // A step longer than this is rejected as absurd: at 0.1 s a body falling for one second moves
 // ~1 m per step, beyond anything a rigid-body scene at human scale resolves.
 inline constexpr double kMaxTimeStep = 0.1;  // [s]
+// A step shorter than this is rejected too: one simulated second would take over a million steps,
+// and the increments dt v fall towards the rounding of positions of order 1 m.
+inline constexpr double kMinTimeStep = 1e-6;  // [s]
 
 struct Settings {
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);      // [m/s^2], y is up
-  double timeStep = 1.0 / 240.0;             // dt [s], in (0, kMaxTimeStep]
+  double timeStep = 1.0 / 240.0;             // dt [s], in [kMinTimeStep, kMaxTimeStep]
   Integrator integrator = Integrator::ExpMap;
   InertiaMethod inertia = InertiaMethod::Exact;  // default for bodies that do not choose
+
+  // Sleeping (Box2D's b2_linearSleepTolerance, b2_angularSleepTolerance, b2_timeToSleep): a body
+  // slower than both speeds for timeToSleep is put to sleep (its momenta set to zero) and is not
+  // integrated until a pose event, a scripted force or a contact wakes it. Under gravity g a
+  // free body stays below sleepLinearSpeed for at most 2 sleepLinearSpeed / |g| (2 ms at 9.81),
+  // far less than timeToSleep, so free flight never sleeps.
+  bool allowSleep = true;
+  double sleepLinearSpeed = 0.01;    // [m/s]
+  double sleepAngularSpeed = 0.035;  // [rad/s], 2 degrees per second
+  double timeToSleep = 0.5;          // [s]
+
+  // false runs every stage of World::step every step, needed or not: it exists to measure what
+  // skipping saves (bench/stage_skip_bench.cpp), never to change results.
+  bool skipIdleStages = true;
 };
+
+// Empty when the settings are usable; otherwise what is wrong, naming the field.
+std::string checkSettings(const Settings& settings);
 
 }  // namespace rbsim

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "integrate/integrator.h"
+#include "world/simulation_error.h"
 
 namespace rbsim {
 
@@ -22,6 +24,11 @@ std::pair<Vec3, Vec3> inWorldFrame(const ScriptedForce& f, const RigidBody& body
   return {point, force};
 }
 
+bool isFinite(const BodyState& s) {
+  return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
+         s.angularMomentum.allFinite();
+}
+
 }  // namespace
 
 const char* stageName(Stage stage) {
@@ -29,18 +36,15 @@ const char* stageName(Stage stage) {
     case Stage::ApplyPoseEvents: return "apply-pose-events";
     case Stage::AccumulateForces: return "accumulate-forces";
     case Stage::Integrate: return "integrate";
+    case Stage::UpdateSleep: return "update-sleep";
     case Stage::Count: break;
   }
   return "unknown";
 }
 
 World::World(const Settings& settings) : settings_(settings) {
-  const double dt = settings_.timeStep;
-  if (!std::isfinite(dt) || dt <= 0.0 || dt > kMaxTimeStep) {
-    throw std::invalid_argument("time step " + std::to_string(dt) + " s is outside (0, " +
-                                std::to_string(kMaxTimeStep) + "] s");
-  }
-  if (!settings_.gravity.allFinite()) throw std::invalid_argument("gravity must be finite");
+  const std::string problem = checkSettings(settings_);
+  if (!problem.empty()) throw std::invalid_argument(problem);
 }
 
 std::size_t World::addBody(const BodyDef& def) {
@@ -63,7 +67,7 @@ void World::addPoseEvent(const PoseEvent& event) {
 template <typename Fn>
 void World::runStage(Stage stage, bool needed, Fn&& fn) {
   StageStats& stats = stats_[static_cast<int>(stage)];
-  if (!needed) {
+  if (!needed && settings_.skipIdleStages) {
     ++stats.skipped;
     return;
   }
@@ -75,11 +79,16 @@ void World::runStage(Stage stage, bool needed, Fn&& fn) {
 
 void World::step() {
   const double t = time();
+  const bool anyAwake = std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); });
+  const bool anyForce = std::any_of(forces_.begin(), forces_.end(), [t](const ScriptedForce& f) { return isActive(f, t); });
   runStage(Stage::ApplyPoseEvents, !pendingEvents_.empty() && pendingEvents_.front().time <= t,
            [&] { applyPoseEvents(); });
-  runStage(Stage::AccumulateForces, !forces_.empty() || settings_.gravity != Vec3::Zero(),
+  runStage(Stage::AccumulateForces, anyForce || (anyAwake && settings_.gravity != Vec3::Zero()),
            [&] { accumulateForces(); });
-  runStage(Stage::Integrate, !bodies_.empty(), [&] { integrateBodies(); });
+  // Pose events and forces may have woken bodies.
+  const bool anyAwakeNow = anyAwake || std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); });
+  runStage(Stage::Integrate, anyAwakeNow, [&] { integrateBodies(); });
+  runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
   ++stepCount_;
 }
 
@@ -92,6 +101,7 @@ void World::applyPoseEvents() {
     if (due->orientation) body.setOrientation(*due->orientation);
     if (due->velocity) body.setVelocity(*due->velocity);
     if (due->angularVelocity) body.setAngularVelocity(*due->angularVelocity);
+    body.wake();  // an event setting nothing still marks the body as touched
   }
   pendingEvents_.erase(pendingEvents_.begin(), due);
 }
@@ -107,7 +117,12 @@ std::vector<std::pair<Vec3, Vec3>> World::activeForces(std::size_t body, double 
 
 void World::accumulateForces() {
   const double t = time();
-  for (RigidBody& body : bodies_) body.applyForce(body.mass() * settings_.gravity);
+  for (const ScriptedForce& f : forces_) {
+    if (isActive(f, t)) bodies_[f.body].wake();
+  }
+  for (RigidBody& body : bodies_) {
+    if (body.awake()) body.applyForce(body.mass() * settings_.gravity);
+  }
   for (const ScriptedForce& f : forces_) {
     if (!isActive(f, t)) continue;
     RigidBody& body = bodies_[f.body];
@@ -119,12 +134,41 @@ void World::accumulateForces() {
 void World::integrateBodies() {
   const double dt = settings_.timeStep;
   for (RigidBody& body : bodies_) {
-    const StepInputs in{body.velocity(), body.angularVelocity(), body.rotation(),
-                        body.force(),    body.torque(),          1.0 / body.mass(),
-                        body.inertiaBody(), body.inverseInertiaBody()};
-    body.setState(integrate(settings_.integrator, body.state(), in, dt));
+    if (!body.awake()) continue;
+    const StepInputs in{body.velocity(),         body.angularVelocity(),   body.rotation(),
+                        body.force(),            body.torque(),            1.0 / body.mass(),
+                        body.inertiaBody(),      body.inverseInertiaBody(), body.principalMoments(),
+                        body.principalAxes()};
+    const BodyState next = integrate(settings_.integrator, body.state(), in, dt);
+    if (!isFinite(next)) reportDivergence(body);
+    body.setState(next);
     body.clearAccumulators();
   }
+}
+
+void World::reportDivergence(const RigidBody& body) const {
+  const double dt = settings_.timeStep;
+  std::ostringstream message;
+  message << "body '" << body.name() << "' left the finite numbers at step " << stepCount_ << " (t = " << time()
+          << " s) with integrator " << integratorName(settings_.integrator) << " at dt = " << dt
+          << " s; before the step it turned " << body.angularVelocity().norm() * dt << " rad and moved "
+          << body.velocity().norm() * dt << " m per step. A smaller dt or a stabler integrator (dlm, expmap) is needed.";
+  throw SimulationError(message.str());
+}
+
+void World::updateSleep() {
+  const double dt = settings_.timeStep;
+  for (RigidBody& body : bodies_) {
+    if (!body.awake()) continue;
+    const bool slow = body.velocity().norm() < settings_.sleepLinearSpeed &&
+                      body.angularVelocity().norm() < settings_.sleepAngularSpeed;
+    body.setRestingTime(slow ? body.restingTime() + dt : 0.0);
+    if (body.restingTime() >= settings_.timeToSleep) body.sleep();
+  }
+}
+
+std::size_t World::awakeCount() const {
+  return static_cast<std::size_t>(std::count_if(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); }));
 }
 
 std::uint64_t World::stateHash() const {
@@ -145,6 +189,22 @@ std::uint64_t World::stateHash() const {
     for (int i = 0; i < 3; ++i) mix(s.angularMomentum[i]);
   }
   return hash;
+}
+
+std::string checkSettings(const Settings& s) {
+  std::ostringstream problem;
+  if (!std::isfinite(s.timeStep) || s.timeStep < kMinTimeStep || s.timeStep > kMaxTimeStep) {
+    problem << "dt: a time step of " << s.timeStep << " s is outside [" << kMinTimeStep << ", " << kMaxTimeStep << "] s";
+  } else if (!s.gravity.allFinite()) {
+    problem << "gravity: expected finite components";
+  } else if (!(s.sleepLinearSpeed >= 0.0) || !std::isfinite(s.sleepLinearSpeed)) {
+    problem << "sleep_linear_speed: expected a finite speed >= 0 m/s";
+  } else if (!(s.sleepAngularSpeed >= 0.0) || !std::isfinite(s.sleepAngularSpeed)) {
+    problem << "sleep_angular_speed: expected a finite speed >= 0 rad/s";
+  } else if (!(s.timeToSleep > 0.0) || !std::isfinite(s.timeToSleep)) {
+    problem << "time_to_sleep: expected a finite time > 0 s";
+  }
+  return problem.str();
 }
 
 }  // namespace rbsim

@@ -16,7 +16,8 @@ namespace rbsim {
 enum class Stage : int {
   ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step
   AccumulateForces,  // gravity and scripted forces into F and tau
-  Integrate,         // the chosen integrator advances (x, q, P, L); accumulators are cleared
+  Integrate,         // the chosen integrator advances awake bodies; accumulators are cleared
+  UpdateSleep,       // bodies slow for Settings::timeToSleep fall asleep
   Count
 };
 const char* stageName(Stage stage);
@@ -29,13 +30,14 @@ struct StageStats {
 
 class World {
  public:
-  explicit World(const Settings& settings);  // throws std::invalid_argument on a bad time step
+  explicit World(const Settings& settings);  // throws std::invalid_argument (checkSettings)
 
   std::size_t addBody(const BodyDef& def);
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
 
-  void step();  // advances by settings().timeStep
+  // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
+  void step();
 
   const Settings& settings() const { return settings_; }
   double time() const { return static_cast<double>(stepCount_) * settings_.timeStep; }
@@ -43,6 +45,7 @@ class World {
   std::vector<RigidBody>& bodies() { return bodies_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
+  std::size_t awakeCount() const;
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
 
   // The forces acting during the step that starts at time t, in world frame: (point, force).
@@ -56,6 +59,8 @@ class World {
   void applyPoseEvents();
   void accumulateForces();
   void integrateBodies();
+  void updateSleep();
+  [[noreturn]] void reportDivergence(const RigidBody& body) const;
 
   template <typename Fn>
   void runStage(Stage stage, bool needed, Fn&& fn);

@@ -38,7 +38,8 @@ inline const std::vector<Integrator>& forwardEulerIntegrators() {
 inline const std::vector<Integrator>& allIntegrators() {
   static const std::vector<Integrator> all = {Integrator::EulerMatrix, Integrator::EulerQuat,
                                               Integrator::ExpMap, Integrator::SymplecticEuler,
-                                              Integrator::Rk4, Integrator::ImplicitGyro};
+                                              Integrator::Rk4, Integrator::ImplicitGyro,
+                                              Integrator::Dlm};
   return all;
 }
 

@@ -56,6 +56,10 @@ bool expectedFor(const std::string& name, Expected& out) {
     out = {4, 1.0 / 100.0, 12.0, 20.0};
     return true;
   }
+  if (name == "dlm") {
+    out = {2, 1.0 / 100.0, 3.2, 4.8};
+    return true;
+  }
   for (const char* first : {"euler-matrix", "euler-quat", "expmap", "symplectic-euler", "implicit-gyro"}) {
     if (name == first) {
       out = {1, 1.0 / 1600.0, 1.6, 2.6};
