@@ -13,6 +13,7 @@
 #include "render/render_error.h"
 #include "run/runner.h"
 #include "scene/scene.h"
+#include "world/simulation_error.h"
 
 namespace {
 
@@ -131,6 +132,9 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const InputError& e) {
     std::fprintf(stderr, "rbsim: error: %s\n", e.what());
+    return 2;
+  } catch (const rbsim::SimulationError& e) {
+    std::fprintf(stderr, "rbsim: error: the simulation diverged: %s\n", e.what());
     return 2;
   } catch (const rbsim::render::RenderError& e) {
     std::fprintf(stderr, "rbsim: error: %s\n", e.what());

@@ -69,7 +69,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
       {"integrator", std::string(integratorName(world.settings().integrator)) + ", dt " +
                          formatNumber(world.settings().timeStep, "s")},
       {"body", body.name() + " (" + scene.inertiaMethods[view.selected] + " inertia, " +
-                   formatNumber(body.mass(), "kg") + ")"},
+                   formatNumber(body.mass(), "kg") + (body.awake() ? ")" : ", asleep)")},
       {"x", formatVec(body.position(), "m")},
       {"R row 1", formatVec(R.row(0).transpose(), "")},
       {"R row 2", formatVec(R.row(1).transpose(), "")},

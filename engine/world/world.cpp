@@ -140,19 +140,27 @@ void World::integrateBodies() {
                         body.inertiaBody(),      body.inverseInertiaBody(), body.principalMoments(),
                         body.principalAxes()};
     const BodyState next = integrate(settings_.integrator, body.state(), in, dt);
-    if (!isFinite(next)) reportDivergence(body);
+    if (!isFinite(next)) reportDivergence(body, next);
     body.setState(next);
     body.clearAccumulators();
   }
 }
 
-void World::reportDivergence(const RigidBody& body) const {
-  const double dt = settings_.timeStep;
+void World::reportDivergence(const RigidBody& body, const BodyState& next) const {
+  std::string quantities;
+  const auto add = [&quantities](bool finite, const char* name) {
+    if (!finite) quantities += (quantities.empty() ? "" : ", ") + std::string(name);
+  };
+  add(next.position.allFinite(), "position");
+  add(next.orientation.coeffs().allFinite(), "orientation");
+  add(next.linearMomentum.allFinite(), "linear momentum");
+  add(next.angularMomentum.allFinite(), "angular momentum");
   std::ostringstream message;
-  message << "body '" << body.name() << "' left the finite numbers at step " << stepCount_ << " (t = " << time()
-          << " s) with integrator " << integratorName(settings_.integrator) << " at dt = " << dt
-          << " s; before the step it turned " << body.angularVelocity().norm() * dt << " rad and moved "
-          << body.velocity().norm() * dt << " m per step. A smaller dt or a stabler integrator (dlm, expmap) is needed.";
+  message << "body '" << body.name() << "': " << quantities << " stopped being finite at step " << stepCount_
+          << " (t = " << time() << " s; integrator " << integratorName(settings_.integrator)
+          << ", dt = " << settings_.timeStep << " s). Before the step: |v| = " << body.velocity().stableNorm()
+          << " m/s, |omega| = " << body.angularVelocity().stableNorm() << " rad/s, |F| = " << body.force().stableNorm()
+          << " N, |tau| = " << body.torque().stableNorm() << " N m, m = " << body.mass() << " kg.";
   throw SimulationError(message.str());
 }
 

@@ -60,7 +60,7 @@ class World {
   void accumulateForces();
   void integrateBodies();
   void updateSleep();
-  [[noreturn]] void reportDivergence(const RigidBody& body) const;
+  [[noreturn]] void reportDivergence(const RigidBody& body, const BodyState& next) const;
 
   template <typename Fn>
   void runStage(Stage stage, bool needed, Fn&& fn);
