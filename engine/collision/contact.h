@@ -1,0 +1,44 @@
+#pragma once
+// What the narrow phase reports for one touching pair: a manifold of up to four points sharing
+// one normal (seed 004 "Collision detection": contact point, normal, penetration depth).
+#include <array>
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+
+#include "math/types.h"
+
+namespace rbsim {
+
+struct ContactPoint {
+  Vec3 position = Vec3::Zero();  // world frame [m], midway between the two surfaces
+  // Penetration depth [m] along the normal: > 0 when the surfaces overlap, <= 0 when they are
+  // apart by -depth (speculative contacts, within the contact margin).
+  double depth = 0.0;
+};
+
+inline constexpr int kMaxManifoldPoints = 4;
+
+struct ContactManifold {
+  Vec3 normal = Vec3::UnitY();  // unit, world frame, pointing from A towards B
+  std::array<ContactPoint, kMaxManifoldPoints> points{};
+  int count = 0;  // 0 means no contact
+
+  void add(const Vec3& position, double depth) {
+    if (count < kMaxManifoldPoints) points[count++] = {position, depth};
+  }
+  double maxDepth() const {
+    double d = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < count; ++i) d = std::max(d, points[i].depth);
+    return d;
+  }
+};
+
+// An infinite static plane n . p = offset, solid on the side -n (the ground y = 0 has n = +y).
+struct Plane {
+  Vec3 normal = Vec3::UnitY();  // unit [1]
+  double offset = 0.0;          // [m]
+  double signedDistance(const Vec3& p) const { return normal.dot(p) - offset; }
+};
+
+}  // namespace rbsim
