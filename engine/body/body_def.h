@@ -2,6 +2,7 @@
 // Plain definition a RigidBody is created from (as Box2D's b2BodyDef): everything is explicit,
 // already validated and in SI units. mass/mass_model.h builds the mass part from a shape.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "geometry/mesh.h"
@@ -19,6 +20,12 @@ struct BodyDef {
   Vec3 velocity = Vec3::Zero();            // v of the centre of mass [m/s]
   Vec3 angularVelocity = Vec3::Zero();     // omega, world frame [rad/s]
   Vec3 color = Vec3(0.85, 0.45, 0.2);      // display only, linear RGB in [0, 1]
+  // A static body never moves: it is not integrated, forces do not act on it, and it behaves as
+  // if its mass were infinite. Its mass and inertia are kept for display only.
+  bool isStatic = false;
+  // Set when the shape is a box primitive: its half extents [m] in body axes, which lets the
+  // narrow phase use the box-box separating-axis test instead of GJK on the vertex list.
+  std::optional<Vec3> boxHalfExtents;
 };
 
 }  // namespace rbsim

@@ -10,29 +10,37 @@
 namespace rbsim {
 
 RigidBody::RigidBody(const BodyDef& def)
-    : name_(def.name), mesh_(def.mesh), mass_(def.mass), inertiaBody_(def.inertiaBody),
-      color_(def.color) {
+    : mass_(def.mass), isStatic_(def.isStatic), name_(def.name), mesh_(def.mesh), color_(def.color),
+      boxHalfExtents_(def.boxHalfExtents) {
   if (!mesh_) throw std::invalid_argument("body '" + name_ + "': no mesh");
   if (!(mass_ > 0.0) || !std::isfinite(mass_)) {
     throw std::invalid_argument("body '" + name_ + "': mass must be a positive finite number");
   }
   // A physical inertia tensor is symmetric positive definite; anything else cannot be inverted
   // meaningfully, so it is rejected here rather than producing NaN angular velocities later.
-  Eigen::SelfAdjointEigenSolver<Mat3> eig(inertiaBody_);
-  if (!inertiaBody_.allFinite() || (inertiaBody_ - inertiaBody_.transpose()).norm() > 1e-9 * inertiaBody_.norm() ||
+  const Mat3& inertia = inputs_.inertiaBody = def.inertiaBody;
+  Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
+  if (!inertia.allFinite() || (inertia - inertia.transpose()).norm() > 1e-9 * inertia.norm() ||
       !(eig.eigenvalues().minCoeff() > 0.0)) {
     throw std::invalid_argument("body '" + name_ + "': inertia tensor must be symmetric positive definite");
   }
-  principalMoments_ = eig.eigenvalues();
-  principalAxes_ = eig.eigenvectors();
-  if (principalAxes_.determinant() < 0.0) principalAxes_.col(2) *= -1.0;  // a rotation, not a reflection
-  inverseMass_ = 1.0 / mass_;
-  inverseInertiaBody_ = inertiaBody_.inverse();
+  inputs_.principalMoments = eig.eigenvalues();
+  Mat3& axes = inputs_.principalAxes = eig.eigenvectors();
+  if (axes.determinant() < 0.0) axes.col(2) *= -1.0;  // a rotation, not a reflection
+  inputs_.inverseMass = 1.0 / mass_;
+  inputs_.inverseInertiaBody = inertia.inverse();
+  bodyVertices_ = mesh_->vertices.data();
   worldVertices_.resize(mesh_->vertices.size());
   state_.position = def.position;
   setOrientation(def.orientation);  // validates and derives
   state_.linearMomentum = mass_ * def.velocity;
   state_.angularMomentum = inertiaWorld() * def.angularVelocity;
+  if (isStatic_) {
+    if (!def.velocity.isZero(0.0) || !def.angularVelocity.isZero(0.0)) {
+      throw std::invalid_argument("body '" + name_ + "': a static body cannot have a velocity");
+    }
+    awake_ = false;
+  }
   updateDerived();
 }
 
@@ -80,28 +88,29 @@ void RigidBody::setAngularVelocity(const Vec3& omega) {
 }
 
 Mat3 RigidBody::inertiaWorld() const {
-  return rotation_ * inertiaBody_ * rotation_.transpose();
+  return inputs_.rotation * inputs_.inertiaBody * inputs_.rotation.transpose();
 }
 
 double RigidBody::kineticEnergy() const {
-  return 0.5 * (state_.linearMomentum.dot(velocity_) + state_.angularMomentum.dot(angularVelocity_));
+  return 0.5 * (state_.linearMomentum.dot(inputs_.velocity) + state_.angularMomentum.dot(inputs_.angularVelocity));
 }
 
-void RigidBody::applyForce(const Vec3& force) { force_ += force; }
+void RigidBody::applyForce(const Vec3& force) { inputs_.force += force; }
 
 void RigidBody::applyForceAtPoint(const Vec3& force, const Vec3& worldPoint) {
-  force_ += force;
-  torque_ += (worldPoint - state_.position).cross(force);  // seed 004: tau_i = (p_i - x) x f_i
+  inputs_.force += force;
+  inputs_.torque += (worldPoint - state_.position).cross(force);  // seed 004: tau_i = (p_i - x) x f_i
 }
 
-void RigidBody::applyTorque(const Vec3& torque) { torque_ += torque; }
+void RigidBody::applyTorque(const Vec3& torque) { inputs_.torque += torque; }
 
 void RigidBody::clearAccumulators() {
-  force_.setZero();
-  torque_.setZero();
+  inputs_.force.setZero();
+  inputs_.torque.setZero();
 }
 
 void RigidBody::wake() {
+  if (isStatic_) return;
   awake_ = true;
   restingTime_ = 0.0;
 }
@@ -114,12 +123,12 @@ void RigidBody::sleep() {
 }
 
 void RigidBody::updateDerived() {
-  rotation_ = state_.orientation.toRotationMatrix();
-  velocity_ = inverseMass_ * state_.linearMomentum;
-  inverseInertiaWorld_ = rotation_ * inverseInertiaBody_ * rotation_.transpose();
-  angularVelocity_ = inverseInertiaWorld_ * state_.angularMomentum;
-  const std::vector<Vec3>& body = mesh_->vertices;
-  for (std::size_t i = 0; i < body.size(); ++i) worldVertices_[i] = rotation_ * body[i] + state_.position;
+  Mat3& R = inputs_.rotation;
+  R = state_.orientation.toRotationMatrix();
+  inputs_.velocity = inputs_.inverseMass * state_.linearMomentum;
+  inverseInertiaWorld_ = R * inputs_.inverseInertiaBody * R.transpose();
+  inputs_.angularVelocity = inverseInertiaWorld_ * state_.angularMomentum;
+  for (std::size_t i = 0; i < worldVertices_.size(); ++i) worldVertices_[i] = R * bodyVertices_[i] + state_.position;
 }
 
 }  // namespace rbsim

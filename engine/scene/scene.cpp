@@ -4,10 +4,12 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
 
 #include "io/input_error.h"
 #include "io/obj_loader.h"
 #include "mass/mass_model.h"
+#include "scene/body_parser.h"
 #include "scene/json_fields.h"
 
 namespace rbsim {
@@ -24,97 +26,6 @@ std::string lineAndColumn(const std::string& text, std::size_t byte) {
     if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
   }
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
-Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
-  const std::string name = o.string(key, fallback == Frame::Body ? "body" : "world");
-  if (name == "body") return Frame::Body;
-  if (name == "world") return Frame::World;
-  o.fail(key, "expected \"body\" or \"world\", got \"" + name + "\"");
-}
-
-Mesh parseShape(const JsonObject& body, const std::string& baseDir) {
-  const JsonObject shape = body.object("shape", {"type", "extents", "file", "scale"});
-  const std::string type = shape.requiredString("type");
-  if (type == "box") return makeBox(shape.positiveVec3("extents"));
-  if (type == "mesh") {
-    const std::string file = shape.requiredString("file");
-    const std::filesystem::path full = std::filesystem::path(baseDir) / file;
-    Mesh mesh;
-    try {
-      mesh = loadObj(full.lexically_normal().string());
-    } catch (const InputError& e) {
-      throw InputError(shape.file(), shape.pathOf("file"), e.what());
-    }
-    const double scale = shape.positiveNumber("scale", 1.0);
-    for (Vec3& p : mesh.vertices) p *= scale;
-    return mesh;
-  }
-  shape.fail("type", "expected \"box\" or \"mesh\", got \"" + type + "\"");
-}
-
-std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, const char* key) {
-  const std::string name = o.requiredString(key);
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (bodies[i].name == name) return i;
-  }
-  o.fail(key, "no body is named \"" + name + "\"");
-}
-
-void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
-  BodyDef def;
-  def.name = b.string("name", "body" + std::to_string(scene.bodies.size()));
-  InertiaMethod method = scene.settings.inertia;
-  if (b.has("inertia") && !parseInertiaMethod(b.string("inertia", ""), method)) {
-    b.fail("inertia", "expected \"cube\" or \"exact\"");
-  }
-  Mesh mesh = parseShape(b, baseDir);
-  if (b.has("mass")) b.positiveNumber("mass", 1.0);        // type and sign errors name the field
-  if (b.has("density")) b.positiveNumber("density", 1.0);
-  try {
-    const MassModel model = buildMassModel(std::move(mesh), b.optionalPositive("mass"),
-                                           b.optionalPositive("density"), method);
-    def.mesh = model.mesh;
-    def.mass = model.mass;
-    def.inertiaBody = model.inertiaBody;
-  } catch (const InputError& e) {
-    throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
-  }
-  def.position = b.vec3("position", Vec3::Zero());
-  def.orientation = b.optionalOrientation("orientation").value_or(Quat::Identity());
-  def.velocity = b.vec3("velocity", Vec3::Zero());
-  def.angularVelocity = b.vec3("angular_velocity", Vec3::Zero());
-  def.color = b.vec3("color", def.color);
-  if (def.color.minCoeff() < 0.0 || def.color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
-  scene.bodies.push_back(def);
-  scene.inertiaMethods.emplace_back(inertiaMethodName(method));
-}
-
-void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
-  for (const JsonObject& f : b.objectArray("forces", {"force", "point", "force_frame", "point_frame", "start", "end"})) {
-    ScriptedForce force;
-    force.body = index;
-    force.force = f.vec3("force", Vec3::Zero());
-    force.point = f.vec3("point", Vec3::Zero());
-    force.forceFrame = parseFrame(f, "force_frame", Frame::World);
-    force.pointFrame = parseFrame(f, "point_frame", Frame::Body);
-    force.start = f.number("start", 0.0);
-    force.end = f.number("end", scene.duration);
-    if (force.start < 0.0) f.fail("start", "expected a time >= 0 s");
-    if (!(force.end > force.start)) f.fail("end", "expected a time after \"start\"");
-    scene.forces.push_back(force);
-  }
-  for (const JsonObject& p : b.objectArray("set_pose", {"time", "position", "orientation", "velocity", "angular_velocity"})) {
-    PoseEvent event;
-    event.body = index;
-    event.time = p.requiredNumber("time");
-    if (event.time < 0.0) p.fail("time", "expected a time >= 0 s");
-    event.position = p.optionalVec3("position");
-    event.orientation = p.optionalOrientation("orientation");
-    event.velocity = p.optionalVec3("velocity");
-    event.angularVelocity = p.optionalVec3("angular_velocity");
-    scene.poseEvents.push_back(event);
-  }
 }
 
 void parseView(const JsonObject& root, Scene& scene) {
@@ -149,7 +60,7 @@ void parseView(const JsonObject& root, Scene& scene) {
   view.axes = v.boolean("axes", view.axes);
   view.grid = v.boolean("grid", view.grid);
   view.caption = v.string("caption", view.caption);
-  if (v.has("selected")) view.selected = findBody(scene.bodies, v, "selected");
+  if (v.has("selected")) view.selected = scene_detail::findBody(scene.bodies, v, "selected");
 }
 
 }  // namespace
@@ -159,7 +70,7 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies"});
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -185,17 +96,20 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     scene.duration = w.positiveNumber("duration", scene.duration);
     if (w.has("steps")) scene.duration = w.positiveInt("steps", 1) * scene.settings.timeStep;
   }
-  const std::vector<JsonObject> bodies = root.objectArray(
-      "bodies", {"name", "shape", "mass", "density", "inertia", "position", "orientation", "velocity",
-                 "angular_velocity", "color", "forces", "set_pose"});
-  if (bodies.empty()) throw InputError(file, "bodies", "expected a non-empty array of bodies");
-  for (const JsonObject& b : bodies) parseBody(b, baseDir, scene);
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      if (scene.bodies[i].name == scene.bodies[j].name) bodies[i].fail("name", "duplicate body name \"" + scene.bodies[i].name + "\"");
+  const std::vector<JsonObject> bodies = root.objectArray("bodies", scene_detail::kBodyKeys);
+  for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene);
+  for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
+  scene_detail::parseSpawns(root, baseDir, scene);
+  if (scene.bodies.empty()) throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block)");
+  std::unordered_map<std::string, std::size_t> names;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (!names.emplace(scene.bodies[i].name, i).second) {
+      const std::string problem = "duplicate body name \"" + scene.bodies[i].name + "\"";
+      if (i < bodies.size()) bodies[i].fail("name", problem);
+      throw InputError(file, "spawn", problem + " (spawned names are NAME_k)");
     }
   }
-  for (std::size_t i = 0; i < bodies.size(); ++i) parseScripts(bodies[i], i, scene);
+  scene_detail::parsePlanes(root, scene);
   parseView(root, scene);
   return scene;
 }
@@ -228,6 +142,8 @@ World buildWorld(const Scene& scene) {
   for (const BodyDef& def : scene.bodies) world.addBody(def);
   for (const ScriptedForce& f : scene.forces) world.addForce(f);
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
+  for (const Spring& s : scene.springs) world.addSpring(s);
+  for (const Plane& p : scene.planes) world.addPlane(p);
   return world;
 }
 

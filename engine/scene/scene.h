@@ -7,7 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "body/body_def.h"
+#include "collision/contact.h"
 #include "world/scripts.h"
+#include "world/spring.h"
 #include "world/settings.h"
 #include "world/world.h"
 
@@ -39,6 +41,8 @@ struct Scene {
   std::vector<std::string> inertiaMethods;  // per body, as resolved ("cube" or "exact")
   std::vector<ScriptedForce> forces;
   std::vector<PoseEvent> poseEvents;
+  std::vector<Spring> springs;
+  std::vector<Plane> planes;  // static, infinite
   ViewDesc view;
 
   std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep

@@ -24,6 +24,20 @@ std::pair<Vec3, Vec3> inWorldFrame(const ScriptedForce& f, const RigidBody& body
   return {point, force};
 }
 
+// Seed 000 "particle systems" spring: F = -(k (|d| - rest) + c v_p . u) u at the body point p,
+// d = p - anchor, u = d / |d|. For rest = 0, F = -k d - c (v_p . u) u needs no direction when
+// d = 0, so a zero-length spring is well defined; for rest > 0 and d = 0 there is no direction.
+std::pair<Vec3, Vec3> springForce(const Spring& spring, const RigidBody& body) {
+  const Vec3 point = body.bodyToWorld(spring.point);
+  const Vec3 d = point - spring.anchor;
+  const double length = d.norm();
+  if (length == 0.0) return {point, Vec3::Zero()};
+  const Vec3 u = d / length;
+  const Vec3 pointVelocity = body.velocity() + body.angularVelocity().cross(point - body.position());
+  const double magnitude = spring.stiffness * (length - spring.restLength) + spring.damping * pointVelocity.dot(u);
+  return {point, -magnitude * u};
+}
+
 bool isFinite(const BodyState& s) {
   return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
          s.angularMomentum.allFinite();
@@ -57,6 +71,23 @@ void World::addForce(const ScriptedForce& force) {
   forces_.push_back(force);
 }
 
+void World::addSpring(const Spring& spring) {
+  if (spring.body >= bodies_.size()) throw std::invalid_argument("spring names no body");
+  if (bodies_[spring.body].isStatic()) throw std::invalid_argument("spring on static body '" + bodies_[spring.body].name() + "'");
+  if (!spring.anchor.allFinite() || !spring.point.allFinite() || !(spring.stiffness >= 0.0) || !(spring.restLength >= 0.0) ||
+      !(spring.damping >= 0.0) || !std::isfinite(spring.stiffness + spring.restLength + spring.damping)) {
+    throw std::invalid_argument("spring on body '" + bodies_[spring.body].name() + "': expected finite anchor and point, k, rest length and damping >= 0");
+  }
+  springs_.push_back(spring);
+}
+
+void World::addPlane(const Plane& plane) {
+  if (!plane.normal.allFinite() || !std::isfinite(plane.offset) || std::abs(plane.normal.norm() - 1.0) > 1e-9) {
+    throw std::invalid_argument("plane: expected a finite unit normal and a finite offset");
+  }
+  planes_.push_back(plane);
+}
+
 void World::addPoseEvent(const PoseEvent& event) {
   if (event.body >= bodies_.size()) throw std::invalid_argument("pose event names no body");
   const auto at = std::upper_bound(pendingEvents_.begin(), pendingEvents_.end(), event,
@@ -83,7 +114,7 @@ void World::step() {
   const bool anyForce = std::any_of(forces_.begin(), forces_.end(), [t](const ScriptedForce& f) { return isActive(f, t); });
   runStage(Stage::ApplyPoseEvents, !pendingEvents_.empty() && pendingEvents_.front().time <= t,
            [&] { applyPoseEvents(); });
-  runStage(Stage::AccumulateForces, anyForce || (anyAwake && settings_.gravity != Vec3::Zero()),
+  runStage(Stage::AccumulateForces, anyForce || (anyAwake && (settings_.gravity != Vec3::Zero() || !springs_.empty())),
            [&] { accumulateForces(); });
   // Pose events and forces may have woken bodies.
   const bool anyAwakeNow = anyAwake || std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); });
@@ -127,6 +158,12 @@ void World::accumulateForces() {
     if (!isActive(f, t)) continue;
     RigidBody& body = bodies_[f.body];
     const auto [point, force] = inWorldFrame(f, body);
+    body.applyForceAtPoint(force, point);
+  }
+  for (const Spring& spring : springs_) {
+    RigidBody& body = bodies_[spring.body];
+    if (!body.awake()) continue;
+    const auto [point, force] = springForce(spring, body);
     body.applyForceAtPoint(force, point);
   }
 }

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "body/rigid_body.h"
+#include "collision/contact.h"
 #include "world/scripts.h"
+#include "world/spring.h"
 #include "world/settings.h"
 
 namespace rbsim {
@@ -35,6 +37,8 @@ class World {
   std::size_t addBody(const BodyDef& def);
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
+  void addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
+  void addPlane(const Plane& plane);     // static, infinite; throws unless the normal is unit
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
   void step();
@@ -45,6 +49,8 @@ class World {
   std::vector<RigidBody>& bodies() { return bodies_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
+  const std::vector<Spring>& springs() const { return springs_; }
+  const std::vector<Plane>& planes() const { return planes_; }
   std::size_t awakeCount() const;
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
 
@@ -68,6 +74,8 @@ class World {
   Settings settings_;
   std::vector<RigidBody> bodies_;
   std::vector<ScriptedForce> forces_;
+  std::vector<Spring> springs_;
+  std::vector<Plane> planes_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::uint64_t stepCount_ = 0;
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};

@@ -1,0 +1,145 @@
+#include "scene/body_parser.h"
+
+#include <filesystem>
+
+#include "io/input_error.h"
+#include "io/obj_loader.h"
+#include "mass/mass_model.h"
+
+namespace rbsim::scene_detail {
+
+namespace {
+
+Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
+  const std::string name = o.string(key, fallback == Frame::Body ? "body" : "world");
+  if (name == "body") return Frame::Body;
+  if (name == "world") return Frame::World;
+  o.fail(key, "expected \"body\" or \"world\", got \"" + name + "\"");
+}
+
+Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def) {
+  const JsonObject shape = body.object("shape", {"type", "extents", "file", "scale"});
+  const std::string type = shape.requiredString("type");
+  if (type == "box") {
+    const Vec3 extents = shape.positiveVec3("extents");
+    def.boxHalfExtents = 0.5 * extents;
+    return makeBox(extents);
+  }
+  if (type == "mesh") {
+    const std::string file = shape.requiredString("file");
+    const std::filesystem::path full = std::filesystem::path(baseDir) / file;
+    Mesh mesh;
+    try {
+      mesh = loadObj(full.lexically_normal().string());
+    } catch (const InputError& e) {
+      throw InputError(shape.file(), shape.pathOf("file"), e.what());
+    }
+    const double scale = shape.positiveNumber("scale", 1.0);
+    for (Vec3& p : mesh.vertices) p *= scale;
+    return mesh;
+  }
+  shape.fail("type", "expected \"box\" or \"mesh\", got \"" + type + "\"");
+}
+
+double nonNegative(const JsonObject& o, const char* key, double fallback, const char* unit) {
+  const double value = o.number(key, fallback);
+  if (value < 0.0) o.fail(key, std::string("expected a value >= 0 ") + unit);
+  return value;
+}
+
+}  // namespace
+
+std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, const char* key) {
+  const std::string name = o.requiredString(key);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (bodies[i].name == name) return i;
+  }
+  o.fail(key, "no body is named \"" + name + "\"");
+}
+
+void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
+  BodyDef def;
+  def.name = b.string("name", "body" + std::to_string(scene.bodies.size()));
+  InertiaMethod method = scene.settings.inertia;
+  if (b.has("inertia") && !parseInertiaMethod(b.string("inertia", ""), method)) {
+    b.fail("inertia", "expected \"cube\" or \"exact\"");
+  }
+  Mesh mesh = parseShape(b, baseDir, def);
+  if (b.has("mass")) b.positiveNumber("mass", 1.0);  // type and sign errors name the field
+  if (b.has("density")) b.positiveNumber("density", 1.0);
+  try {
+    const MassModel model = buildMassModel(std::move(mesh), b.optionalPositive("mass"),
+                                           b.optionalPositive("density"), method);
+    def.mesh = model.mesh;
+    def.mass = model.mass;
+    def.inertiaBody = model.inertiaBody;
+  } catch (const InputError& e) {
+    throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
+  }
+  def.position = b.vec3("position", Vec3::Zero());
+  def.orientation = b.optionalOrientation("orientation").value_or(Quat::Identity());
+  def.velocity = b.vec3("velocity", Vec3::Zero());
+  def.angularVelocity = b.vec3("angular_velocity", Vec3::Zero());
+  def.color = b.vec3("color", def.color);
+  if (def.color.minCoeff() < 0.0 || def.color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
+  def.isStatic = b.boolean("static", false);
+  if (def.isStatic && (def.velocity != Vec3::Zero() || def.angularVelocity != Vec3::Zero())) {
+    b.fail(def.velocity != Vec3::Zero() ? "velocity" : "angular_velocity", "a static body cannot move; expected zero");
+  }
+  scene.bodies.push_back(def);
+  scene.inertiaMethods.emplace_back(inertiaMethodName(method));
+}
+
+void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
+  const bool isStatic = scene.bodies[index].isStatic;
+  for (const JsonObject& f : b.objectArray("forces", {"force", "point", "force_frame", "point_frame", "start", "end"})) {
+    if (isStatic) b.fail("forces", "a static body does not respond to forces");
+    ScriptedForce force;
+    force.body = index;
+    force.force = f.vec3("force", Vec3::Zero());
+    force.point = f.vec3("point", Vec3::Zero());
+    force.forceFrame = parseFrame(f, "force_frame", Frame::World);
+    force.pointFrame = parseFrame(f, "point_frame", Frame::Body);
+    force.start = f.number("start", 0.0);
+    force.end = f.number("end", scene.duration);
+    if (force.start < 0.0) f.fail("start", "expected a time >= 0 s");
+    if (!(force.end > force.start)) f.fail("end", "expected a time after \"start\"");
+    scene.forces.push_back(force);
+  }
+  for (const JsonObject& p : b.objectArray("set_pose", {"time", "position", "orientation", "velocity", "angular_velocity"})) {
+    PoseEvent event;
+    event.body = index;
+    event.time = p.requiredNumber("time");
+    if (event.time < 0.0) p.fail("time", "expected a time >= 0 s");
+    event.position = p.optionalVec3("position");
+    event.orientation = p.optionalOrientation("orientation");
+    event.velocity = p.optionalVec3("velocity");
+    event.angularVelocity = p.optionalVec3("angular_velocity");
+    if (isStatic && (event.velocity || event.angularVelocity)) p.fail("velocity", "a static body cannot move");
+    scene.poseEvents.push_back(event);
+  }
+  for (const JsonObject& s : b.objectArray("springs", {"anchor", "point", "stiffness", "rest_length", "damping"})) {
+    if (isStatic) b.fail("springs", "a static body does not respond to forces");
+    Spring spring;
+    spring.body = index;
+    spring.anchor = s.vec3("anchor", Vec3::Zero());
+    spring.point = s.vec3("point", Vec3::Zero());
+    spring.stiffness = s.positiveNumber("stiffness", 1.0);
+    spring.restLength = nonNegative(s, "rest_length", 0.0, "m");
+    spring.damping = nonNegative(s, "damping", 0.0, "N s/m");
+    scene.springs.push_back(spring);
+  }
+}
+
+void parsePlanes(const JsonObject& root, Scene& scene) {
+  for (const JsonObject& p : root.objectArray("planes", {"normal", "point"})) {
+    const Vec3 normal = p.vec3("normal", Vec3::UnitY());
+    if (!(normal.norm() > 0.0)) p.fail("normal", "expected a non-zero direction");
+    Plane plane;
+    plane.normal = normal.normalized();  // a direction: its length carries no meaning
+    plane.offset = plane.normal.dot(p.vec3("point", Vec3::Zero()));
+    scene.planes.push_back(plane);
+  }
+}
+
+}  // namespace rbsim::scene_detail

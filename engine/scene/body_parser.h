@@ -1,0 +1,27 @@
+#pragma once
+// Scene-file parsing of bodies and what hangs on them (scripted forces, pose events, springs),
+// of planes, and of spawn blocks that create many bodies from one template. Internal to scene/.
+#include <string>
+
+#include "scene/json_fields.h"
+#include "scene/scene.h"
+
+namespace rbsim::scene_detail {
+
+inline constexpr std::initializer_list<const char*> kBodyKeys = {
+    "name", "shape", "mass", "density", "inertia", "position", "orientation", "velocity",
+    "angular_velocity", "color", "static", "forces", "set_pose", "springs"};
+
+// Appends the body described by `b` to scene.bodies (and its inertia method name).
+void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene);
+// Appends the forces, pose events and springs of body `index`.
+void parseScripts(const JsonObject& b, std::size_t index, Scene& scene);
+// The body named by o[key]; fails naming the field if there is none.
+std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, const char* key);
+// "planes": [{"normal": [0, 1, 0], "point": [0, 0, 0]}, ...]
+void parsePlanes(const JsonObject& root, Scene& scene);
+// "spawn": [{"count", "seed", "name", "body": {...}, "region": {"min", "max"}, "speed": [lo, hi],
+//            "angular_speed": [lo, hi]}, ...]
+void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene);
+
+}  // namespace rbsim::scene_detail

@@ -1,0 +1,99 @@
+// "spawn" blocks: many bodies from one template, with positions, velocities and orientations
+// drawn from a seeded generator so that a scene file describes a reproducible crowd.
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+#include "scene/body_parser.h"
+
+namespace rbsim::scene_detail {
+
+namespace {
+
+// More bodies than this in one block is almost certainly a typo for a smaller number.
+constexpr int kMaxSpawnCount = 100000;
+
+// Uniform doubles in [0, 1) from the top 53 bits: std::uniform_real_distribution is
+// implementation-defined, and a scene must give the same bodies with every standard library.
+class Uniform {
+ public:
+  explicit Uniform(std::uint64_t seed) : engine_(seed) {}
+  double next() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+  double between(double lo, double hi) { return lo + (hi - lo) * next(); }
+  Vec3 direction() {  // uniform on the unit sphere (Archimedes: z uniform in [-1, 1])
+    const double z = between(-1.0, 1.0), phi = between(0.0, 2.0 * M_PI);
+    const double r = std::sqrt(1.0 - z * z);
+    return {r * std::cos(phi), r * std::sin(phi), z};
+  }
+  Quat rotation() {  // uniform over SO(3) (Shoemake 1992, "Uniform random rotations")
+    const double u1 = next(), u2 = between(0.0, 2.0 * M_PI), u3 = between(0.0, 2.0 * M_PI);
+    const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+    return Quat(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+// [lo, hi] with 0 <= lo <= hi.
+std::pair<double, double> range(const JsonObject& o, const char* key, const char* unit) {
+  if (!o.has(key)) return {0.0, 0.0};
+  const nlohmann::json& r = o.raw(key);
+  if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() || !(r[0].get<double>() >= 0.0) ||
+      !(r[1].get<double>() >= r[0].get<double>()) || !std::isfinite(r[1].get<double>())) {
+    o.fail(key, std::string("expected [low, high] with 0 <= low <= high, in ") + unit);
+  }
+  return {r[0].get<double>(), r[1].get<double>()};
+}
+
+}  // namespace
+
+void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene) {
+  for (const JsonObject& s : root.objectArray("spawn", {"count", "seed", "name", "body", "region", "speed",
+                                                        "angular_speed", "random_orientation"})) {
+    const int count = s.positiveInt("count", 1);
+    if (count > kMaxSpawnCount) s.fail("count", "expected at most " + std::to_string(kMaxSpawnCount) + " bodies per block");
+    const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
+    const std::string prefix = s.string("name", "spawn");
+    const JsonObject region = s.object("region", {"min", "max"});
+    const Vec3 lo = region.vec3("min", Vec3::Zero()), hi = region.vec3("max", Vec3::Zero());
+    if ((hi.array() < lo.array()).any()) region.fail("max", "expected every component >= min's");
+    const auto [speedLo, speedHi] = range(s, "speed", "m/s");
+    const auto [spinLo, spinHi] = range(s, "angular_speed", "rad/s");
+    const bool randomOrientation = s.boolean("random_orientation", true);
+
+    // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
+    const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs"});
+    const std::size_t first = scene.bodies.size();
+    parseBody(body, baseDir, scene);
+    parseScripts(body, first, scene);
+    const BodyDef prototype = scene.bodies[first];
+    const std::string inertia = scene.inertiaMethods[first];
+    const std::size_t springsOfPrototype = scene.springs.size();
+    scene.bodies.pop_back();
+    scene.inertiaMethods.pop_back();
+
+    Uniform random(static_cast<std::uint64_t>(seed));
+    for (int k = 0; k < count; ++k) {
+      BodyDef def = prototype;
+      def.name = prefix + "_" + std::to_string(k);
+      def.position = Vec3(random.between(lo.x(), hi.x()), random.between(lo.y(), hi.y()), random.between(lo.z(), hi.z()));
+      if (randomOrientation) def.orientation = random.rotation() * prototype.orientation;
+      def.velocity = random.between(speedLo, speedHi) * random.direction();
+      def.angularVelocity = random.between(spinLo, spinHi) * random.direction();
+      const std::size_t index = scene.bodies.size();
+      scene.bodies.push_back(def);
+      scene.inertiaMethods.push_back(inertia);
+      if (k > 0) {
+        for (std::size_t i = 0; i < springsOfPrototype; ++i) {
+          if (scene.springs[i].body != first) continue;
+          Spring copy = scene.springs[i];
+          copy.body = index;
+          scene.springs.push_back(copy);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace rbsim::scene_detail
