@@ -21,6 +21,9 @@ struct BodyView {
   glm::vec3 color{0.8f, 0.5f, 0.2f};  // linear RGB in [0, 1]
   float axisLength = 0.5f;           // length of the drawn body axes [m]
   bool selected = false;             // the body whose variables the overlay shows
+  // Below 1 the body is a see-through "ghost" (e.g. drawn at its time of impact): blended over
+  // everything opaque, farthest ghost first, without a shadow. 0 or less: not drawn at all.
+  float opacity = 1.0f;
 };
 
 // A force drawn as an arrow from its application point (world frame).
@@ -28,6 +31,31 @@ struct ForceArrow {
   glm::vec3 point{0.0f};
   glm::vec3 force{0.0f};  // [N]; drawn scaled by RenderOptions::forceScale
 };
+
+// A debug segment (AABB edge, contact normal, swept box), world frame. Depth-tested against the
+// bodies unless onTop, which draws it over everything (a normal starting inside two bodies).
+struct DebugLine {
+  glm::vec3 a{0.0f};
+  glm::vec3 b{0.0f};
+  glm::vec3 color{1.0f};  // linear RGB in [0, 1]
+  bool onTop = false;
+};
+
+// A debug dot (contact point): a round screen-space disc with a thin dark rim, always drawn over
+// everything, so a contact buried between overlapping bodies still shows.
+struct DebugPoint {
+  glm::vec3 position{0.0f};  // world frame [m]
+  glm::vec3 color{1.0f};     // linear RGB in [0, 1]
+  float sizePixels = 8.0f;   // diameter in pixels of the output image, whatever its size
+};
+
+// Suggested debug colours (linear RGB), chosen to stand apart from body colours and from each
+// other on the grey ground and blue sky.
+inline constexpr glm::vec3 kDebugAabbColor{0.25f, 0.85f, 1.00f};           // cyan
+inline constexpr glm::vec3 kDebugOverlapAabbColor{1.00f, 0.08f, 0.06f};    // red: pair overlaps
+inline constexpr glm::vec3 kDebugSweptAabbColor{0.75f, 0.78f, 0.82f};      // light grey
+inline constexpr glm::vec3 kDebugContactPointColor{1.00f, 0.90f, 0.00f};   // yellow
+inline constexpr glm::vec3 kDebugContactNormalColor{1.00f, 0.10f, 0.90f};  // magenta
 
 struct Camera {
   glm::vec3 eye{4.0f, 3.0f, 6.0f};
@@ -44,6 +72,9 @@ struct RenderOptions {
   bool axes = true;        // body axes (columns of R) as red/green/blue lines
   bool overlay = true;     // Dear ImGui panel with the selected body's variables
   float forceScale = 0.1f; // arrow length per newton [m/N]
+  // Width of FrameData::lines in pixels of a 720-row image, scaled with the image height like
+  // every other line the renderer draws.
+  float debugLineWidth = 1.5f;
 };
 
 // Text for the overlay panel: a title and rows of (label, value) already formatted by the app.
@@ -56,6 +87,8 @@ struct OverlayData {
 struct FrameData {
   std::vector<BodyView> bodies;
   std::vector<ForceArrow> forces;
+  std::vector<DebugLine> lines;    // all drawn with one upload and at most two draw calls
+  std::vector<DebugPoint> points;  // one draw call
   Camera camera;
   RenderOptions options;
   OverlayData overlay;

@@ -81,7 +81,8 @@ GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int 
       groundProgram_(shaderDir, "ground.vert", "ground.frag"),
       shadowProgram_(shaderDir, "shadow.vert", "shadow.frag"),
       meshProgram_(shaderDir, "mesh.vert", "mesh.frag"),
-      lineProgram_(shaderDir, "line.vert", "line.frag") {
+      lineProgram_(shaderDir, "line.vert", "line.frag"),
+      debugDraw_(width, height, shaderDir) {
   glGenVertexArrays(1, &emptyVao_);
   glGenVertexArrays(1, &meshVao_);
   glGenBuffers(1, &meshVbo_);
@@ -136,13 +137,16 @@ void GlRenderer::createMultisampleTarget() {
 }
 
 void GlRenderer::upload(const SceneGeometry& g) {
-  // Bodies first, arrow heads after: the body range starts at vertex 0 and every range is a
-  // multiple of 3, which mesh.vert's gl_VertexID % 3 (wireframe corners) relies on.
+  // Opaque bodies first, then ghosts and arrow heads: the body range starts at vertex 0 and
+  // every range is a multiple of 3, which mesh.vert's gl_VertexID % 3 (wireframe corners) and
+  // the shadow pass (opaque bodies only: vertices [0, ghostsFirst_)) rely on.
   std::vector<MeshVertex>& meshes = meshStaging_;
   meshes.clear();
   appendTo(meshes, g.bodies);
+  ghostsFirst_ = static_cast<GLint>(meshes.size());
+  appendTo(meshes, g.ghosts);
+  headsFirst_ = static_cast<GLint>(meshes.size());
   appendTo(meshes, g.arrowHeads);
-  headsFirst_ = static_cast<GLint>(g.bodies.size());
   std::vector<LineVertex>& lines = lineStaging_;
   lines.clear();
   appendTo(lines, g.edges);
@@ -152,6 +156,8 @@ void GlRenderer::upload(const SceneGeometry& g) {
   appendTo(lines, g.axes);
   shaftsFirst_ = static_cast<GLint>(lines.size());
   appendTo(lines, g.forceShafts);
+  ghostEdgesFirst_ = static_cast<GLint>(lines.size());
+  appendTo(lines, g.ghostEdges);
   // A fresh glBufferData each frame lets the driver orphan last frame's storage.
   glBindBuffer(GL_ARRAY_BUFFER, meshVbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(meshes.size() * sizeof(MeshVertex)),
@@ -224,7 +230,7 @@ void GlRenderer::drawShadows(const glm::mat4& viewProj) {
   shadowProgram_.set("uLightDir", kLightDir);
   shadowProgram_.set("uAlpha", kShadowAlpha);
   glBindVertexArray(meshVao_);
-  glDrawArrays(GL_TRIANGLES, 0, headsFirst_);
+  glDrawArrays(GL_TRIANGLES, 0, ghostsFirst_);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
@@ -293,9 +299,40 @@ void GlRenderer::drawOverlays(const FrameData& frame, const glm::mat4& viewProj)
   drawMeshes(frame, viewProj, headsFirst_, headsCount, false, 1.0f);
 }
 
+void GlRenderer::drawGhosts(const FrameData& frame, const glm::mat4& viewProj) {
+  if (geometry_.ghostRanges.empty()) return;
+  // Per ghost, farthest first: a depth-only pass, then colour where the depth matches, so only
+  // the ghost's nearest surface blends in once. Drawn in one pass, its far side (culling is off)
+  // would blend too and darken it unevenly. The depth it leaves behind only affects what comes
+  // later: nearer ghosts (which pass) and its own outlines; everything on top ignores depth.
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_POLYGON_OFFSET_FILL);  // as for opaque bodies, so the outlines win at LEQUAL
+  glPolygonOffset(1.0f, 1.0f);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (const GhostRange& ghost : geometry_.ghostRanges) {
+    const GLint first = ghostsFirst_ + ghost.first;
+    glDisable(GL_BLEND);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    drawMeshes(frame, viewProj, first, ghost.count, false, 1.0f);
+    glEnable(GL_BLEND);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    drawMeshes(frame, viewProj, first, ghost.count, frame.options.wireframe, ghost.opacity);
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  // Outlines carry the ghost's opacity in their alpha: as faint as the ghost itself.
+  drawLines(viewProj, ghostEdgesFirst_, static_cast<GLsizei>(geometry_.ghostEdges.size()),
+            kEdgeWidth, 1.0f);
+  glDisable(GL_BLEND);
+}
+
 void GlRenderer::draw(const FrameData& frame) {
   buildSceneGeometry(frame, geometry_);
   upload(geometry_);
+  debugDraw_.upload(frame);
   const glm::mat4 viewProj = viewProjection(frame.camera, width_, height_);
 
   glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? fbo_ : 0);
@@ -319,7 +356,7 @@ void GlRenderer::draw(const FrameData& frame) {
   glDepthMask(GL_TRUE);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  drawMeshes(frame, viewProj, 0, headsFirst_, frame.options.wireframe, 1.0f);
+  drawMeshes(frame, viewProj, 0, ghostsFirst_, frame.options.wireframe, 1.0f);
   glDisable(GL_POLYGON_OFFSET_FILL);
   if (frame.options.grid) {
     drawGround(frame, viewProj);
@@ -331,8 +368,14 @@ void GlRenderer::draw(const FrameData& frame) {
   drawLines(viewProj, 0, static_cast<GLsizei>(geometry_.edges.size()), kEdgeWidth, 1.0f);
   drawLines(viewProj, highlightFirst_, static_cast<GLsizei>(geometry_.highlight.size()),
             kHighlightWidth, 1.0f);
+  // Depth-tested debug lines before the ghosts, so they show through them; the on-top lines
+  // and points last, over everything.
+  const float debugWidth = frame.options.debugLineWidth * pixelScale_;
+  debugDraw_.drawDepthTestedLines(viewProj, frame.camera.eye, debugWidth);
   glDepthMask(GL_TRUE);
   drawOverlays(frame, viewProj);
+  drawGhosts(frame, viewProj);
+  debugDraw_.drawOnTop(viewProj, frame.camera.eye, debugWidth);
 
   glBindVertexArray(0);
   glUseProgram(0);

@@ -1,13 +1,15 @@
 #pragma once
 // Draws one FrameData with OpenGL into the current context's default framebuffer: sky gradient,
 // ground grid with planar shadows, flat-shaded bodies with outlines (optional wireframe), body
-// axes and force arrows. Multisampled into an off-screen framebuffer, then resolved.
+// axes and force arrows, see-through ghost bodies, debug lines and points. Multisampled into an
+// off-screen framebuffer (when asked for), then resolved.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "debug_draw.h"
 #include "frame_data.h"
 #include "gl_api.h"
 #include "scene_geometry.h"
@@ -45,6 +47,7 @@ class GlRenderer {
   void drawLines(const glm::mat4& viewProj, GLint first, GLsizei count, float widthPx,
                  float alpha);
   void drawOverlays(const FrameData& frame, const glm::mat4& viewProj);
+  void drawGhosts(const FrameData& frame, const glm::mat4& viewProj);
 
   int width_;
   int height_;
@@ -55,17 +58,18 @@ class GlRenderer {
   ShaderProgram shadowProgram_;
   ShaderProgram meshProgram_;
   ShaderProgram lineProgram_;
+  DebugDraw debugDraw_;
   GLuint emptyVao_ = 0;  // for the buffer-less sky and ground draws
   GLuint meshVao_ = 0, meshVbo_ = 0;
   GLuint lineVao_ = 0, lineVbo_ = 0;
   GLuint fbo_ = 0, colorRb_ = 0, depthRb_ = 0;
   // Reused every frame so steady-state frames allocate nothing.
   SceneGeometry geometry_;
-  std::vector<MeshVertex> meshStaging_;  // bodies then arrow heads, as uploaded
-  std::vector<LineVertex> lineStaging_;  // edges, highlight, axes, shafts, as uploaded
+  std::vector<MeshVertex> meshStaging_;  // bodies, ghosts, arrow heads, as uploaded
+  std::vector<LineVertex> lineStaging_;  // edges, highlight, axes, shafts, ghost edges
   // Offsets (in vertices) of each group inside the two vertex buffers, set by upload().
-  GLint headsFirst_ = 0;
-  GLint highlightFirst_ = 0, axesFirst_ = 0, shaftsFirst_ = 0;
+  GLint ghostsFirst_ = 0, headsFirst_ = 0;
+  GLint highlightFirst_ = 0, axesFirst_ = 0, shaftsFirst_ = 0, ghostEdgesFirst_ = 0;
 };
 
 }  // namespace rbsim::render

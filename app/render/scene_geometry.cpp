@@ -25,8 +25,16 @@ struct EdgeFaces {
   bool crease = false;
 };
 
+// Where one body's triangles and outlines go: opaque bodies and ghosts have separate lists.
+struct BodyTarget {
+  std::vector<MeshVertex>& triangles;
+  std::vector<LineVertex>& edges;
+  std::vector<LineVertex>& highlight;
+  float alpha;  // of the outlines
+};
+
 // Appends the body's triangles and its feature edges (crease or border) to `out`.
-void addBody(const BodyView& body, SceneGeometry& out,
+void addBody(const BodyView& body, const BodyTarget& out,
              std::unordered_map<std::uint64_t, EdgeFaces>& edgeMap) {
   if (body.triangles == nullptr) return;
   const auto& vertices = body.worldVertices;
@@ -38,9 +46,9 @@ void addBody(const BodyView& body, SceneGeometry& out,
     const glm::vec3& b = vertices[tri[1]];
     const glm::vec3& c = vertices[tri[2]];
     const glm::vec3 n = faceNormal(a, b, c);
-    out.bodies.push_back({a, n, body.color});
-    out.bodies.push_back({b, n, body.color});
-    out.bodies.push_back({c, n, body.color});
+    out.triangles.push_back({a, n, body.color});
+    out.triangles.push_back({b, n, body.color});
+    out.triangles.push_back({c, n, body.color});
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t i = std::min(tri[k], tri[(k + 1) % 3]);
       const std::uint32_t j = std::max(tri[k], tri[(k + 1) % 3]);
@@ -51,8 +59,8 @@ void addBody(const BodyView& body, SceneGeometry& out,
     }
   }
   // Darker than the body itself so edges read as shading, not as a second colour.
-  const glm::vec4 edgeColor(body.color * 0.25f, 1.0f);
-  const glm::vec4 highlightColor(kHighlightColor, 1.0f);
+  const glm::vec4 edgeColor(body.color * 0.25f, out.alpha);
+  const glm::vec4 highlightColor(kHighlightColor, out.alpha);
   for (const auto& [key, edge] : edgeMap) {
     if (!edge.crease && edge.faces != 1) continue;
     const glm::vec3& p = vertices[key >> 32];
@@ -65,6 +73,8 @@ void addBody(const BodyView& body, SceneGeometry& out,
     }
   }
 }
+
+bool isGhost(const BodyView& body) { return body.opacity < 1.0f; }  // NaN counts as opaque
 
 void addAxes(const BodyView& body, SceneGeometry& out) {
   for (int axis = 0; axis < 3; ++axis) {
@@ -118,8 +128,11 @@ void addForce(const ForceArrow& arrow, float scale, SceneGeometry& out) {
 void SceneGeometry::clear() {
   bodies.clear();
   arrowHeads.clear();
+  ghosts.clear();
+  ghostRanges.clear();
   edges.clear();
   highlight.clear();
+  ghostEdges.clear();
   axes.clear();
   forceShafts.clear();
 }
@@ -127,9 +140,26 @@ void SceneGeometry::clear() {
 void buildSceneGeometry(const FrameData& frame, SceneGeometry& out) {
   out.clear();
   std::unordered_map<std::uint64_t, EdgeFaces> edgeMap;
+  std::vector<const BodyView*> ghosts;
+  const BodyTarget opaque{out.bodies, out.edges, out.highlight, 1.0f};
   for (const BodyView& body : frame.bodies) {
-    addBody(body, out, edgeMap);
+    if (!(body.opacity > 0.0f)) continue;
+    if (isGhost(body)) ghosts.push_back(&body);
+    else addBody(body, opaque, edgeMap);
     if (frame.options.axes && body.axisLength > 0.0f) addAxes(body, out);
+  }
+  // Blending is order-dependent: the farthest ghost goes first so nearer ones tint it. Stable,
+  // so ghosts at equal distance keep the app's order from frame to frame (no flicker).
+  const glm::vec3 eye = frame.camera.eye;
+  std::stable_sort(ghosts.begin(), ghosts.end(), [&eye](const BodyView* p, const BodyView* q) {
+    return glm::distance(p->position, eye) > glm::distance(q->position, eye);
+  });
+  for (const BodyView* ghost : ghosts) {
+    const int first = static_cast<int>(out.ghosts.size());
+    // A ghost's highlight goes with its edges: both must be drawn after the ghost's surface.
+    addBody(*ghost, {out.ghosts, out.ghostEdges, out.ghostEdges, ghost->opacity}, edgeMap);
+    const int count = static_cast<int>(out.ghosts.size()) - first;
+    if (count > 0) out.ghostRanges.push_back({first, count, ghost->opacity});
   }
   for (const ForceArrow& arrow : frame.forces) addForce(arrow, frame.options.forceScale, out);
 }

@@ -20,11 +20,21 @@ struct LineVertex {
   glm::vec4 color;  // linear RGB + alpha
 };
 
+// One see-through body's triangles inside SceneGeometry::ghosts.
+struct GhostRange {
+  int first = 0;  // vertex offset into ghosts, a multiple of 3
+  int count = 0;  // vertices, a multiple of 3
+  float opacity = 1.0f;
+};
+
 struct SceneGeometry {
-  std::vector<MeshVertex> bodies;      // every body's triangles, 3 vertices each, not indexed
+  std::vector<MeshVertex> bodies;      // every opaque body's triangles, 3 vertices each
+  std::vector<MeshVertex> ghosts;      // bodies with opacity < 1, farthest from the eye first
+  std::vector<GhostRange> ghostRanges; // one per ghost, in drawing (back-to-front) order
   std::vector<MeshVertex> arrowHeads;  // cones at the tips of the force arrows
-  std::vector<LineVertex> edges;       // feature edges (creases, open borders) of every body
+  std::vector<LineVertex> edges;       // feature edges (creases, open borders) of opaque bodies
   std::vector<LineVertex> highlight;   // the selected body's feature edges, drawn brighter
+  std::vector<LineVertex> ghostEdges;  // ghosts' feature edges, alpha = the ghost's opacity
   std::vector<LineVertex> axes;        // body axes: red x, green y, blue z (columns of R)
   std::vector<LineVertex> forceShafts; // force arrows from the application point to the head
   void clear();
