@@ -8,6 +8,12 @@
 namespace rbsim {
 
 namespace {
+// Newton iterations of the implicit gyroscopic step stop when the update is below this fraction
+// of |omega| [1], or after this many: rounding limits the first, the second never binds on the
+// cases measured (convergence in at most 6 at |omega| dt = 17 rad).
+constexpr double kImplicitGyroTolerance = 1e-14;
+constexpr int kImplicitGyroMaxIterations = 50;
+
 struct NamedIntegrator {
   Integrator integrator;
   const char* name;
@@ -62,13 +68,22 @@ BodyState rk4Step(const BodyState& y, const StepInputs& in, double dt) {
   return next;
 }
 
-// Catto 2015: solve I (w2 - w1) + dt w2 x (I w2) = 0 for the body-frame angular velocity w2 with
-// one Newton step from w1. Implicit in the gyroscopic term, so fast spins about unstable axes
-// cannot gain energy; it loses a little instead.
+// Catto 2015: solve I (w2 - w1) + dt w2 x (I w2) = 0 for the body-frame angular velocity w2 by
+// Newton's method from w1. Catto stops after one iteration; at large |omega| dt that iterate can
+// gain energy (a 1:100:1000 body at 100 rad/s and dt = 1/60 s gained 16 % in one step), so we
+// iterate to convergence: the exact root satisfies w2 . I w2 = w2 . I w1 (dot the equation with
+// w2), so by Cauchy-Schwarz in the I inner product its energy never exceeds w1's.
 Vec3 implicitGyroscopicOmega(const Vec3& omegaBody, const Mat3& inertia, double dt) {
-  const Vec3 residual = dt * omegaBody.cross(inertia * omegaBody);
-  const Mat3 jacobian = inertia + dt * (star(omegaBody) * inertia - star(inertia * omegaBody));
-  return omegaBody - jacobian.lu().solve(residual);
+  const Vec3 momentum = inertia * omegaBody;
+  Vec3 w = omegaBody;
+  for (int i = 0; i < kImplicitGyroMaxIterations; ++i) {
+    const Vec3 residual = inertia * w - momentum + dt * w.cross(inertia * w);
+    const Mat3 jacobian = inertia + dt * (star(w) * inertia - star(inertia * w));
+    const Vec3 delta = jacobian.lu().solve(residual);
+    w -= delta;
+    if (delta.norm() <= kImplicitGyroTolerance * w.norm()) break;
+  }
+  return w;
 }
 }  // namespace
 
