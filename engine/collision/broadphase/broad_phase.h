@@ -22,6 +22,8 @@ class BroadPhase {
  public:
   virtual ~BroadPhase() = default;
   // Ids are reused after remove(). A static proxy never moves and never pairs with another static.
+  // Like move(), add() and remove() change pairs() only at the next update(). A box must be
+  // finite with min <= max (std::invalid_argument otherwise); an unknown id is std::out_of_range.
   virtual ProxyId add(const Aabb& box, bool isStatic = false) = 0;
   virtual void remove(ProxyId id) = 0;
   virtual void move(ProxyId id, const Aabb& box) = 0;  // new box; takes effect at update()
