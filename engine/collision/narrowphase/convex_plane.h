@@ -1,0 +1,20 @@
+#pragma once
+// A convex vertex set against a static Plane: the vertices below the plane (or within a
+// speculative margin above it) are the contact points (seed 004 "Collision detection": contact
+// point, normal, depth), reduced to at most 4 (collision/narrowphase/manifold_reduction.h).
+//
+// Convention: the plane is body A and the vertex set body B, so the manifold's normal (from A to
+// B) is the plane's normal, pointing out of the solid half-space towards the body. A point's
+// depth is -signedDistance of its vertex; its position is midway between the vertex and the
+// vertex's projection onto the plane.
+#include <vector>
+
+#include "collision/contact.h"
+#include "math/types.h"
+
+namespace rbsim {
+
+// `margin` [m] >= 0: vertices up to this far above the plane are speculative contacts (depth < 0).
+ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& vertices, double margin = 0.0);
+
+}  // namespace rbsim
