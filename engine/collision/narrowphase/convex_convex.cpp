@@ -1,0 +1,188 @@
+#include "collision/narrowphase/convex_convex.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "collision/narrowphase/distance.h"
+#include "collision/narrowphase/epa.h"
+#include "collision/narrowphase/gjk.h"
+#include "collision/narrowphase/manifold_reduction.h"
+#include "collision/narrowphase/polygon_clip.h"
+
+namespace rbsim {
+
+namespace {
+
+// Feature hull vertices within this [m] of the line through their neighbours are dropped.
+constexpr double kFeatureHullTolerance = 1e-9;
+// Two edge features whose directions in the contact plane have a sine below this [1] are
+// parallel: they overlap along a stretch (two points) instead of crossing at one.
+constexpr double kParallelFeatureSine = 1e-6;
+
+// A support feature: its hull seen along n (1 point, 2 for an edge, >= 3 for a face).
+struct Feature {
+  std::vector<Vec3> hull;
+};
+
+Feature supportFeature(const std::vector<Vec3>& points, const Vec3& dir, const Vec3& n, double tolerance) {
+  double extreme = -std::numeric_limits<double>::infinity();
+  for (const Vec3& p : points) extreme = std::max(extreme, dir.dot(p));
+  std::vector<Vec3> near;
+  for (const Vec3& p : points) {
+    if (dir.dot(p) >= extreme - tolerance) near.push_back(p);
+  }
+  return {planarConvexHull(near, n, kFeatureHullTolerance)};
+}
+
+// Height along n of the feature's surface above the point p (p moved along n onto the feature).
+double heightAt(const Feature& f, const Vec3& p, const Vec3& n) {
+  const std::vector<Vec3>& h = f.hull;
+  if (h.size() == 1) return n.dot(h[0]);
+  if (h.size() == 2) {
+    const Vec3 e = h[1] - h[0] - n * n.dot(h[1] - h[0]);
+    const double t = std::clamp((p - h[0]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    return (1.0 - t) * n.dot(h[0]) + t * n.dot(h[1]);
+  }
+  // The plane through the hull's widest triangle (as seen along n, so m . n > 0).
+  std::size_t bi = 1, bj = 2;
+  double best = -1.0;
+  for (std::size_t i = 1; i < h.size(); ++i) {
+    for (std::size_t j = i + 1; j < h.size(); ++j) {
+      const double area = (h[i] - h[0]).cross(h[j] - h[0]).dot(n);
+      if (area > best) {
+        best = area;
+        bi = i;
+        bj = j;
+      }
+    }
+  }
+  const Vec3 m = (h[bi] - h[0]).cross(h[bj] - h[0]);
+  return n.dot(p) + m.dot(h[0] - p) / m.dot(n);
+}
+
+// The part of `subject` inside the prism of the convex polygon `ref` (>= 3 vertices,
+// counter-clockwise about n) along n.
+std::vector<Vec3> clipToPrism(std::vector<Vec3> subject, const std::vector<Vec3>& ref, const Vec3& n) {
+  for (std::size_t i = 0; i < ref.size() && !subject.empty(); ++i) {
+    const Vec3 outward = (ref[(i + 1) % ref.size()] - ref[i]).cross(n).normalized();
+    subject = clipByHalfSpace(subject, outward, outward.dot(ref[i]));
+  }
+  return subject;
+}
+
+// Contact candidates from the two features: points of one feature's surface over the other's,
+// each placed midway between the surfaces with depth = height of A - height of B.
+std::vector<ContactPoint> featureContacts(const Feature& fa, const Feature& fb, const Vec3& n) {
+  std::vector<ContactPoint> out;
+  const auto emit = [&](const Vec3& p, double ha, double hb) {
+    out.push_back({p + n * (0.5 * (ha + hb) - n.dot(p)), ha - hb});
+  };
+  const std::size_t na = fa.hull.size(), nb = fb.hull.size();
+  if (na >= 3 || nb >= 3) {
+    const bool refIsA = na >= 3;
+    const Feature& ref = refIsA ? fa : fb;
+    for (const Vec3& p : clipToPrism(refIsA ? fb.hull : fa.hull, ref.hull, n)) {
+      const double own = n.dot(p), other = heightAt(ref, p, n);
+      if (refIsA) emit(p, other, own);
+      else emit(p, own, other);
+    }
+  } else if (na == 1) {
+    emit(fa.hull[0], n.dot(fa.hull[0]), heightAt(fb, fa.hull[0], n));
+  } else if (nb == 1) {
+    emit(fb.hull[0], heightAt(fa, fb.hull[0], n), n.dot(fb.hull[0]));
+  } else {
+    const Vec3 da = fa.hull[1] - fa.hull[0], db = fb.hull[1] - fb.hull[0];
+    const double sine = da.cross(db).dot(n) / (da.norm() * db.norm());
+    if (std::abs(sine) > kParallelFeatureSine) {
+      const SegmentSegmentResult c = closestPointsSegmentSegment(fa.hull[0], fa.hull[1], fb.hull[0], fb.hull[1]);
+      emit(0.5 * (c.closest1 + c.closest2), n.dot(c.closest1), n.dot(c.closest2));
+    } else {
+      // Parallel edges: the stretch of B's edge within the slab of A's edge.
+      const Vec3 e = (da - n * n.dot(da)).normalized();
+      std::vector<Vec3> part = clipByHalfSpace(fb.hull, e, e.dot(fa.hull[1]));
+      part = clipByHalfSpace(part, -e, -e.dot(fa.hull[0]));
+      for (const Vec3& p : part) emit(p, heightAt(fa, p, n), n.dot(p));
+    }
+  }
+  return out;
+}
+
+ContactManifold featureManifold(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& n,
+                                double margin, double tolerance) {
+  const Feature fa = supportFeature(a, n, n, tolerance);
+  const Feature fb = supportFeature(b, -n, n, tolerance);
+  std::vector<ContactPoint> candidates = featureContacts(fa, fb, n);
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                  [&](const ContactPoint& c) { return c.depth < -margin; }),
+                   candidates.end());
+  return reduceContacts(candidates, n);
+}
+
+}  // namespace
+
+ConvexDistance convexDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  const GjkResult g = gjk(a, b);
+  return {g.overlap, g.distance, g.pointA, g.pointB};
+}
+
+ConvexContact collideConvex(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double margin,
+                            const OrientedBox* boxA, const OrientedBox* boxB, double featureTolerance) {
+  ConvexContact out;
+  if (a.empty() || b.empty()) return out;
+  if (boxA != nullptr && boxB != nullptr) {
+    out.usedBoxSat = true;
+    const BoxBoxResult sat = collideBoxes(*boxA, *boxB, margin);
+    out.overlap = sat.separation <= 0.0;
+    if (!out.overlap) {
+      const GjkResult g = gjk(a, b);
+      out.distance = g.distance;
+      out.pointA = g.pointA;
+      out.pointB = g.pointB;
+    } else {
+      out.depth = -sat.separation;
+    }
+    out.manifold = sat.manifold;
+    if (out.overlap && out.manifold.count > 0) {
+      const ContactPoint& p = out.manifold.points[0];
+      out.pointA = p.position + out.manifold.normal * (0.5 * p.depth);
+      out.pointB = p.position - out.manifold.normal * (0.5 * p.depth);
+    }
+    return out;
+  }
+
+  const GjkResult g = gjk(a, b);
+  out.overlap = g.overlap;
+  Vec3 n;
+  if (!g.overlap) {
+    out.distance = g.distance;
+    out.pointA = g.pointA;
+    out.pointB = g.pointB;
+    if (g.distance > margin) return out;
+    n = (g.pointB - g.pointA) / g.distance;
+  } else {
+    const EpaResult e = epa(a, b, g.simplex);
+    if (e.valid) {
+      n = e.normal;
+      out.depth = e.depth;
+      out.pointA = e.pointA;
+      out.pointB = e.pointB;
+    } else {
+      // A - B is flat (both sets flat in one plane): separate along the line of the centroids.
+      Vec3 ca = Vec3::Zero(), cb = Vec3::Zero();
+      for (const Vec3& p : a) ca += p / static_cast<double>(a.size());
+      for (const Vec3& p : b) cb += p / static_cast<double>(b.size());
+      n = (cb - ca).norm() > 0.0 ? Vec3((cb - ca).normalized()) : Vec3::UnitY();
+      out.pointA = a[supportIndex(a, n)];
+      out.pointB = b[supportIndex(b, -n)];
+      out.depth = n.dot(out.pointA - out.pointB);
+    }
+  }
+  out.manifold = featureManifold(a, b, n, margin, featureTolerance);
+  if (out.manifold.count == 0) {
+    out.manifold.add(0.5 * (out.pointA + out.pointB), out.overlap ? out.depth : -out.distance);
+  }
+  return out;
+}
+
+}  // namespace rbsim
