@@ -3,9 +3,11 @@
 namespace rbsim::app {
 
 Demo demo2Unconstrained();
+Demo demo3Broadphase();
+Demo demo4Narrowphase();
 
 const std::vector<Demo>& allDemos() {
-  static const std::vector<Demo> demos = {demo2Unconstrained()};
+  static const std::vector<Demo> demos = {demo2Unconstrained(), demo3Broadphase(), demo4Narrowphase()};
   return demos;
 }
 

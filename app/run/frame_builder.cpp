@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "run/collision_view.h"
+
 namespace rbsim::app {
 
 namespace {
@@ -81,6 +83,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
       {"L", formatVec(body.state().angularMomentum, "kg m^2/s")},
       {"kinetic energy", formatNumber(body.kineticEnergy(), "J")},
   };
+  if (view.aabbs || view.contacts) addCollisionView(world, scene, frame);
   return frame;
 }
 

@@ -10,7 +10,7 @@
 namespace rbsim {
 
 RigidBody::RigidBody(const BodyDef& def)
-    : mass_(def.mass), isStatic_(def.isStatic), name_(def.name), mesh_(def.mesh), color_(def.color),
+    : isStatic_(def.isStatic), mass_(def.mass), name_(def.name), mesh_(def.mesh), color_(def.color),
       boxHalfExtents_(def.boxHalfExtents) {
   if (!mesh_) throw std::invalid_argument("body '" + name_ + "': no mesh");
   if (!(mass_ > 0.0) || !std::isfinite(mass_)) {
@@ -123,12 +123,19 @@ void RigidBody::sleep() {
 }
 
 void RigidBody::updateDerived() {
-  Mat3& R = inputs_.rotation;
-  R = state_.orientation.toRotationMatrix();
+  // R, x, the vertex arrays and their length are copied to locals: stores into worldVertices_
+  // might alias any member as far as the compiler can tell, and it would reload them all for
+  // every vertex.
+  const Mat3 R = state_.orientation.toRotationMatrix();
+  const Vec3 x = state_.position;
+  inputs_.rotation = R;
   inputs_.velocity = inputs_.inverseMass * state_.linearMomentum;
   inverseInertiaWorld_ = R * inputs_.inverseInertiaBody * R.transpose();
   inputs_.angularVelocity = inverseInertiaWorld_ * state_.angularMomentum;
-  for (std::size_t i = 0; i < worldVertices_.size(); ++i) worldVertices_[i] = R * bodyVertices_[i] + state_.position;
+  const Vec3* body = bodyVertices_;
+  Vec3* world = worldVertices_.data();
+  const std::size_t count = worldVertices_.size();
+  for (std::size_t i = 0; i < count; ++i) world[i] = R * body[i] + x;
 }
 
 }  // namespace rbsim

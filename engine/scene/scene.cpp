@@ -30,7 +30,7 @@ std::string lineAndColumn(const std::string& text, std::size_t byte) {
 
 void parseView(const JsonObject& root, Scene& scene) {
   if (!root.has("view")) return;
-  const JsonObject v = root.object("view", {"camera", "size", "fps", "overlay", "wireframe", "axes", "grid", "selected", "caption"});
+  const JsonObject v = root.object("view", {"camera", "size", "fps", "overlay", "wireframe", "axes", "grid", "aabbs", "contacts", "selected", "caption"});
   ViewDesc& view = scene.view;
   if (v.has("camera")) {
     const JsonObject c = v.object("camera", {"eye", "target", "up", "fov_deg"});
@@ -59,6 +59,8 @@ void parseView(const JsonObject& root, Scene& scene) {
   view.wireframe = v.boolean("wireframe", view.wireframe);
   view.axes = v.boolean("axes", view.axes);
   view.grid = v.boolean("grid", view.grid);
+  view.aabbs = v.boolean("aabbs", view.aabbs);
+  view.contacts = v.boolean("contacts", view.contacts);
   view.caption = v.string("caption", view.caption);
   if (v.has("selected")) view.selected = scene_detail::findBody(scene.bodies, v, "selected");
 }
@@ -75,7 +77,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
   if (root.has("world")) {
-    const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep"});
+    const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "collisions", "ccd", "broad_phase", "contact_margin"});
     scene.settings.gravity = w.vec3("gravity", scene.settings.gravity);
     scene.settings.timeStep = w.positiveNumber("dt", scene.settings.timeStep);
     if (scene.settings.timeStep > kMaxTimeStep || scene.settings.timeStep < kMinTimeStep) {
@@ -85,6 +87,16 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
       w.fail("dt", expected.str());
     }
     scene.settings.allowSleep = w.boolean("sleep", scene.settings.allowSleep);
+    scene.settings.detectCollisions = w.boolean("collisions", scene.settings.detectCollisions);
+    scene.settings.continuousCollision = w.boolean("ccd", scene.settings.continuousCollision);
+    const std::string broad = w.string("broad_phase", "sap");
+    if (broad == "brute-force") {
+      scene.settings.broadPhase = Settings::BroadPhaseMethod::BruteForce;
+    } else if (broad != "sap") {
+      w.fail("broad_phase", "expected \"sap\" or \"brute-force\", got \"" + broad + "\"");
+    }
+    scene.settings.contactMargin = w.number("contact_margin", scene.settings.contactMargin);
+    if (!(scene.settings.contactMargin >= 0.0)) w.fail("contact_margin", "expected a distance >= 0 m");
     const std::string integrator = w.string("integrator", integratorName(scene.settings.integrator));
     if (!parseIntegrator(integrator, scene.settings.integrator)) {
       std::string names;

@@ -28,6 +28,8 @@ struct ViewDesc {
   bool wireframe = false;
   bool axes = true;
   bool grid = true;
+  bool aabbs = false;     // draw AABBs (red when in a pair), compare pairs with brute force
+  bool contacts = false;  // draw contact points, normals, distances and impact ghosts
   std::size_t selected = 0;            // body shown in the overlay
   std::string caption;
 };

@@ -32,6 +32,22 @@ struct Settings {
   double sleepAngularSpeed = 0.035;  // [rad/s], 2 degrees per second
   double timeToSleep = 0.5;          // [s]
 
+  // Collision detection (engine/collision, engine/world/collision_pipeline.h). false: bodies
+  // pass through each other and through planes unseen, and the three collision stages never run
+  // (scenes of free flight, and the throughput benchmark of the unconstrained step).
+  bool detectCollisions = true;
+  enum class BroadPhaseMethod { SweepAndPrune, BruteForce };
+  BroadPhaseMethod broadPhase = BroadPhaseMethod::SweepAndPrune;  // brute force: the O(n^2) reference
+  // Pairs closer than this get speculative contacts (depth < 0), and AABBs are inflated by it, so
+  // a contact is known a step before the surfaces meet (Box2D's speculative distance is 4 cm).
+  double contactMargin = 0.01;  // [m]
+  // Continuous collision: a body whose points may move more than ccdMotionFraction of its
+  // thinnest extent in one step is swept, and stopped at its time of impact instead of passing
+  // through a plane or a body (engine/world/continuous_collision.h).
+  bool continuousCollision = true;
+  double ccdMotionFraction = 0.25;  // [1]
+  std::size_t queryLogCapacity = 256;  // narrow-phase queries kept for dumping [records]
+
   // false runs every stage of World::step every step, needed or not: it exists to measure what
   // skipping saves (bench/stage_skip_bench.cpp), never to change results.
   bool skipIdleStages = true;

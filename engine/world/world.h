@@ -2,11 +2,13 @@
 // The World owns the bodies and advances them; step() reads as the pipeline (DESIGN.md
 // "Data flow"), one named stage per call, each skipped when the scene has nothing for it.
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
 #include "body/rigid_body.h"
 #include "collision/contact.h"
+#include "world/collision_pipeline.h"
 #include "world/scripts.h"
 #include "world/spring.h"
 #include "world/settings.h"
@@ -14,11 +16,14 @@
 namespace rbsim {
 
 // Stages of World::step, in order (as Box2D v3's b2SolverStageType): names for timing and for
-// skipping. Collision stages join this list with the collision issues.
+// skipping. The contact solver joins this list with the contact-response issue.
 enum class Stage : int {
   ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step
   AccumulateForces,  // gravity and scripted forces into F and tau
   Integrate,         // the chosen integrator advances awake bodies; accumulators are cleared
+  ContinuousCollision,  // fast bodies stop at their time of impact instead of tunnelling
+  BroadPhase,        // sweep and prune over world AABBs: candidate pairs
+  NarrowPhase,       // contact manifolds of candidate pairs and of bodies against planes
   UpdateSleep,       // bodies slow for Settings::timeToSleep fall asleep
   Count
 };
@@ -27,7 +32,7 @@ const char* stageName(Stage stage);
 struct StageStats {
   std::uint64_t runs = 0;     // steps in which the stage ran
   std::uint64_t skipped = 0;  // steps in which it had nothing to do
-  double seconds = 0.0;       // wall time spent in it [s]
+  double seconds = 0.0;       // wall time spent in it and in the step's checks before it [s]
 };
 
 class World {
@@ -52,6 +57,8 @@ class World {
   const std::vector<Spring>& springs() const { return springs_; }
   const std::vector<Plane>& planes() const { return planes_; }
   std::size_t awakeCount() const;
+  const CollisionPipeline& collision() const { return collision_; }
+  const std::vector<Contact>& contacts() const { return collision_.contacts(); }
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
 
   // The forces acting during the step that starts at time t, in world frame: (point, force).
@@ -69,16 +76,18 @@ class World {
   [[noreturn]] void reportDivergence(const RigidBody& body, const BodyState& next) const;
 
   template <typename Fn>
-  void runStage(Stage stage, bool needed, Fn&& fn);
+  bool runStage(Stage stage, bool needed, Fn&& fn);  // true when it ran
 
   Settings settings_;
   std::vector<RigidBody> bodies_;
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
   std::vector<Plane> planes_;
+  CollisionPipeline collision_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::uint64_t stepCount_ = 0;
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};
+  std::chrono::steady_clock::time_point stageClock_;  // when the running stage's time began
 };
 
 }  // namespace rbsim

@@ -1,0 +1,116 @@
+#include "run/collision_view.h"
+
+#include <chrono>
+#include <cstdio>
+#include <limits>
+
+#include "collision/broadphase/brute_force.h"
+#include "collision/narrowphase/convex_convex.h"
+#include "render/debug_shapes.h"
+
+namespace rbsim::app {
+
+namespace {
+
+glm::vec3 toGlm(const Vec3& v) {
+  return glm::vec3(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
+}
+
+std::string format(const char* fmt, double a, double b = 0.0) {
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, fmt, a, b);
+  return buffer;
+}
+
+constexpr float kNormalLength = 0.3f;       // drawn length of a contact normal [m]
+constexpr float kContactPointPixels = 9.0f;  // [px]
+constexpr float kGhostOpacity = 0.3f;
+
+// Brute force over the boxes the broad phase was given, timed: the reference the overlay
+// compares sweep and prune with.
+void compareWithBruteForce(const World& world, render::OverlayData& overlay) {
+  const CollisionPipeline& collision = world.collision();
+  BruteForce brute;
+  for (std::size_t i = 0; i < collision.boxes().size(); ++i) brute.add(collision.boxes()[i], world.bodies()[i].isStatic());
+  const auto start = std::chrono::steady_clock::now();
+  brute.update();
+  const double bruteMs = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const StageStats& sap = world.stageStats(Stage::BroadPhase);
+  const double sapMs = sap.runs > 0 ? 1e3 * sap.seconds / static_cast<double>(sap.runs) : 0.0;
+  const bool same = brute.pairs() == collision.candidatePairs();
+  overlay.rows.push_back({"bodies", format("%.0f", static_cast<double>(world.bodies().size()))});
+  overlay.rows.push_back({"pairs: sweep and prune", format("%.0f (%.3f ms per step, mean)", static_cast<double>(collision.candidatePairs().size()), sapMs)});
+  overlay.rows.push_back({"pairs: brute force", format("%.0f (%.3f ms, this frame)", static_cast<double>(brute.pairs().size()), bruteMs)});
+  overlay.rows.push_back({"pair sets equal", same ? "yes" : "NO"});
+}
+
+}  // namespace
+
+void addCollisionView(const World& world, const Scene& scene, render::FrameData& frame) {
+  const ViewDesc& view = scene.view;
+  const CollisionPipeline& collision = world.collision();
+  if (view.aabbs && collision.boxes().size() == world.bodies().size()) {
+    std::vector<char> paired(world.bodies().size(), 0);
+    for (const ProxyPair& p : collision.candidatePairs()) paired[p.a] = paired[p.b] = 1;
+    for (std::size_t i = 0; i < collision.boxes().size(); ++i) {
+      const Aabb& box = collision.boxes()[i];
+      render::appendBoxLines(frame.lines, toGlm(box.min), toGlm(box.max),
+                             paired[i] ? render::kDebugOverlapAabbColor : render::kDebugAabbColor);
+    }
+    compareWithBruteForce(world, frame.overlay);
+  }
+  if (!view.contacts) return;
+  int points = 0;
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const Contact& c : world.contacts()) {
+    for (int k = 0; k < c.manifold.count; ++k) {
+      const ContactPoint& p = c.manifold.points[k];
+      frame.points.push_back({toGlm(p.position), render::kDebugContactPointColor, kContactPointPixels});
+      render::appendArrowLines(frame.lines, toGlm(p.position), toGlm(p.position) + kNormalLength * toGlm(c.manifold.normal),
+                               render::kDebugContactNormalColor);
+      deepest = std::max(deepest, p.depth);
+      ++points;
+    }
+  }
+  frame.overlay.rows.push_back({"contacts", format("%.0f manifolds, %.0f points", static_cast<double>(world.contacts().size()), points)});
+  if (points > 0) frame.overlay.rows.push_back({"deepest penetration", format("%.4f m", deepest)});
+  for (const Contact& c : world.contacts()) {
+    const std::string who = c.kind == Contact::Kind::PlaneBody ? "plane-" + world.bodies()[c.b].name()
+                                                               : world.bodies()[c.a].name() + "-" + world.bodies()[c.b].name();
+    frame.overlay.rows.push_back({"  " + who, format("n = (%+.2f ...), depth %.4f m", c.manifold.normal.x(), c.manifold.maxDepth())});
+  }
+
+  // Distance from the selected body to the nearest other body (GJK), drawn as a segment.
+  const RigidBody& selected = world.bodies()[view.selected];
+  double nearest = std::numeric_limits<double>::infinity();
+  ConvexDistance best;
+  for (std::size_t j = 0; j < world.bodies().size(); ++j) {
+    if (j == view.selected) continue;
+    const ConvexDistance d = convexDistance(selected.worldVertices(), world.bodies()[j].worldVertices());
+    if (d.distance < nearest) {
+      nearest = d.distance;
+      best = d;
+    }
+  }
+  if (std::isfinite(nearest)) {
+    frame.overlay.rows.push_back({"distance to nearest", best.overlap ? "overlapping" : format("%.4f m", nearest)});
+    if (!best.overlap) frame.lines.push_back({toGlm(best.pointA), toGlm(best.pointB), glm::vec3(0.2f, 1.0f, 0.3f), true});
+  }
+
+  // Where continuous collision stopped a body, the pose the step would have reached.
+  for (const Impact& impact : collision.impacts()) {
+    const RigidBody& body = world.bodies()[impact.body];
+    render::BodyView ghost;
+    const Mat3 R = impact.unstoppedOrientation.toRotationMatrix();
+    for (const Vec3& p : body.mesh().vertices) ghost.worldVertices.push_back(toGlm(R * p + impact.unstoppedPosition));
+    ghost.triangles = &body.mesh().triangles;
+    ghost.position = toGlm(impact.unstoppedPosition);
+    for (int c = 0; c < 3; ++c) ghost.rotation[c] = toGlm(R.col(c));
+    ghost.color = toGlm(body.color());
+    ghost.opacity = kGhostOpacity;
+    frame.bodies.push_back(std::move(ghost));
+    frame.overlay.rows.push_back({"stopped at impact", body.name() + format(" at s = %.3f of the step", impact.fraction)});
+  }
+}
+
+}  // namespace rbsim::app

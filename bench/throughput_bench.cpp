@@ -1,0 +1,215 @@
+// Throughput of the unconstrained World::step (issue 3): body-steps per second per integrator for
+// 1, 1e3 and 1e5 boxes, memcpy bandwidth in and out of cache, and the memory-bandwidth bound
+// bandwidth / (bytes per body-step) the step at 1e5 bodies is held against (goal: within 2x).
+// Run: build/bench/throughput_bench --benchmark_repetitions=3 --benchmark_min_time=1
+// The console output ends with a summary of the bound; --benchmark_out=FILE keeps the JSON.
+#include <benchmark/benchmark.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "world/world.h"
+
+namespace {
+
+using namespace rbsim;
+
+constexpr int kBodyCounts[] = {1, 1000, 100000};
+constexpr int kOutOfCacheBodies = 100000;  // the count the 2x goal is stated for
+constexpr std::uint64_t kSeed = 20240301;
+constexpr double kMaxSpeed = 5.0;      // [m/s] per component of the initial velocity
+constexpr double kMaxSpin = 10.0;      // [rad/s] per component of the initial angular velocity
+constexpr double kMinExtent = 0.1;     // [m] box edge
+constexpr double kMaxExtent = 1.0;     // [m]
+constexpr double kDensity = 1000.0;    // [kg/m^3], water
+constexpr std::size_t kKiB = 1024, kMiB = 1024 * kKiB;
+
+// Boxes of random size (each its own mesh, so its 8 body-space vertices are its own memory, as
+// for bodies loaded from different shapes), random pose, velocity and spin; gravity on and no
+// sleeping, so every body is integrated every step.
+World boxWorld(Integrator integrator, int count) {
+  Settings settings;
+  settings.integrator = integrator;
+  settings.allowSleep = false;
+  settings.detectCollisions = false;  // the unconstrained step: no collision stages
+  World world(settings);
+  std::mt19937_64 rng(kSeed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), extent(kMinExtent, kMaxExtent);
+  for (int i = 0; i < count; ++i) {
+    const Vec3 size(extent(rng), extent(rng), extent(rng));
+    BodyDef def;
+    def.mesh = std::make_shared<const Mesh>(makeBox(size));
+    def.mass = kDensity * size.prod();
+    def.inertiaBody = cuboidInertia(def.mass, size);
+    def.position = 100.0 * Vec3(unit(rng), unit(rng), unit(rng));
+    def.orientation = Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
+    def.velocity = kMaxSpeed * Vec3(unit(rng), unit(rng), unit(rng));
+    def.angularVelocity = kMaxSpin * Vec3(unit(rng), unit(rng), unit(rng));
+    world.addBody(def);
+  }
+  return world;
+}
+
+// Bytes World::step reads and writes per awake box under gravity with no scripted forces, no
+// pose events and sleeping off, field by field from world.cpp, rigid_body.cpp and
+// integrator.cpp: each field once, however often the step touches it while it is in cache. A
+// field read and rewritten counts twice, as memcpy's source and destination do. The hardware
+// moves whole 64-byte lines, so the real traffic is larger (a field an integrator skips still
+// comes in with its neighbours): this count, and so the bound, errs on the strict side.
+struct FieldTraffic {
+  const char* field;
+  std::size_t readBytes;
+  std::size_t writtenBytes;
+};
+constexpr std::size_t kBoxVertices = 8;
+const FieldTraffic kEveryStep[] = {
+    {"awake flag, vertex-array pointers", sizeof(bool) + 3 * sizeof(void*), 0},
+    {"state x, q, P, L", sizeof(BodyState), sizeof(BodyState)},
+    {"F, tau (F += m g, read, cleared)", 2 * sizeof(Vec3), 2 * sizeof(Vec3)},
+    {"m, 1/m, I_body^-1", 2 * sizeof(double) + sizeof(Mat3), 0},
+    {"R, v, omega, world I^-1 (rederived)", 0, 2 * sizeof(Mat3) + 2 * sizeof(Vec3)},
+    {"8 body-space vertices", kBoxVertices * sizeof(Vec3), 0},
+    {"8 world-space vertices p' = R p + x", 0, kBoxVertices * sizeof(Vec3)},
+};
+
+// What each integrator reads of StepInputs besides F, tau, 1/m and I_body^-1 (integrator.cpp).
+std::size_t integratorReadBytes(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::EulerMatrix: return sizeof(Mat3) + 2 * sizeof(Vec3);  // R, v, omega
+    case Integrator::EulerQuat:
+    case Integrator::ExpMap: return 2 * sizeof(Vec3);                      // v, omega
+    case Integrator::SymplecticEuler: return sizeof(Mat3);                 // R
+    case Integrator::Rk4: return 0;                                        // R(q) from q
+    case Integrator::ImplicitGyro: return 2 * sizeof(Mat3);                // R, I_body
+    case Integrator::Dlm: return sizeof(Mat3) + sizeof(Vec3);              // E, principal moments
+  }
+  return 0;
+}
+
+std::size_t bytesPerBodyStep(Integrator integrator) {
+  std::size_t total = integratorReadBytes(integrator);
+  for (const FieldTraffic& f : kEveryStep) total += f.readBytes + f.writtenBytes;
+  return total;
+}
+
+void stepBodies(benchmark::State& state, Integrator integrator) {
+  const int count = static_cast<int>(state.range(0));
+  World world = boxWorld(integrator, count);
+  for (auto _ : state) {
+    world.step();
+    benchmark::DoNotOptimize(world.bodies().back().state());
+  }
+  state.SetItemsProcessed(state.iterations() * count);
+  state.counters["bytes_per_body"] = static_cast<double>(bytesPerBodyStep(integrator));
+}
+
+// The last-level cache as the system reports it (a virtual machine may report the host's).
+std::size_t lastLevelCacheBytes() {
+  for (int name : {_SC_LEVEL4_CACHE_SIZE, _SC_LEVEL3_CACHE_SIZE, _SC_LEVEL2_CACHE_SIZE}) {
+    const long bytes = sysconf(name);
+    if (bytes > 0) return static_cast<std::size_t>(bytes);
+  }
+  return 0;
+}
+
+// Out of cache: at least 256 MiB and twice what the last-level cache is said to hold.
+std::size_t outOfCacheBytes() { return std::max<std::size_t>(256 * kMiB, 2 * lastLevelCacheBytes()); }
+
+// memcpy of state.range(0) bytes; bytes processed = read + written, the step's convention.
+void copyBuffer(benchmark::State& state) {
+  const std::size_t size = static_cast<std::size_t>(state.range(0));
+  std::vector<char> source(size, 1), destination(size, 0);
+  for (auto _ : state) {
+    std::memcpy(destination.data(), source.data(), size);
+    benchmark::DoNotOptimize(destination.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(2 * size));
+}
+
+// Keeps every run's rates (the median when repetitions are aggregated) for the summary.
+class SummaryReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      if (run.error_occurred) continue;
+      if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
+      for (const char* rate : {"items_per_second", "bytes_per_second"}) {
+        const auto it = run.counters.find(rate);
+        if (it != run.counters.end()) rates_[run.run_name.str()] = it->second.value;
+      }
+    }
+  }
+  double rate(const std::string& name) const {
+    const auto it = rates_.find(name);
+    return it == rates_.end() ? 0.0 : it->second;
+  }
+
+ private:
+  std::map<std::string, double> rates_;
+};
+
+std::string stepName(const std::string& integrator, int count) {
+  return "step/" + integrator + "/" + std::to_string(count);
+}
+std::string copyName(std::size_t bytes) { return "memcpy/" + std::to_string(bytes); }
+
+void printSummary(const SummaryReporter& results, const std::vector<std::size_t>& copySizes) {
+  std::printf("\nBytes read + written per body-step by every integrator (world.cpp, rigid_body.cpp):\n");
+  for (const FieldTraffic& f : kEveryStep) {
+    std::printf("  %-38s read %4zu  written %4zu\n", f.field, f.readBytes, f.writtenBytes);
+  }
+  std::printf("  plus what the integrator reads of R, v, omega, I_body, E, principal moments\n");
+  std::printf("\nmemcpy bandwidth (read + written):\n");
+  for (std::size_t size : copySizes) {
+    std::printf("  %10zu KiB  %7.2f GB/s\n", size / kKiB, results.rate(copyName(size)) / 1e9);
+  }
+  const double bandwidth = results.rate(copyName(copySizes.back()));
+  if (bandwidth <= 0.0) return;  // the filter left out the out-of-cache copy
+  std::printf("\nAt %d bodies: bound = %.2f GB/s / (bytes per body-step)\n", kOutOfCacheBodies, bandwidth / 1e9);
+  std::printf("  %-18s %6s %14s %14s %9s\n", "integrator", "bytes", "bound/s", "measured/s", "bound/x");
+  for (const std::string& name : integratorNames()) {
+    Integrator integrator;
+    parseIntegrator(name, integrator);
+    const double bytes = static_cast<double>(bytesPerBodyStep(integrator));
+    const double measured = results.rate(stepName(name, kOutOfCacheBodies));
+    if (measured <= 0.0) continue;
+    std::printf("  %-18s %6.0f %14.4g %14.4g %9.2f\n", name.c_str(), bytes, bandwidth / bytes, measured,
+                bandwidth / bytes / measured);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  for (const std::string& name : integratorNames()) {
+    Integrator integrator;
+    parseIntegrator(name, integrator);
+    for (int count : kBodyCounts) {
+      benchmark::RegisterBenchmark(("step/" + name).c_str(), stepBodies, integrator)
+          ->Arg(count)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  }
+  // L1, L2, then out of every cache; the last one sets the bound.
+  const std::vector<std::size_t> copySizes = {16 * kKiB, 1 * kMiB, outOfCacheBytes()};
+  for (std::size_t size : copySizes) {
+    benchmark::RegisterBenchmark("memcpy", copyBuffer)->Arg(static_cast<std::int64_t>(size))->Unit(benchmark::kMicrosecond);
+  }
+  SummaryReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  printSummary(reporter, copySizes);
+  benchmark::Shutdown();
+  return 0;
+}

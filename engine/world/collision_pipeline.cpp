@@ -1,0 +1,146 @@
+#include "world/collision_pipeline.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "collision/broadphase/brute_force.h"
+#include "collision/broadphase/sweep_and_prune.h"
+#include "collision/narrowphase/box_box.h"
+#include "collision/narrowphase/convex_convex.h"
+#include "collision/narrowphase/convex_plane.h"
+#include "world/continuous_collision.h"
+
+namespace rbsim {
+
+namespace {
+
+std::unique_ptr<BroadPhase> makeBroadPhase(Settings::BroadPhaseMethod method) {
+  if (method == Settings::BroadPhaseMethod::BruteForce) return std::make_unique<BruteForce>();
+  return std::make_unique<SweepAndPrune>();
+}
+
+// The lowest point of a box along -n is its support point: the box is below the plane's
+// margin band exactly when that point is.
+bool aabbNearPlane(const Aabb& box, const Plane& plane, double margin) {
+  const Vec3 lowest((plane.normal.x() > 0.0 ? box.min : box.max).x(), (plane.normal.y() > 0.0 ? box.min : box.max).y(),
+                    (plane.normal.z() > 0.0 ? box.min : box.max).z());
+  return plane.signedDistance(lowest) <= margin;
+}
+
+SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) {
+  return SweptBody{&body.mesh().vertices, start, body.state(), radius};
+}
+
+}  // namespace
+
+CollisionPipeline::CollisionPipeline(const Settings& settings)
+    : settings_(settings), broad_(makeBroadPhase(settings.broadPhase)), log_(settings.queryLogCapacity) {}
+
+void CollisionPipeline::addBody(const RigidBody& body) {
+  double radius = 0.0;
+  Aabb local;
+  for (const Vec3& p : body.mesh().vertices) {
+    radius = std::max(radius, p.norm());
+    local.grow(p);
+  }
+  const Aabb box = Aabb::of(body.worldVertices()).inflated(settings_.contactMargin);
+  proxies_.push_back(broad_->add(box, body.isStatic()));
+  // narrowPhase reads a pair's proxy ids as body indices: bodies are never removed, so the
+  // broad phase hands out 0, 1, 2, ... in order.
+  if (proxies_.back() != proxies_.size() - 1) throw std::logic_error("broad phase ids are not body indices");
+  radius_.push_back(radius);
+  thickness_.push_back(local.extents().minCoeff());
+  start_.push_back(body.state());
+  fast_.push_back(0);
+  boxes_.push_back(box);
+}
+
+bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const {
+  if (bodies.size() < 2 && planes.empty()) return false;
+  return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.awake(); });
+}
+
+void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) start_[i] = bodies[i].state();
+  haveStart_ = true;
+}
+
+bool CollisionPipeline::isFast(std::size_t body) const { return fast_[body] != 0; }
+
+void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) {
+  impacts_.clear();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const RigidBody& body = bodies[i];
+    fast_[i] = 0;
+    if (!body.awake() || !haveStart_) continue;
+    const double motion = motionBound(sweptOf(body, start_[i], radius_[i]));
+    fast_[i] = motion > settings_.ccdMotionFraction * thickness_[i] ? 1 : 0;
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!isFast(i)) continue;
+    const SweptBody swept = sweptOf(bodies[i], start_[i], radius_[i]);
+    double first = 1.0;
+    for (const Plane& plane : planes) {
+      if (const auto s = timeOfImpact(swept, plane)) first = std::min(first, *s);
+    }
+    // Other bodies whose swept boxes the fast body's swept box meets: every body's box covers its
+    // start and end poses, so a contact during the step lies inside both.
+    Aabb sweep = Aabb::of(worldVerticesAt(swept, 0.0));
+    sweep.grow(Aabb::of(bodies[i].worldVertices()));
+    for (std::size_t j = 0; j < bodies.size(); ++j) {
+      if (j == i) continue;
+      Aabb other = boxes_[j];
+      other.grow(Aabb::of(bodies[j].worldVertices()));
+      if (!sweep.overlaps(other)) continue;
+      const SweptBody partner = sweptOf(bodies[j], start_[j], radius_[j]);
+      if (const auto s = timeOfImpact(swept, partner)) first = std::min(first, *s);
+    }
+    if (first < 1.0) {
+      impacts_.push_back({i, first, bodies[i].position(), bodies[i].orientation()});
+      bodies[i].setState(poseAt(swept, first));  // momenta kept: the response is the solver's
+    }
+  }
+  haveStart_ = false;
+}
+
+void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].awake()) continue;
+    Aabb box = Aabb::of(bodies[i].worldVertices());
+    if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
+    boxes_[i] = box.inflated(settings_.contactMargin);
+    broad_->move(proxies_[i], boxes_[i]);
+  }
+  broad_->update();
+}
+
+void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes, double time) {
+  contacts_.clear();
+  const double margin = settings_.contactMargin;
+  for (const ProxyPair& pair : broad_->pairs()) {
+    // Proxies are added in body order and never removed, so a proxy id is its body's index.
+    const RigidBody& a = bodies[pair.a];
+    const RigidBody& b = bodies[pair.b];
+    if (!a.awake() && !b.awake()) continue;
+    std::optional<OrientedBox> boxA, boxB;
+    if (a.boxHalfExtents() && b.boxHalfExtents()) {
+      boxA = OrientedBox{a.position(), a.rotation(), *a.boxHalfExtents()};
+      boxB = OrientedBox{b.position(), b.rotation(), *b.boxHalfExtents()};
+    }
+    const ConvexContact c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr,
+                                          boxB ? &*boxB : nullptr);
+    log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold,
+                          c.distance, time));
+    if (c.manifold.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, c.manifold});
+  }
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (bodies[i].isStatic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
+      const ContactManifold m = collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin);
+      log_.record(summarize(QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
+      if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, m});
+    }
+  }
+}
+
+}  // namespace rbsim

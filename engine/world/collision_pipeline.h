@@ -1,0 +1,76 @@
+#pragma once
+// The collision stages of World::step (seed 004 "two-phase collision detection"): continuous
+// collision for fast bodies, the broad phase over world AABBs, and the narrow phase turning
+// candidate pairs and planes into contact manifolds. Owned by the World; plain data out.
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "body/rigid_body.h"
+#include "collision/broadphase/broad_phase.h"
+#include "collision/contact.h"
+#include "collision/narrowphase/query_log.h"
+#include "world/settings.h"
+
+namespace rbsim {
+
+// A touching (or, within the contact margin, nearly touching) pair. For a body against a plane,
+// `a` is the plane's index and the normal is the plane's (collision/narrowphase/convex_plane.h).
+struct Contact {
+  enum class Kind { BodyBody, PlaneBody } kind = Kind::BodyBody;
+  std::size_t a = 0, b = 0;
+  ContactManifold manifold;
+};
+
+// A fast body stopped at its time of impact by continuous collision detection.
+struct Impact {
+  std::size_t body = 0;
+  double fraction = 1.0;  // s in [0, 1] of the step at which it stopped
+  Vec3 unstoppedPosition = Vec3::Zero();  // where the step would have taken it [m]
+  Quat unstoppedOrientation = Quat::Identity();
+};
+
+class CollisionPipeline {
+ public:
+  explicit CollisionPipeline(const Settings& settings);
+
+  void addBody(const RigidBody& body);  // bodies are added in World order; ids are indices
+
+  // The state of every body before Integrate, kept for the continuous stage.
+  void rememberStart(const std::vector<RigidBody>& bodies);
+  // Stage ContinuousCollision: fast bodies that would pass through a plane or a body this step
+  // are moved back to their time of impact. Returns the impacts of this step.
+  void continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes);
+  // Stage BroadPhase: every moved body's AABB (inflated by the contact margin; swept for fast
+  // bodies) into the broad phase, then the candidate pairs.
+  void broadPhase(const std::vector<RigidBody>& bodies);
+  // Stage NarrowPhase: contacts of candidate pairs and of bodies against planes.
+  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes, double time);
+
+  // Something awake and something to meet: two bodies, or a body and a plane. The stage also
+  // refreshes boxes(), which the plane tests of the narrow phase read.
+  bool needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const;
+  const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  const std::vector<Impact>& impacts() const { return impacts_; }
+  const std::vector<Aabb>& boxes() const { return boxes_; }  // per body, as last given to the broad phase
+  const QueryLog& queryLog() const { return log_; }
+
+ private:
+  bool isFast(std::size_t body) const;
+
+  Settings settings_;
+  std::unique_ptr<BroadPhase> broad_;
+  std::vector<ProxyId> proxies_;        // per body
+  std::vector<double> radius_;          // per body: farthest vertex from the centre of mass [m]
+  std::vector<double> thickness_;       // per body: smallest extent of its body-frame bounds [m]
+  std::vector<BodyState> start_;        // per body, before Integrate
+  std::vector<char> fast_;              // per body: swept this step
+  bool haveStart_ = false;              // start_ holds this step's start (rememberStart ran)
+  std::vector<Aabb> boxes_;
+  std::vector<Contact> contacts_;
+  std::vector<Impact> impacts_;
+  QueryLog log_;
+};
+
+}  // namespace rbsim

@@ -1,0 +1,193 @@
+// world/collision_pipeline and world/continuous_collision: the collision stages inside
+// World::step. Contacts against planes and between bodies, the same pairs from sweep and prune
+// as from brute force, and no tunnelling of a fast thin body with continuous collision on.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+#include "world/continuous_collision.h"
+#include "world/world.h"
+
+namespace rbsim {
+namespace {
+
+using test::allNear;
+using test::boxDef;
+
+constexpr double kDt = 1.0 / 64.0;  // [s]
+
+Settings settings(const Vec3& gravity = Vec3::Zero()) {
+  Settings s;
+  s.gravity = gravity;
+  s.timeStep = kDt;
+  s.allowSleep = false;
+  return s;
+}
+
+BodyDef box(const Vec3& extents, const Vec3& position, const Vec3& velocity = Vec3::Zero()) {
+  BodyDef def = boxDef(extents, 1.0);
+  def.boxHalfExtents = 0.5 * extents;
+  def.position = position;
+  def.velocity = velocity;
+  return def;
+}
+
+TEST(CollisionWorld, ABoxSinkingThroughTheGroundHasFourContactsOfTheKnownDepth) {
+  // No response yet: the box moves down at 1 m/s through y = 0; after n steps its bottom face is
+  // at 0.5 - n dt, so the depth of its four bottom corners is n dt - 0.5 once that is positive.
+  World world(settings());
+  world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0, -1.0, 0.0)));
+  world.addPlane(Plane{Vec3::UnitY(), 0.0});
+  for (int n = 1; n <= 48; ++n) {
+    world.step();
+    const double depth = n * kDt - 0.5;
+    if (depth < -world.settings().contactMargin) {
+      EXPECT_TRUE(world.contacts().empty()) << n;
+      continue;
+    }
+    ASSERT_EQ(world.contacts().size(), 1u) << n;
+    const Contact& c = world.contacts()[0];
+    EXPECT_EQ(c.kind, Contact::Kind::PlaneBody);
+    EXPECT_TRUE(allNear(c.manifold.normal, Vec3::UnitY(), 0.0));
+    ASSERT_EQ(c.manifold.count, 4);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(c.manifold.points[k].depth, depth, 1e-12) << n;
+  }
+  EXPECT_GT(world.collision().queryLog().total(), 0u);
+}
+
+TEST(CollisionWorld, TwoBoxesOverlappingReportOneBodyContact) {
+  World world(settings());
+  world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.0, 0.0, 0.0)));
+  world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.9, 0.0, 0.0)));
+  world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(5.0, 0.0, 0.0)));
+  world.step();
+  ASSERT_EQ(world.collision().candidatePairs().size(), 1u);
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const Contact& c = world.contacts()[0];
+  EXPECT_EQ(c.kind, Contact::Kind::BodyBody);
+  EXPECT_EQ(c.a, 0u);
+  EXPECT_EQ(c.b, 1u);
+  EXPECT_TRUE(allNear(c.manifold.normal, Vec3::UnitX(), 1e-12));
+  EXPECT_NEAR(c.manifold.maxDepth(), 0.1, 1e-12);
+  EXPECT_EQ(c.manifold.count, 4);
+}
+
+// A thin plate (1 cm) falling at 50 m/s: 0.78 m per step, 78 times its thickness.
+World fallingPlate(bool continuous) {
+  Settings s = settings();
+  s.continuousCollision = continuous;
+  World world(s);
+  world.addBody(box(Vec3(0.5, 0.01, 0.5), Vec3(0.0, 1.0, 0.0), Vec3(0.0, -50.0, 0.0)));
+  world.addPlane(Plane{Vec3::UnitY(), 0.0});
+  return world;
+}
+
+TEST(CollisionWorld, AFastThinPlateDoesNotTunnelThroughAPlane) {
+  // A plane is a half-space, so a body past it is still seen, as deeply penetrating: without
+  // continuous collision the first contact has the whole plate below the surface.
+  World without = fallingPlate(false);
+  World with = fallingPlate(true);
+  double firstDepth = -1.0;
+  for (int n = 0; n < 10; ++n) {
+    without.step();
+    with.step();
+    if (firstDepth < 0.0 && !without.contacts().empty()) firstDepth = without.contacts()[0].manifold.maxDepth();
+  }
+  EXPECT_LT(without.bodies()[0].position().y(), -5.0) << "it passed through";
+  EXPECT_GT(firstDepth, 0.5) << "first seen half a metre deep, fifty times its thickness";
+  // With continuous collision it stops where its bottom face is kImpactSeparation or less above
+  // the plane, and the narrow phase sees it.
+  const double bottom = with.bodies()[0].position().y() - 0.005;
+  EXPECT_GE(bottom, 0.0);
+  EXPECT_LE(bottom, kImpactSeparation);
+  EXPECT_FALSE(with.contacts().empty());
+  EXPECT_GT(with.stageStats(Stage::ContinuousCollision).runs, 0u);
+}
+
+TEST(CollisionWorld, AFastBoxDoesNotTunnelThroughAStaticWall) {
+  for (bool continuous : {false, true}) {
+    Settings s = settings();
+    s.continuousCollision = continuous;
+    World world(s);
+    world.addBody(box(Vec3(0.1, 0.1, 0.1), Vec3(-1.0, 0.0, 0.0), Vec3(120.0, 0.0, 0.0)));
+    BodyDef wall = box(Vec3(0.05, 2.0, 2.0), Vec3(0.0, 0.0, 0.0));
+    wall.isStatic = true;
+    world.addBody(wall);
+    for (int n = 0; n < 8; ++n) world.step();
+    const double front = world.bodies()[0].position().x() + 0.05;
+    if (continuous) {
+      EXPECT_LE(front, -0.025 + 1e-9) << "stopped before the wall's face";
+      EXPECT_GE(front, -0.025 - kImpactSeparation - 1e-9);
+      EXPECT_FALSE(world.collision().impacts().empty());
+    } else {
+      EXPECT_GT(front, 5.0) << "without protection it went through";
+    }
+  }
+}
+
+TEST(CollisionWorld, SweepAndPruneAndBruteForceGiveTheSameContacts) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::array<World, 2> worlds{World(settings()), World(settings())};
+  Settings brute = settings();
+  brute.broadPhase = Settings::BroadPhaseMethod::BruteForce;
+  worlds[1] = World(brute);
+  for (int i = 0; i < 150; ++i) {
+    const Vec3 x(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng)), v(u(rng), u(rng), u(rng));
+    for (World& w : worlds) {
+      BodyDef def = box(Vec3(0.5, 0.3, 0.2), x, 2.0 * v);
+      def.angularVelocity = 3.0 * v;
+      w.addBody(def);
+    }
+  }
+  for (int n = 0; n < 40; ++n) {
+    for (World& w : worlds) w.step();
+    ASSERT_EQ(worlds[0].collision().candidatePairs(), worlds[1].collision().candidatePairs()) << n;
+    ASSERT_EQ(worlds[0].contacts().size(), worlds[1].contacts().size()) << n;
+  }
+  EXPECT_GT(worlds[0].contacts().size(), 0u) << "the scene has contacts to compare";
+}
+
+TEST(CollisionWorld, CollisionStagesAreSkippedWithNothingToCollide) {
+  World lonely(settings());
+  lonely.addBody(box(Vec3::Ones(), Vec3::Zero(), Vec3(1.0, 0.0, 0.0)));
+  Settings off = settings();
+  off.detectCollisions = false;
+  World passing(off);
+  passing.addBody(box(Vec3::Ones(), Vec3::Zero(), Vec3(1.0, 0.0, 0.0)));
+  passing.addBody(box(Vec3::Ones(), Vec3(0.5, 0.0, 0.0)));
+  passing.addPlane(Plane{Vec3::UnitY(), 0.0});
+  for (int n = 0; n < 5; ++n) {
+    lonely.step();
+    passing.step();
+  }
+  for (Stage s : {Stage::ContinuousCollision, Stage::BroadPhase, Stage::NarrowPhase}) {
+    EXPECT_EQ(lonely.stageStats(s).runs, 0u) << stageName(s);
+    EXPECT_EQ(passing.stageStats(s).runs, 0u) << stageName(s);
+  }
+  EXPECT_TRUE(passing.contacts().empty()) << "overlapping, but collisions are off";
+}
+
+TEST(ContinuousCollision, ConservativeAdvancementFindsTheAnalyticTimeOfImpact) {
+  // A unit cube's bottom at y = 1.5 moving down 4 m in the step reaches the plane at s = 0.375;
+  // conservative advancement stops with the face in (0, kImpactSeparation] above it.
+  const Mesh cube = makeBox(Vec3::Ones());
+  SweptBody swept{&cube.vertices, {}, {}, std::sqrt(0.75)};
+  swept.start.position = Vec3(0.0, 2.0, 0.0);
+  swept.end.position = Vec3(0.0, -2.0, 0.0);
+  const auto s = timeOfImpact(swept, Plane{Vec3::UnitY(), 0.0});
+  ASSERT_TRUE(s.has_value());
+  const double gap = 1.5 - 4.0 * *s;  // bottom face height at s [m]
+  EXPECT_GT(gap, 0.0) << "never past the plane";
+  EXPECT_LE(gap, kImpactSeparation + 1e-12) << "stopped within the separation band";
+  // Moving away from a plane it touches is no impact.
+  swept.start.position = Vec3(0.0, 0.5, 0.0);
+  swept.end.position = Vec3(0.0, 3.0, 0.0);
+  EXPECT_FALSE(timeOfImpact(swept, Plane{Vec3::UnitY(), 0.0}).has_value());
+}
+
+}  // namespace
+}  // namespace rbsim
