@@ -1,7 +1,8 @@
 // What skipping unneeded work saves (issue 3). Two pairs of worlds, each timed per step:
-//  - stages: moving boxes in zero gravity with no scripted forces, so ApplyPoseEvents and
-//    AccumulateForces have nothing to do; Settings::skipIdleStages true skips them, false runs
-//    every stage anyway (results are bit-identical either way, tests/engine/world/sleep_test).
+//  - stages: moving boxes in zero gravity with no scripted forces and collisions off, so only
+//    Integrate and UpdateSleep have work; Settings::skipIdleStages true skips the others, false
+//    runs every stage anyway, the collision stages included (results are bit-identical either
+//    way, tests/engine/world/sleep_test).
 //  - sleep: boxes at rest in zero gravity; with allowSleep they fall asleep after timeToSleep and
 //    Integrate is skipped, without it every body is integrated every step.
 // Run: build/bench/stage_skip_bench --benchmark_repetitions=3
@@ -34,6 +35,7 @@ World boxWorld(int count, bool moving, bool skipIdleStages, bool allowSleep) {
   settings.gravity = Vec3::Zero();
   settings.skipIdleStages = skipIdleStages;
   settings.allowSleep = allowSleep;
+  settings.detectCollisions = false;  // the unconstrained pipeline, as in throughput_bench
   World world(settings);
   std::mt19937_64 rng(kSeed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0), extent(kMinExtent, kMaxExtent);
@@ -65,7 +67,7 @@ void timeSteps(benchmark::State& state, World& world) {
   std::uint64_t runs = 0;
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) runs += world.stageStats(static_cast<Stage>(s)).runs;
   const double steps = static_cast<double>(world.stepCount() - stepsBefore);
-  state.counters["stages_run"] = static_cast<double>(runs - runsBefore) / steps;  // per step, of 4
+  state.counters["stages_run"] = static_cast<double>(runs - runsBefore) / steps;  // per step
   state.counters["awake"] = static_cast<double>(world.awakeCount());
 }
 

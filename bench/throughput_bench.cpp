@@ -169,13 +169,14 @@ void printSummary(const SummaryReporter& results, const std::vector<std::size_t>
     std::printf("  %-38s read %4zu  written %4zu\n", f.field, f.readBytes, f.writtenBytes);
   }
   std::printf("  plus what the integrator reads of R, v, omega, I_body, E, principal moments\n");
-  std::printf("\nmemcpy bandwidth (read + written):\n");
+  std::printf("\nmemcpy bandwidth (read + written; GB = 1e9 B, the table above counts 2^30):\n");
   for (std::size_t size : copySizes) {
     std::printf("  %10zu KiB  %7.2f GB/s\n", size / kKiB, results.rate(copyName(size)) / 1e9);
   }
   const double bandwidth = results.rate(copyName(copySizes.back()));
   if (bandwidth <= 0.0) return;  // the filter left out the out-of-cache copy
-  std::printf("\nAt %d bodies: bound = %.2f GB/s / (bytes per body-step)\n", kOutOfCacheBodies, bandwidth / 1e9);
+  std::printf("\nAt %d bodies: bound = %.2f GB/s / (bytes per body-step); goal: bound/x <= 2\n", kOutOfCacheBodies,
+              bandwidth / 1e9);
   std::printf("  %-18s %6s %14s %14s %9s\n", "integrator", "bytes", "bound/s", "measured/s", "bound/x");
   for (const std::string& name : integratorNames()) {
     Integrator integrator;
