@@ -141,8 +141,12 @@ void World::step() {
     integrateBodies();
   });
   runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
-  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] { collision_.broadPhase(bodies_); });
-  runStage(Stage::NarrowPhase, collides && anyAwakeNow, [&] { collision_.narrowPhase(bodies_, planes_, time()); });
+  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  });
+  runStage(Stage::NarrowPhase, collides && anyAwakeNow, [&] {
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, planes_, time());
+  });
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
   ++stepCount_;
 }
@@ -222,6 +226,8 @@ void World::reportDivergence(const RigidBody& body, const BodyState& next) const
 }
 
 void World::updateSleep() {
+  // Run with skipIdleStages = false, the stage must still not put anything to sleep.
+  if (!settings_.allowSleep) return;
   const double dt = settings_.timeStep;
   for (RigidBody& body : bodies_) {
     if (!body.awake()) continue;

@@ -119,6 +119,18 @@ TEST(Sleep, DisallowedSleepKeepsEveryBodyAwakeAndSkipsTheStage) {
   EXPECT_EQ(world.stageStats(Stage::Integrate).runs, 10u * kStepsToSleep);
 }
 
+TEST(Sleep, RunningEveryStageDoesNotSleepWhenSleepIsDisallowed) {
+  // skipIdleStages = false runs UpdateSleep every step; with allowSleep = false it must still
+  // leave a slow (5 mm/s) body awake and drifting.
+  Settings s = zeroGravity();
+  s.allowSleep = false;
+  s.skipIdleStages = false;
+  World world = worldWithBox(s, Vec3(0.005, 0.0, 0.0));
+  stepN(world, 10 * kStepsToSleep);
+  EXPECT_TRUE(world.bodies()[0].awake());
+  EXPECT_TRUE(allNear(world.bodies()[0].velocity(), Vec3(0.005, 0.0, 0.0), 1e-15));
+}
+
 TEST(Settings, SleepThresholdsAreChecked) {
   for (auto bad : {+[](Settings& s) { s.sleepLinearSpeed = -1.0; }, +[](Settings& s) { s.sleepAngularSpeed = std::nan(""); },
                    +[](Settings& s) { s.timeToSleep = 0.0; }}) {
