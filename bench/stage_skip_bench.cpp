@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "random_boxes.h"
 #include "world/world.h"
 
 namespace {
@@ -24,11 +25,6 @@ using namespace rbsim;
 
 constexpr int kBodyCounts[] = {1000, 100000};
 constexpr std::uint64_t kSeed = 20240302;
-constexpr double kMaxSpeed = 5.0;  // [m/s] per component: far above the sleep speeds
-constexpr double kMaxSpin = 10.0;  // [rad/s] per component
-constexpr double kMinExtent = 0.1, kMaxExtent = 1.0;  // box edges [m]
-constexpr double kDensity = 1000.0;                    // [kg/m^3]
-
 // Boxes of random size and pose in zero gravity; moving ones get random velocities and spins.
 World boxWorld(int count, bool moving, bool skipIdleStages, bool allowSleep) {
   Settings settings;
@@ -37,22 +33,7 @@ World boxWorld(int count, bool moving, bool skipIdleStages, bool allowSleep) {
   settings.allowSleep = allowSleep;
   settings.detectCollisions = false;  // the unconstrained pipeline, as in throughput_bench
   World world(settings);
-  std::mt19937_64 rng(kSeed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0), extent(kMinExtent, kMaxExtent);
-  for (int i = 0; i < count; ++i) {
-    const Vec3 size(extent(rng), extent(rng), extent(rng));
-    BodyDef def;
-    def.mesh = std::make_shared<const Mesh>(makeBox(size));
-    def.mass = kDensity * size.prod();
-    def.inertiaBody = cuboidInertia(def.mass, size);
-    def.position = 100.0 * Vec3(unit(rng), unit(rng), unit(rng));
-    def.orientation = Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
-    if (moving) {
-      def.velocity = kMaxSpeed * Vec3(unit(rng), unit(rng), unit(rng));
-      def.angularVelocity = kMaxSpin * Vec3(unit(rng), unit(rng), unit(rng));
-    }
-    world.addBody(def);
-  }
+  bench::addRandomBoxes(world, count, kSeed, moving);
   return world;
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "random_boxes.h"
 #include "world/world.h"
 
 namespace {
@@ -25,11 +26,6 @@ using namespace rbsim;
 constexpr int kBodyCounts[] = {1, 1000, 100000};
 constexpr int kOutOfCacheBodies = 100000;  // the count the 2x goal is stated for
 constexpr std::uint64_t kSeed = 20240301;
-constexpr double kMaxSpeed = 5.0;      // [m/s] per component of the initial velocity
-constexpr double kMaxSpin = 10.0;      // [rad/s] per component of the initial angular velocity
-constexpr double kMinExtent = 0.1;     // [m] box edge
-constexpr double kMaxExtent = 1.0;     // [m]
-constexpr double kDensity = 1000.0;    // [kg/m^3], water
 constexpr std::size_t kKiB = 1024, kMiB = 1024 * kKiB;
 
 // Boxes of random size (each its own mesh, so its 8 body-space vertices are its own memory, as
@@ -41,20 +37,7 @@ World boxWorld(Integrator integrator, int count) {
   settings.allowSleep = false;
   settings.detectCollisions = false;  // the unconstrained step: no collision stages
   World world(settings);
-  std::mt19937_64 rng(kSeed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0), extent(kMinExtent, kMaxExtent);
-  for (int i = 0; i < count; ++i) {
-    const Vec3 size(extent(rng), extent(rng), extent(rng));
-    BodyDef def;
-    def.mesh = std::make_shared<const Mesh>(makeBox(size));
-    def.mass = kDensity * size.prod();
-    def.inertiaBody = cuboidInertia(def.mass, size);
-    def.position = 100.0 * Vec3(unit(rng), unit(rng), unit(rng));
-    def.orientation = Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
-    def.velocity = kMaxSpeed * Vec3(unit(rng), unit(rng), unit(rng));
-    def.angularVelocity = kMaxSpin * Vec3(unit(rng), unit(rng), unit(rng));
-    world.addBody(def);
-  }
+  bench::addRandomBoxes(world, count, kSeed);
   return world;
 }
 

@@ -7,14 +7,11 @@
 #include "collision/broadphase/brute_force.h"
 #include "collision/narrowphase/convex_convex.h"
 #include "render/debug_shapes.h"
+#include "run/to_glm.h"
 
 namespace rbsim::app {
 
 namespace {
-
-glm::vec3 toGlm(const Vec3& v) {
-  return glm::vec3(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
-}
 
 std::string format(const char* fmt, double a, double b = 0.0) {
   char buffer[128];

@@ -3,14 +3,11 @@
 #include <cstdio>
 
 #include "run/collision_view.h"
+#include "run/to_glm.h"
 
 namespace rbsim::app {
 
 namespace {
-
-glm::vec3 toGlm(const Vec3& v) {
-  return glm::vec3(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
-}
 
 std::string formatVec(const Vec3& v, const char* unit) {
   char buffer[96];

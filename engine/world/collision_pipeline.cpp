@@ -76,6 +76,17 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     const double motion = motionBound(sweptOf(body, start_[i], radius_[i]));
     fast_[i] = motion > settings_.ccdMotionFraction * thickness_[i] ? 1 : 0;
   }
+  if (std::none_of(fast_.begin(), fast_.end(), [](char f) { return f != 0; })) {
+    haveStart_ = false;
+    return;
+  }
+  // Each body's box over its whole step (last step's box, which covers the start pose, grown by
+  // the end pose), computed once: a contact during the step lies inside both bodies' boxes.
+  std::vector<Aabb> stepBoxes(bodies.size());
+  for (std::size_t j = 0; j < bodies.size(); ++j) {
+    stepBoxes[j] = boxes_[j];
+    if (bodies[j].awake()) stepBoxes[j].grow(Aabb::of(bodies[j].worldVertices()));
+  }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!isFast(i)) continue;
     const SweptBody swept = sweptOf(bodies[i], start_[i], radius_[i]);
@@ -83,15 +94,10 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     for (const Plane& plane : planes) {
       if (const auto s = timeOfImpact(swept, plane)) first = std::min(first, *s);
     }
-    // Other bodies whose swept boxes the fast body's swept box meets: every body's box covers its
-    // start and end poses, so a contact during the step lies inside both.
     Aabb sweep = Aabb::of(worldVerticesAt(swept, 0.0));
     sweep.grow(Aabb::of(bodies[i].worldVertices()));
     for (std::size_t j = 0; j < bodies.size(); ++j) {
-      if (j == i) continue;
-      Aabb other = boxes_[j];
-      other.grow(Aabb::of(bodies[j].worldVertices()));
-      if (!sweep.overlaps(other)) continue;
+      if (j == i || !sweep.overlaps(stepBoxes[j])) continue;
       const SweptBody partner = sweptOf(bodies[j], start_[j], radius_[j]);
       if (const auto s = timeOfImpact(swept, partner)) first = std::min(first, *s);
     }
