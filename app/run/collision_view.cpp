@@ -74,7 +74,10 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
   for (const Contact& c : world.contacts()) {
     const std::string who = c.kind == Contact::Kind::PlaneBody ? "plane-" + world.bodies()[c.b].name()
                                                                : world.bodies()[c.a].name() + "-" + world.bodies()[c.b].name();
-    frame.overlay.rows.push_back({"  " + who, format("n = (%+.2f ...), depth %.4f m", c.manifold.normal.x(), c.manifold.maxDepth())});
+    char row[128];
+    const Vec3& n = c.manifold.normal;
+    std::snprintf(row, sizeof row, "n (%+.2f %+.2f %+.2f), depth %.4f m", n.x(), n.y(), n.z(), c.manifold.maxDepth());
+    frame.overlay.rows.push_back({"  " + who, row});
   }
 
   // Distance from the selected body to the nearest other body (GJK), drawn as a segment.
