@@ -5,9 +5,10 @@ namespace rbsim::app {
 Demo demo2Unconstrained();
 Demo demo3Broadphase();
 Demo demo4Narrowphase();
+Demo demo5Contact();
 
 const std::vector<Demo>& allDemos() {
-  static const std::vector<Demo> demos = {demo2Unconstrained(), demo3Broadphase(), demo4Narrowphase()};
+  static const std::vector<Demo> demos = {demo2Unconstrained(), demo3Broadphase(), demo4Narrowphase(), demo5Contact()};
   return demos;
 }
 

@@ -56,6 +56,7 @@ inline constexpr glm::vec3 kDebugOverlapAabbColor{1.00f, 0.08f, 0.06f};    // re
 inline constexpr glm::vec3 kDebugSweptAabbColor{0.75f, 0.78f, 0.82f};      // light grey
 inline constexpr glm::vec3 kDebugContactPointColor{1.00f, 0.90f, 0.00f};   // yellow
 inline constexpr glm::vec3 kDebugContactNormalColor{1.00f, 0.10f, 0.90f};  // magenta
+inline constexpr glm::vec3 kDebugImpulseColor{1.00f, 0.50f, 0.00f};        // orange: impulse j
 
 struct Camera {
   glm::vec3 eye{4.0f, 3.0f, 6.0f};

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "dynamics/material.h"
 #include "geometry/mesh.h"
 #include "math/types.h"
 
@@ -20,6 +21,7 @@ struct BodyDef {
   Vec3 velocity = Vec3::Zero();            // v of the centre of mass [m/s]
   Vec3 angularVelocity = Vec3::Zero();     // omega, world frame [rad/s]
   Vec3 color = Vec3(0.85, 0.45, 0.2);      // display only, linear RGB in [0, 1]
+  Material material;                       // restitution and friction (dynamics/material.h)
   // A static body never moves: it is not integrated, forces do not act on it, and it behaves as
   // if its mass were infinite. Its mass and inertia are kept for display only.
   bool isStatic = false;

@@ -49,6 +49,17 @@ double nonNegative(const JsonObject& o, const char* key, double fallback, const 
 
 }  // namespace
 
+Material parseMaterial(const JsonObject& o) {
+  Material m;
+  m.restitution = o.number("restitution", m.restitution);
+  if (!(m.restitution >= 0.0 && m.restitution <= 1.0)) o.fail("restitution", "expected a coefficient in [0, 1]");
+  m.staticFriction = nonNegative(o, "friction_static", m.staticFriction, "(mu_s)");
+  // Without its own value, mu_k follows a lowered mu_s, so "friction_static": 0 means frictionless.
+  m.kineticFriction = nonNegative(o, "friction_kinetic", std::min(m.kineticFriction, m.staticFriction), "(mu_k)");
+  if (m.kineticFriction > m.staticFriction) o.fail("friction_kinetic", "expected mu_k <= friction_static (mu_s)");
+  return m;
+}
+
 std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, const char* key) {
   const std::string name = o.requiredString(key);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -83,6 +94,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   def.color = b.vec3("color", def.color);
   if (def.color.minCoeff() < 0.0 || def.color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
   def.isStatic = b.boolean("static", false);
+  def.material = parseMaterial(b);
   if (def.isStatic && (def.velocity != Vec3::Zero() || def.angularVelocity != Vec3::Zero())) {
     b.fail(def.velocity != Vec3::Zero() ? "velocity" : "angular_velocity", "a static body cannot move; expected zero");
   }
@@ -132,13 +144,15 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
 }
 
 void parsePlanes(const JsonObject& root, Scene& scene) {
-  for (const JsonObject& p : root.objectArray("planes", {"normal", "point"})) {
+  for (const JsonObject& p :
+       root.objectArray("planes", {"normal", "point", "restitution", "friction_static", "friction_kinetic"})) {
     const Vec3 normal = p.vec3("normal", Vec3::UnitY());
     if (!(normal.norm() > 0.0)) p.fail("normal", "expected a non-zero direction");
     Plane plane;
     plane.normal = normal.normalized();  // a direction: its length carries no meaning
     plane.offset = plane.normal.dot(p.vec3("point", Vec3::Zero()));
     scene.planes.push_back(plane);
+    scene.planeMaterials.push_back(parseMaterial(p));
   }
 }
 

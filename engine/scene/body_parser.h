@@ -10,7 +10,12 @@ namespace rbsim::scene_detail {
 
 inline constexpr std::initializer_list<const char*> kBodyKeys = {
     "name", "shape", "mass", "density", "inertia", "position", "orientation", "velocity",
-    "angular_velocity", "color", "static", "forces", "set_pose", "springs"};
+    "angular_velocity", "color", "static", "forces", "set_pose", "springs", "restitution",
+    "friction_static", "friction_kinetic"};
+
+// The material keys of a body or a plane ("restitution", "friction_static", "friction_kinetic"),
+// each defaulting to Material's.
+Material parseMaterial(const JsonObject& o);
 
 // Appends the body described by `b` to scene.bodies (and its inertia method name).
 void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene);

@@ -77,7 +77,9 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
   if (root.has("world")) {
-    const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "collisions", "ccd", "broad_phase", "contact_margin"});
+    const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "collisions", "ccd", "broad_phase", "contact_margin",
+                                         "velocity_iterations", "position_iterations", "restitution_threshold",
+                                         "contact_slop", "position_correction", "warm_starting", "response"});
     scene.settings.gravity = w.vec3("gravity", scene.settings.gravity);
     scene.settings.timeStep = w.positiveNumber("dt", scene.settings.timeStep);
     if (scene.settings.timeStep > kMaxTimeStep || scene.settings.timeStep < kMinTimeStep) {
@@ -97,6 +99,17 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     }
     scene.settings.contactMargin = w.number("contact_margin", scene.settings.contactMargin);
     if (!(scene.settings.contactMargin >= 0.0)) w.fail("contact_margin", "expected a distance >= 0 m");
+    Settings& s = scene.settings;
+    s.velocityIterations = w.positiveInt("velocity_iterations", s.velocityIterations);
+    s.positionIterations = w.positiveInt("position_iterations", s.positionIterations);
+    s.restitutionThreshold = w.number("restitution_threshold", s.restitutionThreshold);
+    if (!(s.restitutionThreshold >= 0.0)) w.fail("restitution_threshold", "expected a speed >= 0 m/s");
+    s.contactSlop = w.number("contact_slop", s.contactSlop);
+    if (!(s.contactSlop >= 0.0)) w.fail("contact_slop", "expected a distance >= 0 m");
+    s.positionCorrection = w.number("position_correction", s.positionCorrection);
+    if (!(s.positionCorrection >= 0.0 && s.positionCorrection <= 1.0)) w.fail("position_correction", "expected a fraction in [0, 1]");
+    s.warmStarting = w.boolean("warm_starting", s.warmStarting);
+    s.respondToContacts = w.boolean("response", s.respondToContacts);
     const std::string integrator = w.string("integrator", integratorName(scene.settings.integrator));
     if (!parseIntegrator(integrator, scene.settings.integrator)) {
       std::string names;
@@ -155,7 +168,7 @@ World buildWorld(const Scene& scene) {
   for (const ScriptedForce& f : scene.forces) world.addForce(f);
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
   for (const Spring& s : scene.springs) world.addSpring(s);
-  for (const Plane& p : scene.planes) world.addPlane(p);
+  for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
   return world;
 }
 

@@ -45,6 +45,7 @@ struct Scene {
   std::vector<PoseEvent> poseEvents;
   std::vector<Spring> springs;
   std::vector<Plane> planes;  // static, infinite
+  std::vector<Material> planeMaterials;  // per plane
   ViewDesc view;
 
   std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep

@@ -63,7 +63,8 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     const bool randomOrientation = s.boolean("random_orientation", true);
 
     // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
-    const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs"});
+    const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs",
+                                               "restitution", "friction_static", "friction_kinetic"});
     const std::size_t first = scene.bodies.size();
     parseBody(body, baseDir, scene);
     parseScripts(body, first, scene);

@@ -48,6 +48,26 @@ struct Settings {
   double ccdMotionFraction = 0.25;  // [1]
   std::size_t queryLogCapacity = 256;  // narrow-phase queries kept for dumping [records]
 
+  // Contact response (engine/dynamics/contact_solver.h): projected Gauss-Seidel over accumulated
+  // impulses, then split-impulse position correction. false: contacts are detected and reported
+  // but nothing acts on them, so bodies pass through each other (the narrow phase on its own).
+  bool respondToContacts = true;
+  int velocityIterations = 10;  // [sweeps] over every contact point (Box2D v2's default is 8)
+  int positionIterations = 4;   // [sweeps] of the split-impulse pass (Box2D v2's default is 3)
+  // Approach speeds below this do not bounce: a resting body meets the ground at g dt every step,
+  // and bouncing that would never let it rest (Box2D's b2_velocityThreshold is 1 m/s).
+  double restitutionThreshold = 0.5;  // [m/s]
+  // Penetration left in place, so that resting contacts stay touching from step to step instead
+  // of being pushed apart and falling back (Box2D's b2_linearSlop).
+  double contactSlop = 0.005;  // [m]
+  // Fraction of the penetration beyond the slop removed per step by the split impulse (Baumgarte's
+  // beta; Box2D v2's b2_baumgarte is 0.2). Larger values overshoot in stacks.
+  double positionCorrection = 0.2;  // [1]
+  // Last step's impulse starts a contact point's iterations when the point, in its body's frame,
+  // lies within this distance of last step's (Bullet's contact breaking threshold is 2 cm).
+  bool warmStarting = true;
+  double warmStartDistance = 0.02;  // [m]
+
   // false runs every stage of World::step every step, needed or not: it exists to measure what
   // skipping saves (bench/stage_skip_bench.cpp), never to change results.
   bool skipIdleStages = true;

@@ -4,11 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "integrate/integrator.h"
+#include "world/islands.h"
 #include "world/simulation_error.h"
 
 namespace rbsim {
@@ -53,6 +55,7 @@ const char* stageName(Stage stage) {
     case Stage::ContinuousCollision: return "continuous-collision";
     case Stage::BroadPhase: return "broad-phase";
     case Stage::NarrowPhase: return "narrow-phase";
+    case Stage::SolveContacts: return "solve-contacts";
     case Stage::UpdateSleep: return "update-sleep";
     case Stage::Count: break;
   }
@@ -70,7 +73,10 @@ const Settings& checked(const Settings& settings) {
 World::World(const Settings& settings) : settings_(checked(settings)), collision_(settings_) {}
 
 std::size_t World::addBody(const BodyDef& def) {
+  const std::string problem = checkMaterial(def.material);
+  if (!problem.empty()) throw std::invalid_argument("body '" + def.name + "': " + problem);
   bodies_.emplace_back(def);
+  bodyMaterials_.push_back(def.material);
   collision_.addBody(bodies_.back());
   return bodies_.size() - 1;
 }
@@ -90,11 +96,14 @@ void World::addSpring(const Spring& spring) {
   springs_.push_back(spring);
 }
 
-void World::addPlane(const Plane& plane) {
+void World::addPlane(const Plane& plane, const Material& material) {
   if (!plane.normal.allFinite() || !std::isfinite(plane.offset) || std::abs(plane.normal.norm() - 1.0) > 1e-9) {
     throw std::invalid_argument("plane: expected a finite unit normal and a finite offset");
   }
+  const std::string problem = checkMaterial(material);
+  if (!problem.empty()) throw std::invalid_argument("plane: " + problem);
   planes_.push_back(plane);
+  planeMaterials_.push_back(material);
 }
 
 void World::addPoseEvent(const PoseEvent& event) {
@@ -146,6 +155,11 @@ void World::step() {
   });
   runStage(Stage::NarrowPhase, collides && anyAwakeNow, [&] {
     if (settings_.detectCollisions) collision_.narrowPhase(bodies_, planes_, time());
+  });
+  // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
+  // are contacts between sleeping bodies, which receive nothing.
+  runStage(Stage::SolveContacts, anyAwakeNow && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+    if (settings_.respondToContacts) solveContacts();
   });
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
   ++stepCount_;
@@ -207,6 +221,21 @@ void World::integrateBodies() {
   }
 }
 
+void World::solveContacts() {
+  // A body at rest touched by an awake one takes part again (its island wakes layer by layer).
+  for (const Contact& contact : collision_.contacts()) {
+    if (contact.kind == Contact::Kind::BodyBody) {
+      RigidBody& a = bodies_[contact.a];
+      RigidBody& b = bodies_[contact.b];
+      if (a.awake() != b.awake()) {
+        a.wake();
+        b.wake();
+      }
+    }
+  }
+  contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
+}
+
 void World::reportDivergence(const RigidBody& body, const BodyState& next) const {
   std::string quantities;
   const auto add = [&quantities](bool finite, const char* name) {
@@ -234,7 +263,24 @@ void World::updateSleep() {
     const bool slow = body.velocity().norm() < settings_.sleepLinearSpeed &&
                       body.angularVelocity().norm() < settings_.sleepAngularSpeed;
     body.setRestingTime(slow ? body.restingTime() + dt : 0.0);
-    if (body.restingTime() >= settings_.timeToSleep) body.sleep();
+  }
+  // An island sleeps when its least rested body has rested long enough.
+  Islands islands(bodies_.size());
+  for (const Contact& contact : collision_.contacts()) {
+    if (contact.kind == Contact::Kind::BodyBody && !bodies_[contact.a].isStatic() && !bodies_[contact.b].isStatic()) {
+      islands.link(contact.a, contact.b);
+    }
+  }
+  std::vector<double>& rested = islandRestingTime_;
+  rested.assign(bodies_.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].awake()) {
+      double& least = rested[islands.find(i)];
+      least = std::min(least, bodies_[i].restingTime());
+    }
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].awake() && rested[islands.find(i)] >= settings_.timeToSleep) bodies_[i].sleep();
   }
 }
 
@@ -280,6 +326,16 @@ std::string checkSettings(const Settings& s) {
     problem << "ccd_motion_fraction: expected a finite fraction > 0";
   } else if (s.queryLogCapacity == 0) {
     problem << "query_log_capacity: expected at least one record";
+  } else if (s.velocityIterations < 1 || s.positionIterations < 0) {
+    problem << "velocity_iterations, position_iterations: expected >= 1 and >= 0 sweeps";
+  } else if (!(s.restitutionThreshold >= 0.0) || !std::isfinite(s.restitutionThreshold)) {
+    problem << "restitution_threshold: expected a finite speed >= 0 m/s";
+  } else if (!(s.contactSlop >= 0.0) || !std::isfinite(s.contactSlop)) {
+    problem << "contact_slop: expected a finite distance >= 0 m";
+  } else if (!(s.positionCorrection >= 0.0 && s.positionCorrection <= 1.0)) {
+    problem << "position_correction: expected a fraction in [0, 1]";
+  } else if (!(s.warmStartDistance >= 0.0) || !std::isfinite(s.warmStartDistance)) {
+    problem << "warm_start_distance: expected a finite distance >= 0 m";
   }
   return problem.str();
 }

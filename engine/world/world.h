@@ -8,6 +8,8 @@
 
 #include "body/rigid_body.h"
 #include "collision/contact.h"
+#include "dynamics/contact_solver.h"
+#include "dynamics/material.h"
 #include "world/collision_pipeline.h"
 #include "world/scripts.h"
 #include "world/spring.h"
@@ -16,7 +18,7 @@
 namespace rbsim {
 
 // Stages of World::step, in order (as Box2D v3's b2SolverStageType): names for timing and for
-// skipping. The contact solver joins this list with the contact-response issue.
+// skipping.
 enum class Stage : int {
   ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step
   AccumulateForces,  // gravity and scripted forces into F and tau
@@ -24,7 +26,8 @@ enum class Stage : int {
   ContinuousCollision,  // fast bodies stop at their time of impact instead of tunnelling
   BroadPhase,        // sweep and prune over world AABBs: candidate pairs
   NarrowPhase,       // contact manifolds of candidate pairs and of bodies against planes
-  UpdateSleep,       // bodies slow for Settings::timeToSleep fall asleep
+  SolveContacts,     // impulses: restitution, friction, resting contact; split-impulse correction
+  UpdateSleep,       // islands of touching bodies, all slow for Settings::timeToSleep, fall asleep
   Count
 };
 const char* stageName(Stage stage);
@@ -39,11 +42,12 @@ class World {
  public:
   explicit World(const Settings& settings);  // throws std::invalid_argument (checkSettings)
 
-  std::size_t addBody(const BodyDef& def);
+  std::size_t addBody(const BodyDef& def);  // throws std::invalid_argument on an invalid def
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
   void addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
-  void addPlane(const Plane& plane);     // static, infinite; throws unless the normal is unit
+  // Static and infinite; throws unless the normal is unit and the material valid.
+  void addPlane(const Plane& plane, const Material& material = {});
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
   void step();
@@ -59,6 +63,10 @@ class World {
   std::size_t awakeCount() const;
   const CollisionPipeline& collision() const { return collision_; }
   const std::vector<Contact>& contacts() const { return collision_.contacts(); }
+  // Every contact point of the last step with the impulse the solver gave it.
+  const std::vector<SolvedContactPoint>& contactPoints() const { return contactSolver_.points(); }
+  const Material& bodyMaterial(std::size_t body) const { return bodyMaterials_[body]; }
+  const Material& planeMaterial(std::size_t plane) const { return planeMaterials_[plane]; }
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
 
   // The forces acting during the step that starts at time t, in world frame: (point, force).
@@ -72,6 +80,7 @@ class World {
   void applyPoseEvents();
   void accumulateForces();
   void integrateBodies();
+  void solveContacts();
   void updateSleep();
   [[noreturn]] void reportDivergence(const RigidBody& body, const BodyState& next) const;
 
@@ -83,7 +92,11 @@ class World {
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
   std::vector<Plane> planes_;
+  std::vector<Material> bodyMaterials_;   // per body
+  std::vector<Material> planeMaterials_;  // per plane
   CollisionPipeline collision_;
+  ContactSolver contactSolver_;
+  std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::uint64_t stepCount_ = 0;
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};

@@ -1,0 +1,92 @@
+// Box pile benchmark (issue 5): N unit boxes dropped in a loose grid onto a plane, dt = 1/60 s,
+// 10 solver sweeps, 600 steps. Prints, per N: the median ms per step over the last 300 steps,
+// the contact points, the deepest penetration, whether the pile is at rest, and how the stages
+// share the time, with sleeping on (as engines run) and off. Not a Google Benchmark: one long run per N is the measurement.
+//   usage: contact_pile [N ...]   (default 100 1000 4000)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "mass/mass_properties.h"
+#include "world/world.h"
+
+using namespace rbsim;
+
+namespace {
+
+constexpr double kDt = 1.0 / 60.0;       // [s]
+constexpr int kSteps = 600;
+constexpr int kTimedSteps = 300;         // the last ones: the pile has landed and settles
+constexpr double kGridSpacing = 1.5;     // [m] between box centres, so none start in contact
+constexpr double kRestSpeed = 0.05;      // [m/s]: "at rest" when every box is slower
+
+void runPile(int count, bool allowSleep) {
+  Settings settings;
+  settings.allowSleep = allowSleep;
+  settings.timeStep = kDt;
+  settings.velocityIterations = 10;
+  World world(settings);
+  world.addPlane(Plane{});
+  const Vec3 extents(1.0, 1.0, 1.0);
+  auto mesh = std::make_shared<const Mesh>(makeBox(extents));
+  const int side = static_cast<int>(std::ceil(std::sqrt(count / 10.0)));  // 10 layers
+  for (int i = 0; i < count; ++i) {
+    BodyDef def;
+    def.name = "box" + std::to_string(i);
+    def.mesh = mesh;
+    def.mass = 1.0;
+    def.inertiaBody = cuboidInertia(1.0, extents);
+    def.boxHalfExtents = 0.5 * extents;
+    const int layer = i / (side * side), cell = i % (side * side);
+    // Odd layers shifted by half a box, so that boxes land on edges and tumble.
+    const double shift = (layer % 2) * 0.5;
+    def.position = Vec3((cell % side) * kGridSpacing + shift, 1.0 + layer * kGridSpacing, (cell / side) * kGridSpacing + shift);
+    world.addBody(def);
+  }
+  std::vector<double> ms;
+  for (int step = 0; step < kSteps; ++step) {
+    const auto start = std::chrono::steady_clock::now();
+    world.step();
+    ms.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::vector<double> tail(ms.end() - kTimedSteps, ms.end());
+  std::nth_element(tail.begin(), tail.begin() + kTimedSteps / 2, tail.end());
+  double deepest = 0.0, fastest = 0.0;
+  std::size_t points = 0;
+  for (const Contact& c : world.contacts()) {
+    deepest = std::max(deepest, c.manifold.maxDepth());
+    points += static_cast<std::size_t>(c.manifold.count);
+  }
+  for (const RigidBody& b : world.bodies()) fastest = std::max(fastest, b.velocity().norm());
+  std::printf("N = %5d, sleep %-3s: %8.3f ms/step (median of last %d of %d), %6zu contact points, deepest %.4f m, "
+              "fastest %.4f m/s (%s), %zu awake\n",
+              count, allowSleep ? "on" : "off", tail[kTimedSteps / 2], kTimedSteps, kSteps, points, deepest, fastest,
+              fastest < kRestSpeed ? "at rest" : "moving", world.awakeCount());
+  double total = 0.0;
+  for (int s = 0; s < static_cast<int>(Stage::Count); ++s) total += world.stageStats(static_cast<Stage>(s)).seconds;
+  for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {
+    const StageStats& st = world.stageStats(static_cast<Stage>(s));
+    if (st.runs > 0) std::printf("    %-22s %5.1f %%\n", stageName(static_cast<Stage>(s)), 100.0 * st.seconds / total);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> counts;
+  for (int i = 1; i < argc; ++i) counts.push_back(std::atoi(argv[i]));
+  if (counts.empty()) counts = {100, 1000, 4000};
+  for (int count : counts) {
+    if (count <= 0) {
+      std::fprintf(stderr, "contact_pile: expected positive box counts\n");
+      return 2;
+    }
+    runPile(count, true);
+    runPile(count, false);
+  }
+  return 0;
+}

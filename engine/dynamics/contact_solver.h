@@ -1,0 +1,114 @@
+#pragma once
+// Stage SolveContacts: every contact of the step solved together (seed 001 "Resting Contact":
+// non-penetrating, repulsive, complementary) by projected Gauss-Seidel over accumulated impulses
+// (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005), warm started from the previous
+// step; penetration removed by split impulses, which move positions and add no energy (Catto,
+// "Modeling and Solving Constraints", GDC 2009).
+//
+// Each manifold point has a normal row (seed 000's j = N j_n with restitution). Friction acts on
+// the manifold as a whole, at the centroid of its points: a tangential impulse and a twist about
+// the normal, coupled through seed 002's 6x6 K; seed 000's rule decides between sticking (inside
+// the cone mu_s of the manifold's total normal impulse) and kinetic friction mu_k against the
+// slip. A rigid patch slides as a whole, so the cone is the patch's, not each point's.
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "body/rigid_body.h"
+#include "dynamics/material.h"
+#include "world/collision_pipeline.h"
+#include "world/settings.h"
+
+namespace rbsim {
+
+// One contact point after the solve. Body 1 is the contact's body B, body 2 its body A or plane,
+// so the normal (the manifold's, from A to B) points towards body 1, as seed 000's N does.
+struct SolvedContactPoint {
+  std::size_t contact = 0;          // index into World::contacts()
+  Vec3 position = Vec3::Zero();     // world [m]
+  Vec3 normal = Vec3::UnitY();      // unit, towards body 1
+  double depth = 0.0;               // [m], < 0 for a speculative contact
+  double normalImpulse = 0.0;       // j_N >= 0 this step [N s]
+  Vec3 frictionImpulse = Vec3::Zero();  // the point's share of its manifold's friction [N s]
+  double approachVelocity = 0.0;    // u_rel,N before the solve [m/s]
+  double normalVelocity = 0.0;      // u_rel,N after it [m/s]
+  bool sticking = false;            // its manifold stuck: static friction, inside the mu_s cone
+
+  Vec3 impulse() const { return normalImpulse * normal + frictionImpulse; }  // on body 1
+};
+
+class ContactSolver {
+ public:
+  // Changes P and L of the bodies in contact (and x, q where they penetrate beyond the slop).
+  // `bodyMaterials` has one entry per body, `planeMaterials` one per plane.
+  void solve(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
+             const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
+             const Settings& settings);
+
+  const std::vector<SolvedContactPoint>& points() const { return solved_; }
+
+ private:
+  // Velocities of one body during the solve (as Box2D's b2BodyState), and what it received.
+  struct SolverBody {
+    Vec3 velocity = Vec3::Zero();
+    Vec3 angularVelocity = Vec3::Zero();
+    Vec3 pseudoVelocity = Vec3::Zero();         // split impulse: moves x, never enters P
+    Vec3 pseudoAngularVelocity = Vec3::Zero();  // moves q, never enters L
+    Vec3 linearImpulse = Vec3::Zero();          // sum of j: Delta P [N s]
+    Vec3 angularImpulse = Vec3::Zero();         // sum of r x j + j_tau: Delta L [N m s]
+    double inverseMass = 0.0;                   // 0 for static bodies and planes
+    Mat3 inverseInertiaWorld = Mat3::Zero();
+    std::size_t body = 0;                       // index into the World's bodies
+  };
+  struct NormalRow {
+    Vec3 r1 = Vec3::Zero(), r2 = Vec3::Zero();  // from each centre of mass to the point [m]
+    Vec3 localPoint1 = Vec3::Zero();            // the point in body 1's frame, for warm starting
+    double normalMass = 0.0;                    // 1 / (N^T K_T N)
+    double targetNormalVelocity = 0.0;          // bounce, speculative closing or 0 [m/s]
+    double correctionVelocity = 0.0;            // split-impulse target [m/s]
+    double impulse = 0.0;                       // accumulated j_N >= 0
+    double pseudoImpulse = 0.0;                 // accumulated split impulse
+  };
+  struct Patch {  // one manifold
+    int body1 = 0, body2 = 0;  // indices into bodies_
+    Vec3 normal = Vec3::UnitY();
+    Vec3 tangent1 = Vec3::UnitX(), tangent2 = Vec3::UnitZ();
+    Material material;
+    std::size_t firstRow = 0, rowCount = 0;
+    Vec3 r1 = Vec3::Zero(), r2 = Vec3::Zero();  // to the centroid of the points [m]
+    double twistRadius = 0.0;                   // mean distance of the points from it [m]
+    Mat3 inverseFriction = Mat3::Identity();    // (S^T (K_1 + K_2) S)^-1, S = (t1, t2, n twist)
+    Vec3 friction = Vec3::Zero();               // accumulated (j_t1, j_t2, j_twist)
+    bool sticking = true;                       // this step's regime: mu_s if sticking, else mu_k
+    bool insideCone = true;                     // the last sweep's sticking impulse was in the cone
+  };
+  struct Cached {
+    std::vector<Vec3> localPoints;  // body 1's frame [m]
+    std::vector<double> normalImpulses;
+    Vec3 linearFriction = Vec3::Zero();  // world [N s]
+    double twistFriction = 0.0;          // about the normal [N m s]
+    bool sticking = true;                // the regime of the next step
+  };
+
+  int solverBody(std::vector<RigidBody>& bodies, std::size_t body);
+  void buildPatch(std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
+                  const Settings& settings);
+  Vec3 pointVelocity(int body, const Vec3& r) const;
+  void apply(int body1, int body2, const Vec3& r1, const Vec3& r2, const Vec3& linear, const Vec3& angular);
+  void solveNormal(Patch& patch, NormalRow& row);
+  void solveFriction(Patch& patch);
+  void solvePosition(const Patch& patch, NormalRow& row);
+  void writeBack(std::vector<RigidBody>& bodies, double dt);
+  void remember(const std::vector<Contact>& contacts);
+
+  std::vector<SolverBody> bodies_;       // bodies_[0] is the ground: infinite mass, at rest
+  std::vector<int> slotOfBody_;          // per World body: index into bodies_, or 0 when untouched
+  std::vector<Patch> patches_;
+  std::vector<std::size_t> patchContact_;  // per patch: its contact
+  std::vector<NormalRow> rows_;
+  std::vector<SolvedContactPoint> solved_;
+  std::unordered_map<std::uint64_t, Cached> cache_;  // per pair, last step
+};
+
+}  // namespace rbsim

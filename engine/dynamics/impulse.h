@@ -1,0 +1,36 @@
+#pragma once
+// Impulses on rigid bodies (seed 000 "Collision Response", "Friction"; seed 002 2.2.1-2.2.2).
+// An impulse j at the point x + r changes P by j and L by r x j; the velocity of that point then
+// changes by K j, with K the impulse factor below. Static bodies and planes have K = 0.
+#include <Eigen/Core>
+
+#include "dynamics/material.h"
+#include "math/types.h"
+
+namespace rbsim {
+
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+
+// K = (1/M) 1 + r*^T I^-1 r* (seed 000 "Collision Response"; seed 002's K~, the top-left block).
+Mat3 impulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, const Vec3& r);
+
+// Seed 002 2.2.1: the 6x6 factor mapping a linear and angular impulse (j, j_tau) at x + r to the
+// change of that point's velocity and of the angular velocity: (dv_r, domega) = K (j, j_tau).
+Mat6 coupledImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, const Vec3& r);
+
+struct CollisionImpulse {
+  Vec3 impulse = Vec3::Zero();  // j, applied +j to body 1 and -j to body 2 [N s]
+  bool colliding = false;       // u_rel,N < 0: the bodies were approaching
+  bool sticking = false;        // the static-friction impulse was inside the friction cone
+};
+
+// One contact, solved exactly as seed 000 derives it: no impulse unless u_rel,N < 0; first the
+// sticking impulse j = K_T^-1 (-c_R u_rel,N N - u_rel), kept if |j - (j.N)N| <= mu_s (j.N);
+// otherwise the kinetic impulse j = (N - mu_k T) j_n with T = u_rel,T / |u_rel,T| and
+// -c_R u_rel,N = u_rel,N + N^T K_T (N - mu_k T) j_n. `relativeVelocity` is u_1 - u_2 at the
+// point, `normal` the unit normal pointing towards body 1, `totalFactor` K_T = K_1 + K_2.
+CollisionImpulse collisionImpulse(const Mat3& totalFactor, const Vec3& relativeVelocity, const Vec3& normal,
+                                  const Material& material);
+
+}  // namespace rbsim
