@@ -9,35 +9,40 @@
 
 namespace rbsim {
 
-RigidBody::RigidBody(const BodyDef& def)
-    : isStatic_(def.isStatic), mass_(def.mass), name_(def.name), mesh_(def.mesh), color_(def.color),
-      boxHalfExtents_(def.boxHalfExtents) {
-  if (!mesh_) throw std::invalid_argument("body '" + name_ + "': no mesh");
+RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), mass_(def.mass) {
+  auto cold = std::make_shared<ColdConstants>();
+  cold->name = def.name;
+  cold->mesh = def.mesh;
+  cold->color = def.color;
+  cold->boxHalfExtents = def.boxHalfExtents;
+  const std::string& name = cold->name;
+  if (!cold->mesh) throw std::invalid_argument("body '" + name + "': no mesh");
   if (!(mass_ > 0.0) || !std::isfinite(mass_)) {
-    throw std::invalid_argument("body '" + name_ + "': mass must be a positive finite number");
+    throw std::invalid_argument("body '" + name + "': mass must be a positive finite number");
   }
   // A physical inertia tensor is symmetric positive definite; anything else cannot be inverted
   // meaningfully, so it is rejected here rather than producing NaN angular velocities later.
-  const Mat3& inertia = inputs_.inertiaBody = def.inertiaBody;
+  const Mat3& inertia = cold->inertia.inertiaBody = def.inertiaBody;
   Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
   if (!inertia.allFinite() || (inertia - inertia.transpose()).norm() > 1e-9 * inertia.norm() ||
       !(eig.eigenvalues().minCoeff() > 0.0)) {
-    throw std::invalid_argument("body '" + name_ + "': inertia tensor must be symmetric positive definite");
+    throw std::invalid_argument("body '" + name + "': inertia tensor must be symmetric positive definite");
   }
-  inputs_.principalMoments = eig.eigenvalues();
-  Mat3& axes = inputs_.principalAxes = eig.eigenvectors();
+  cold->inertia.principalMoments = eig.eigenvalues();
+  Mat3& axes = cold->inertia.principalAxes = eig.eigenvectors();
   if (axes.determinant() < 0.0) axes.col(2) *= -1.0;  // a rotation, not a reflection
   inputs_.inverseMass = 1.0 / mass_;
   inputs_.inverseInertiaBody = inertia.inverse();
-  bodyVertices_ = mesh_->vertices.data();
-  worldVertices_.resize(mesh_->vertices.size());
+  inputs_.inertia = &cold->inertia;  // the block is never moved: copies of the body share it
+  cold_ = std::move(cold);
+  worldVertices_.resize(cold_->mesh->vertices.size());
   state_.position = def.position;
   setOrientation(def.orientation);  // validates and derives
   state_.linearMomentum = mass_ * def.velocity;
   state_.angularMomentum = inertiaWorld() * def.angularVelocity;
   if (isStatic_) {
     if (!def.velocity.isZero(0.0) || !def.angularVelocity.isZero(0.0)) {
-      throw std::invalid_argument("body '" + name_ + "': a static body cannot have a velocity");
+      throw std::invalid_argument("body '" + name + "': a static body cannot have a velocity");
     }
     awake_ = false;
   }
@@ -57,7 +62,7 @@ void RigidBody::setPosition(const Vec3& x) {
 
 void RigidBody::setOrientation(const Mat3& R) {
   if (!R.allFinite() || orthonormalityError(R) > kRotationTolerance || R.determinant() < 0.0) {
-    throw std::invalid_argument("body '" + name_ + "': orientation matrix is not a rotation");
+    throw std::invalid_argument("body '" + name() + "': orientation matrix is not a rotation");
   }
   // Angular momentum is a world-frame quantity: turning the body by hand keeps L, so omega
   // changes with the world inertia, exactly as for an instantaneous re-pose of a real body.
@@ -68,7 +73,7 @@ void RigidBody::setOrientation(const Mat3& R) {
 
 void RigidBody::setOrientation(const Quat& q) {
   if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > kRotationTolerance) {
-    throw std::invalid_argument("body '" + name_ + "': orientation quaternion is not unit length");
+    throw std::invalid_argument("body '" + name() + "': orientation quaternion is not unit length");
   }
   state_.orientation = q.normalized();
   wake();
@@ -87,8 +92,10 @@ void RigidBody::setAngularVelocity(const Vec3& omega) {
   updateDerived();
 }
 
+Mat3 RigidBody::inverseInertiaWorld() const { return toWorldFrame(inputs_.rotation, inputs_.inverseInertiaBody); }
+
 Mat3 RigidBody::inertiaWorld() const {
-  return inputs_.rotation * inputs_.inertiaBody * inputs_.rotation.transpose();
+  return inputs_.rotation * cold_->inertia.inertiaBody * inputs_.rotation.transpose();
 }
 
 double RigidBody::kineticEnergy() const {
@@ -123,19 +130,22 @@ void RigidBody::sleep() {
 }
 
 void RigidBody::updateDerived() {
-  // R, x, the vertex arrays and their length are copied to locals: stores into worldVertices_
-  // might alias any member as far as the compiler can tell, and it would reload them all for
-  // every vertex.
-  const Mat3 R = state_.orientation.toRotationMatrix();
-  const Vec3 x = state_.position;
-  inputs_.rotation = R;
+  inputs_.rotation = state_.orientation.toRotationMatrix();
   inputs_.velocity = inputs_.inverseMass * state_.linearMomentum;
-  inverseInertiaWorld_ = R * inputs_.inverseInertiaBody * R.transpose();
-  inputs_.angularVelocity = inverseInertiaWorld_ * state_.angularMomentum;
-  const Vec3* body = bodyVertices_;
+  inputs_.angularVelocity = inverseInertiaWorld() * state_.angularMomentum;
+  worldVerticesStale_ = true;
+}
+
+void RigidBody::updateWorldVertices() const {
+  // R, x and the vertex arrays are copied to locals: stores into worldVertices_ might alias any
+  // member as far as the compiler can tell, and it would reload them all for every vertex.
+  const Mat3 R = inputs_.rotation;
+  const Vec3 x = state_.position;
+  const Vec3* body = cold_->mesh->vertices.data();
   Vec3* world = worldVertices_.data();
   const std::size_t count = worldVertices_.size();
   for (std::size_t i = 0; i < count; ++i) world[i] = R * body[i] + x;
+  worldVerticesStale_ = false;
 }
 
 }  // namespace rbsim

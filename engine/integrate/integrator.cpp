@@ -152,7 +152,11 @@ BodyState symplecticStep(const BodyState& y, const StepInputs& in, double dt) {
   BodyState next;
   next.linearMomentum = y.linearMomentum + dt * in.force;
   next.angularMomentum = y.angularMomentum + dt * in.torque;
-  const Vec3 omega = in.rotation * in.inverseInertiaBody * in.rotation.transpose() * next.angularMomentum;
+  // omega = I^-1(t_n) L_{n+1}, evaluated as RigidBody evaluates omega(t_n) = I^-1(t_n) L_n.
+  // Without torque L_{n+1} = L_n, so omega(t_n) is that very value: free-flying bodies are spared
+  // a second 3x3 triple product.
+  Vec3 omega = in.angularVelocity;
+  if (!in.torque.isZero(0.0)) omega = toWorldFrame(in.rotation, in.inverseInertiaBody) * next.angularMomentum;
   next.position = y.position + dt * in.inverseMass * next.linearMomentum;
   next.orientation = expMapStep(y.orientation, omega, dt);
   return next;
@@ -168,9 +172,9 @@ BodyState implicitGyroStep(const BodyState& y, const StepInputs& in, double dt) 
   next.position = y.position + dt * in.inverseMass * next.linearMomentum;
   const Vec3 angularMomentum = y.angularMomentum + dt * in.torque;
   const Vec3 omegaBody = in.inverseInertiaBody * (in.rotation.transpose() * angularMomentum);
-  const Vec3 omegaBodyNext = implicitGyroscopicOmega(omegaBody, in.inertiaBody, dt);
+  const Vec3 omegaBodyNext = implicitGyroscopicOmega(omegaBody, in.inertia->inertiaBody, dt);
   next.orientation = expMapStep(y.orientation, in.rotation * omegaBodyNext, dt);
-  next.angularMomentum = next.orientation.toRotationMatrix() * (in.inertiaBody * omegaBodyNext);
+  next.angularMomentum = next.orientation.toRotationMatrix() * (in.inertia->inertiaBody * omegaBodyNext);
   return next;
 }
 
@@ -186,11 +190,11 @@ BodyState dlmStep(const BodyState& y, const StepInputs& in, double dt) {
   next.linearMomentum = y.linearMomentum + dt * in.force;
   const Vec3 angularMomentum = y.angularMomentum + 0.5 * dt * in.torque;
 
-  const Quat principalToBody(in.principalAxes);
+  const Quat principalToBody(in.inertia->principalAxes);
   Quat principalToWorld = y.orientation * principalToBody;
   Vec3 pi = principalToWorld.conjugate() * angularMomentum;  // Pi, principal frame
   const auto flow = [&](int axis, double h) {
-    const double theta = h * pi[axis] / in.principalMoments[axis];
+    const double theta = h * pi[axis] / in.inertia->principalMoments[axis];
     principalToWorld = principalToWorld * Quat(Eigen::AngleAxisd(theta, Vec3::Unit(axis)));
     pi = Eigen::AngleAxisd(-theta, Vec3::Unit(axis)) * pi;
   };

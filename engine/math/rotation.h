@@ -8,6 +8,17 @@ namespace rbsim {
 // seed 000 "angular velocity").
 Mat3 star(const Vec3& a);
 
+// The world-frame form R T R^T of a body-frame tensor T, as I^-1(t) = R I_body^-1 R^T (seed 004).
+// RigidBody derives omega = I^-1(t) L with it and symplectic-euler reuses that omega, so both
+// evaluate it here, alike to the bit.
+inline Mat3 toWorldFrame(const Mat3& R, const Mat3& bodyTensor) {
+  // Assigned, not constructed: Eigen evaluates `M = A * B * C` through a temporary, summing in
+  // another order than `Mat3 M = A * B * C`; this is the order the simulator has always used.
+  Mat3 world;
+  world = R * bodyTensor * R.transpose();
+  return world;
+}
+
 // Drift correction of seed 004 ("Drift correction"): normalise C_x, C_y = C_z x C_x normalised,
 // C_z = C_x x C_y normalised, on the columns of R. Returns a proper rotation when R is near one.
 Mat3 orthonormalize(const Mat3& R);

@@ -40,6 +40,17 @@ std::pair<Vec3, Vec3> springForce(const Spring& spring, const RigidBody& body) {
   return {point, -magnitude * u};
 }
 
+// The Integrate pass over many bodies, tuned with bench/throughput_bench. Bodies are stepped in
+// batches: first the integrator step of every body in the batch, then every body's derived
+// quantities. One body at a time, each waited on its own chain of dependent square roots and
+// divisions; within a phase the bodies are independent, so the processor overlaps their chains
+// (1e3 bodies in cache: euler-quat 23 -> 28, expmap 15 -> 21 million body-steps/s). Each body's
+// lines are asked for kPrefetchAhead bodies before it is stepped, which the hardware prefetcher
+// alone did not do in time (1e5 bodies: euler-quat 10 -> 16 million/s); 4, 8 and 16 ahead
+// measured alike.
+constexpr std::size_t kIntegrateBatch = 8;
+constexpr std::size_t kPrefetchAhead = 8;
+
 bool isFinite(const BodyState& s) {
   return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
          s.angularMomentum.allFinite();
@@ -137,9 +148,11 @@ void World::step() {
   const bool anyForce = std::any_of(forces_.begin(), forces_.end(), [t](const ScriptedForce& f) { return isActive(f, t); });
   const bool posed = runStage(Stage::ApplyPoseEvents, !pendingEvents_.empty() && pendingEvents_.front().time <= t,
                               [&] { applyPoseEvents(); });
-  const bool pushed =
-      runStage(Stage::AccumulateForces, anyForce || (anyAwake && (settings_.gravity != Vec3::Zero() || !springs_.empty())),
-               [&] { accumulateForces(); });
+  // Gravity acts on every awake body; the Integrate pass adds it itself, sparing a pass over all
+  // bodies, unless scripted forces or springs act: then AccumulateForces adds it before them, so
+  // that F sums in the order it always has (and the result is bit for bit the same).
+  const bool otherForces = anyForce || (anyAwake && !springs_.empty());
+  const bool pushed = runStage(Stage::AccumulateForces, otherForces, [&] { accumulateForces(otherForces); });
   // Pose events and forces may have woken bodies; only then is a second pass over them needed.
   const bool anyAwakeNow =
       anyAwake || ((posed || pushed) && std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); }));
@@ -147,7 +160,7 @@ void World::step() {
   const bool sweeping = settings_.continuousCollision && collides && anyAwakeNow;
   runStage(Stage::Integrate, anyAwakeNow, [&] {
     if (sweeping) collision_.rememberStart(bodies_);
-    integrateBodies();
+    integrateBodies(!otherForces);
   });
   runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
   runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
@@ -188,13 +201,15 @@ std::vector<std::pair<Vec3, Vec3>> World::activeForces(std::size_t body, double 
   return active;
 }
 
-void World::accumulateForces() {
+void World::accumulateForces(bool withGravity) {
   const double t = time();
   for (const ScriptedForce& f : forces_) {
     if (isActive(f, t)) bodies_[f.body].wake();
   }
-  for (RigidBody& body : bodies_) {
-    if (body.awake()) body.applyForce(body.mass() * settings_.gravity);
+  if (withGravity) {
+    for (RigidBody& body : bodies_) {
+      if (body.awake()) body.applyForce(body.mass() * settings_.gravity);
+    }
   }
   for (const ScriptedForce& f : forces_) {
     if (!isActive(f, t)) continue;
@@ -210,14 +225,35 @@ void World::accumulateForces() {
   }
 }
 
-void World::integrateBodies() {
+void World::integrateBodies(bool withGravity) {
   const double dt = settings_.timeStep;
-  for (RigidBody& body : bodies_) {
-    if (!body.awake()) continue;
-    const BodyState next = integrate(settings_.integrator, body.state(), body.stepInputs(), dt);
-    if (!isFinite(next)) reportDivergence(body, next);
-    body.setState(next);
-    body.clearAccumulators();
+  const Vec3 gravity = settings_.gravity;
+  const bool addGravity = withGravity && gravity != Vec3::Zero();
+  const std::size_t count = bodies_.size();
+  std::array<BodyState, kIntegrateBatch> next;
+  std::array<RigidBody*, kIntegrateBatch> stepped;
+  for (std::size_t first = 0; first < count; first += kIntegrateBatch) {
+    const std::size_t end = std::min(count, first + kIntegrateBatch);
+    std::size_t n = 0;  // awake bodies of the batch
+    const auto commit = [&](std::size_t stepCount) {
+      for (std::size_t k = 0; k < stepCount; ++k) {
+        stepped[k]->setState(next[k]);
+        stepped[k]->clearAccumulators();
+      }
+    };
+    for (std::size_t i = first; i < end; ++i) {
+      if (i + kPrefetchAhead < count) bodies_[i + kPrefetchAhead].prefetchForStep();
+      RigidBody& body = bodies_[i];
+      if (!body.awake()) continue;
+      if (addGravity) body.applyForce(body.mass() * gravity);  // F = 0 + m g, as AccumulateForces would
+      next[n] = integrate(settings_.integrator, body.state(), body.stepInputs(), dt);
+      if (!isFinite(next[n])) {
+        commit(n);  // the bodies before it have stepped, as they would have one at a time
+        reportDivergence(body, next[n]);
+      }
+      stepped[n++] = &body;
+    }
+    commit(n);
   }
 }
 

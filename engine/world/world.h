@@ -21,8 +21,9 @@ namespace rbsim {
 // skipping.
 enum class Stage : int {
   ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step
-  AccumulateForces,  // gravity and scripted forces into F and tau
-  Integrate,         // the chosen integrator advances awake bodies; accumulators are cleared
+  AccumulateForces,  // scripted forces and springs (and gravity, when they act) into F and tau
+  Integrate,         // the chosen integrator advances awake bodies (adding gravity when no other
+                     // force acts); accumulators are cleared
   ContinuousCollision,  // fast bodies stop at their time of impact instead of tunnelling
   BroadPhase,        // sweep and prune over world AABBs: candidate pairs
   NarrowPhase,       // contact manifolds of candidate pairs and of bodies against planes
@@ -78,8 +79,8 @@ class World {
 
  private:
   void applyPoseEvents();
-  void accumulateForces();
-  void integrateBodies();
+  void accumulateForces(bool withGravity);  // scripted forces and springs, after gravity if asked
+  void integrateBodies(bool withGravity);   // adds m g to F first if asked
   void solveContacts();
   void updateSleep();
   [[noreturn]] void reportDivergence(const RigidBody& body, const BodyState& next) const;

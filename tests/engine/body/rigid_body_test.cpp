@@ -53,6 +53,30 @@ TEST(RigidBody, WorldVerticesFollowQuaternionOrientation) {
   }
 }
 
+// World vertices are a cache filled on access: every way the pose changes must show on the next
+// access, in the same storage, and a copy of a body must keep a cache of its own.
+TEST(RigidBody, WorldVerticesFollowEveryPoseChangeOnTheNextAccess) {
+  RigidBody body(boxDef(Vec3(1.0, 2.0, 3.0), 2.0));
+  const std::vector<Vec3>* storage = &body.worldVertices();
+  const Vec3 x(0.5, -1.0, 2.0);
+  body.setPosition(x);
+  EXPECT_TRUE(allNear(body.worldVertex(0), body.bodyVertex(0) + x, kVertexTol)) << "setPosition";
+  body.setOrientation(quatFromAxisAngle(Vec3(0.0, 0.0, 0.5)));
+  expectWorldVerticesAre(body, rotationFromAxisAngle(Vec3(0.0, 0.0, 0.5)), x);
+
+  BodyState next = body.state();  // the integrators' path
+  next.position = Vec3(3.0, 1.0, -2.0);
+  next.orientation = quatFromAxisAngle(Vec3(0.4, 0.1, -0.7));
+  body.setState(next);
+  expectWorldVerticesAre(body, next.orientation.toRotationMatrix(), next.position);
+  EXPECT_EQ(storage, &body.worldVertices()) << "refilled in place";
+
+  RigidBody copy = body;
+  copy.setPosition(Vec3::Zero());
+  expectWorldVerticesAre(copy, next.orientation.toRotationMatrix(), Vec3::Zero());
+  expectWorldVerticesAre(body, next.orientation.toRotationMatrix(), next.position);
+}
+
 TEST(RigidBody, RotationColumnsAreTheBodyAxes) {
   const Vec3 e(2.0, 0.5, 1.0);
   RigidBody body(boxDef(e, 1.0));
