@@ -17,7 +17,10 @@ std::uint64_t pairKey(const Contact& c) {
 
 // Two unit tangents completing the normal to a right-handed basis.
 void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
-  const Vec3 seed = std::abs(n.x()) < 0.57735 ? Vec3::UnitX() : Vec3::UnitY();  // |n.x| < 1/sqrt(3)
+  // Some component of a unit vector is at least 1/sqrt(3); crossing with x while |n.x| is below
+  // that keeps the cross product well away from zero.
+  const double oneOverSqrt3 = 1.0 / std::sqrt(3.0);
+  const Vec3 seed = std::abs(n.x()) < oneOverSqrt3 ? Vec3::UnitX() : Vec3::UnitY();
   t1 = n.cross(seed).normalized();
   t2 = n.cross(t1);
 }
@@ -142,9 +145,7 @@ void ContactSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& co
   patch.sticking = cached == cache_.end() || cached->second.sticking;
   if (cached != cache_.end()) {
     // Last step's friction, in this step's tangent plane and inside this step's cone.
-    double normalTotal = 0.0;
-    for (std::size_t r = patch.firstRow; r < rows_.size(); ++r) normalTotal += rows_[r].impulse;
-    const double limit = material.staticFriction * normalTotal;
+    const double limit = material.staticFriction * normalImpulse(patch);
     Vec3 linear = cached->second.linearFriction - cached->second.linearFriction.dot(n) * n;
     if (linear.norm() > limit) linear *= limit / linear.norm();
     const double twistLimit = limit * patch.twistRadius;
@@ -153,6 +154,12 @@ void ContactSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& co
   }
   patches_.push_back(patch);
   patchContact_.push_back(index);
+}
+
+double ContactSolver::normalImpulse(const Patch& patch) const {
+  double total = 0.0;
+  for (std::size_t r = patch.firstRow; r < patch.firstRow + patch.rowCount; ++r) total += rows_[r].impulse;
+  return total;
 }
 
 void ContactSolver::solveNormal(Patch& patch, NormalRow& row) {
@@ -165,8 +172,7 @@ void ContactSolver::solveNormal(Patch& patch, NormalRow& row) {
 }
 
 void ContactSolver::solveFriction(Patch& patch) {
-  double normalTotal = 0.0;
-  for (std::size_t r = patch.firstRow; r < patch.firstRow + patch.rowCount; ++r) normalTotal += rows_[r].impulse;
+  const double normalTotal = normalImpulse(patch);
   const Vec3& n = patch.normal;
   const Vec3 u = pointVelocity(patch.body1, patch.r1) - pointVelocity(patch.body2, patch.r2);
   const Vec3 w(u.dot(patch.tangent1), u.dot(patch.tangent2),
@@ -282,8 +288,7 @@ void ContactSolver::solve(std::vector<RigidBody>& bodies, const std::vector<Cont
     }
   }
   for (const Patch& patch : patches_) {
-    double normalTotal = 0.0;
-    for (std::size_t r = patch.firstRow; r < patch.firstRow + patch.rowCount; ++r) normalTotal += rows_[r].impulse;
+    const double normalTotal = normalImpulse(patch);
     const Vec3 friction = patch.friction.x() * patch.tangent1 + patch.friction.y() * patch.tangent2;
     for (std::size_t r = patch.firstRow; r < patch.firstRow + patch.rowCount; ++r) {
       SolvedContactPoint& out = solved_[r];

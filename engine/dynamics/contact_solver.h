@@ -96,6 +96,7 @@ class ContactSolver {
                   const Settings& settings);
   Vec3 pointVelocity(int body, const Vec3& r) const;
   void apply(int body1, int body2, const Vec3& r1, const Vec3& r2, const Vec3& linear, const Vec3& angular);
+  double normalImpulse(const Patch& patch) const;  // sum of the patch's accumulated j_N [N s]
   void solveNormal(Patch& patch, NormalRow& row);
   void solveFriction(Patch& patch);
   void solvePosition(const Patch& patch, NormalRow& row);
