@@ -11,6 +11,8 @@
 #include "io/input_error.h"
 #include "paths.h"
 #include "render/render_error.h"
+#include "window/interactive.h"
+#include "window/x11_window.h"
 #include "run/runner.h"
 #include "scene/scene.h"
 #include "world/simulation_error.h"
@@ -25,7 +27,8 @@ using rbsim::app::RunOptions;
 struct Flags {
   RunOptions run;
   std::string dt, steps, fps, size, integrator, inertia;
-  bool noRender = false, noOverlay = false;
+  bool noRender = false, noOverlay = false, window = false;
+  rbsim::app::WindowOptions windowOptions;
   std::vector<std::string> sets;
 
   void attach(CLI::App& cmd) {
@@ -43,6 +46,9 @@ struct Flags {
     cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
     cmd.add_flag("--quiet", run.quiet, "print nothing on success");
+    cmd.add_flag("--window", window, "open an X11 window with controls instead of writing a video");
+    cmd.add_option("--window-frames", windowOptions.frames, "with --window: close after N frames (scripted runs)");
+    cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame");
   }
 
   RunOptions finish(const std::string& defaultVideo) {
@@ -111,22 +117,31 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("list")) return listEverything();
     std::vector<rbsim::Scene> scenes;
+    std::vector<std::string> files;
     std::string title;
     RunOptions options;
+    Flags& flags = app.got_subcommand("demo") ? demoFlags : runFlags;
     if (app.got_subcommand("demo")) {
       const rbsim::app::Demo* chosen = rbsim::app::findDemo(demoNumber);
       if (!chosen) {
         throw InputError("", "demo " + std::to_string(demoNumber), "no such demo; `rbsim list` shows them");
       }
       options = demoFlags.finish("videos/" + chosen->name + ".mp4");
-      for (const std::string& file : chosen->scenes) {
-        scenes.push_back(rbsim::loadScene(rbsim::app::assetDir() + "/scenes/" + file, options.overrides));
-      }
+      for (const std::string& file : chosen->scenes) files.push_back(rbsim::app::assetDir() + "/scenes/" + file);
       title = "Demo " + std::to_string(chosen->number) + ": " + chosen->name;
     } else {
       options = runFlags.finish("videos/" + std::filesystem::path(scenePath).stem().string() + ".mp4");
-      scenes.push_back(rbsim::loadScene(scenePath, options.overrides));
+      files.push_back(scenePath);
     }
+    if (!flags.window && (flags.windowOptions.frames > 0 || !flags.windowOptions.screenshot.empty())) {
+      throw InputError("", "--window-frames/--screenshot", "only with --window");
+    }
+    if (flags.window) {
+      flags.windowOptions.quiet = options.quiet;
+      rbsim::app::runWindow({files, options.overrides, title}, flags.windowOptions);
+      return 0;
+    }
+    for (const std::string& file : files) scenes.push_back(rbsim::loadScene(file, options.overrides));
     const rbsim::app::RunSummary summary = rbsim::app::runScenes(scenes, options, title);
     rbsim::app::printSummary(summary, options);
     return 0;
@@ -135,6 +150,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const rbsim::SimulationError& e) {
     std::fprintf(stderr, "rbsim: error: the simulation diverged: %s\n", e.what());
+    return 2;
+  } catch (const rbsim::app::WindowError& e) {
+    std::fprintf(stderr, "rbsim: error: %s\n", e.what());
     return 2;
   } catch (const rbsim::render::RenderError& e) {
     std::fprintf(stderr, "rbsim: error: %s\n", e.what());

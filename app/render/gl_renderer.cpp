@@ -64,13 +64,6 @@ void appendTo(std::vector<T>& all, const std::vector<T>& part) {
 
 }  // namespace
 
-glm::mat4 viewProjection(const Camera& camera, int width, int height) {
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDegrees), aspect,
-                                                camera.nearPlane, camera.farPlane);
-  return projection * glm::lookAt(camera.eye, camera.target, camera.up);
-}
-
 GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int samples)
     : width_(width),
       height_(height),

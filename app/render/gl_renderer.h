@@ -12,14 +12,11 @@
 #include "debug_draw.h"
 #include "frame_data.h"
 #include "gl_api.h"
+#include "projection.h"
 #include "scene_geometry.h"
 #include "shader_program.h"
 
 namespace rbsim::render {
-
-// The projection shared by the renderer and anyone who needs to know where a point lands
-// (tests, labels): glm::perspective(fovY, width/height, near, far) * glm::lookAt(eye, target, up).
-glm::mat4 viewProjection(const Camera& camera, int width, int height);
 
 class GlRenderer {
  public:

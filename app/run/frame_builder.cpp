@@ -23,13 +23,19 @@ std::string formatNumber(double value, const char* unit) {
 
 }  // namespace
 
+render::Camera sceneCamera(const ViewDesc& view) {
+  render::Camera camera;
+  camera.eye = toGlm(view.eye);
+  camera.target = toGlm(view.target);
+  camera.up = toGlm(view.up);
+  camera.fovYDegrees = static_cast<float>(view.fovDegrees);
+  return camera;
+}
+
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle) {
   render::FrameData frame;
   const ViewDesc& view = scene.view;
-  frame.camera.eye = toGlm(view.eye);
-  frame.camera.target = toGlm(view.target);
-  frame.camera.up = toGlm(view.up);
-  frame.camera.fovYDegrees = static_cast<float>(view.fovDegrees);
+  frame.camera = sceneCamera(view);
   frame.options.grid = view.grid;
   frame.options.wireframe = view.wireframe;
   frame.options.axes = view.axes;

@@ -46,7 +46,13 @@ class World {
   std::size_t addBody(const BodyDef& def);  // throws std::invalid_argument on an invalid def
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
-  void addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
+  std::size_t addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
+  // A spring whose anchor is moved by hand (window mode drags a body by one, as Box2D's mouse
+  // joint): wakes the body, as every manual change does. Throws on a bad index or anchor.
+  void moveSpringAnchor(std::size_t spring, const Vec3& anchor);
+  void removeSpring(std::size_t spring);  // later springs move down one index
+  // (point, force) of a spring on its body now, world frame: what AccumulateForces applies.
+  std::pair<Vec3, Vec3> springForce(std::size_t spring) const;
   // Static and infinite; throws unless the normal is unit and the material valid.
   void addPlane(const Plane& plane, const Material& material = {});
 
