@@ -38,7 +38,7 @@ void plot(const char* label, const std::vector<float>& series, const char* unit)
   char overlay[64];
   std::snprintf(overlay, sizeof overlay, "%.4g %s", static_cast<double>(series.back()), unit);
   ImGui::PlotLines(label, series.data(), static_cast<int>(series.size()), 0, overlay, *low,
-                   *high > *low ? *high : *low + 1.0f, ImVec2(0.0f, 3.0f * ImGui::GetTextLineHeight()));
+                   *high > *low ? *high : *low + 1.0f, ImVec2(0.0f, 2.2f * ImGui::GetTextLineHeight()));
 }
 
 // A physics slider: assigns only when the user lets go, so a drag restarts the scene once.
@@ -104,6 +104,11 @@ PanelRequests drawControlPanel(const PanelView& view, int imageWidth, int imageH
   if (ImGui::Button("Step (s)")) out.step = true;
   ImGui::SameLine();
   if (ImGui::Button("Reset (r)")) out.reset = true;
+  if (ImGui::Button(view.recording ? "Stop recording" : "Record video")) out.toggleRecording = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Copy as command line")) out.copyCommand = true;
+  if (view.recording) ImGui::TextWrapped("recording to %s", view.recordingPath.c_str());
+  if (!view.message.empty()) ImGui::TextWrapped("%s", view.message.c_str());
 
   if (ImGui::CollapsingHeader("Physics (restarts at t = 0)", ImGuiTreeNodeFlags_DefaultOpen)) {
     float dt = static_cast<float>(scene.settings.timeStep);
@@ -165,16 +170,14 @@ PanelRequests drawControlPanel(const PanelView& view, int imageWidth, int imageH
       }
       ImGui::EndCombo();
     }
-    ImGui::TextDisabled("click a body to select it, drag it to pull it");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("left: pick and drag a body (or orbit), right: orbit, middle: pan, wheel: zoom");
+    ImGui::PopStyleColor();
     plot("|v| [m/s]", view.history->speed, "m/s");
     plot("|omega|", view.history->angularSpeed, "rad/s");
     plot("kinetic", view.history->kineticEnergy, "J");
   }
 
-  if (ImGui::Button(view.recording ? "Stop recording" : "Record video")) out.toggleRecording = true;
-  if (view.recording) ImGui::TextWrapped("recording to %s", view.recordingPath.c_str());
-  if (ImGui::Button("Copy as command line")) out.copyCommand = true;
-  if (!view.message.empty()) ImGui::TextWrapped("%s", view.message.c_str());
   ImGui::PopItemWidth();
   ImGui::End();
   return out;

@@ -30,6 +30,7 @@ struct X11Window::Impl {
   XVisualInfo visual{};
   XImage* image = nullptr;  // owns `pixels` (XDestroyImage frees it)
   int redShift = 0, greenShift = 0, blueShift = 0;
+  bool releaseNext[3] = {false, false, false};
 };
 
 X11Window::X11Window(int width, int height, const std::string& title)
@@ -93,6 +94,12 @@ X11Window::~X11Window() {
 
 void X11Window::poll(WindowInput& input) {
   Impl& d = *impl_;
+  // A click whose press and release arrive in one poll is shown down for one frame, so that
+  // ImGui (which reads button levels once per frame) still sees the click.
+  for (int b = 0; b < 3; ++b) {
+    if (d.releaseNext[b]) input.down[b] = false;
+    d.releaseNext[b] = false;
+  }
   for (bool& p : input.pressed) p = false;
   input.wheel = 0.0f;
   input.keys.clear();
@@ -120,8 +127,14 @@ void X11Window::poll(WindowInput& input) {
         }
         const int index = button == 1 ? 0 : button == 3 ? 1 : button == 2 ? 2 : -1;
         if (index < 0) break;
-        input.down[index] = down;
-        if (down) input.pressed[index] = true;
+        if (down) {
+          input.down[index] = true;
+          input.pressed[index] = true;
+        } else if (input.pressed[index]) {
+          d.releaseNext[index] = true;
+        } else {
+          input.down[index] = false;
+        }
         break;
       }
       case KeyPress: {

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -133,6 +134,16 @@ TEST_F(WindowMode, ShowsTheControlPanelAndOtherwiseTheOffscreenFrame) {
   EXPECT_LT(outsideOff, outside / 1000) << "pixels off by more than 8 levels";
   // The panel is drawn: its area is clearly not the scene behind it.
   EXPECT_GT(insideDiff / (3.0 * inside), 10.0) << "mean difference per channel inside the control panel";
+}
+
+TEST(WindowModeErrors, NoDisplayAndMisplacedFlagsExitTwoWithAMessage) {
+  const std::string binary = "'" + std::string(RBSIM_BINARY) + "'";
+  auto [code, output] = run("env -u DISPLAY " + binary + " run '" + kScene + "' --window");
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("cannot open the X display"), std::string::npos) << output;
+  std::tie(code, output) = run(binary + " run '" + kScene + "' --screenshot /tmp/never.png");
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("only with --window"), std::string::npos) << output;
 }
 
 }  // namespace
