@@ -119,9 +119,23 @@ Mat3 firstPiolaStress(const Elasticity& e, const Mat3& F) {
   return Mat3::Zero();
 }
 
-Mat3 stressDifferential(const Elasticity& e, const Mat3& F, const Mat3& dF) {
+StressLinearization linearize(const Elasticity& e, const Mat3& F) {
+  StressLinearization at;
+  at.F = F;
+  if (e.model == ConstitutiveModel::Corotated) at.rotation = polarRotation(F);
+  if (e.model == ConstitutiveModel::NeoHookean) {
+    const double J = F.determinant();
+    if (!(J > 0.0)) throw std::domain_error("neo-Hookean stress of an inverted element (det F <= 0)");
+    at.inverse = F.inverse();
+    at.logJ = std::log(J);
+  }
+  return at;
+}
+
+Mat3 stressDifferential(const Elasticity& e, const StressLinearization& at, const Mat3& dF) {
   const double mu = e.lame.mu, lambda = e.lame.lambda;
   const Mat3 I = Mat3::Identity();
+  const Mat3& F = at.F;
   switch (e.model) {
     case ConstitutiveModel::Linear:
       return mu * (dF + dF.transpose()) + lambda * dF.trace() * I;
@@ -130,19 +144,18 @@ Mat3 stressDifferential(const Elasticity& e, const Mat3& F, const Mat3& dF) {
       const Mat3 dG = 0.5 * (dF.transpose() * F + F.transpose() * dF);
       return dF * (2.0 * mu * G + lambda * G.trace() * I) + F * (2.0 * mu * dG + lambda * dG.trace() * I);
     }
-    case ConstitutiveModel::Corotated: {
-      const Mat3 R = polarRotation(F);
-      return 2.0 * mu * dF + lambda * (R.transpose() * dF).trace() * R;
-    }
+    case ConstitutiveModel::Corotated:
+      return 2.0 * mu * dF + lambda * (at.rotation.transpose() * dF).trace() * at.rotation;
     case ConstitutiveModel::NeoHookean: {
-      const double J = F.determinant();
-      if (!(J > 0.0)) throw std::domain_error("neo-Hookean stress of an inverted element (det F <= 0)");
-      const Mat3 Finv = F.inverse();
-      const Mat3 FinvT = Finv.transpose();
-      return mu * dF + (mu - lambda * std::log(J)) * FinvT * dF.transpose() * FinvT + lambda * (Finv * dF).trace() * FinvT;
+      const Mat3 FinvT = at.inverse.transpose();
+      return mu * dF + (mu - lambda * at.logJ) * FinvT * dF.transpose() * FinvT + lambda * (at.inverse * dF).trace() * FinvT;
     }
   }
   return Mat3::Zero();
+}
+
+Mat3 stressDifferential(const Elasticity& e, const Mat3& F, const Mat3& dF) {
+  return stressDifferential(e, linearize(e, F), dF);
 }
 
 }  // namespace rbsim

@@ -38,9 +38,20 @@ struct Elasticity {
 double strainEnergyDensity(const Elasticity& e, const Mat3& F);
 // P(F) = d psi / dF [Pa].
 Mat3 firstPiolaStress(const Elasticity& e, const Mat3& F);
+// What dP at F needs, computed once per element and step: the implicit solver applies dP many
+// times per step, and the polar decomposition and the inverse would dominate it.
+struct StressLinearization {
+  Mat3 F = Mat3::Identity();
+  Mat3 rotation = Mat3::Identity();  // R of F = R S (corotated)
+  Mat3 inverse = Mat3::Identity();   // F^-1 (neo-Hookean)
+  double logJ = 0.0;                 // ln det F (neo-Hookean)
+};
+StressLinearization linearize(const Elasticity& e, const Mat3& F);
+
 // dP for a change dF of F. Exact for linear, St. Venant-Kirchhoff and Neo-Hookean; for the
 // corotated model the rotation is held fixed (the usual approximation, which keeps the implicit
 // system symmetric positive definite).
+Mat3 stressDifferential(const Elasticity& e, const StressLinearization& at, const Mat3& dF);
 Mat3 stressDifferential(const Elasticity& e, const Mat3& F, const Mat3& dF);
 
 // The rotation of F's polar decomposition F = R S (via the SVD, with det R = +1 even when F is

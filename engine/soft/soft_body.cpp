@@ -105,11 +105,16 @@ void SoftBody::internalForces(std::vector<Vec3>& forces) const {
   addForces(x_, v_, forces);
 }
 
+void SoftBody::linearize() {
+  linearized_.resize(mesh_.tets.size());
+  for (std::size_t t = 0; t < mesh_.tets.size(); ++t) linearized_[t] = rbsim::linearize(elasticity_, deformationGradient(t));
+}
+
 void SoftBody::forceDifferential(const std::vector<Vec3>& dx, const std::vector<Vec3>& dv, std::vector<Vec3>& df) const {
   df.assign(x_.size(), Vec3::Zero());
   for (std::size_t t = 0; t < mesh_.tets.size(); ++t) {
-    const Mat3 F = shape(x_, t) * restInverse_[t];
-    Mat3 dP = stressDifferential(elasticity_, F, shape(dx, t) * restInverse_[t]);
+    const Mat3& F = linearized_[t].F;
+    Mat3 dP = stressDifferential(elasticity_, linearized_[t], shape(dx, t) * restInverse_[t]);
     if (damping_ > 0.0) {
       const Mat3 dFdot = shape(dv, t) * restInverse_[t];
       dP += 2.0 * damping_ * F * (0.5 * (F.transpose() * dFdot + dFdot.transpose() * F));

@@ -85,7 +85,9 @@ class SoftBody {
  private:
   Mat3 shape(const std::vector<Vec3>& x, const std::size_t t) const;  // D_s = [x1-x0, x2-x0, x3-x0]
   void addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& forces) const;
-  // The change of the internal forces for a change dx of positions and dv of velocities.
+  void linearize();  // linearized_ at the current positions
+  // The change of the internal forces for a change dx of positions and dv of velocities, at the
+  // positions of the last linearize().
   void forceDifferential(const std::vector<Vec3>& dx, const std::vector<Vec3>& dv, std::vector<Vec3>& df) const;
   void stepSymplectic(double dt, const Vec3& gravity);
   void stepBackwardEuler(double dt, const Vec3& gravity);
@@ -105,6 +107,7 @@ class SoftBody {
   std::vector<Mat3> restInverse_;  // D_m^-1
   std::vector<double> restVolume_; // V_0 [m^3]
   std::vector<Mat3> b_;            // -V_0 D_m^-T: columns b_1, b_2, b_3
+  std::vector<StressLinearization> linearized_;  // the implicit step's, per tetrahedron
   int lastIterations_ = 0;
   // Scratch of the implicit step, kept to avoid allocating each step.
   std::vector<Vec3> f_, r_, p_, q_, z_, dv_, zero_, preconditioned_;

@@ -32,6 +32,7 @@ void SoftBody::stepBackwardEuler(double dt, const Vec3& gravity) {
   // needs only their products with a vector (forceDifferential). Pinned nodes are filtered out.
   const std::size_t n = x_.size();
   internalForces(f_);
+  linearize();
   zero_.assign(n, Vec3::Zero());
   q_.resize(n);
   std::vector<Vec3>& scaledVelocity = z_;
