@@ -35,7 +35,7 @@ struct Flags {
     cmd.add_option("--frames", run.framesDir, "write PNG frames into this folder");
     cmd.add_option("--video", run.videoPath, "write the MP4 here (default videos/<name>.mp4)");
     cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here");
-    cmd.add_option("--trace-every", run.traceEvery, "trace every K-th step")->check(CLI::PositiveNumber);
+    cmd.add_option("--trace-every", run.traceEvery, "trace every K-th step")->check(CLI::Range(1, 1000000000));
     cmd.add_option("--steps", steps, "number of steps per scene (world.steps)");
     cmd.add_option("--dt", dt, "time step in seconds (world.dt)");
     cmd.add_option("--fps", fps, "frames per simulated second (view.fps)");

@@ -1,5 +1,7 @@
 #include "run/trace_writer.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <limits>
@@ -13,7 +15,10 @@ TraceWriter::TraceWriter(const std::string& path) {
   std::error_code ec;
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
   out_.open(path);
-  if (!out_) throw InputError(path, "--trace", "cannot create the trace file");
+  if (!out_) {
+    const std::string why = ec ? ec.message() : std::string(std::strerror(errno));
+    throw InputError(path, "--trace", "cannot create the trace file (" + why + ")");
+  }
   out_ << "step,t,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,Lx,Ly,Lz,ke\n";
   out_ << std::setprecision(std::numeric_limits<double>::max_digits10);
 }

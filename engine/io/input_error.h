@@ -19,7 +19,7 @@ class InputError : public std::runtime_error {
  private:
   static std::string format(const std::string& file, const std::string& field,
                             const std::string& problem) {
-    std::string out = file.empty() ? std::string("<input>") : file;
+    std::string out = file.empty() ? std::string("command line") : file;
     if (!field.empty()) out += ": " + field;
     return out + ": " + problem;
   }

@@ -1,25 +1,54 @@
 #include "io/obj_loader.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <tiny_obj_loader.h>
 
+#include "geometry/polygon_triangulation.h"
 #include "io/input_error.h"
 
 namespace rbsim {
 
+namespace {
+
+std::string faceField(const tinyobj::shape_t& shape, std::size_t face) {
+  const std::string where = shape.name.empty() ? std::string() : "shape '" + shape.name + "' ";
+  return where + "face " + std::to_string(face + 1);
+}
+
+}  // namespace
+
 Mesh loadObj(const std::string& path) {
-  if (!std::ifstream(path).good()) {
-    throw InputError(path, "mesh", "cannot open the file (missing or unreadable)");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(path, "mesh", "is a folder; expected an OBJ file");
   }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "mesh", "cannot open the file (missing or unreadable)");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseObj(text.str(), path);
+}
+
+Mesh parseObj(const std::string& text, const std::string& path) {
   tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
+  // Polygons are triangulated below: tinyobjloader's own triangulation of faces with five or more
+  // corners reads coordinates through indices it has not checked.
+  config.triangulate = false;
   config.vertex_color = false;
   config.mtl_search_path = "";
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // Materials are never read: a mesh file's "mtllib" must not open other files.
+  if (!reader.ParseFromString(text, "", config)) {
     throw InputError(path, "mesh", "not a readable OBJ file: " + reader.Error());
+  }
+  // tinyobjloader skips faces of one or two corners with only a warning; a skipped face would
+  // leave a hole in the mesh without a word.
+  if (reader.Warning().find("Degenerated face") != std::string::npos) {
+    throw InputError(path, "mesh", "a face has fewer than 3 vertices (an 'f' line needs at least 3 indices)");
   }
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   Mesh mesh;
@@ -33,28 +62,38 @@ Mesh loadObj(const std::string& path) {
     }
     mesh.vertices.push_back(p);
   }
+  std::vector<std::uint32_t> corners;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    const auto& indices = shape.mesh.indices;
+    std::size_t next = 0;  // first index of the current face in shape.mesh.indices
     for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-      if (shape.mesh.num_face_vertices[f] != 3) {
-        throw InputError(path, "shape '" + shape.name + "' face " + std::to_string(f + 1),
-                         "expected a triangle after triangulation, got " +
-                             std::to_string(shape.mesh.num_face_vertices[f]) + " vertices");
+      const std::size_t count = shape.mesh.num_face_vertices[f];
+      if (count > kMaxPolygonCorners) {
+        throw InputError(path, faceField(shape, f), "has " + std::to_string(count) +
+                         " corners; faces of at most " + std::to_string(kMaxPolygonCorners) + " are supported");
       }
-      Triangle tri{};
-      for (int k = 0; k < 3; ++k) {
-        const int index = indices[3 * f + k].vertex_index;
+      corners.clear();
+      for (std::size_t k = 0; k < count; ++k) {
+        const int index = shape.mesh.indices[next + k].vertex_index;
         if (index < 0 || static_cast<std::size_t>(index) >= vertexCount) {
-          throw InputError(path, "shape '" + shape.name + "' face " + std::to_string(f + 1),
-                           "vertex index out of range");
+          throw InputError(path, faceField(shape, f), "vertex index out of range (the file has " +
+                           std::to_string(vertexCount) + " vertices)");
         }
-        tri[k] = static_cast<std::uint32_t>(index);
+        corners.push_back(static_cast<std::uint32_t>(index));
       }
-      mesh.triangles.push_back(tri);
+      next += count;
+      if (!triangulatePolygon(mesh.vertices, corners, mesh.triangles)) {
+        if (count == 3) {
+          mesh.triangles.push_back({corners[0], corners[1], corners[2]});  // checkMesh counts it
+          continue;
+        }
+        throw InputError(path, faceField(shape, f), "a polygon of " + std::to_string(count) +
+                         " corners that cannot be triangulated: it has no area or crosses itself");
+      }
     }
   }
-  if (mesh.vertices.empty() || mesh.triangles.empty()) {
-    throw InputError(path, "mesh", "expected at least one triangle, the file has none");
+  if (mesh.triangles.empty()) {
+    throw InputError(path, "mesh", "no faces ('f' lines) among " + std::to_string(vertexCount) +
+                     " vertices: an empty file, or not an OBJ mesh");
   }
   return mesh;
 }

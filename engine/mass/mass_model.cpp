@@ -1,6 +1,10 @@
 #include "mass/mass_model.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
 
 #include "io/input_error.h"
 
@@ -8,10 +12,49 @@ namespace rbsim {
 
 namespace {
 
+// A mesh whose volume is below this fraction of its bounding box's is treated as enclosing none.
+constexpr double kMinVolumeFraction = 1e-12;
+// Relative rounding allowed in I_max <= I_mid + I_min (exact for a flat plate).
+constexpr double kTriangleInequalitySlack = 1e-9;
+
 void requirePositiveFinite(double value, const char* field, const char* unit) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw InputError("", field, std::string("expected a positive finite number [") + unit +
                                     "], got " + std::to_string(value));
+  }
+}
+
+std::string describe(const Mesh& mesh) {
+  double largest = 0.0;
+  for (const Vec3& p : mesh.vertices) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  std::ostringstream where;
+  where << "mesh '" << mesh.name << "' (largest |coordinate| " << largest << " m)";
+  return where.str();
+}
+
+// Huge coordinates overflow the integrals (degree 5 in the coordinates for the inertia).
+void requireFinite(const MassProperties& props, const Mesh& mesh) {
+  if (!std::isfinite(props.volume) || !std::isfinite(props.mass) || !props.inertia.allFinite() ||
+      !props.centerOfMass.allFinite()) {
+    throw InputError("", "shape", describe(mesh) + ": its mass properties overflow double precision; "
+                     "use smaller coordinates or a \"scale\"");
+  }
+}
+
+// Rounding can still leave a tensor that is no body's (a sliver thinner than the precision of its
+// coordinates, a tiny "scale" that underflows the moments). A solid's principal moments are
+// positive and none exceeds the sum of the other two (the triangle inequality, with equality only
+// for a flat plate); RigidBody would reject anything else as an internal error.
+void requirePhysical(const MassProperties& props, const Mesh& mesh) {
+  requireFinite(props, mesh);
+  const Vec3 moments = Eigen::SelfAdjointEigenSolver<Mat3>(props.inertia, Eigen::EigenvaluesOnly).eigenvalues();
+  const double slack = kTriangleInequalitySlack * moments.sum();
+  if (!(moments.minCoeff() > 0.0) || moments.maxCoeff() > moments.sum() - moments.maxCoeff() + slack) {
+    std::ostringstream problem;
+    problem << describe(mesh) << ": its principal moments (" << moments.x() << ", " << moments.y() << ", "
+            << moments.z() << ") kg m^2 are no solid's; the coordinates are too large or too far from "
+            << "the origin for double precision: re-centre or scale the mesh";
+    throw InputError("", "shape", problem.str());
   }
 }
 
@@ -24,13 +67,20 @@ MassProperties exactProperties(const Mesh& mesh, double density) {
                      "\"cube\" and a \"mass\" to approximate it");
   }
   const MassProperties props = polyhedralMassProperties(mesh, density);
+  requireFinite(props, mesh);
   if (props.volume < 0.0) {
     throw InputError("", "shape", "mesh '" + mesh.name + "' encloses a negative volume (" +
                      std::to_string(props.volume) + " m^3): its triangles are wound inward; "
                      "reverse the winding");
   }
-  if (props.volume == 0.0) {
-    throw InputError("", "shape", "mesh '" + mesh.name + "' encloses zero volume");
+  // A closed surface folded flat (a triangle and its reverse) passes every topology test; what is
+  // left of its volume after the signed sum cancels is rounding, not a solid.
+  const Vec3 box = mesh.boundsMax() - mesh.boundsMin();
+  if (props.volume <= kMinVolumeFraction * box.prod()) {
+    std::ostringstream problem;
+    problem << "mesh '" << mesh.name << "' encloses (almost) zero volume (" << props.volume << " m^3 in a "
+            << box.x() << " x " << box.y() << " x " << box.z() << " m box): a solid needs volume";
+    throw InputError("", "shape", problem.str());
   }
   return props;
 }
@@ -63,6 +113,7 @@ MassModel buildMassModel(Mesh mesh, std::optional<double> mass, std::optional<do
     const double m = mass ? *mass : *density * exactProperties(mesh, 1.0).volume;
     props = cubeApproximation(mesh, m);
   }
+  requirePhysical(props, mesh);
 
   translateMesh(mesh, props.centerOfMass);
   MassModel model;

@@ -147,9 +147,9 @@ void parsePlanes(const JsonObject& root, Scene& scene) {
   for (const JsonObject& p :
        root.objectArray("planes", {"normal", "point", "restitution", "friction_static", "friction_kinetic"})) {
     const Vec3 normal = p.vec3("normal", Vec3::UnitY());
-    if (!(normal.norm() > 0.0)) p.fail("normal", "expected a non-zero direction");
+    if (!(normal.stableNorm() > 0.0)) p.fail("normal", "expected a non-zero direction");
     Plane plane;
-    plane.normal = normal.normalized();  // a direction: its length carries no meaning
+    plane.normal = normal.stableNormalized();  // a direction: its length carries no meaning
     plane.offset = plane.normal.dot(p.vec3("point", Vec3::Zero()));
     scene.planes.push_back(plane);
     scene.planeMaterials.push_back(parseMaterial(p));

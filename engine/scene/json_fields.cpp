@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/SVD>
+
 #include "body/rigid_body.h"
 #include "io/input_error.h"
 #include "math/rotation.h"
@@ -28,6 +30,13 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
     }
   }
   return row[b.size()];
+}
+
+// The rotation nearest to M in the Frobenius norm (the polar factor U V^T of M = U S V^T), for a
+// matrix of positive determinant.
+Mat3 nearestRotation(const Mat3& M) {
+  const Eigen::JacobiSVD<Mat3> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  return svd.matrixU() * svd.matrixV().transpose();
 }
 
 }  // namespace
@@ -160,13 +169,20 @@ Vec3 JsonObject::positiveVec3(const char* key) const {
 
 std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
   if (!has(key)) return std::nullopt;
-  const JsonObject o = object(key, {"quaternion", "matrix", "axis_angle_deg"});
-  if (o.value_.size() != 1) fail(key, "give exactly one of quaternion, matrix, axis_angle_deg");
+  const JsonObject o = object(key, {"quaternion", "matrix", "axis_angle_deg", "normalize"});
+  // Normalising is the scene's choice ("normalize": true), never rbsim's: a quaternion or matrix
+  // typed with a few digits is otherwise taken only when it is a rotation to within 1e-6.
+  const bool normalize = o.boolean("normalize", false);
+  if (o.value_.size() != (o.has("normalize") ? 2u : 1u)) {
+    fail(key, "give exactly one of quaternion, matrix, axis_angle_deg");
+  }
   if (o.has("quaternion")) {
     const std::vector<double> n = o.numbers("quaternion", 4);
     const Quat q(n[0], n[1], n[2], n[3]);
-    if (std::abs(q.norm() - 1.0) > kRotationTolerance) {
-      o.fail("quaternion", "expected a unit quaternion [w, x, y, z], its norm is " + std::to_string(q.norm()));
+    if (normalize && !(q.norm() > 0.0)) o.fail("quaternion", "the zero quaternion has no direction to normalise");
+    if (!normalize && std::abs(q.norm() - 1.0) > kRotationTolerance) {
+      o.fail("quaternion", "expected a unit quaternion [w, x, y, z], its norm is " + std::to_string(q.norm()) +
+                               " (add \"normalize\": true to have it normalised)");
     }
     return q.normalized();  // within tolerance: removes only the rounding of typed digits
   }
@@ -182,16 +198,20 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
       }
     }
     if (!R.allFinite()) o.fail("matrix", "entries must be finite");
+    if (normalize && R.determinant() > 0.0) R = nearestRotation(R);
     if (orthonormalityError(R) > kRotationTolerance || R.determinant() < 0.0) {
       o.fail("matrix", "expected a rotation matrix (orthonormal, determinant +1); ||R^T R - I|| = " +
-                           std::to_string(orthonormalityError(R)) + ", det = " + std::to_string(R.determinant()));
+                           std::to_string(orthonormalityError(R)) + ", det = " + std::to_string(R.determinant()) +
+                           (normalize ? " (no rotation is near a matrix of determinant <= 0)"
+                                      : " (add \"normalize\": true for the nearest rotation)"));
     }
     return Quat(R).normalized();
   }
+  if (!o.has("axis_angle_deg")) fail(key, "give exactly one of quaternion, matrix, axis_angle_deg");
   const std::vector<double> n = o.numbers("axis_angle_deg", 4);
   const Vec3 axis(n[0], n[1], n[2]);
-  if (axis.norm() == 0.0) o.fail("axis_angle_deg", "the axis must be non-zero");
-  return quatFromAxisAngle(axis.normalized() * n[3] * M_PI / 180.0);
+  if (!(axis.stableNorm() > 0.0)) o.fail("axis_angle_deg", "the axis must be non-zero");
+  return quatFromAxisAngle(axis.stableNormalized() * n[3] * M_PI / 180.0);
 }
 
 JsonObject JsonObject::object(const char* key, std::initializer_list<const char*> allowed) const {

@@ -37,7 +37,9 @@ class JsonObject {
   std::optional<Vec3> optionalVec3(const char* key) const;
   Vec3 positiveVec3(const char* key) const;  // required, every component > 0
   // Orientation: {"quaternion": [w,x,y,z]} | {"matrix": [[r11,r12,r13],...]} |
-  // {"axis_angle_deg": [ax, ay, az, degrees]}; must be a rotation, never silently normalised.
+  // {"axis_angle_deg": [ax, ay, az, degrees]}; must be a rotation, never silently normalised:
+  // only with "normalize": true is a quaternion normalised and a matrix replaced by the nearest
+  // rotation (a matrix of determinant <= 0 is refused even then).
   std::optional<Quat> optionalOrientation(const char* key) const;
   JsonObject object(const char* key, std::initializer_list<const char*> allowed) const;
   std::vector<JsonObject> objectArray(const char* key, std::initializer_list<const char*> allowed) const;

@@ -48,10 +48,12 @@ void applyOverride(nlohmann::json& document, const std::string& assignment) {
     if (node->is_array()) {
       std::size_t index = node->size();
       if (isIndex(part)) {
-        index = std::stoul(part);
+        // Digits beyond any array's length (and beyond what stoul takes) name no element.
+        index = part.size() <= 9 ? std::stoul(part) : node->size();
       } else {  // an element by its "name"
         for (std::size_t k = 0; k < node->size(); ++k) {
-          if ((*node)[k].is_object() && (*node)[k].value("name", "") == part) index = k;
+          const nlohmann::json& element = (*node)[k];
+          if (element.is_object() && element.contains("name") && element["name"] == part) index = k;
         }
       }
       if (index >= node->size()) {

@@ -18,6 +18,8 @@ namespace {
 
 // Beyond this a video shows nothing a person can see, and it is most likely a typo.
 constexpr int kMaxFramesPerSecond = 240;  // [1/s]
+// world.steps accepts at most 1e9 (json_fields' positiveInt); a duration may not ask for more.
+constexpr double kMaxSteps = 1e9;
 
 // Line and column of a byte offset, for JSON syntax errors.
 std::string lineAndColumn(const std::string& text, std::size_t byte) {
@@ -119,6 +121,12 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     const std::string inertia = w.string("inertia", inertiaMethodName(scene.settings.inertia));
     if (!parseInertiaMethod(inertia, scene.settings.inertia)) w.fail("inertia", "expected \"cube\" or \"exact\"");
     scene.duration = w.positiveNumber("duration", scene.duration);
+    if (scene.duration / scene.settings.timeStep > kMaxSteps) {
+      std::ostringstream expected;
+      expected << "a duration of " << scene.duration << " s at dt = " << scene.settings.timeStep << " s is "
+               << scene.duration / scene.settings.timeStep << " steps; expected at most " << kMaxSteps;
+      w.fail("duration", expected.str());
+    }
     if (w.has("steps")) scene.duration = w.positiveInt("steps", 1) * scene.settings.timeStep;
   }
   const std::vector<JsonObject> bodies = root.objectArray("bodies", scene_detail::kBodyKeys);
@@ -144,22 +152,34 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
   if (!in) throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  return parseSceneText(buffer.str(), path, std::filesystem::path(path).parent_path().string(), overrides);
+}
+
+Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,
+                     const std::vector<std::string>& overrides) {
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path, lineAndColumn(text, e.byte == 0 ? 0 : e.byte - 1),
+    throw InputError(file, lineAndColumn(text, e.byte == 0 ? 0 : e.byte - 1),
                      std::string("invalid JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // A number too large for a double (1e999) ends the parse with out_of_range and no position;
+    // the message quotes the number, which is found again in the text.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    const std::size_t at = open < close ? text.find(what.substr(open + 1, close - open - 1)) : std::string::npos;
+    throw InputError(file, at == std::string::npos ? std::string() : lineAndColumn(text, at),
+                     "invalid JSON: " + what + " (numbers must be finite doubles)");
   }
   for (const std::string& assignment : overrides) {
     try {
       applyOverride(document, assignment);
     } catch (const InputError& e) {
-      throw InputError(path, "--set " + assignment, e.problem());
+      throw InputError(file, "--set " + assignment, e.problem());
     }
   }
-  return parseScene(document, path, std::filesystem::path(path).parent_path().string());
+  return parseScene(document, file, baseDir);
 }
 
 World buildWorld(const Scene& scene) {

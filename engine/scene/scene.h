@@ -55,6 +55,10 @@ struct Scene {
 // applied to the JSON before it is checked. Throws InputError.
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The same for the text of a scene file; `file` names it in messages.
+Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,
+                     const std::vector<std::string>& overrides = {});
+
 // Parses an in-memory document; mesh paths are relative to `baseDir`.
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir);
 

@@ -2,6 +2,7 @@
 // directory, and --set overrides. Every error must name the JSON path (or line and column).
 #include "scene/scene.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -180,6 +181,27 @@ TEST(ParseScene, NonOrthonormalMatrix) {
   json reflection = minimalScene();
   reflection["bodies"][0]["orientation"] = {{"matrix", {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}}}};
   EXPECT_EQ(parseError(reflection).field(), "bodies[0].orientation.matrix") << "det -1";
+}
+
+TEST(ParseScene, NormalizeOnRequestGivesTheUnitQuaternionAndTheNearestRotation) {
+  json doc = minimalScene();
+  doc["bodies"][0]["orientation"] = {{"quaternion", {2.0, 0.0, 2.0, 0.0}}, {"normalize", true}};
+  const Quat q = parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR).bodies[0].orientation;
+  EXPECT_NEAR(q.w(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(q.y(), std::sqrt(0.5), 1e-15);
+
+  // R S with S symmetric positive definite: its polar factor, the nearest rotation, is R.
+  const Mat3 R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Mat3 S = Vec3(1.1, 0.95, 1.0).asDiagonal();
+  const Mat3 M = R * S;
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({M(r, 0), M(r, 1), M(r, 2)});
+  json matrix = minimalScene();
+  matrix["bodies"][0]["orientation"] = {{"matrix", rows}, {"normalize", true}};
+  const Quat fromMatrix = parseScene(matrix, "test.json", RBSIM_TEST_DATA_DIR).bodies[0].orientation;
+  EXPECT_LT((fromMatrix.toRotationMatrix() - R).norm(), 1e-12);
+  matrix["bodies"][0]["orientation"].erase("normalize");
+  EXPECT_EQ(parseError(matrix).field(), "bodies[0].orientation.matrix") << "without the request: an error";
 }
 
 TEST(ParseScene, UnknownIntegratorListsTheValidNames) {
