@@ -11,6 +11,7 @@
 #include "mass/mass_model.h"
 #include "scene/body_parser.h"
 #include "scene/json_fields.h"
+#include "scene/particle_parser.h"
 
 namespace rbsim {
 
@@ -72,7 +73,7 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn"});
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -125,7 +126,10 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene);
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
   scene_detail::parseSpawns(root, baseDir, scene);
-  if (scene.bodies.empty()) throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block)");
+  const bool hasParticles = root.has("particles") && root.raw("particles").is_array() && !root.raw("particles").empty();
+  if (scene.bodies.empty() && !hasParticles) {
+    throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, or particles)");
+  }
   std::unordered_map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     if (!names.emplace(scene.bodies[i].name, i).second) {
@@ -135,6 +139,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     }
   }
   scene_detail::parsePlanes(root, scene);
+  scene_detail::parseParticleSystems(root, scene);
   parseView(root, scene);
   return scene;
 }
@@ -169,6 +174,7 @@ World buildWorld(const Scene& scene) {
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
   for (const Spring& s : scene.springs) world.addSpring(s);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
+  for (const ParticleSystemDef& def : scene.particleSystems) world.addParticleSystem(def);
   return world;
 }
 
