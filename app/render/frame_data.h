@@ -24,6 +24,9 @@ struct BodyView {
   // Below 1 the body is a see-through "ghost" (e.g. drawn at its time of impact): blended over
   // everything opaque, farthest ghost first, without a shadow. 0 or less: not drawn at all.
   float opacity = 1.0f;
+  // A smooth surface (a cloth): normals averaged over the triangles sharing each vertex, and only
+  // its open border outlined, instead of flat faces with every crease drawn.
+  bool smooth = false;
 };
 
 // A force drawn as an arrow from its application point (world frame).

@@ -48,6 +48,7 @@ render::BodyView clothOf(const ParticleSystem& system) {
   view.triangles = &system.clothTriangles();
   view.color = toGlm(system.def().cloth.color);
   view.axisLength = 0.0f;
+  view.smooth = true;
   return view;
 }
 

@@ -3,6 +3,7 @@
 #include "scene/particle_parser.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "io/input_error.h"
@@ -16,15 +17,21 @@ namespace {
 constexpr int kMaxParticleCapacity = 10'000'000;  // [particles]
 constexpr int kMaxSubsteps = 1000;                // [1]
 
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;  // 6 significant digits, no trailing zeros
+  return out.str();
+}
+
 double atLeast(const JsonObject& o, const char* key, double fallback, double low, const char* unit) {
   const double d = o.number(key, fallback);
-  if (!(d >= low)) o.fail(key, "expected a value >= " + std::to_string(low) + " " + unit + ", got " + std::to_string(d));
+  if (!(d >= low)) o.fail(key, "expected a value >= " + shortNumber(low) + " " + unit + ", got " + shortNumber(d));
   return d;
 }
 
 double fraction(const JsonObject& o, const char* key, double fallback) {
   const double d = o.number(key, fallback);
-  if (!(d >= 0.0 && d <= 1.0)) o.fail(key, "expected a value in [0, 1], got " + std::to_string(d));
+  if (!(d >= 0.0 && d <= 1.0)) o.fail(key, "expected a value in [0, 1], got " + shortNumber(d));
   return d;
 }
 
