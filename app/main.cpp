@@ -9,6 +9,7 @@
 #include "demos/demo.h"
 #include "integrate/integrator.h"
 #include "io/input_error.h"
+#include "particles/particle_def.h"
 #include "paths.h"
 #include "render/render_error.h"
 #include "run/runner.h"
@@ -78,6 +79,8 @@ int listEverything() {
   std::printf("integrators:\n");
   for (const std::string& name : rbsim::integratorNames()) std::printf("  %s\n", name.c_str());
   std::printf("inertia methods:\n  cube\n  exact\n");
+  std::printf("particle integrators (particles[].integrator):\n");
+  for (const std::string& name : rbsim::particleIntegratorNames()) std::printf("  %s\n", name.c_str());
   return 0;
 }
 
