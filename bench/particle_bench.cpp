@@ -172,6 +172,14 @@ void renderSprites(benchmark::State& state, ParticleLook::Blend blend) {
   state.counters["sprites"] = static_cast<double>(frame.sprites.at(0).sprites.size());
 }
 
+// The same frame without its sprites: what the sky, the ground and the read-back cost alone.
+void renderNoSprites(benchmark::State& state) {
+  render::FrameData frame = SpriteScene(ParticleLook::Blend::Additive).frame();
+  frame.sprites.clear();
+  for (auto _ : state) benchmark::DoNotOptimize(renderer().render(frame).data());
+  state.SetItemsProcessed(state.iterations());
+}
+
 class SummaryReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
@@ -205,6 +213,8 @@ void printSummary(const SummaryReporter& results) {
     std::printf("\nAt %d particles: memcpy %.2f GB/s -> bound %.4g particle-steps/s; measured %.4g; bound/x = %.2f\n",
                 kOutOfCacheParticles, bandwidth / 1e9, bandwidth / bytes, measured, bandwidth / bytes / measured);
   }
+  const double empty = results.rate("render_no_sprites/real_time");
+  if (empty > 0.0) std::printf("the same frame without sprites: %.1f frames/s\n", empty);
   for (const char* blend : {"additive", "alpha"}) {
     const double fps = results.rate(std::string("render_1e5_sprites/") + blend + "/real_time");
     if (fps > 0.0) std::printf("1e5 %s sprites at %dx%d: %.1f frames/s (draw and read back)\n", blend, kImageWidth, kImageHeight, fps);
@@ -225,6 +235,7 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("build_1e5_sprites/alpha", buildSprites, Blend::Alpha)->Unit(benchmark::kMillisecond);
   // llvmpipe draws on threads of its own: the rate is per wall-clock second, not per CPU second
   // of this thread.
+  benchmark::RegisterBenchmark("render_no_sprites", renderNoSprites)->Unit(benchmark::kMillisecond)->UseRealTime();
   benchmark::RegisterBenchmark("render_1e5_sprites/additive", renderSprites, Blend::Additive)
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime();
