@@ -7,9 +7,13 @@ namespace rbsim {
 
 namespace {
 
+// A helper axis is usable for n x helper while |n . helper| stays below this: far from parallel,
+// so the cross product keeps its precision.
+constexpr double kHelperCosine = 0.9;  // [1]
+
 // Two unit vectors completing the unit n to a right-handed orthonormal basis.
 void basisAround(const Vec3& n, Vec3& a, Vec3& b) {
-  const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 helper = std::abs(n.x()) < kHelperCosine ? Vec3::UnitX() : Vec3::UnitY();
   a = n.cross(helper).normalized();
   b = n.cross(a);
 }

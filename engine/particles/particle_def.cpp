@@ -30,12 +30,15 @@ std::vector<std::string> particleIntegratorNames() {
 
 namespace {
 
+// A direction is accepted as unit when its length is within this of 1 (scenes normalise theirs).
+constexpr double kUnitTolerance = 1e-9;  // [1]
+
 bool finiteAtLeast(double value, double low) { return std::isfinite(value) && value >= low; }
 bool range(double lo, double hi, double low) { return finiteAtLeast(lo, low) && hi >= lo && !std::isnan(hi); }
 
 std::string checkEmitter(const EmitterDef& e, std::size_t bodyCount) {
   if (e.shape == EmitterShape::MeshSurface && e.body >= bodyCount) return "body: names no body";
-  if (!e.position.allFinite() || !e.direction.allFinite() || std::abs(e.direction.norm() - 1.0) > 1e-9) {
+  if (!e.position.allFinite() || !e.direction.allFinite() || std::abs(e.direction.norm() - 1.0) > kUnitTolerance) {
     return "position, direction: expected a finite point and a unit direction";
   }
   if (!finiteAtLeast(e.radius, 0.0) || !(e.halfExtents.array() >= 0.0).all() || !e.halfExtents.allFinite()) {

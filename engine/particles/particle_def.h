@@ -12,10 +12,12 @@
 
 namespace rbsim {
 
-// Particles are points: x' = v, v' = F / m (seed 000 "particle systems", F = ma).
+// Particles are points: x' = v, v' = F / m (seed 000's homework, F = ma).
 enum class ParticleIntegrator {
-  ExplicitEuler,      // x += dt v_n, v += dt a(x_n, v_n): forward Euler, gains energy on springs
-  SemiImplicitEuler,  // v += dt a(x_n, v_n), x += dt v_{n+1}: symplectic, stable for stiffer springs
+  ExplicitEuler,      // x += dt v_n, v += dt a(x_n, v_n): seed 000 "Forward Euler Update"; gains
+                      // energy on springs
+  SemiImplicitEuler,  // v += dt a(x_n, v_n), x += dt v_{n+1}: symplectic (Hairer, Lubich, Wanner,
+                      // "Geometric Numerical Integration", VI.3), stable while omega dt < 2
 };
 const char* particleIntegratorName(ParticleIntegrator integrator);
 bool parseParticleIntegrator(const std::string& name, ParticleIntegrator& out);
