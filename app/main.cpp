@@ -25,7 +25,7 @@ using rbsim::app::RunOptions;
 // flag and the scene key it stands for are checked by the same code.
 struct Flags {
   RunOptions run;
-  std::string dt, steps, fps, size, integrator, inertia;
+  std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
   bool noRender = false, noOverlay = false;
   std::vector<std::string> sets;
 
@@ -40,6 +40,8 @@ struct Flags {
     cmd.add_option("--size", size, "image size WxH in pixels (view.size)");
     cmd.add_option("--integrator", integrator, "integrator name (world.integrator); see `rbsim list`");
     cmd.add_option("--inertia", inertia, "cube|exact: default inertia method (world.inertia)");
+    cmd.add_option("--particle-integrator", particleIntegrator,
+                   "explicit-euler|semi-implicit-euler: of particle systems naming none (world.particle_integrator)");
     cmd.add_option("--set", sets, "override any scene key: path=value, e.g. bodies.box.mass=2");
     cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
@@ -54,6 +56,7 @@ struct Flags {
     add("world.steps", steps);
     add("world.integrator", integrator.empty() ? "" : "\"" + integrator + "\"");
     add("world.inertia", inertia.empty() ? "" : "\"" + inertia + "\"");
+    add("world.particle_integrator", particleIntegrator.empty() ? "" : "\"" + particleIntegrator + "\"");
     add("view.fps", fps);
     if (!size.empty()) {
       const std::size_t x = size.find('x');

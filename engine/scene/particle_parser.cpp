@@ -157,6 +157,7 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
   const int capacity = p.positiveInt("capacity", static_cast<int>(d.capacity));
   if (capacity > kMaxParticleCapacity) p.fail("capacity", "expected at most " + std::to_string(kMaxParticleCapacity) + " particles");
   d.capacity = static_cast<std::size_t>(capacity);
+  d.integrator = scene.particleIntegrator;
   const std::string integrator = p.string("integrator", particleIntegratorName(d.integrator));
   if (!parseParticleIntegrator(integrator, d.integrator)) {
     p.fail("integrator", "unknown particle integrator \"" + integrator + "\"; expected explicit-euler or semi-implicit-euler");

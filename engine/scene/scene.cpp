@@ -80,7 +80,8 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   if (root.has("world")) {
     const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "collisions", "ccd", "broad_phase", "contact_margin",
                                          "velocity_iterations", "position_iterations", "restitution_threshold",
-                                         "contact_slop", "position_correction", "warm_starting", "response"});
+                                         "contact_slop", "position_correction", "warm_starting", "response",
+                                         "particle_integrator"});
     scene.settings.gravity = w.vec3("gravity", scene.settings.gravity);
     scene.settings.timeStep = w.positiveNumber("dt", scene.settings.timeStep);
     if (scene.settings.timeStep > kMaxTimeStep || scene.settings.timeStep < kMinTimeStep) {
@@ -116,6 +117,10 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
       std::string names;
       for (const std::string& n : integratorNames()) names += (names.empty() ? "" : ", ") + n;
       w.fail("integrator", "unknown integrator \"" + integrator + "\"; expected one of " + names);
+    }
+    const std::string particles = w.string("particle_integrator", particleIntegratorName(scene.particleIntegrator));
+    if (!parseParticleIntegrator(particles, scene.particleIntegrator)) {
+      w.fail("particle_integrator", "unknown particle integrator \"" + particles + "\"; expected explicit-euler or semi-implicit-euler");
     }
     const std::string inertia = w.string("inertia", inertiaMethodName(scene.settings.inertia));
     if (!parseInertiaMethod(inertia, scene.settings.inertia)) w.fail("inertia", "expected \"cube\" or \"exact\"");

@@ -59,6 +59,9 @@ struct Scene {
   std::vector<Spring> springs;
   std::vector<Plane> planes;  // static, infinite
   std::vector<Material> planeMaterials;  // per plane
+  // world.particle_integrator: the integrator of particle systems that do not name their own, as
+  // world.integrator is for bodies.
+  ParticleIntegrator particleIntegrator = ParticleIntegrator::SemiImplicitEuler;
   std::vector<ParticleSystemDef> particleSystems;
   std::vector<ParticleLook> particleLooks;  // per particle system
   ViewDesc view;

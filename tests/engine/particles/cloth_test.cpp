@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "math/uniform_random.h"
+#include "world/simulation_error.h"
 #include "particle_test_util.h"
 
 namespace rbsim {
@@ -122,6 +123,18 @@ TEST(Cloth, PinnedNodesStayWhereTheyAre) {
   stepN(world, 240);
   EXPECT_EQ(p.position[11], corner);
   EXPECT_LT(p.position[50].y(), y50 - 0.1) << "the free nodes fall";
+}
+
+TEST(Cloth, ADivergingClothStopsTheRunNamingItsIntegrator) {
+  World world = shakenCloth(ParticleIntegrator::ExplicitEuler);
+  try {
+    stepN(world, 100000);
+    FAIL() << "explicit Euler on these springs was expected to diverge";
+  } catch (const SimulationError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("explicit-euler"), std::string::npos) << message;
+    EXPECT_NE(message.find("particle system 'particles'"), std::string::npos) << message;
+  }
 }
 
 }  // namespace

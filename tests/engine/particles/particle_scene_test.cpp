@@ -68,6 +68,14 @@ TEST(ParticleScene, EveryKeyReachesTheDefinition) {
   EXPECT_EQ(world.particleSystems()[2].particles().count(), 40u);
 }
 
+TEST(ParticleScene, WorldParticleIntegratorIsTheDefaultASystemMayOverride) {
+  const Scene scene = parse(R"({"world": {"particle_integrator": "explicit-euler"},
+    "particles": [{"emitters": [{"type": "point"}]},
+                  {"integrator": "semi-implicit-euler", "emitters": [{"type": "point"}]}]})");
+  EXPECT_EQ(scene.particleSystems[0].integrator, ParticleIntegrator::ExplicitEuler);
+  EXPECT_EQ(scene.particleSystems[1].integrator, ParticleIntegrator::SemiImplicitEuler);
+}
+
 TEST(ParticleScene, AParticleOnlySceneNeedsNoBodies) {
   const Scene scene = parse(R"({"particles": [{"emitters": [{"type": "point"}]}]})");
   EXPECT_TRUE(scene.bodies.empty());
