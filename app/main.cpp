@@ -94,9 +94,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   int demoNumber = 0;
+  int demoPhase = 0;  // 0: every phase
   Flags demoFlags;
   CLI::App* demo = app.add_subcommand("demo", "run numbered assignment demo N into videos/");
   demo->add_option("N", demoNumber, "demo number (see `rbsim list`)")->required();
+  demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4")
+      ->check(CLI::PositiveNumber);
   demoFlags.attach(*demo);
 
   std::string scenePath;
@@ -124,8 +127,18 @@ int main(int argc, char** argv) {
       if (!chosen) {
         throw InputError("", "demo " + std::to_string(demoNumber), "no such demo; `rbsim list` shows them");
       }
-      options = demoFlags.finish("videos/" + chosen->name + ".mp4");
-      for (const std::string& file : chosen->scenes) {
+      std::vector<std::string> files = chosen->scenes;
+      std::string video = "videos/" + chosen->name + ".mp4";
+      if (demoPhase > 0) {
+        if (static_cast<std::size_t>(demoPhase) > files.size()) {
+          throw InputError("", "--phase " + std::to_string(demoPhase),
+                           "demo " + std::to_string(demoNumber) + " has " + std::to_string(files.size()) + " phases");
+        }
+        files = {files[static_cast<std::size_t>(demoPhase - 1)]};
+        video = "videos/" + chosen->name + "_" + std::to_string(demoPhase) + ".mp4";
+      }
+      options = demoFlags.finish(video);
+      for (const std::string& file : files) {
         scenes.push_back(rbsim::loadScene(rbsim::app::assetDir() + "/scenes/" + file, options.overrides));
       }
       title = "Demo " + std::to_string(chosen->number) + ": " + chosen->name;
