@@ -86,8 +86,13 @@ EmitterDef parseEmitter(const JsonObject& e, const Scene& scene) {
     if (!(d.halfExtents.array() >= 0.0).all()) e.fail("half_extents", "expected every component >= 0 m");
   }
   d.rate = atLeast(e, "rate", d.rate, 0.0, "particles/s");
-  const int burst = e.has("burst") ? e.positiveInt("burst", 1) : 0;
-  d.burst = static_cast<std::size_t>(burst);
+  if (e.has("burst")) {
+    const nlohmann::json& b = e.raw("burst");
+    if (!b.is_number_integer() || b.get<long long>() < 0 || b.get<long long>() > kMaxParticleCapacity) {
+      e.fail("burst", "expected an integer in [0, " + std::to_string(kMaxParticleCapacity) + "] particles");
+    }
+    d.burst = static_cast<std::size_t>(b.get<long long>());
+  }
   d.start = atLeast(e, "start", d.start, 0.0, "s");
   if (e.has("end")) {
     d.end = e.number("end", 0.0);

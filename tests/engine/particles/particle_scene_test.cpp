@@ -1,5 +1,9 @@
 // "particles" blocks of scene files: every key reaches the definition, and bad values are refused
 // with the file, the JSON path and what was expected.
+#include <fstream>
+#include <iterator>
+#include <string>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -74,6 +78,21 @@ TEST(ParticleScene, WorldParticleIntegratorIsTheDefaultASystemMayOverride) {
                   {"integrator": "semi-implicit-euler", "emitters": [{"type": "point"}]}]})");
   EXPECT_EQ(scene.particleSystems[0].integrator, ParticleIntegrator::ExplicitEuler);
   EXPECT_EQ(scene.particleSystems[1].integrator, ParticleIntegrator::SemiImplicitEuler);
+}
+
+TEST(ParticleScene, TheReadmeExampleParsesAndRuns) {
+  // README.md's "Particle systems" block, from its "particles" key to the end of the code block.
+  std::ifstream in(std::string(RBSIM_TEST_DATA_DIR) + "/../../../README.md");
+  ASSERT_TRUE(in) << "README.md not found";
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t first = readme.find("\"particles\": [ {");
+  ASSERT_NE(first, std::string::npos);
+  const std::size_t last = readme.find("```", first);
+  const Scene scene = parse("{" + readme.substr(first, last - first) + ", \"world\": {\"duration\": 0.1}}");
+  ASSERT_EQ(scene.particleSystems.size(), 1u);
+  World world = buildWorld(scene);
+  for (int i = 0; i < 24; ++i) world.step();
+  EXPECT_GT(world.particleSystems()[0].particles().count(), 0u);
 }
 
 TEST(ParticleScene, AParticleOnlySceneNeedsNoBodies) {
