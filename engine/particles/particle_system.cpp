@@ -70,15 +70,23 @@ void ParticleSystem::substep(double t, double h, const Vec3& gravity, const std:
   const bool hitPlanes = c.planes && !planes.empty();
   const bool hitBodies = c.bodies && !bodies.empty();
   const bool clampSpeed = def_.flock.enabled;
+  // Locals, not members: the pass stores doubles, which the compiler must otherwise assume may
+  // overwrite any double it reads through `this` (the wind, the planes) and reload them.
+  const Vec3 meanWind = def_.wind.velocity;
+  Vec3* const position = s.position.data();
+  Vec3* const velocity = s.velocity.data();
+  const double* const inverseMass = s.inverseMass.data();
+  double* const age = s.age.data();
+  const double* const lifetime = s.lifetime.data();
   bool anyExpired = false;
   for (std::size_t i = 0; i < n; ++i) {
-    const double w = s.inverseMass[i];
-    Vec3 x = s.position[i];
-    Vec3 v = s.velocity[i];
+    const double w = inverseMass[i];
+    Vec3 x = position[i];
+    Vec3 v = velocity[i];
     if (w > 0.0) {
       // a = F / m with F = m g + F_pairs + F_drag + F_magnets.
       Vec3 f = pairForces ? force_[i] : Vec3::Zero();
-      if (drag) f += dragForce(v - (turbulent ? windVelocity(def_.wind, x, t, windSeed) : def_.wind.velocity), k1, k2);
+      if (drag) f += dragForce(v - (turbulent ? windVelocity(def_.wind, x, t, windSeed) : meanWind), k1, k2);
       for (const AttractorDef& a : def_.attractors) f += attractorForce(a, x);
       const Vec3 a = g + w * f;
       if (semiImplicit) {
@@ -100,11 +108,11 @@ void ParticleSystem::substep(double t, double h, const Vec3& gravity, const std:
       if (hitPlanes) {
         for (const Plane& plane : planes) collidePlane(x, v, plane, c);
       }
-      s.position[i] = x;
-      s.velocity[i] = v;
+      position[i] = x;
+      velocity[i] = v;
     }
-    s.age[i] += h;
-    anyExpired |= s.age[i] >= s.lifetime[i];
+    age[i] += h;
+    anyExpired |= age[i] >= lifetime[i];
   }
   if (anyExpired) s.removeExpired();
 }
