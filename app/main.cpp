@@ -9,6 +9,7 @@
 #include "demos/demo.h"
 #include "integrate/integrator.h"
 #include "io/input_error.h"
+#include "particles/particle_def.h"
 #include "paths.h"
 #include "render/render_error.h"
 #include "window/interactive.h"
@@ -26,7 +27,7 @@ using rbsim::app::RunOptions;
 // flag and the scene key it stands for are checked by the same code.
 struct Flags {
   RunOptions run;
-  std::string dt, steps, fps, size, integrator, inertia;
+  std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
   bool noRender = false, noOverlay = false, window = false;
   rbsim::app::WindowOptions windowOptions;
   std::vector<std::string> sets;
@@ -42,6 +43,8 @@ struct Flags {
     cmd.add_option("--size", size, "image size WxH in pixels (view.size)");
     cmd.add_option("--integrator", integrator, "integrator name (world.integrator); see `rbsim list`");
     cmd.add_option("--inertia", inertia, "cube|exact: default inertia method (world.inertia)");
+    cmd.add_option("--particle-integrator", particleIntegrator,
+                   "explicit-euler|semi-implicit-euler: of particle systems naming none (world.particle_integrator)");
     cmd.add_option("--set", sets, "override any scene key: path=value, e.g. bodies.box.mass=2");
     cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
@@ -59,6 +62,7 @@ struct Flags {
     add("world.steps", steps);
     add("world.integrator", integrator.empty() ? "" : "\"" + integrator + "\"");
     add("world.inertia", inertia.empty() ? "" : "\"" + inertia + "\"");
+    add("world.particle_integrator", particleIntegrator.empty() ? "" : "\"" + particleIntegrator + "\"");
     add("view.fps", fps);
     if (!size.empty()) {
       const std::size_t x = size.find('x');
@@ -84,6 +88,8 @@ int listEverything() {
   std::printf("integrators:\n");
   for (const std::string& name : rbsim::integratorNames()) std::printf("  %s\n", name.c_str());
   std::printf("inertia methods:\n  cube\n  exact\n");
+  std::printf("particle integrators (particles[].integrator):\n");
+  for (const std::string& name : rbsim::particleIntegratorNames()) std::printf("  %s\n", name.c_str());
   return 0;
 }
 
@@ -94,9 +100,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   int demoNumber = 0;
+  int demoPhase = 0;  // 0: every phase
   Flags demoFlags;
   CLI::App* demo = app.add_subcommand("demo", "run numbered assignment demo N into videos/");
   demo->add_option("N", demoNumber, "demo number (see `rbsim list`)")->required();
+  demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4")
+      ->check(CLI::PositiveNumber);
   demoFlags.attach(*demo);
 
   std::string scenePath;
@@ -126,8 +135,18 @@ int main(int argc, char** argv) {
       if (!chosen) {
         throw InputError("", "demo " + std::to_string(demoNumber), "no such demo; `rbsim list` shows them");
       }
-      options = demoFlags.finish("videos/" + chosen->name + ".mp4");
-      for (const std::string& file : chosen->scenes) files.push_back(rbsim::app::assetDir() + "/scenes/" + file);
+      std::vector<std::string> phases = chosen->scenes;
+      std::string video = "videos/" + chosen->name + ".mp4";
+      if (demoPhase > 0) {
+        if (static_cast<std::size_t>(demoPhase) > phases.size()) {
+          throw InputError("", "--phase " + std::to_string(demoPhase),
+                           "demo " + std::to_string(demoNumber) + " has " + std::to_string(phases.size()) + " phases");
+        }
+        phases = {phases[static_cast<std::size_t>(demoPhase - 1)]};
+        video = "videos/" + chosen->name + "_" + std::to_string(demoPhase) + ".mp4";
+      }
+      options = demoFlags.finish(video);
+      for (const std::string& file : phases) files.push_back(rbsim::app::assetDir() + "/scenes/" + file);
       title = "Demo " + std::to_string(chosen->number) + ": " + chosen->name;
     } else {
       options = runFlags.finish("videos/" + std::filesystem::path(scenePath).stem().string() + ".mp4");

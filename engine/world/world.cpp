@@ -68,6 +68,7 @@ const char* stageName(Stage stage) {
     case Stage::NarrowPhase: return "narrow-phase";
     case Stage::SolveContacts: return "solve-contacts";
     case Stage::UpdateSleep: return "update-sleep";
+    case Stage::StepParticles: return "step-particles";
     case Stage::Count: break;
   }
   return "unknown";
@@ -135,6 +136,11 @@ void World::addPlane(const Plane& plane, const Material& material) {
   planeMaterials_.push_back(material);
 }
 
+std::size_t World::addParticleSystem(const ParticleSystemDef& def) {
+  particleSystems_.emplace_back(def, bodies_);
+  return particleSystems_.size() - 1;
+}
+
 void World::addPoseEvent(const PoseEvent& event) {
   if (event.body >= bodies_.size()) throw std::invalid_argument("pose event names no body");
   const auto at = std::upper_bound(pendingEvents_.begin(), pendingEvents_.end(), event,
@@ -193,6 +199,9 @@ void World::step() {
     if (settings_.respondToContacts) solveContacts();
   });
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
+  runStage(Stage::StepParticles, !particleSystems_.empty(), [&] {
+    for (ParticleSystem& system : particleSystems_) system.step(t, settings_.timeStep, settings_.gravity, bodies_, planes_);
+  });
   ++stepCount_;
 }
 
@@ -359,6 +368,7 @@ std::uint64_t World::stateHash() const {
     for (int i = 0; i < 3; ++i) mix(s.linearMomentum[i]);
     for (int i = 0; i < 3; ++i) mix(s.angularMomentum[i]);
   }
+  for (const ParticleSystem& system : particleSystems_) hash = system.hashState(hash);
   return hash;
 }
 
