@@ -4,6 +4,7 @@
 
 #include "run/collision_view.h"
 #include "run/particle_view.h"
+#include "run/soft_view.h"
 #include "run/to_glm.h"
 
 namespace rbsim::app {
@@ -92,6 +93,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
     });
   }
   if (!world.particleSystems().empty()) addParticleView(world, scene, frame);
+  if (!world.softBodies().empty()) addSoftView(world, frame);
   if (view.aabbs || view.contacts) addCollisionView(world, scene, frame);
   return frame;
 }

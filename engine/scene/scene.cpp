@@ -12,6 +12,7 @@
 #include "scene/body_parser.h"
 #include "scene/json_fields.h"
 #include "scene/particle_parser.h"
+#include "scene/soft_parser.h"
 
 namespace rbsim {
 
@@ -75,7 +76,7 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles"});
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles", "soft_bodies"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -139,9 +140,9 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene);
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
   scene_detail::parseSpawns(root, baseDir, scene);
-  const bool hasParticles = root.has("particles") && root.raw("particles").is_array() && !root.raw("particles").empty();
-  if (scene.bodies.empty() && !hasParticles) {
-    throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, or particles)");
+  const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };
+  if (scene.bodies.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies")) {
+    throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, particles or soft bodies)");
   }
   std::unordered_map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -153,6 +154,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   }
   scene_detail::parsePlanes(root, scene);
   scene_detail::parseParticleSystems(root, scene);
+  scene_detail::parseSoftBodies(root, scene);
   parseView(root, scene);
   return scene;
 }
@@ -200,6 +202,7 @@ World buildWorld(const Scene& scene) {
   for (const Spring& s : scene.springs) world.addSpring(s);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
   for (const ParticleSystemDef& def : scene.particleSystems) world.addParticleSystem(def);
+  for (const SoftBodyDef& def : scene.softBodies) world.addSoftBody(def);
   return world;
 }
 

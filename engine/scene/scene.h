@@ -9,6 +9,7 @@
 #include "body/body_def.h"
 #include "collision/contact.h"
 #include "particles/particle_def.h"
+#include "soft/soft_body.h"
 #include "world/scripts.h"
 #include "world/spring.h"
 #include "world/settings.h"
@@ -64,6 +65,7 @@ struct Scene {
   ParticleIntegrator particleIntegrator = ParticleIntegrator::SemiImplicitEuler;
   std::vector<ParticleSystemDef> particleSystems;
   std::vector<ParticleLook> particleLooks;  // per particle system
+  std::vector<SoftBodyDef> softBodies;      // FEM soft bodies (engine/soft)
   ViewDesc view;
 
   std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep

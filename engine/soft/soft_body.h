@@ -75,6 +75,7 @@ class SoftBody {
   const Elasticity& elasticity() const { return elasticity_; }
   SoftIntegrator integrator() const { return integrator_; }
   const Vec3& color() const { return color_; }
+  const Material& material() const { return material_; }
   std::size_t tetCount() const { return mesh_.tets.size(); }
   int lastIterations() const { return lastIterations_; }  // CG iterations of the last implicit step
 

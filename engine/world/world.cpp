@@ -10,6 +10,7 @@
 #include <string>
 
 #include "integrate/integrator.h"
+#include "soft/soft_contact.h"
 #include "world/islands.h"
 #include "world/simulation_error.h"
 
@@ -69,6 +70,7 @@ const char* stageName(Stage stage) {
     case Stage::SolveContacts: return "solve-contacts";
     case Stage::UpdateSleep: return "update-sleep";
     case Stage::StepParticles: return "step-particles";
+    case Stage::StepSoftBodies: return "step-soft-bodies";
     case Stage::Count: break;
   }
   return "unknown";
@@ -136,6 +138,11 @@ void World::addPlane(const Plane& plane, const Material& material) {
   planeMaterials_.push_back(material);
 }
 
+std::size_t World::addSoftBody(const SoftBodyDef& def) {
+  softBodies_.emplace_back(def);
+  return softBodies_.size() - 1;
+}
+
 std::size_t World::addParticleSystem(const ParticleSystemDef& def) {
   particleSystems_.emplace_back(def, bodies_);
   return particleSystems_.size() - 1;
@@ -201,6 +208,16 @@ void World::step() {
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
   runStage(Stage::StepParticles, !particleSystems_.empty(), [&] {
     for (ParticleSystem& system : particleSystems_) system.step(t, settings_.timeStep, settings_.gravity, bodies_, planes_);
+  });
+  runStage(Stage::StepSoftBodies, !softBodies_.empty(), [&] {
+    if (softContactShapes_.size() != bodies_.size()) {
+      softContactShapes_.clear();
+      for (const RigidBody& body : bodies_) softContactShapes_.push_back(convexShapeOf(body.mesh()));
+    }
+    for (SoftBody& soft : softBodies_) {
+      soft.step(settings_.timeStep, settings_.gravity, planes_, planeMaterials_);
+      if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, softContactShapes_, bodyMaterials_, soft.material());
+    }
   });
   ++stepCount_;
 }
@@ -369,6 +386,14 @@ std::uint64_t World::stateHash() const {
     for (int i = 0; i < 3; ++i) mix(s.angularMomentum[i]);
   }
   for (const ParticleSystem& system : particleSystems_) hash = system.hashState(hash);
+  for (const SoftBody& soft : softBodies_) {
+    for (const Vec3& x : soft.positions()) {
+      for (int i = 0; i < 3; ++i) mix(x[i]);
+    }
+    for (const Vec3& v : soft.velocities()) {
+      for (int i = 0; i < 3; ++i) mix(v[i]);
+    }
+  }
   return hash;
 }
 

@@ -10,7 +10,9 @@
 #include "collision/contact.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/material.h"
+#include "particles/particle_collision.h"
 #include "particles/particle_system.h"
+#include "soft/soft_body.h"
 #include "world/collision_pipeline.h"
 #include "world/scripts.h"
 #include "world/spring.h"
@@ -32,6 +34,8 @@ enum class Stage : int {
   UpdateSleep,       // islands of touching bodies, all slow for Settings::timeToSleep, fall asleep
   StepParticles,     // particle systems: emit, forces, integrate, collide with planes and the
                      // bodies where they now are, age; skipped when the World has none
+  StepSoftBodies,    // FEM soft bodies: elastic forces, integrate, nodes against planes and rigid
+                     // bodies (both ways); skipped when the World has none
   Count
 };
 const char* stageName(Stage stage);
@@ -60,6 +64,8 @@ class World {
   void addPlane(const Plane& plane, const Material& material = {});
   // Throws std::invalid_argument when checkParticleSystemDef finds a problem.
   std::size_t addParticleSystem(const ParticleSystemDef& def);
+  // Throws std::invalid_argument on a bad definition (SoftBody's constructor).
+  std::size_t addSoftBody(const SoftBodyDef& def);
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
   void step();
@@ -74,6 +80,8 @@ class World {
   const std::vector<Plane>& planes() const { return planes_; }
   const std::vector<ParticleSystem>& particleSystems() const { return particleSystems_; }
   std::vector<ParticleSystem>& particleSystems() { return particleSystems_; }
+  const std::vector<SoftBody>& softBodies() const { return softBodies_; }
+  std::vector<SoftBody>& softBodies() { return softBodies_; }
   std::size_t awakeCount() const;
   const CollisionPipeline& collision() const { return collision_; }
   const std::vector<Contact>& contacts() const { return collision_.contacts(); }
@@ -110,6 +118,8 @@ class World {
   std::vector<Material> bodyMaterials_;   // per body
   std::vector<Material> planeMaterials_;  // per plane
   std::vector<ParticleSystem> particleSystems_;
+  std::vector<SoftBody> softBodies_;
+  std::vector<ConvexShape> softContactShapes_;  // per rigid body, built when the first soft body is added
   CollisionPipeline collision_;
   ContactSolver contactSolver_;
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]

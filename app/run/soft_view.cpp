@@ -1,0 +1,50 @@
+#include "run/soft_view.h"
+
+#include <cstdio>
+#include <string>
+
+#include "run/to_glm.h"
+
+namespace rbsim::app {
+
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0) {
+  char text[96];
+  std::snprintf(text, sizeof text, pattern, a, b);
+  return text;
+}
+
+}  // namespace
+
+void addSoftView(const World& world, render::FrameData& frame) {
+  for (const SoftBody& soft : world.softBodies()) {
+    render::BodyView view;
+    view.worldVertices.reserve(soft.positions().size());
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& x : soft.positions()) {
+      view.worldVertices.push_back(toGlm(x));
+      centre += x / static_cast<double>(soft.positions().size());
+    }
+    view.triangles = &soft.mesh().boundary;
+    view.position = toGlm(centre);
+    view.color = toGlm(soft.color());
+    view.axisLength = 0.0f;  // a deforming body has no body axes to draw
+    view.smooth = true;
+    frame.bodies.push_back(std::move(view));
+  }
+  if (world.softBodies().empty()) return;
+  const SoftBody& soft = world.softBodies().front();
+  std::vector<std::pair<std::string, std::string>>& rows = frame.overlay.rows;
+  rows.push_back({"soft body", soft.name() + format(" (%.0f tetrahedra, %.3g kg)", static_cast<double>(soft.tetCount()), soft.mass())});
+  rows.push_back({"model", std::string(constitutiveModelName(soft.elasticity().model)) +
+                               format(", mu %.3g Pa, lambda %.3g Pa", soft.elasticity().lame.mu, soft.elasticity().lame.lambda)});
+  std::string integrator = softIntegratorName(soft.integrator());
+  if (soft.integrator() == SoftIntegrator::BackwardEuler) integrator += format(", %.0f CG iterations", soft.lastIterations());
+  rows.push_back({"soft integrator", integrator});
+  rows.push_back({"stable explicit dt", format("%.3g s (dt %.3g s)", soft.stableTimeStep(), world.settings().timeStep)});
+  rows.push_back({"elastic energy", format("%.4g J", soft.elasticEnergy())});
+  rows.push_back({"kinetic energy (soft)", format("%.4g J", soft.kineticEnergy())});
+}
+
+}  // namespace rbsim::app

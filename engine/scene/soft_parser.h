@@ -1,0 +1,11 @@
+#pragma once
+// Scene-file parsing of "soft_bodies" blocks into SoftBodyDef (keys in README.md, "Scene
+// format"). Internal to scene/.
+#include "scene/json_fields.h"
+#include "scene/scene.h"
+
+namespace rbsim::scene_detail {
+
+void parseSoftBodies(const JsonObject& root, Scene& scene);
+
+}  // namespace rbsim::scene_detail

@@ -1,0 +1,67 @@
+#include "soft/soft_contact.h"
+
+#include <cmath>
+#include <limits>
+
+#include "dynamics/impulse.h"
+
+namespace rbsim {
+
+int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<ConvexShape>& shapes,
+                         const std::vector<Material>& materials, const Material& softMaterial) {
+  int touching = 0;
+  std::vector<Vec3>& x = soft.positions();
+  std::vector<Vec3>& v = soft.velocities();
+  const std::vector<double>& m = soft.nodeMasses();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    RigidBody& body = bodies[b];
+    const ConvexShape& shape = shapes[b];
+    if (shape.normals.empty()) continue;
+    const Material material = combine(softMaterial, materials[b]);
+    const Mat3& R = body.rotation();
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const Vec3 arm = x[i] - body.position();
+      if (arm.squaredNorm() > shape.boundingRadius * shape.boundingRadius) continue;
+      const Vec3 local = R.transpose() * arm;
+      double largest = -std::numeric_limits<double>::infinity();
+      std::size_t face = 0;
+      for (std::size_t f = 0; f < shape.normals.size(); ++f) {
+        const double d = shape.normals[f].dot(local) - shape.offsets[f];
+        if (d > largest) {
+          largest = d;
+          face = f;
+        }
+      }
+      if (!(largest < 0.0)) continue;
+      ++touching;
+      const Vec3 n = R * shape.normals[face];  // out of the body, towards the node
+      x[i] -= largest * n;
+      const Vec3 r = x[i] - body.position();
+      const Vec3 u = v[i] - (body.velocity() + body.angularVelocity().cross(r));
+      const double un = u.dot(n);
+      if (un >= 0.0) continue;
+      const double inverseMassBody = body.isStatic() ? 0.0 : 1.0 / body.mass();
+      const Mat3 inverseInertia = body.isStatic() ? Mat3::Zero() : Mat3(body.inverseInertiaWorld());
+      const Mat3 k = (1.0 / m[i]) * Mat3::Identity() + impulseFactor(inverseMassBody, inverseInertia, r);
+      const double jn = -(1.0 + material.restitution) * un / n.dot(k * n);
+      Vec3 j = jn * n;
+      const Vec3 ut = u - un * n;
+      if (ut.norm() > 0.0) {
+        const Vec3 t = ut.normalized();
+        const double stop = ut.norm() / t.dot(k * t);  // the impulse that stops the slip
+        j -= std::min(stop, (stop <= material.staticFriction * jn ? material.staticFriction : material.kineticFriction) * jn) * t;
+      }
+      v[i] += j / m[i];
+      if (!body.isStatic()) {
+        BodyState state = body.state();
+        state.linearMomentum -= j;
+        state.angularMomentum -= r.cross(j);
+        body.setState(state);
+        body.wake();
+      }
+    }
+  }
+  return touching;
+}
+
+}  // namespace rbsim
