@@ -6,8 +6,8 @@
 namespace rbsim::app {
 
 Demo demo7Soft() {
-  return Demo{7, "soft", "FEM soft bodies: a jelly cube hit by a rigid box, soft bars bending under gravity",
-              {"soft_jelly.json", "soft_bars.json"}};
+  return Demo{7, "soft", "FEM soft bodies: a jelly cube hit by a rigid box, soft bars bending under gravity, 2D boxes tumbling",
+              {"soft_jelly.json", "soft_bars.json", "planar_tumbling.json"}};
 }
 
 }  // namespace rbsim::app

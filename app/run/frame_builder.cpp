@@ -4,6 +4,7 @@
 
 #include "run/collision_view.h"
 #include "run/particle_view.h"
+#include "run/planar_view.h"
 #include "run/soft_view.h"
 #include "run/to_glm.h"
 
@@ -94,6 +95,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
   }
   if (!world.particleSystems().empty()) addParticleView(world, scene, frame);
   if (!world.softBodies().empty()) addSoftView(world, frame);
+  if (world.planarWorld() != nullptr) addPlanarView(world, scene, frame);
   if (view.aabbs || view.contacts) addCollisionView(world, scene, frame);
   return frame;
 }

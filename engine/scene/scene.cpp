@@ -12,6 +12,7 @@
 #include "scene/body_parser.h"
 #include "scene/json_fields.h"
 #include "scene/particle_parser.h"
+#include "scene/planar_parser.h"
 #include "scene/soft_parser.h"
 
 namespace rbsim {
@@ -76,7 +77,7 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles", "soft_bodies"});
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles", "soft_bodies", "planar"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -141,8 +142,8 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
   scene_detail::parseSpawns(root, baseDir, scene);
   const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };
-  if (scene.bodies.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies")) {
-    throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, particles or soft bodies)");
+  if (scene.bodies.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies") && !root.has("planar")) {
+    throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, particles, soft bodies or a planar world)");
   }
   std::unordered_map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -155,6 +156,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   scene_detail::parsePlanes(root, scene);
   scene_detail::parseParticleSystems(root, scene);
   scene_detail::parseSoftBodies(root, scene);
+  scene_detail::parsePlanar(root, scene);
   parseView(root, scene);
   return scene;
 }
@@ -203,6 +205,7 @@ World buildWorld(const Scene& scene) {
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
   for (const ParticleSystemDef& def : scene.particleSystems) world.addParticleSystem(def);
   for (const SoftBodyDef& def : scene.softBodies) world.addSoftBody(def);
+  if (scene.planar) world.setPlanarWorld(*scene.planar);
   return world;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // A scene file (JSON) parsed into plain engine data. The format is documented in README.md
 // ("Scene format"); every error names the file, the JSON path and what was expected.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "body/body_def.h"
 #include "collision/contact.h"
 #include "particles/particle_def.h"
+#include "planar/planar_world.h"
 #include "soft/soft_body.h"
 #include "world/scripts.h"
 #include "world/spring.h"
@@ -66,6 +68,9 @@ struct Scene {
   std::vector<ParticleSystemDef> particleSystems;
   std::vector<ParticleLook> particleLooks;  // per particle system
   std::vector<SoftBodyDef> softBodies;      // FEM soft bodies (engine/soft)
+  std::optional<PlanarWorld> planar;        // a 2D world in the xy plane (engine/planar)
+  std::vector<Vec3> planarColors;           // per 2D body, linear RGB
+  double planarDepth = 0.4;                 // [m] the 2D bodies are drawn as prisms this thick
   ViewDesc view;
 
   std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep

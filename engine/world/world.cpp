@@ -71,6 +71,7 @@ const char* stageName(Stage stage) {
     case Stage::UpdateSleep: return "update-sleep";
     case Stage::StepParticles: return "step-particles";
     case Stage::StepSoftBodies: return "step-soft-bodies";
+    case Stage::StepPlanar: return "step-planar";
     case Stage::Count: break;
   }
   return "unknown";
@@ -136,6 +137,15 @@ void World::addPlane(const Plane& plane, const Material& material) {
   if (!problem.empty()) throw std::invalid_argument("plane: " + problem);
   planes_.push_back(plane);
   planeMaterials_.push_back(material);
+}
+
+void World::setPlanarWorld(const PlanarWorld& planar) {
+  PlanarSettings settings = planar.settings();
+  settings.timeStep = settings_.timeStep;
+  settings.gravity = Vec2(settings_.gravity.x(), settings_.gravity.y());
+  planar_.emplace(settings);
+  for (const PlanarBody& body : planar.bodies()) planar_->addBody(body);
+  for (const PlanarLine& line : planar.lines()) planar_->addLine(line);
 }
 
 std::size_t World::addSoftBody(const SoftBodyDef& def) {
@@ -219,6 +229,7 @@ void World::step() {
       if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, softContactShapes_, bodyMaterials_, soft.material());
     }
   });
+  runStage(Stage::StepPlanar, planar_.has_value(), [&] { planar_->step(); });
   ++stepCount_;
 }
 
@@ -386,6 +397,14 @@ std::uint64_t World::stateHash() const {
     for (int i = 0; i < 3; ++i) mix(s.angularMomentum[i]);
   }
   for (const ParticleSystem& system : particleSystems_) hash = system.hashState(hash);
+  if (planar_) {
+    for (const PlanarBody& b : planar_->bodies()) {
+      const PlanarState& s = b.state();
+      for (double value : {s.position.x(), s.position.y(), s.angle, s.linearMomentum.x(), s.linearMomentum.y(), s.angularMomentum}) {
+        mix(value);
+      }
+    }
+  }
   for (const SoftBody& soft : softBodies_) {
     for (const Vec3& x : soft.positions()) {
       for (int i = 0; i < 3; ++i) mix(x[i]);

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "body/rigid_body.h"
@@ -12,6 +13,7 @@
 #include "dynamics/material.h"
 #include "particles/particle_collision.h"
 #include "particles/particle_system.h"
+#include "planar/planar_world.h"
 #include "soft/soft_body.h"
 #include "world/collision_pipeline.h"
 #include "world/scripts.h"
@@ -36,6 +38,7 @@ enum class Stage : int {
                      // bodies where they now are, age; skipped when the World has none
   StepSoftBodies,    // FEM soft bodies: elastic forces, integrate, nodes against planes and rigid
                      // bodies (both ways); skipped when the World has none
+  StepPlanar,        // the 2D world of polygons (engine/planar), seed 002's 2D rigid bodies
   Count
 };
 const char* stageName(Stage stage);
@@ -66,6 +69,8 @@ class World {
   std::size_t addParticleSystem(const ParticleSystemDef& def);
   // Throws std::invalid_argument on a bad definition (SoftBody's constructor).
   std::size_t addSoftBody(const SoftBodyDef& def);
+  // A 2D world stepped with this World's dt and the x, y components of its gravity.
+  void setPlanarWorld(const PlanarWorld& planar);
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
   void step();
@@ -82,6 +87,7 @@ class World {
   std::vector<ParticleSystem>& particleSystems() { return particleSystems_; }
   const std::vector<SoftBody>& softBodies() const { return softBodies_; }
   std::vector<SoftBody>& softBodies() { return softBodies_; }
+  const PlanarWorld* planarWorld() const { return planar_ ? &*planar_ : nullptr; }
   std::size_t awakeCount() const;
   const CollisionPipeline& collision() const { return collision_; }
   const std::vector<Contact>& contacts() const { return collision_.contacts(); }
@@ -119,6 +125,7 @@ class World {
   std::vector<Material> planeMaterials_;  // per plane
   std::vector<ParticleSystem> particleSystems_;
   std::vector<SoftBody> softBodies_;
+  std::optional<PlanarWorld> planar_;
   std::vector<ConvexShape> softContactShapes_;  // per rigid body, built when the first soft body is added
   CollisionPipeline collision_;
   ContactSolver contactSolver_;

@@ -1,0 +1,11 @@
+#pragma once
+// Scene-file parsing of the "planar" block: a 2D world of polygons (engine/planar) in the xy
+// plane. Internal to scene/.
+#include "scene/json_fields.h"
+#include "scene/scene.h"
+
+namespace rbsim::scene_detail {
+
+void parsePlanar(const JsonObject& root, Scene& scene);
+
+}  // namespace rbsim::scene_detail
