@@ -30,16 +30,19 @@ Mat3 frictionImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, 
   return k;
 }
 
-CollisionImpulse collisionImpulse(const Mat3& totalFactor, const Vec3& relativeVelocity, const Vec3& normal,
-                                  const Material& material) {
-  CollisionImpulse out;
+template <int Dim>
+CollisionImpulseIn<Dim> collisionImpulse(const Eigen::Matrix<double, Dim, Dim>& totalFactor,
+                                         const ImpulseVector<Dim>& relativeVelocity, const ImpulseVector<Dim>& normal,
+                                         const Material& material) {
+  using Vector = Eigen::Matrix<double, Dim, 1>;
+  CollisionImpulseIn<Dim> out;
   const double normalVelocity = relativeVelocity.dot(normal);
   if (!(normalVelocity < 0.0)) return out;  // separating or resting: no collision impulse
   out.colliding = true;
   const double restitution = material.restitution;
 
-  // Sticking: u_rel^new = -c_R u_rel,N N, solved for the full 3D impulse.
-  const Vec3 sticking = totalFactor.ldlt().solve(-restitution * normalVelocity * normal - relativeVelocity);
+  // Sticking: u_rel^new = -c_R u_rel,N N, solved for the full impulse.
+  const Vector sticking = totalFactor.ldlt().solve(Vector(-restitution * normalVelocity * normal - relativeVelocity));
   const double stickingNormal = sticking.dot(normal);
   if ((sticking - stickingNormal * normal).norm() <= material.staticFriction * stickingNormal) {
     out.impulse = sticking;
@@ -50,18 +53,23 @@ CollisionImpulse collisionImpulse(const Mat3& totalFactor, const Vec3& relativeV
   // Kinetic friction along T, the direction of the tangential relative velocity. When there is
   // none (the sticking impulse left the cone through the coupling in K_T alone), friction opposes
   // the tangential part of the sticking impulse's direction instead.
-  Vec3 tangential = relativeVelocity - normalVelocity * normal;
+  Vector tangential = relativeVelocity - normalVelocity * normal;
   if (tangential.norm() == 0.0) tangential = -(sticking - stickingNormal * normal);
-  const Vec3 direction = tangential.norm() > 0.0 ? Vec3(tangential.normalized()) : Vec3::Zero();
-  const Vec3 axis = normal - material.kineticFriction * direction;
+  const Vector direction = tangential.norm() > 0.0 ? Vector(tangential.normalized()) : Vector(Vector::Zero());
+  const Vector axis = normal - material.kineticFriction * direction;
   const double denominator = normal.dot(totalFactor * axis);
   // N^T K_T (N - mu_k T) <= 0 happens only for mu_k large against a strongly coupled K_T (the
   // Painleve configurations); there the kinetic formula has no repulsive solution, and the
   // frictionless impulse is the one that still satisfies the normal condition.
-  const Vec3 used = denominator > 0.0 ? axis : normal;
+  const Vector used = denominator > 0.0 ? axis : normal;
   const double normalMagnitude = -(1.0 + restitution) * normalVelocity / normal.dot(totalFactor * used);
   out.impulse = normalMagnitude * used;
   return out;
 }
+
+template CollisionImpulseIn<2> collisionImpulse<2>(const Eigen::Matrix2d&, const ImpulseVector<2>&, const ImpulseVector<2>&,
+                                                   const Material&);
+template CollisionImpulseIn<3> collisionImpulse<3>(const Eigen::Matrix3d&, const ImpulseVector<3>&, const ImpulseVector<3>&,
+                                                   const Material&);
 
 }  // namespace rbsim

@@ -2,6 +2,8 @@
 // Impulses on rigid bodies (seed 000 "Collision Response", "Friction"; seed 002 2.2.1-2.2.2).
 // An impulse j at the point x + r changes P by j and L by r x j; the velocity of that point then
 // changes by K j, with K the impulse factor below. Static bodies and planes have K = 0.
+#include <type_traits>
+
 #include <Eigen/Core>
 
 #include "dynamics/material.h"
@@ -25,18 +27,31 @@ Mat6 coupledImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, c
 Mat3 frictionImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, const Vec3& r, const Vec3& t1,
                            const Vec3& t2, const Vec3& n);
 
-struct CollisionImpulse {
-  Vec3 impulse = Vec3::Zero();  // j, applied +j to body 1 and -j to body 2 [N s]
-  bool colliding = false;       // u_rel,N < 0: the bodies were approaching
-  bool sticking = false;        // the static-friction impulse was inside the friction cone
+// The result of collisionImpulse, in 3D or (for engine/planar) in 2D.
+template <int Dim>
+struct CollisionImpulseIn {
+  Eigen::Matrix<double, Dim, 1> impulse = Eigen::Matrix<double, Dim, 1>::Zero();  // on body 1; body 2 gets -j [N s]
+  bool colliding = false;  // u_rel,N < 0: the bodies were approaching
+  bool sticking = false;   // the static-friction impulse was inside the friction cone
 };
+using CollisionImpulse = CollisionImpulseIn<3>;
 
 // One contact, solved exactly as seed 000 derives it: no impulse unless u_rel,N < 0; first the
 // sticking impulse j = K_T^-1 (-c_R u_rel,N N - u_rel), kept if |j - (j.N)N| <= mu_s (j.N);
 // otherwise the kinetic impulse j = (N - mu_k T) j_n with T = u_rel,T / |u_rel,T| and
 // -c_R u_rel,N = u_rel,N + N^T K_T (N - mu_k T) j_n. `relativeVelocity` is u_1 - u_2 at the
-// point, `normal` the unit normal pointing towards body 1, `totalFactor` K_T = K_1 + K_2.
-CollisionImpulse collisionImpulse(const Mat3& totalFactor, const Vec3& relativeVelocity, const Vec3& normal,
-                                  const Material& material);
+// point, `normal` the unit normal pointing towards body 1, `totalFactor` K_T = K_1 + K_2. The same
+// algorithm in 2D (Dim = 2) serves the planar bodies of seed 002 section 2.
+// (The dimension is taken from K alone, so the vectors may be Eigen expressions.)
+template <int Dim>
+using ImpulseVector = typename std::enable_if<true, Eigen::Matrix<double, Dim, 1>>::type;
+template <int Dim>
+CollisionImpulseIn<Dim> collisionImpulse(const Eigen::Matrix<double, Dim, Dim>& totalFactor,
+                                         const ImpulseVector<Dim>& relativeVelocity, const ImpulseVector<Dim>& normal,
+                                         const Material& material);
+extern template CollisionImpulseIn<2> collisionImpulse<2>(const Eigen::Matrix2d&, const ImpulseVector<2>&,
+                                                          const ImpulseVector<2>&, const Material&);
+extern template CollisionImpulseIn<3> collisionImpulse<3>(const Eigen::Matrix3d&, const ImpulseVector<3>&,
+                                                          const ImpulseVector<3>&, const Material&);
 
 }  // namespace rbsim

@@ -32,6 +32,15 @@ ConvexShape convexShapeOf(const Mesh& mesh) {
   return shape;
 }
 
+FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local) {
+  FaceDistance out{0, -std::numeric_limits<double>::infinity()};
+  for (std::size_t f = 0; f < shape.normals.size(); ++f) {
+    const double d = shape.normals[f].dot(local) - shape.offsets[f];
+    if (d > out.distance) out = {f, d};
+  }
+  return out;
+}
+
 bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const ConvexShape& shape, const ParticleCollisionDef& c) {
   const Vec3 arm = x - body.position();
   const double reach = shape.boundingRadius + c.radius;
@@ -40,15 +49,7 @@ bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const ConvexShape& sha
   const Vec3 local = R.transpose() * arm;
   // The signed distance to the convex set is at least the largest face distance; inside, it is
   // exactly that, and the face it belongs to is the nearest way out.
-  double largest = -std::numeric_limits<double>::infinity();
-  std::size_t face = 0;
-  for (std::size_t f = 0; f < shape.normals.size(); ++f) {
-    const double d = shape.normals[f].dot(local) - shape.offsets[f];
-    if (d > largest) {
-      largest = d;
-      face = f;
-    }
-  }
+  const auto [face, largest] = nearestFace(shape, local);
   const double depth = c.radius - largest;
   if (!(depth > 0.0)) return false;
   const Vec3 normal = R * shape.normals[face];

@@ -24,6 +24,15 @@ struct ConvexShape {
 };
 ConvexShape convexShapeOf(const Mesh& mesh);
 
+// The face of the shape a body-frame point is least deep behind, and its signed distance to that
+// face's plane: the signed distance to the convex set when the point is inside (< 0), a lower
+// bound of it outside. Empty shapes give face 0 at -infinity.
+struct FaceDistance {
+  std::size_t face = 0;
+  double distance = 0.0;  // [m]
+};
+FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local);
+
 // The velocity relative to a surface of normal n after the impact, when it approaches (v.n < 0).
 inline Vec3 respond(const Vec3& v, const Vec3& n, const ParticleCollisionDef& c) {
   const double vn = v.dot(n);

@@ -61,28 +61,4 @@ Mat2 planarImpulseFactor(double inverseMass, double inverseInertia, const Vec2& 
   return inverseMass * Mat2::Identity() + inverseInertia * perpendicular * perpendicular.transpose();
 }
 
-PlanarImpulse planarCollisionImpulse(const Mat2& totalFactor, const Vec2& relativeVelocity, const Vec2& normal,
-                                     const Material& material) {
-  PlanarImpulse out;
-  const double normalVelocity = relativeVelocity.dot(normal);
-  if (!(normalVelocity < 0.0)) return out;
-  out.colliding = true;
-  const double restitution = material.restitution;
-  const Vec2 sticking = totalFactor.lu().solve(-restitution * normalVelocity * normal - relativeVelocity);
-  const double stickingNormal = sticking.dot(normal);
-  if ((sticking - stickingNormal * normal).norm() <= material.staticFriction * stickingNormal) {
-    out.impulse = sticking;
-    out.sticking = true;
-    return out;
-  }
-  Vec2 tangential = relativeVelocity - normalVelocity * normal;
-  if (tangential.norm() == 0.0) tangential = -(sticking - stickingNormal * normal);
-  const Vec2 direction = tangential.norm() > 0.0 ? Vec2(tangential.normalized()) : Vec2::Zero();
-  const Vec2 axis = normal - material.kineticFriction * direction;
-  const double denominator = normal.dot(totalFactor * axis);
-  const Vec2 used = denominator > 0.0 ? axis : normal;  // as in 3D: the Painleve case
-  out.impulse = (-(1.0 + restitution) * normalVelocity / normal.dot(totalFactor * used)) * used;
-  return out;
-}
-
 }  // namespace rbsim

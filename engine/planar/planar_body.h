@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "dynamics/impulse.h"
 #include "dynamics/material.h"
 
 namespace rbsim {
@@ -80,16 +81,9 @@ class PlanarBody {
 // 2D with the angular impulse; this is its point-impulse block). Static bodies give K = 0.
 Mat2 planarImpulseFactor(double inverseMass, double inverseInertia, const Vec2& r);
 
-struct PlanarImpulse {
-  Vec2 impulse = Vec2::Zero();  // on body 1; body 2 receives -impulse [N s]
-  bool colliding = false;
-  bool sticking = false;
-};
-
-// Seed 000's collision impulse in 2D, the same algorithm as collisionImpulse() in 3D: nothing
-// unless u_rel . N < 0; the sticking impulse K^-1 (-c_R u_N N - u_rel) if it lies in the mu_s
-// cone, otherwise the kinetic impulse (N - mu_k T) j_n.
-PlanarImpulse planarCollisionImpulse(const Mat2& totalFactor, const Vec2& relativeVelocity, const Vec2& normal,
-                                     const Material& material);
+// Seed 000's collision impulse in 2D: collisionImpulse<2> of dynamics/impulse.h, the same
+// algorithm as in 3D (nothing unless u_rel . N < 0; the sticking impulse if it lies in the mu_s
+// cone, otherwise the kinetic impulse (N - mu_k T) j_n).
+using PlanarImpulse = CollisionImpulseIn<2>;
 
 }  // namespace rbsim

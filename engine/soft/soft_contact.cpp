@@ -1,7 +1,6 @@
 #include "soft/soft_contact.h"
 
 #include <cmath>
-#include <limits>
 
 #include "dynamics/impulse.h"
 
@@ -22,16 +21,7 @@ int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const s
     for (std::size_t i = 0; i < x.size(); ++i) {
       const Vec3 arm = x[i] - body.position();
       if (arm.squaredNorm() > shape.boundingRadius * shape.boundingRadius) continue;
-      const Vec3 local = R.transpose() * arm;
-      double largest = -std::numeric_limits<double>::infinity();
-      std::size_t face = 0;
-      for (std::size_t f = 0; f < shape.normals.size(); ++f) {
-        const double d = shape.normals[f].dot(local) - shape.offsets[f];
-        if (d > largest) {
-          largest = d;
-          face = f;
-        }
-      }
+      const auto [face, largest] = nearestFace(shape, R.transpose() * arm);
       if (!(largest < 0.0)) continue;
       ++touching;
       const Vec3 n = R * shape.normals[face];  // out of the body, towards the node

@@ -229,7 +229,9 @@ void World::step() {
       if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, softContactShapes_, bodyMaterials_, soft.material());
     }
   });
-  runStage(Stage::StepPlanar, planar_.has_value(), [&] { planar_->step(); });
+  runStage(Stage::StepPlanar, planar_.has_value(), [&] {
+    if (planar_) planar_->step();  // skipIdleStages = false runs every stage, needed or not
+  });
   ++stepCount_;
 }
 

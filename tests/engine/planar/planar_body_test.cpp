@@ -91,7 +91,7 @@ TEST(PlanarImpulse, EqualsThe3DCollisionImpulseInThePlane) {
     material.staticFriction = 0.5 + 0.4 * u(rng);
     material.kineticFriction = 0.8 * material.staticFriction;
     const Mat2 k2 = planarImpulseFactor(1.0 / m1, 1.0 / i1, r1) + planarImpulseFactor(1.0 / m2, 1.0 / i2, r2);
-    const PlanarImpulse planar = planarCollisionImpulse(k2, velocity, n, material);
+    const PlanarImpulse planar = collisionImpulse<2>(k2, velocity, n, material);
     // The same contact in 3D: z the principal axis of I_33 = i, the other moments arbitrary.
     const Mat3 inv1 = Vec3(1.0 / 0.7, 1.0 / 0.9, 1.0 / i1).asDiagonal(), inv2 = Vec3(1.0 / 1.1, 1.0 / 0.6, 1.0 / i2).asDiagonal();
     const Mat3 k3 = impulseFactor(1.0 / m1, inv1, Vec3(r1.x(), r1.y(), 0.0)) + impulseFactor(1.0 / m2, inv2, Vec3(r2.x(), r2.y(), 0.0));
