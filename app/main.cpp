@@ -9,8 +9,11 @@
 #include "demos/demo.h"
 #include "integrate/integrator.h"
 #include "io/input_error.h"
+#include "particles/particle_def.h"
 #include "paths.h"
 #include "render/render_error.h"
+#include "window/interactive.h"
+#include "window/x11_window.h"
 #include "run/runner.h"
 #include "scene/scene.h"
 #include "world/simulation_error.h"
@@ -24,8 +27,9 @@ using rbsim::app::RunOptions;
 // flag and the scene key it stands for are checked by the same code.
 struct Flags {
   RunOptions run;
-  std::string dt, steps, fps, size, integrator, inertia;
-  bool noRender = false, noOverlay = false;
+  std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
+  bool noRender = false, noOverlay = false, window = false;
+  rbsim::app::WindowOptions windowOptions;
   std::vector<std::string> sets;
 
   void attach(CLI::App& cmd) {
@@ -42,10 +46,16 @@ struct Flags {
     cmd.add_option("--size", size, "image size WxH in pixels (view.size)")->check(nonEmpty);
     cmd.add_option("--integrator", integrator, "integrator name (world.integrator); see `rbsim list`")->check(nonEmpty);
     cmd.add_option("--inertia", inertia, "cube|exact: default inertia method (world.inertia)")->check(nonEmpty);
+    cmd.add_option("--particle-integrator", particleIntegrator,
+                   "explicit-euler|semi-implicit-euler: of particle systems naming none (world.particle_integrator)")
+        ->check(nonEmpty);
     cmd.add_option("--set", sets, "override any scene key: path=value, e.g. bodies.box.mass=2")->check(nonEmpty);
     cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
     cmd.add_flag("--quiet", run.quiet, "print nothing on success");
+    cmd.add_flag("--window", window, "open an X11 window with controls instead of writing a video");
+    cmd.add_option("--window-frames", windowOptions.frames, "with --window: close after N frames (scripted runs)");
+    cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame");
   }
 
   RunOptions finish(const std::string& defaultVideo) {
@@ -56,6 +66,7 @@ struct Flags {
     add("world.steps", steps);
     add("world.integrator", integrator.empty() ? "" : "\"" + integrator + "\"");
     add("world.inertia", inertia.empty() ? "" : "\"" + inertia + "\"");
+    add("world.particle_integrator", particleIntegrator.empty() ? "" : "\"" + particleIntegrator + "\"");
     add("view.fps", fps);
     if (!size.empty()) {
       const std::size_t x = size.find('x');
@@ -81,6 +92,8 @@ int listEverything() {
   std::printf("integrators:\n");
   for (const std::string& name : rbsim::integratorNames()) std::printf("  %s\n", name.c_str());
   std::printf("inertia methods:\n  cube\n  exact\n");
+  std::printf("particle integrators (particles[].integrator):\n");
+  for (const std::string& name : rbsim::particleIntegratorNames()) std::printf("  %s\n", name.c_str());
   return 0;
 }
 
@@ -91,9 +104,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   int demoNumber = 0;
+  int demoPhase = 0;  // 0: every phase
   Flags demoFlags;
   CLI::App* demo = app.add_subcommand("demo", "run numbered assignment demo N into videos/");
   demo->add_option("N", demoNumber, "demo number (see `rbsim list`)")->required();
+  demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4")
+      ->check(CLI::PositiveNumber);
   demoFlags.attach(*demo);
 
   std::string scenePath;
@@ -114,22 +130,41 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("list")) return listEverything();
     std::vector<rbsim::Scene> scenes;
+    std::vector<std::string> files;
     std::string title;
     RunOptions options;
+    Flags& flags = app.got_subcommand("demo") ? demoFlags : runFlags;
     if (app.got_subcommand("demo")) {
       const rbsim::app::Demo* chosen = rbsim::app::findDemo(demoNumber);
       if (!chosen) {
         throw InputError("", "demo " + std::to_string(demoNumber), "no such demo; `rbsim list` shows them");
       }
-      options = demoFlags.finish("videos/" + chosen->name + ".mp4");
-      for (const std::string& file : chosen->scenes) {
-        scenes.push_back(rbsim::loadScene(rbsim::app::assetDir() + "/scenes/" + file, options.overrides));
+      std::vector<std::string> phases = chosen->scenes;
+      std::string video = "videos/" + chosen->name + ".mp4";
+      if (demoPhase > 0) {
+        if (static_cast<std::size_t>(demoPhase) > phases.size()) {
+          throw InputError("", "--phase " + std::to_string(demoPhase),
+                           "demo " + std::to_string(demoNumber) + " has " + std::to_string(phases.size()) + " phases");
+        }
+        phases = {phases[static_cast<std::size_t>(demoPhase - 1)]};
+        video = "videos/" + chosen->name + "_" + std::to_string(demoPhase) + ".mp4";
       }
+      options = demoFlags.finish(video);
+      for (const std::string& file : phases) files.push_back(rbsim::app::assetDir() + "/scenes/" + file);
       title = "Demo " + std::to_string(chosen->number) + ": " + chosen->name;
     } else {
       options = runFlags.finish("videos/" + std::filesystem::path(scenePath).stem().string() + ".mp4");
-      scenes.push_back(rbsim::loadScene(scenePath, options.overrides));
+      files.push_back(scenePath);
     }
+    if (!flags.window && (flags.windowOptions.frames > 0 || !flags.windowOptions.screenshot.empty())) {
+      throw InputError("", "--window-frames/--screenshot", "only with --window");
+    }
+    if (flags.window) {
+      flags.windowOptions.quiet = options.quiet;
+      rbsim::app::runWindow({files, options.overrides, title}, flags.windowOptions);
+      return 0;
+    }
+    for (const std::string& file : files) scenes.push_back(rbsim::loadScene(file, options.overrides));
     const rbsim::app::RunSummary summary = rbsim::app::runScenes(scenes, options, title);
     rbsim::app::printSummary(summary, options);
     return 0;
@@ -138,6 +173,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const rbsim::SimulationError& e) {
     std::fprintf(stderr, "rbsim: error: the simulation diverged: %s\n", e.what());
+    return 2;
+  } catch (const rbsim::app::WindowError& e) {
+    std::fprintf(stderr, "rbsim: error: %s\n", e.what());
     return 2;
   } catch (const rbsim::render::RenderError& e) {
     std::fprintf(stderr, "rbsim: error: %s\n", e.what());

@@ -1,5 +1,5 @@
-// Box pile benchmark (issue 5): N unit boxes dropped in a loose grid onto a plane, dt = 1/60 s,
-// 10 solver sweeps, 600 steps. Prints, per N: the median ms per step over the last 300 steps,
+// Box pile benchmark (issue 5): N unit boxes dropped in a loose grid onto a plane (pile_layout.h,
+// the same pile bullet_pile drops in Bullet), dt = 1/60 s, 10 solver sweeps, 600 steps. Prints, per N: the median ms per step over the last 300 steps,
 // the contact points, the deepest penetration, whether the pile is at rest, and how the stages
 // share the time, with sleeping on (as engines run) and off. Not a Google Benchmark: one long run per N is the measurement.
 //   usage: contact_pile [N ...]   (default 100 1000 4000)
@@ -11,40 +11,41 @@
 #include <vector>
 
 #include "geometry/mesh.h"
+#include "pile_layout.h"
 #include "mass/mass_properties.h"
 #include "world/world.h"
 
 using namespace rbsim;
+using namespace rbsim::bench;
 
 namespace {
 
-constexpr double kDt = 1.0 / 60.0;       // [s]
-constexpr int kSteps = 600;
-constexpr int kTimedSteps = 300;         // the last ones: the pile has landed and settles
-constexpr double kGridSpacing = 1.5;     // [m] between box centres, so none start in contact
-constexpr double kRestSpeed = 0.05;      // [m/s]: "at rest" when every box is slower
+constexpr double kDt = kPileTimeStep;
+constexpr int kSteps = kPileSteps;
+constexpr int kTimedSteps = kPileTimedSteps;
+constexpr double kRestSpeed = kPileRestSpeed;
 
 void runPile(int count, bool allowSleep) {
   Settings settings;
   settings.allowSleep = allowSleep;
   settings.timeStep = kDt;
-  settings.velocityIterations = 10;
+  settings.velocityIterations = kPileSolverIterations;
   World world(settings);
-  world.addPlane(Plane{});
-  const Vec3 extents(1.0, 1.0, 1.0);
+  // One friction coefficient for sticking and sliding, as Bullet has.
+  const Material material{0.0, kPileFriction, kPileFriction};
+  world.addPlane(Plane{}, material);
+  const Vec3 extents = Vec3::Constant(kPileBoxSize);
   auto mesh = std::make_shared<const Mesh>(makeBox(extents));
-  const int side = static_cast<int>(std::ceil(std::sqrt(count / 10.0)));  // 10 layers
   for (int i = 0; i < count; ++i) {
     BodyDef def;
     def.name = "box" + std::to_string(i);
     def.mesh = mesh;
-    def.mass = 1.0;
-    def.inertiaBody = cuboidInertia(1.0, extents);
+    def.mass = kPileBoxMass;
+    def.inertiaBody = cuboidInertia(kPileBoxMass, extents);
     def.boxHalfExtents = 0.5 * extents;
-    const int layer = i / (side * side), cell = i % (side * side);
-    // Odd layers shifted by half a box, so that boxes land on edges and tumble.
-    const double shift = (layer % 2) * 0.5;
-    def.position = Vec3((cell % side) * kGridSpacing + shift, 1.0 + layer * kGridSpacing, (cell / side) * kGridSpacing + shift);
+    def.material = material;
+    const PileCentre c = pileBoxCentre(i, count);
+    def.position = Vec3(c.x, c.y, c.z);
     world.addBody(def);
   }
   std::vector<double> ms;

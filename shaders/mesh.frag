@@ -11,7 +11,7 @@ uniform vec3 uWireColor;
 uniform float uAlpha;
 
 in vec3 vWorld;
-flat in vec3 vNormal;
+in vec3 vNormal;
 in vec3 vColor;
 in vec3 vBarycentric;
 out vec4 fragColor;

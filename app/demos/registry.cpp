@@ -2,13 +2,14 @@
 
 namespace rbsim::app {
 
+Demo demo1Particles();
 Demo demo2Unconstrained();
 Demo demo3Broadphase();
 Demo demo4Narrowphase();
 Demo demo5Contact();
 
 const std::vector<Demo>& allDemos() {
-  static const std::vector<Demo> demos = {demo2Unconstrained(), demo3Broadphase(), demo4Narrowphase(), demo5Contact()};
+  static const std::vector<Demo> demos = {demo1Particles(), demo2Unconstrained(), demo3Broadphase(), demo4Narrowphase(), demo5Contact()};
   return demos;
 }
 

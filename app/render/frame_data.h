@@ -24,6 +24,9 @@ struct BodyView {
   // Below 1 the body is a see-through "ghost" (e.g. drawn at its time of impact): blended over
   // everything opaque, farthest ghost first, without a shadow. 0 or less: not drawn at all.
   float opacity = 1.0f;
+  // A smooth surface (a cloth): normals averaged over the triangles sharing each vertex, and only
+  // its open border outlined, instead of flat faces with every crease drawn.
+  bool smooth = false;
 };
 
 // A force drawn as an arrow from its application point (world frame).
@@ -58,6 +61,20 @@ inline constexpr glm::vec3 kDebugContactPointColor{1.00f, 0.90f, 0.00f};   // ye
 inline constexpr glm::vec3 kDebugContactNormalColor{1.00f, 0.10f, 0.90f};  // magenta
 inline constexpr glm::vec3 kDebugImpulseColor{1.00f, 0.50f, 0.00f};        // orange: impulse j
 
+// One particle drawn as a camera-facing sprite; the layout is the renderer's instance attribute.
+struct Sprite {
+  glm::vec3 position{0.0f};  // centre, world frame [m]
+  float size = 0.05f;        // diameter [m]
+  glm::vec4 color{1.0f};     // linear RGB + opacity in [0, 1]
+};
+
+// The sprites of one particle system. Additive: light adds up, order does not matter (fire).
+// Alpha: each covers what is behind it, so they come sorted farthest first (smoke).
+struct SpriteBatch {
+  bool additive = false;
+  std::vector<Sprite> sprites;
+};
+
 struct Camera {
   glm::vec3 eye{4.0f, 3.0f, 6.0f};
   glm::vec3 target{0.0f, 0.5f, 0.0f};
@@ -90,6 +107,7 @@ struct FrameData {
   std::vector<ForceArrow> forces;
   std::vector<DebugLine> lines;    // all drawn with one upload and at most two draw calls
   std::vector<DebugPoint> points;  // one draw call
+  std::vector<SpriteBatch> sprites;  // one instanced draw call per batch
   Camera camera;
   RenderOptions options;
   OverlayData overlay;

@@ -64,13 +64,6 @@ void appendTo(std::vector<T>& all, const std::vector<T>& part) {
 
 }  // namespace
 
-glm::mat4 viewProjection(const Camera& camera, int width, int height) {
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDegrees), aspect,
-                                                camera.nearPlane, camera.farPlane);
-  return projection * glm::lookAt(camera.eye, camera.target, camera.up);
-}
-
 GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int samples)
     : width_(width),
       height_(height),
@@ -82,7 +75,8 @@ GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int 
       shadowProgram_(shaderDir, "shadow.vert", "shadow.frag"),
       meshProgram_(shaderDir, "mesh.vert", "mesh.frag"),
       lineProgram_(shaderDir, "line.vert", "line.frag"),
-      debugDraw_(width, height, shaderDir) {
+      debugDraw_(width, height, shaderDir),
+      particleDraw_(shaderDir) {
   glGenVertexArrays(1, &emptyVao_);
   glGenVertexArrays(1, &meshVao_);
   glGenBuffers(1, &meshVbo_);
@@ -333,6 +327,7 @@ void GlRenderer::draw(const FrameData& frame) {
   buildSceneGeometry(frame, geometry_);
   upload(geometry_);
   debugDraw_.upload(frame);
+  particleDraw_.upload(frame);
   const glm::mat4 viewProj = viewProjection(frame.camera, width_, height_);
 
   glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? fbo_ : 0);
@@ -368,6 +363,7 @@ void GlRenderer::draw(const FrameData& frame) {
   drawLines(viewProj, 0, static_cast<GLsizei>(geometry_.edges.size()), kEdgeWidth, 1.0f);
   drawLines(viewProj, highlightFirst_, static_cast<GLsizei>(geometry_.highlight.size()),
             kHighlightWidth, 1.0f);
+  particleDraw_.draw(frame, glm::lookAt(frame.camera.eye, frame.camera.target, frame.camera.up), viewProj);
   // Depth-tested debug lines before the ghosts, so they show through them; the on-top lines
   // and points last, over everything.
   const float debugWidth = frame.options.debugLineWidth * pixelScale_;

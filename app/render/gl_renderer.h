@@ -1,7 +1,7 @@
 #pragma once
 // Draws one FrameData with OpenGL into the current context's default framebuffer: sky gradient,
 // ground grid with planar shadows, flat-shaded bodies with outlines (optional wireframe), body
-// axes and force arrows, see-through ghost bodies, debug lines and points. Multisampled into an
+// axes and force arrows, see-through ghost bodies, particle sprites, debug lines and points. Multisampled into an
 // off-screen framebuffer (when asked for), then resolved.
 #include <memory>
 #include <string>
@@ -12,14 +12,12 @@
 #include "debug_draw.h"
 #include "frame_data.h"
 #include "gl_api.h"
+#include "projection.h"
+#include "particle_draw.h"
 #include "scene_geometry.h"
 #include "shader_program.h"
 
 namespace rbsim::render {
-
-// The projection shared by the renderer and anyone who needs to know where a point lands
-// (tests, labels): glm::perspective(fovY, width/height, near, far) * glm::lookAt(eye, target, up).
-glm::mat4 viewProjection(const Camera& camera, int width, int height);
 
 class GlRenderer {
  public:
@@ -59,6 +57,7 @@ class GlRenderer {
   ShaderProgram meshProgram_;
   ShaderProgram lineProgram_;
   DebugDraw debugDraw_;
+  ParticleDraw particleDraw_;
   GLuint emptyVao_ = 0;  // for the buffer-less sky and ground draws
   GLuint meshVao_ = 0, meshVbo_ = 0;
   GLuint lineVao_ = 0, lineVbo_ = 0;

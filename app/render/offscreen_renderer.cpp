@@ -36,6 +36,7 @@ struct OffscreenRenderer::Impl {
   MeanMs renderMs;
   MeanMs copyMs;
   long frames = 0;
+  bool uiWantsPointer = false;
 
   Impl(int width, int height, const std::string& shaderDir, int samples)
       : context(width, height),
@@ -52,13 +53,15 @@ OffscreenRenderer::~OffscreenRenderer() {
   impl_->context.makeCurrent();
 }
 
-const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& frame) {
+const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& frame, const UiFrame* ui) {
   Impl& d = *impl_;
   d.context.makeCurrent();
   const auto start = std::chrono::steady_clock::now();
   d.scene.draw(frame);
-  // The overlay has no animation, so its time step only has to be positive.
-  if (frame.options.overlay) d.overlay.draw(frame.overlay, 1.0f / 30.0f);
+  // Off-screen, the overlay has no animation, so its time step only has to be positive.
+  const OverlayData none;
+  const float uiSeconds = ui != nullptr ? ui->input.deltaSeconds : 1.0f / 30.0f;
+  d.uiWantsPointer = d.overlay.draw(frame.options.overlay ? frame.overlay : none, uiSeconds, ui);
   glFinish();  // OSMesa's buffer holds the image only once GL has finished
   d.renderMs.add(millisecondsSince(start));
   // A GL error here is a bug in this library, not bad input; fail loudly rather than write a
@@ -82,6 +85,8 @@ const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& fram
   ++d.frames;
   return d.image;
 }
+
+bool OffscreenRenderer::uiWantsPointer() const { return impl_->uiWantsPointer; }
 
 int OffscreenRenderer::width() const { return impl_->context.width(); }
 int OffscreenRenderer::height() const { return impl_->context.height(); }

@@ -9,6 +9,7 @@
 
 #include "frame_data.h"
 #include "timing.h"
+#include "ui_frame.h"
 
 namespace rbsim::render {
 
@@ -31,9 +32,13 @@ class OffscreenRenderer {
   OffscreenRenderer(const OffscreenRenderer&) = delete;
   OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
 
-  // Renders one frame (overlay included when frame.options.overlay) and returns the image:
-  // width*height*4 bytes, RGBA, top row first. Valid until the next render() call.
-  const std::vector<std::uint8_t>& render(const FrameData& frame);
+  // Renders one frame (overlay included when frame.options.overlay; with `ui`, its control
+  // windows too) and returns the image: width*height*4 bytes, RGBA, top row first. Valid until
+  // the next render() call.
+  const std::vector<std::uint8_t>& render(const FrameData& frame, const UiFrame* ui = nullptr);
+  // Whether ImGui wanted the pointer during the last render() with a UiFrame (it was over a
+  // control), so the window does not also turn the drag into a camera move or a pick.
+  bool uiWantsPointer() const;
 
   int width() const;
   int height() const;

@@ -1,6 +1,7 @@
 #include "overlay.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -101,14 +102,42 @@ Overlay::~Overlay() {
   ImGui::DestroyContext(context_);
 }
 
-void Overlay::draw(const OverlayData& data, float deltaSeconds) {
-  if (data.title.empty() && data.caption.empty() && data.rows.empty()) return;  // no empty box
+bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui) {
+  const bool panel = !(data.title.empty() && data.caption.empty() && data.rows.empty());  // no empty box
+  if (!panel && ui == nullptr) return false;
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
   io.DeltaTime = deltaSeconds > 0.0f ? deltaSeconds : 1.0f / 60.0f;  // ImGui asserts on <= 0
+  if (ui != nullptr) {
+    io.MousePos = ui->input.mouseX >= 0.0f ? ImVec2(ui->input.mouseX, ui->input.mouseY) : ImVec2(-FLT_MAX, -FLT_MAX);
+    for (int b = 0; b < 3; ++b) io.MouseDown[b] = ui->input.mouseDown[b];
+    io.MouseWheel = ui->input.wheel;
+  }
   ImGui_ImplOpenGL2_NewFrame();
   ImGui::NewFrame();
+  if (panel) drawPanel(data);
+  if (ui != nullptr && ui->draw) {
+    ImGui::PushFont(bodyFont_);
+    ui->draw();
+    ImGui::PopFont();
+  }
+  ImGui::Render();
+
+  // The OpenGL2 backend predates shaders and buffer objects: with a program or an array buffer
+  // bound, its client-side vertex pointers would be misread. It saves and restores the rest.
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glUseProgram(0);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glActiveTexture(GL_TEXTURE0);
+  ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+  return io.WantCaptureMouse;
+}
+
+void Overlay::drawPanel(const OverlayData& data) {
+  ImGuiIO& io = ImGui::GetIO();
 
   // Measure the content to give the window a fixed size (see overlay.h for why not auto-size).
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -175,17 +204,6 @@ void Overlay::draw(const OverlayData& data, float deltaSeconds) {
     ImGui::PopFont();
   }
   ImGui::End();
-  ImGui::Render();
-
-  // The OpenGL2 backend predates shaders and buffer objects: with a program or an array buffer
-  // bound, its client-side vertex pointers would be misread. It saves and restores the rest.
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glUseProgram(0);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-  glActiveTexture(GL_TEXTURE0);
-  ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
 }
 
 }  // namespace rbsim::render

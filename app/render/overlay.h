@@ -2,6 +2,7 @@
 // The text panel drawn over the 3D image: Dear ImGui (Debian's 1.86) with its OpenGL2 backend
 // and no platform backend (there is no window and no input; we set display size and time step).
 #include "frame_data.h"
+#include "ui_frame.h"
 
 struct ImGuiContext;
 struct ImFont;
@@ -17,12 +18,16 @@ class Overlay {
   Overlay(const Overlay&) = delete;
   Overlay& operator=(const Overlay&) = delete;
 
-  // Draws a fixed-size, fixed-position panel at the top left into framebuffer 0. Fixed size,
-  // because ImGui hides an auto-sized window on its first frame (DESIGN.md). Leaves no program,
-  // vertex array or buffer bound; the GL renderer sets everything else it needs each frame.
-  void draw(const OverlayData& data, float deltaSeconds);
+  // Draws a fixed-size, fixed-position panel at the top left into framebuffer 0 (none when
+  // `data` is empty). Fixed size, because ImGui hides an auto-sized window on its first frame
+  // (DESIGN.md). With `ui`, its pointer drives ImGui and its windows are drawn in the same frame;
+  // returns whether ImGui wants the pointer (it is over a control). Leaves no program, vertex
+  // array or buffer bound; the GL renderer sets everything else it needs each frame.
+  bool draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui = nullptr);
 
  private:
+  void drawPanel(const OverlayData& data);  // inside an ImGui frame
+
   int width_;
   int height_;
   ImGuiContext* context_ = nullptr;

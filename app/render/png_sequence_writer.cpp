@@ -30,6 +30,13 @@ void ensureWritableDirectory(const std::filesystem::path& dir) {
   std::filesystem::remove(probe, ec);
 }
 
+void writePng(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
+  if (path.has_parent_path()) ensureWritableDirectory(path.parent_path());
+  if (!stbi_write_png(path.string().c_str(), width, height, 4, rgba.data(), width * 4)) {
+    throw RenderError("could not write PNG " + path.string());
+  }
+}
+
 PngSequenceWriter::PngSequenceWriter(std::filesystem::path dir, int width, int height,
                                      int threads, std::size_t queueFrames)
     : dir_(std::move(dir)), width_(width), height_(height), queue_(queueFrames) {

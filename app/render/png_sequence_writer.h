@@ -1,6 +1,7 @@
 #pragma once
 // Writes frames as dir/frame_000000.png ... with stb_image_write on a small pool of threads
 // (PNG deflate is the slowest step of the output path, and frames are independent).
+#include <cstdint>
 #include <filesystem>
 #include <mutex>
 #include <string>
@@ -46,5 +47,9 @@ class PngSequenceWriter {
 
 // Creates `dir` with its parents and proves it writable by creating and removing a probe file.
 void ensureWritableDirectory(const std::filesystem::path& dir);
+
+// One PNG (a screenshot), written on the calling thread: RGBA, top row first. Throws RenderError
+// naming the path when it cannot be written.
+void writePng(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba);
 
 }  // namespace rbsim::render

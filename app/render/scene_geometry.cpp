@@ -33,22 +33,39 @@ struct BodyTarget {
   float alpha;  // of the outlines
 };
 
+// Per-vertex normals of a smooth body: the sum of its triangles' area-weighted normals.
+void vertexNormals(const BodyView& body, std::vector<glm::vec3>& normals) {
+  const std::size_t count = body.worldVertices.size();
+  normals.assign(count, glm::vec3(0.0f));
+  for (const auto& tri : *body.triangles) {
+    if (tri[0] >= count || tri[1] >= count || tri[2] >= count) continue;
+    const glm::vec3& a = body.worldVertices[tri[0]];
+    const glm::vec3 n = glm::cross(body.worldVertices[tri[1]] - a, body.worldVertices[tri[2]] - a);
+    for (int k = 0; k < 3; ++k) normals[tri[k]] += n;
+  }
+  for (glm::vec3& n : normals) {
+    const float length = glm::length(n);
+    n = length > 0.0f ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+  }
+}
+
 // Appends the body's triangles and its feature edges (crease or border) to `out`.
 void addBody(const BodyView& body, const BodyTarget& out,
-             std::unordered_map<std::uint64_t, EdgeFaces>& edgeMap) {
+             std::unordered_map<std::uint64_t, EdgeFaces>& edgeMap, std::vector<glm::vec3>& normals) {
   if (body.triangles == nullptr) return;
   const auto& vertices = body.worldVertices;
   const std::size_t count = vertices.size();
   edgeMap.clear();
+  if (body.smooth) vertexNormals(body, normals);
   for (const auto& tri : *body.triangles) {
     if (tri[0] >= count || tri[1] >= count || tri[2] >= count) continue;
     const glm::vec3& a = vertices[tri[0]];
     const glm::vec3& b = vertices[tri[1]];
     const glm::vec3& c = vertices[tri[2]];
     const glm::vec3 n = faceNormal(a, b, c);
-    out.triangles.push_back({a, n, body.color});
-    out.triangles.push_back({b, n, body.color});
-    out.triangles.push_back({c, n, body.color});
+    out.triangles.push_back({a, body.smooth ? normals[tri[0]] : n, body.color});
+    out.triangles.push_back({b, body.smooth ? normals[tri[1]] : n, body.color});
+    out.triangles.push_back({c, body.smooth ? normals[tri[2]] : n, body.color});
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t i = std::min(tri[k], tri[(k + 1) % 3]);
       const std::uint32_t j = std::max(tri[k], tri[(k + 1) % 3]);
@@ -62,7 +79,7 @@ void addBody(const BodyView& body, const BodyTarget& out,
   const glm::vec4 edgeColor(body.color * 0.25f, out.alpha);
   const glm::vec4 highlightColor(kHighlightColor, out.alpha);
   for (const auto& [key, edge] : edgeMap) {
-    if (!edge.crease && edge.faces != 1) continue;
+    if (edge.faces != 1 && (!edge.crease || body.smooth)) continue;
     const glm::vec3& p = vertices[key >> 32];
     const glm::vec3& q = vertices[key & 0xffffffffu];
     out.edges.push_back({p, edgeColor});
@@ -140,12 +157,13 @@ void SceneGeometry::clear() {
 void buildSceneGeometry(const FrameData& frame, SceneGeometry& out) {
   out.clear();
   std::unordered_map<std::uint64_t, EdgeFaces> edgeMap;
+  std::vector<glm::vec3> normals;  // of smooth bodies
   std::vector<const BodyView*> ghosts;
   const BodyTarget opaque{out.bodies, out.edges, out.highlight, 1.0f};
   for (const BodyView& body : frame.bodies) {
     if (!(body.opacity > 0.0f)) continue;
     if (isGhost(body)) ghosts.push_back(&body);
-    else addBody(body, opaque, edgeMap);
+    else addBody(body, opaque, edgeMap, normals);
     if (frame.options.axes && body.axisLength > 0.0f) addAxes(body, out);
   }
   // Blending is order-dependent: the farthest ghost goes first so nearer ones tint it. Stable,
@@ -157,7 +175,7 @@ void buildSceneGeometry(const FrameData& frame, SceneGeometry& out) {
   for (const BodyView* ghost : ghosts) {
     const int first = static_cast<int>(out.ghosts.size());
     // A ghost's highlight goes with its edges: both must be drawn after the ghost's surface.
-    addBody(*ghost, {out.ghosts, out.ghostEdges, out.ghostEdges, ghost->opacity}, edgeMap);
+    addBody(*ghost, {out.ghosts, out.ghostEdges, out.ghostEdges, ghost->opacity}, edgeMap, normals);
     const int count = static_cast<int>(out.ghosts.size()) - first;
     if (count > 0) out.ghostRanges.push_back({first, count, ghost->opacity});
   }

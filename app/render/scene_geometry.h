@@ -11,7 +11,8 @@ namespace rbsim::render {
 
 struct MeshVertex {
   glm::vec3 position;
-  glm::vec3 normal;  // the triangle's own normal, repeated on its 3 vertices: flat shading
+  glm::vec3 normal;  // the triangle's own normal on its 3 vertices (flat shading), or the
+                     // vertex's averaged normal on a smooth body
   glm::vec3 color;   // linear RGB
 };
 

@@ -64,9 +64,12 @@ void drawImpulses(const World& world, render::FrameData& frame) {
     kinetic += body.kineticEnergy();
     potential -= body.mass() * world.settings().gravity.dot(body.position());
   }
-  frame.overlay.rows.push_back({"impulses (this step)", format("normal %.4f N s, friction %.4f N s", normalTotal, frictionTotal)});
+  // Short labels and one figure per row: the panel is at most 45 % of the frame wide.
+  frame.overlay.rows.push_back({"normal impulse", format("%.4f N s (this step)", normalTotal)});
+  frame.overlay.rows.push_back({"friction impulse", format("%.4f N s (this step)", frictionTotal)});
   frame.overlay.rows.push_back({"points sticking", format("%.0f of %.0f", sticking, static_cast<double>(world.contactPoints().size()))});
-  frame.overlay.rows.push_back({"energy: kinetic, + potential", format("%.3f J, %.3f J", kinetic, kinetic + potential)});
+  frame.overlay.rows.push_back({"all: kinetic energy", format("%.3f J", kinetic)});
+  frame.overlay.rows.push_back({"all: + potential", format("%.3f J", kinetic + potential)});
   frame.overlay.rows.push_back({"awake bodies", format("%.0f of %.0f", static_cast<double>(world.awakeCount()), static_cast<double>(world.bodies().size()))});
 }
 
@@ -111,7 +114,7 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
                                                                : world.bodies()[c.a].name() + "-" + world.bodies()[c.b].name();
     char row[128];
     const Vec3& n = c.manifold.normal;
-    std::snprintf(row, sizeof row, "n (%+.2f %+.2f %+.2f), depth %.4f m", n.x(), n.y(), n.z(), c.manifold.maxDepth());
+    std::snprintf(row, sizeof row, "n (%+.2f %+.2f %+.2f) %.4f m deep", n.x(), n.y(), n.z(), c.manifold.maxDepth());
     frame.overlay.rows.push_back({"  " + who, row});
   }
 

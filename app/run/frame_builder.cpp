@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "run/collision_view.h"
+#include "run/particle_view.h"
 #include "run/to_glm.h"
 
 namespace rbsim::app {
@@ -23,13 +24,19 @@ std::string formatNumber(double value, const char* unit) {
 
 }  // namespace
 
+render::Camera sceneCamera(const ViewDesc& view) {
+  render::Camera camera;
+  camera.eye = toGlm(view.eye);
+  camera.target = toGlm(view.target);
+  camera.up = toGlm(view.up);
+  camera.fovYDegrees = static_cast<float>(view.fovDegrees);
+  return camera;
+}
+
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle) {
   render::FrameData frame;
   const ViewDesc& view = scene.view;
-  frame.camera.eye = toGlm(view.eye);
-  frame.camera.target = toGlm(view.target);
-  frame.camera.up = toGlm(view.up);
-  frame.camera.fovYDegrees = static_cast<float>(view.fovDegrees);
+  frame.camera = sceneCamera(view);
   frame.options.grid = view.grid;
   frame.options.wireframe = view.wireframe;
   frame.options.axes = view.axes;
@@ -58,28 +65,33 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
   render::OverlayData& overlay = frame.overlay;
   overlay.title = demoTitle.empty() ? scene.title : demoTitle;
   overlay.caption = view.caption;
-  const RigidBody& body = world.bodies()[view.selected];
-  const Mat3& R = body.rotation();
-  const Quat& q = body.orientation();
-  char quat[96];
-  std::snprintf(quat, sizeof quat, "%+.4f %+.4f %+.4f %+.4f", q.w(), q.x(), q.y(), q.z());
   overlay.rows = {
       {"time t", formatNumber(t, "s")},
       {"integrator", std::string(integratorName(world.settings().integrator)) + ", dt " +
                          formatNumber(world.settings().timeStep, "s")},
-      {"body", body.name() + " (" + scene.inertiaMethods[view.selected] + " inertia, " +
-                   formatNumber(body.mass(), "kg") + (body.awake() ? ")" : ", asleep)")},
-      {"x", formatVec(body.position(), "m")},
-      {"R row 1", formatVec(R.row(0).transpose(), "")},
-      {"R row 2", formatVec(R.row(1).transpose(), "")},
-      {"R row 3", formatVec(R.row(2).transpose(), "")},
-      {"q (w x y z)", quat},
-      {"v", formatVec(body.velocity(), "m/s")},
-      {"omega", formatVec(body.angularVelocity(), "rad/s")},
-      {"P", formatVec(body.state().linearMomentum, "kg m/s")},
-      {"L", formatVec(body.state().angularMomentum, "kg m^2/s")},
-      {"kinetic energy", formatNumber(body.kineticEnergy(), "J")},
   };
+  if (view.selected < world.bodies().size()) {  // a scene of particles alone has no bodies
+    const RigidBody& body = world.bodies()[view.selected];
+    const Mat3& R = body.rotation();
+    const Quat& q = body.orientation();
+    char quat[96];
+    std::snprintf(quat, sizeof quat, "%+.4f %+.4f %+.4f %+.4f", q.w(), q.x(), q.y(), q.z());
+    overlay.rows.insert(overlay.rows.end(), {
+        {"body", body.name() + " (" + scene.inertiaMethods[view.selected] + " inertia, " +
+                     formatNumber(body.mass(), "kg") + (body.awake() ? ")" : ", asleep)")},
+        {"x", formatVec(body.position(), "m")},
+        {"R row 1", formatVec(R.row(0).transpose(), "")},
+        {"R row 2", formatVec(R.row(1).transpose(), "")},
+        {"R row 3", formatVec(R.row(2).transpose(), "")},
+        {"q (w x y z)", quat},
+        {"v", formatVec(body.velocity(), "m/s")},
+        {"omega", formatVec(body.angularVelocity(), "rad/s")},
+        {"P", formatVec(body.state().linearMomentum, "kg m/s")},
+        {"L", formatVec(body.state().angularMomentum, "kg m^2/s")},
+        {"kinetic energy", formatNumber(body.kineticEnergy(), "J")},
+    });
+  }
+  if (!world.particleSystems().empty()) addParticleView(world, scene, frame);
   if (view.aabbs || view.contacts) addCollisionView(world, scene, frame);
   return frame;
 }

@@ -10,6 +10,8 @@
 
 namespace rbsim::app {
 
+render::Camera sceneCamera(const ViewDesc& view);
+
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle);
 
 }  // namespace rbsim::app

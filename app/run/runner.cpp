@@ -22,12 +22,11 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Frame k shows the state at the step nearest to k / fps.
+}  // namespace
+
 std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt) {
   return static_cast<std::uint64_t>(std::llround(static_cast<double>(frame) / (fps * dt)));
 }
-
-}  // namespace
 
 RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title) {
   RunSummary summary;

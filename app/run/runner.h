@@ -1,6 +1,7 @@
 #pragma once
 // Runs scenes: steps the World, renders frames at the scene's fps, streams them to PNG files
 // and an MP4, writes the trace, and reports where the time went.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct RunSummary {
   double finishSeconds = 0.0;    // waiting for the writers after the last frame
   double wallSeconds = 0.0;
 };
+
+// Frame k of a scene shows the state at the step nearest to k / fps.
+std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt);
 
 // Plays the scenes one after another into the same frames folder and video (a demo's phases).
 // Every scene must have the same image size. `title` heads the overlay (the scene's own title

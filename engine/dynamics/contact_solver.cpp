@@ -25,16 +25,6 @@ void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
   t2 = n.cross(t1);
 }
 
-// S^T K S for the friction coordinates (t1 and t2 at the point, twist about n): seed 002's 6x6 K
-// with the rows and columns of the tangential impulse and the angular impulse about n.
-Mat3 frictionFactor(const Mat6& k, const Vec3& t1, const Vec3& t2, const Vec3& n) {
-  Eigen::Matrix<double, 6, 3> s = Eigen::Matrix<double, 6, 3>::Zero();
-  s.block<3, 1>(0, 0) = t1;
-  s.block<3, 1>(0, 1) = t2;
-  s.block<3, 1>(3, 2) = n;
-  return s.transpose() * k * s;
-}
-
 }  // namespace
 
 int ContactSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) {
@@ -42,37 +32,46 @@ int ContactSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) 
   int& slot = slotOfBody_[body];
   if (slot != 0) return slot;
   const RigidBody& b = bodies[body];
-  SolverBody s;
-  s.velocity = b.velocity();
-  s.angularVelocity = b.angularVelocity();
-  s.inverseMass = 1.0 / b.mass();
-  s.inverseInertiaWorld = b.inverseInertiaWorld();
-  s.body = body;
-  bodies_.push_back(s);
+  bodies_.push_back(SolverBody{1.0 / b.mass(), b.inverseInertiaWorld(), body});
+  velocities_.push_back(Velocity{b.velocity(), b.angularVelocity()});
   slot = static_cast<int>(bodies_.size() - 1);
   return slot;
 }
 
-Vec3 ContactSolver::pointVelocity(int body, const Vec3& r) const {
-  const SolverBody& s = bodies_[body];
-  return s.velocity + s.angularVelocity.cross(r);  // u = v + omega x r (seed 000)
+const ContactSolver::Cached* ContactSolver::cached(std::uint64_t key) const {
+  const auto it = std::lower_bound(cache_.begin(), cache_.end(), key,
+                                   [](const Cached& c, std::uint64_t k) { return c.key < k; });
+  return it != cache_.end() && it->key == key ? &*it : nullptr;
 }
 
-void ContactSolver::apply(int body1, int body2, const Vec3& r1, const Vec3& r2, const Vec3& linear,
-                          const Vec3& angular) {
-  // Seed 002 2.2.1: dP = j, dL = r x j + j_tau; body 2 receives the opposite at the same point.
-  SolverBody& s1 = bodies_[body1];
-  SolverBody& s2 = bodies_[body2];
-  const Vec3 dL1 = r1.cross(linear) + angular;
-  const Vec3 dL2 = r2.cross(linear) + angular;
-  s1.velocity += s1.inverseMass * linear;
-  s1.angularVelocity += s1.inverseInertiaWorld * dL1;
-  s1.linearImpulse += linear;
-  s1.angularImpulse += dL1;
-  s2.velocity -= s2.inverseMass * linear;
-  s2.angularVelocity -= s2.inverseInertiaWorld * dL2;
-  s2.linearImpulse -= linear;
-  s2.angularImpulse -= dL2;
+double ContactSolver::normalVelocity(const Patch& patch, const NormalRow& row) const {
+  // u_rel,N = N . (v1 + omega1 x r1 - v2 - omega2 x r2) (seed 000), with (omega x r) . n written
+  // as omega . (r x n).
+  const Velocity& v1 = velocities_[patch.body1];
+  const Velocity& v2 = velocities_[patch.body2];
+  return patch.normal.dot(v1.linear - v2.linear) + row.angular1.dot(v1.angular) - row.angular2.dot(v2.angular);
+}
+
+void ContactSolver::applyNormal(const Patch& patch, const NormalRow& row, double impulse,
+                                std::vector<Velocity>& velocities) const {
+  // Seed 002 2.2.1: dP = j, dL = r x j; body 2 receives the opposite at the same point.
+  Velocity& v1 = velocities[patch.body1];
+  Velocity& v2 = velocities[patch.body2];
+  v1.linear += (bodies_[patch.body1].inverseMass * impulse) * patch.normal;
+  v1.angular += impulse * row.angularStep1;
+  v2.linear -= (bodies_[patch.body2].inverseMass * impulse) * patch.normal;
+  v2.angular -= impulse * row.angularStep2;
+}
+
+void ContactSolver::applyFriction(const Patch& patch, const Vec3& impulse) {
+  // The tangential impulse at the centroid and the angular impulse about n (seed 002 2.2.1).
+  const Vec3 linear = impulse.x() * patch.tangent1 + impulse.y() * patch.tangent2;
+  Velocity& v1 = velocities_[patch.body1];
+  Velocity& v2 = velocities_[patch.body2];
+  v1.linear += bodies_[patch.body1].inverseMass * linear;
+  v1.angular += patch.angularStep1 * impulse;
+  v2.linear -= bodies_[patch.body2].inverseMass * linear;
+  v2.angular -= patch.angularStep2 * impulse;
 }
 
 void ContactSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
@@ -97,23 +96,32 @@ void ContactSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& co
   Vec3 centroid = Vec3::Zero();
   for (int i = 0; i < m.count; ++i) centroid += m.points[i].position / m.count;
   for (int i = 0; i < m.count; ++i) patch.twistRadius += (m.points[i].position - centroid).norm() / m.count;
-  patch.r1 = centroid - b1.position();
-  patch.r2 = plane ? Vec3::Zero() : Vec3(centroid - x2);
-  const Mat6 k = coupledImpulseFactor(s1.inverseMass, s1.inverseInertiaWorld, patch.r1) +
-                 coupledImpulseFactor(s2.inverseMass, s2.inverseInertiaWorld, patch.r2);
-  patch.inverseFriction = frictionFactor(k, patch.tangent1, patch.tangent2, n).inverse();
+  const Vec3 c1 = centroid - b1.position();
+  const Vec3 c2 = plane ? Vec3::Zero() : Vec3(centroid - x2);
+  patch.angular1 << c1.cross(patch.tangent1), c1.cross(patch.tangent2), n;
+  patch.angular2 << c2.cross(patch.tangent1), c2.cross(patch.tangent2), n;
+  patch.angularStep1 = s1.inverseInertiaWorld * patch.angular1;
+  patch.angularStep2 = s2.inverseInertiaWorld * patch.angular2;
+  patch.inverseFriction =
+      (frictionImpulseFactor(s1.inverseMass, s1.inverseInertiaWorld, c1, patch.tangent1, patch.tangent2, n) +
+       frictionImpulseFactor(s2.inverseMass, s2.inverseInertiaWorld, c2, patch.tangent1, patch.tangent2, n))
+          .inverse();
 
-  const auto cached = settings.warmStarting ? cache_.find(pairKey(contact)) : cache_.end();
+  const Cached* old = settings.warmStarting ? cached(pairKey(contact)) : nullptr;
   for (int i = 0; i < m.count; ++i) {
     NormalRow row;
     const Vec3& p = m.points[i].position;
-    row.r1 = p - b1.position();
-    row.r2 = plane ? Vec3::Zero() : Vec3(p - x2);
-    row.localPoint1 = b1.rotation().transpose() * row.r1;
-    const Mat3 factor = impulseFactor(s1.inverseMass, s1.inverseInertiaWorld, row.r1) +
-                        impulseFactor(s2.inverseMass, s2.inverseInertiaWorld, row.r2);
-    row.normalMass = 1.0 / n.dot(factor * n);
-    const double approach = (pointVelocity(patch.body1, row.r1) - pointVelocity(patch.body2, row.r2)).dot(n);
+    const Vec3 r1 = p - b1.position();
+    const Vec3 r2 = plane ? Vec3::Zero() : Vec3(p - x2);
+    row.localPoint1 = b1.rotation().transpose() * r1;
+    row.angular1 = r1.cross(n);
+    row.angular2 = r2.cross(n);
+    row.angularStep1 = s1.inverseInertiaWorld * row.angular1;
+    row.angularStep2 = s2.inverseInertiaWorld * row.angular2;
+    // N^T K_T N with K = (1/m) 1 + r*^T I^-1 r* (seed 000): 1/m1 + 1/m2 + (r1 x n) I1^-1 (r1 x n) + ...
+    row.normalMass = 1.0 / (s1.inverseMass + s2.inverseMass + row.angular1.dot(row.angularStep1) +
+                            row.angular2.dot(row.angularStep2));
+    const double approach = normalVelocity(patch, row);
     const double gap = -m.points[i].depth;
     // Bounce (seed 000: u_rel,N^new = -c_R u_rel,N) when the approach is fast enough to be a
     // collision rather than resting contact, and the gap closes within the next step.
@@ -121,11 +129,10 @@ void ContactSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& co
     const bool bounces = approach < -settings.restitutionThreshold && -approach * dt >= gap;
     row.targetNormalVelocity = bounces ? -material.restitution * approach : -std::max(gap, 0.0) / dt;
     row.correctionVelocity = std::max(0.0, settings.positionCorrection * (-gap - settings.contactSlop) / dt);
-    if (cached != cache_.end()) {
-      const Cached& old = cached->second;
-      for (std::size_t j = 0; j < old.localPoints.size(); ++j) {
-        if ((old.localPoints[j] - row.localPoint1).norm() <= settings.warmStartDistance) {
-          row.impulse = old.normalImpulses[j];
+    if (old != nullptr) {
+      for (int j = 0; j < old->count; ++j) {
+        if ((old->localPoints[j] - row.localPoint1).norm() <= settings.warmStartDistance) {
+          row.impulse = old->normalImpulses[j];
           break;
         }
       }
@@ -142,15 +149,15 @@ void ContactSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& co
   // A new patch first assumes sticking (seed 000); a known one keeps last step's regime, as its
   // final sweep left it: sliding when the sticking impulse was outside the cone, sticking again
   // when the kinetic one would stop the slip.
-  patch.sticking = cached == cache_.end() || cached->second.sticking;
-  if (cached != cache_.end()) {
+  patch.sticking = old == nullptr || old->sticking;
+  if (old != nullptr) {
     // Last step's friction, in this step's tangent plane and inside this step's cone.
     const double limit = material.staticFriction * normalImpulse(patch);
-    Vec3 linear = cached->second.linearFriction - cached->second.linearFriction.dot(n) * n;
+    Vec3 linear = old->linearFriction - old->linearFriction.dot(n) * n;
     if (linear.norm() > limit) linear *= limit / linear.norm();
     const double twistLimit = limit * patch.twistRadius;
     patch.friction = Vec3(linear.dot(patch.tangent1), linear.dot(patch.tangent2),
-                          std::clamp(cached->second.twistFriction, -twistLimit, twistLimit));
+                          std::clamp(old->twistFriction, -twistLimit, twistLimit));
   }
   patches_.push_back(patch);
   patchContact_.push_back(index);
@@ -163,20 +170,21 @@ double ContactSolver::normalImpulse(const Patch& patch) const {
 }
 
 void ContactSolver::solveNormal(Patch& patch, NormalRow& row) {
-  const Vec3& n = patch.normal;
-  const double u = (pointVelocity(patch.body1, row.r1) - pointVelocity(patch.body2, row.r2)).dot(n);
+  const double u = normalVelocity(patch, row);
   // Seed 000's j_n for the target velocity, accumulated and kept repulsive (seed 001: f_i >= 0).
   const double total = std::max(0.0, row.impulse + row.normalMass * (row.targetNormalVelocity - u));
-  apply(patch.body1, patch.body2, row.r1, row.r2, (total - row.impulse) * n, Vec3::Zero());
+  applyNormal(patch, row, total - row.impulse, velocities_);
   row.impulse = total;
 }
 
 void ContactSolver::solveFriction(Patch& patch) {
   const double normalTotal = normalImpulse(patch);
-  const Vec3& n = patch.normal;
-  const Vec3 u = pointVelocity(patch.body1, patch.r1) - pointVelocity(patch.body2, patch.r2);
-  const Vec3 w(u.dot(patch.tangent1), u.dot(patch.tangent2),
-               (bodies_[patch.body1].angularVelocity - bodies_[patch.body2].angularVelocity).dot(n));
+  const Velocity& v1 = velocities_[patch.body1];
+  const Velocity& v2 = velocities_[patch.body2];
+  // Slip along t1, t2 at the centroid and twist about n: S^T (v1 - v2, ...) through the Jacobians.
+  const Vec3 dv = v1.linear - v2.linear;
+  const Vec3 w = Vec3(dv.dot(patch.tangent1), dv.dot(patch.tangent2), 0.0) +
+                 patch.angular1.transpose() * v1.angular - patch.angular2.transpose() * v2.angular;
   // Seed 000: assume sticking (the impulse that stops slip and twist), then keep it inside the
   // cone, of mu_s while the patch sticks and of mu_k while it slides. Scaling onto the cone is
   // continuous, so the sweeps converge; switching the coefficient inside a step is not, and
@@ -189,62 +197,78 @@ void ContactSolver::solveFriction(Patch& patch) {
   Vec3 total = candidate;
   if (slipImpulse > limit) total.head<2>() *= limit / slipImpulse;
   total.z() = std::clamp(candidate.z(), -limit * patch.twistRadius, limit * patch.twistRadius);
-  const Vec3 delta = total - patch.friction;
-  apply(patch.body1, patch.body2, patch.r1, patch.r2, delta.x() * patch.tangent1 + delta.y() * patch.tangent2,
-        delta.z() * n);
+  applyFriction(patch, total - patch.friction);
   patch.friction = total;
 }
 
 void ContactSolver::solvePosition(const Patch& patch, NormalRow& row) {
-  SolverBody& s1 = bodies_[patch.body1];
-  SolverBody& s2 = bodies_[patch.body2];
-  const Vec3& n = patch.normal;
-  const double u = (s1.pseudoVelocity + s1.pseudoAngularVelocity.cross(row.r1) - s2.pseudoVelocity -
-                    s2.pseudoAngularVelocity.cross(row.r2)).dot(n);
+  const Velocity& p1 = pseudoVelocities_[patch.body1];
+  const Velocity& p2 = pseudoVelocities_[patch.body2];
+  const double u = patch.normal.dot(p1.linear - p2.linear) + row.angular1.dot(p1.angular) - row.angular2.dot(p2.angular);
   const double total = std::max(0.0, row.pseudoImpulse + row.normalMass * (row.correctionVelocity - u));
-  const Vec3 delta = (total - row.pseudoImpulse) * n;
+  applyNormal(patch, row, total - row.pseudoImpulse, pseudoVelocities_);
   row.pseudoImpulse = total;
-  s1.pseudoVelocity += s1.inverseMass * delta;
-  s1.pseudoAngularVelocity += s1.inverseInertiaWorld * row.r1.cross(delta);
-  s2.pseudoVelocity -= s2.inverseMass * delta;
-  s2.pseudoAngularVelocity -= s2.inverseInertiaWorld * row.r2.cross(delta);
 }
 
 void ContactSolver::writeBack(std::vector<RigidBody>& bodies, double dt) {
+  // Delta P and Delta L from the accumulated impulses (the warm start's included), each applied
+  // +j to body 1 and -j to body 2 at the same point, so momentum is exchanged exactly.
+  std::vector<Vec3>& linear = linearImpulse_;
+  std::vector<Vec3>& angular = angularImpulse_;
+  linear.assign(bodies_.size(), Vec3::Zero());
+  angular.assign(bodies_.size(), Vec3::Zero());
+  for (const Patch& patch : patches_) {
+    Vec3 j = patch.friction.x() * patch.tangent1 + patch.friction.y() * patch.tangent2;
+    Vec3 l1 = patch.angular1 * patch.friction, l2 = patch.angular2 * patch.friction;
+    for (std::size_t r = patch.firstRow; r < patch.firstRow + patch.rowCount; ++r) {
+      j += rows_[r].impulse * patch.normal;
+      l1 += rows_[r].impulse * rows_[r].angular1;
+      l2 += rows_[r].impulse * rows_[r].angular2;
+    }
+    linear[patch.body1] += j;
+    angular[patch.body1] += l1;
+    linear[patch.body2] -= j;
+    angular[patch.body2] -= l2;
+  }
   for (std::size_t i = 1; i < bodies_.size(); ++i) {
-    const SolverBody& s = bodies_[i];
-    RigidBody& body = bodies[s.body];
+    RigidBody& body = bodies[bodies_[i].body];
     BodyState state = body.state();
-    state.linearMomentum += s.linearImpulse;
-    state.angularMomentum += s.angularImpulse;
+    state.linearMomentum += linear[i];
+    state.angularMomentum += angular[i];
     // The split impulse's pseudo-velocities move the body out of penetration over one step and
     // are then forgotten, so the correction never becomes kinetic energy.
-    state.position += dt * s.pseudoVelocity;
-    state.orientation = expMapStep(state.orientation, s.pseudoAngularVelocity, dt);
+    state.position += dt * pseudoVelocities_[i].linear;
+    state.orientation = expMapStep(state.orientation, pseudoVelocities_[i].angular, dt);
     body.setState(state);
-    slotOfBody_[s.body] = 0;
+    slotOfBody_[bodies_[i].body] = 0;
   }
 }
 
 void ContactSolver::remember(const std::vector<Contact>& contacts) {
-  cache_.clear();
+  nextCache_.clear();
   for (std::size_t p = 0; p < patches_.size(); ++p) {
     const Patch& patch = patches_[p];
-    Cached& c = cache_[pairKey(contacts[patchContact_[p]])];
-    for (std::size_t r = patch.firstRow; r < patch.firstRow + patch.rowCount; ++r) {
-      c.localPoints.push_back(rows_[r].localPoint1);
-      c.normalImpulses.push_back(rows_[r].impulse);
+    Cached c;
+    c.key = pairKey(contacts[patchContact_[p]]);
+    c.count = static_cast<int>(patch.rowCount);
+    for (int i = 0; i < c.count; ++i) {
+      c.localPoints[i] = rows_[patch.firstRow + i].localPoint1;
+      c.normalImpulses[i] = rows_[patch.firstRow + i].impulse;
     }
     c.linearFriction = patch.friction.x() * patch.tangent1 + patch.friction.y() * patch.tangent2;
     c.twistFriction = patch.friction.z();
     c.sticking = patch.insideCone;
+    nextCache_.push_back(c);
   }
+  std::sort(nextCache_.begin(), nextCache_.end(), [](const Cached& a, const Cached& b) { return a.key < b.key; });
+  cache_.swap(nextCache_);
 }
 
 void ContactSolver::solve(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
                           const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
                           const Settings& settings) {
   bodies_.assign(1, SolverBody{});
+  velocities_.assign(1, Velocity{});
   slotOfBody_.resize(bodies.size(), 0);
   patches_.clear();
   patchContact_.clear();
@@ -260,12 +284,11 @@ void ContactSolver::solve(std::vector<RigidBody>& bodies, const std::vector<Cont
     if (contact.manifold.count > 0 && awake) buildPatch(bodies, contact, c, material, settings);
   }
 
+  pseudoVelocities_.assign(bodies_.size(), Velocity{});
   for (const Patch& patch : patches_) {  // warm start
-    const Vec3& f = patch.friction;
-    apply(patch.body1, patch.body2, patch.r1, patch.r2, f.x() * patch.tangent1 + f.y() * patch.tangent2,
-          f.z() * patch.normal);
+    applyFriction(patch, patch.friction);
     for (std::size_t r = patch.firstRow; r < patch.firstRow + patch.rowCount; ++r) {
-      apply(patch.body1, patch.body2, rows_[r].r1, rows_[r].r2, rows_[r].impulse * patch.normal, Vec3::Zero());
+      applyNormal(patch, rows_[r], rows_[r].impulse, velocities_);
     }
   }
   // Friction first, non-penetration last in each sweep: the condition that matters most is the
@@ -294,7 +317,7 @@ void ContactSolver::solve(std::vector<RigidBody>& bodies, const std::vector<Cont
       SolvedContactPoint& out = solved_[r];
       out.normalImpulse = rows_[r].impulse;
       out.frictionImpulse = normalTotal > 0.0 ? Vec3(friction * (rows_[r].impulse / normalTotal)) : Vec3::Zero();
-      out.normalVelocity = (pointVelocity(patch.body1, rows_[r].r1) - pointVelocity(patch.body2, rows_[r].r2)).dot(patch.normal);
+      out.normalVelocity = normalVelocity(patch, rows_[r]);
       out.sticking = patch.sticking && patch.insideCone;
     }
   }

@@ -10,9 +10,9 @@
 // the normal, coupled through seed 002's 6x6 K; seed 000's rule decides between sticking (inside
 // the cone mu_s of the manifold's total normal impulse) and kinetic friction mu_k against the
 // slip. A rigid patch slides as a whole, so the cone is the patch's, not each point's.
+#include <array>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "body/rigid_body.h"
@@ -49,26 +49,28 @@ class ContactSolver {
   const std::vector<SolvedContactPoint>& points() const { return solved_; }
 
  private:
-  // Velocities of one body during the solve (as Box2D's b2BodyState), and what it received.
-  struct SolverBody {
-    Vec3 velocity = Vec3::Zero();
-    Vec3 angularVelocity = Vec3::Zero();
-    Vec3 pseudoVelocity = Vec3::Zero();         // split impulse: moves x, never enters P
-    Vec3 pseudoAngularVelocity = Vec3::Zero();  // moves q, never enters L
-    Vec3 linearImpulse = Vec3::Zero();          // sum of j: Delta P [N s]
-    Vec3 angularImpulse = Vec3::Zero();         // sum of r x j + j_tau: Delta L [N m s]
-    double inverseMass = 0.0;                   // 0 for static bodies and planes
-    Mat3 inverseInertiaWorld = Mat3::Zero();
-    std::size_t body = 0;                       // index into the World's bodies
+  // The velocities a sweep reads and changes, 48 bytes per body (as Box2D's b2BodyState): the
+  // sweeps touch nothing else of a body. Also used for the split impulse's pseudo-velocities.
+  struct Velocity {
+    Vec3 linear = Vec3::Zero();   // v [m/s]
+    Vec3 angular = Vec3::Zero();  // omega [rad/s]
   };
+  struct SolverBody {  // constant over the step
+    double inverseMass = 0.0;  // 0 for static bodies and planes
+    Mat3 inverseInertiaWorld = Mat3::Zero();
+    std::size_t body = 0;      // index into the World's bodies
+  };
+  // A normal row: the Jacobian of u_rel,N (n on the linear velocities, r x n on the angular ones)
+  // and I^-1 (r x n), precomputed, so that a sweep's row costs a few dot products (Catto 2005).
   struct NormalRow {
-    Vec3 r1 = Vec3::Zero(), r2 = Vec3::Zero();  // from each centre of mass to the point [m]
-    Vec3 localPoint1 = Vec3::Zero();            // the point in body 1's frame, for warm starting
-    double normalMass = 0.0;                    // 1 / (N^T K_T N)
-    double targetNormalVelocity = 0.0;          // bounce, speculative closing or 0 [m/s]
-    double correctionVelocity = 0.0;            // split-impulse target [m/s]
-    double impulse = 0.0;                       // accumulated j_N >= 0
-    double pseudoImpulse = 0.0;                 // accumulated split impulse
+    Vec3 angular1 = Vec3::Zero(), angular2 = Vec3::Zero();  // r1 x n, r2 x n [m]
+    Vec3 angularStep1 = Vec3::Zero(), angularStep2 = Vec3::Zero();  // I1^-1 (r1 x n), I2^-1 (r2 x n)
+    Vec3 localPoint1 = Vec3::Zero();  // the point in body 1's frame, for warm starting [m]
+    double normalMass = 0.0;              // 1 / (N^T K_T N) [kg]
+    double targetNormalVelocity = 0.0;    // bounce, speculative closing or 0 [m/s]
+    double correctionVelocity = 0.0;      // split-impulse target [m/s]
+    double impulse = 0.0;                 // accumulated j_N >= 0 [N s]
+    double pseudoImpulse = 0.0;           // accumulated split impulse [N s]
   };
   struct Patch {  // one manifold
     int body1 = 0, body2 = 0;  // indices into bodies_
@@ -76,26 +78,33 @@ class ContactSolver {
     Vec3 tangent1 = Vec3::UnitX(), tangent2 = Vec3::UnitZ();
     Material material;
     std::size_t firstRow = 0, rowCount = 0;
-    Vec3 r1 = Vec3::Zero(), r2 = Vec3::Zero();  // to the centroid of the points [m]
-    double twistRadius = 0.0;                   // mean distance of the points from it [m]
-    Mat3 inverseFriction = Mat3::Identity();    // (S^T (K_1 + K_2) S)^-1, S = (t1, t2, n twist)
-    Vec3 friction = Vec3::Zero();               // accumulated (j_t1, j_t2, j_twist)
-    bool sticking = true;                       // this step's regime: mu_s if sticking, else mu_k
-    bool insideCone = true;                     // the last sweep's sticking impulse was in the cone
+    // Friction coordinates (t1, t2 at the centroid of the points, twist about n): their angular
+    // Jacobians, columns (r x t1, r x t2, n), and those times I^-1.
+    Mat3 angular1 = Mat3::Zero(), angular2 = Mat3::Zero();
+    Mat3 angularStep1 = Mat3::Zero(), angularStep2 = Mat3::Zero();
+    double twistRadius = 0.0;                 // mean distance of the points from the centroid [m]
+    Mat3 inverseFriction = Mat3::Identity();  // (S^T (K_1 + K_2) S)^-1, seed 002
+    Vec3 friction = Vec3::Zero();             // accumulated (j_t1, j_t2, j_twist)
+    bool sticking = true;                     // this step's regime: mu_s if sticking, else mu_k
+    bool insideCone = true;                   // the last sweep's sticking impulse was in the cone
   };
-  struct Cached {
-    std::vector<Vec3> localPoints;  // body 1's frame [m]
-    std::vector<double> normalImpulses;
+  struct Cached {  // one manifold of the last step, looked up by pair key
+    std::uint64_t key = 0;
+    int count = 0;
+    std::array<Vec3, kMaxManifoldPoints> localPoints{};  // body 1's frame [m]
+    std::array<double, kMaxManifoldPoints> normalImpulses{};
     Vec3 linearFriction = Vec3::Zero();  // world [N s]
     double twistFriction = 0.0;          // about the normal [N m s]
     bool sticking = true;                // the regime of the next step
   };
 
   int solverBody(std::vector<RigidBody>& bodies, std::size_t body);
+  const Cached* cached(std::uint64_t key) const;
   void buildPatch(std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
                   const Settings& settings);
-  Vec3 pointVelocity(int body, const Vec3& r) const;
-  void apply(int body1, int body2, const Vec3& r1, const Vec3& r2, const Vec3& linear, const Vec3& angular);
+  double normalVelocity(const Patch& patch, const NormalRow& row) const;  // u_rel,N [m/s]
+  void applyNormal(const Patch& patch, const NormalRow& row, double impulse, std::vector<Velocity>& velocities) const;
+  void applyFriction(const Patch& patch, const Vec3& impulse);
   double normalImpulse(const Patch& patch) const;  // sum of the patch's accumulated j_N [N s]
   void solveNormal(Patch& patch, NormalRow& row);
   void solveFriction(Patch& patch);
@@ -104,12 +113,16 @@ class ContactSolver {
   void remember(const std::vector<Contact>& contacts);
 
   std::vector<SolverBody> bodies_;       // bodies_[0] is the ground: infinite mass, at rest
+  std::vector<Velocity> velocities_;     // per entry of bodies_
+  std::vector<Velocity> pseudoVelocities_;  // split impulse: move x and q, never enter P and L
   std::vector<int> slotOfBody_;          // per World body: index into bodies_, or 0 when untouched
   std::vector<Patch> patches_;
   std::vector<std::size_t> patchContact_;  // per patch: its contact
   std::vector<NormalRow> rows_;
   std::vector<SolvedContactPoint> solved_;
-  std::unordered_map<std::uint64_t, Cached> cache_;  // per pair, last step
+  std::vector<Cached> cache_;  // last step's manifolds, sorted by key
+  std::vector<Cached> nextCache_;
+  std::vector<Vec3> linearImpulse_, angularImpulse_;  // writeBack's scratch: Delta P, Delta L per body
 };
 
 }  // namespace rbsim

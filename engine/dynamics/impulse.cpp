@@ -20,6 +20,16 @@ Mat6 coupledImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, c
   return k;
 }
 
+Mat3 frictionImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, const Vec3& r, const Vec3& t1,
+                           const Vec3& t2, const Vec3& n) {
+  // The angular impulse of each coordinate: r x t1, r x t2 (a force at r) and n (a pure torque).
+  Mat3 angular;
+  angular << r.cross(t1), r.cross(t2), n;
+  Mat3 k = angular.transpose() * inverseInertiaWorld * angular;
+  k.topLeftCorner<2, 2>() += inverseMass * Eigen::Matrix2d::Identity();  // t1, t2 orthonormal
+  return k;
+}
+
 CollisionImpulse collisionImpulse(const Mat3& totalFactor, const Vec3& relativeVelocity, const Vec3& normal,
                                   const Material& material) {
   CollisionImpulse out;

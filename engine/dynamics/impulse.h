@@ -19,6 +19,12 @@ Mat3 impulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, const Ve
 // change of that point's velocity and of the angular velocity: (dv_r, domega) = K (j, j_tau).
 Mat6 coupledImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, const Vec3& r);
 
+// Seed 002's 6x6 K restricted to friction coordinates: S^T K S with S = [(t1, 0), (t2, 0), (0, n)]
+// (tangential impulses along t1, t2 and an angular impulse about n), formed without the 6x6
+// product: the contact solver builds one per manifold per step. t1, t2, n orthonormal.
+Mat3 frictionImpulseFactor(double inverseMass, const Mat3& inverseInertiaWorld, const Vec3& r, const Vec3& t1,
+                           const Vec3& t2, const Vec3& n);
+
 struct CollisionImpulse {
   Vec3 impulse = Vec3::Zero();  // j, applied +j to body 1 and -j to body 2 [N s]
   bool colliding = false;       // u_rel,N < 0: the bodies were approaching

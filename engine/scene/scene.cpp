@@ -11,6 +11,7 @@
 #include "mass/mass_model.h"
 #include "scene/body_parser.h"
 #include "scene/json_fields.h"
+#include "scene/particle_parser.h"
 
 namespace rbsim {
 
@@ -74,14 +75,15 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn"});
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
   if (root.has("world")) {
     const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "collisions", "ccd", "broad_phase", "contact_margin",
                                          "velocity_iterations", "position_iterations", "restitution_threshold",
-                                         "contact_slop", "position_correction", "warm_starting", "response"});
+                                         "contact_slop", "position_correction", "warm_starting", "response",
+                                         "particle_integrator"});
     scene.settings.gravity = w.vec3("gravity", scene.settings.gravity);
     scene.settings.timeStep = w.positiveNumber("dt", scene.settings.timeStep);
     if (scene.settings.timeStep > kMaxTimeStep || scene.settings.timeStep < kMinTimeStep) {
@@ -118,6 +120,10 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
       for (const std::string& n : integratorNames()) names += (names.empty() ? "" : ", ") + n;
       w.fail("integrator", "unknown integrator \"" + integrator + "\"; expected one of " + names);
     }
+    const std::string particles = w.string("particle_integrator", particleIntegratorName(scene.particleIntegrator));
+    if (!parseParticleIntegrator(particles, scene.particleIntegrator)) {
+      w.fail("particle_integrator", "unknown particle integrator \"" + particles + "\"; expected explicit-euler or semi-implicit-euler");
+    }
     const std::string inertia = w.string("inertia", inertiaMethodName(scene.settings.inertia));
     if (!parseInertiaMethod(inertia, scene.settings.inertia)) w.fail("inertia", "expected \"cube\" or \"exact\"");
     scene.duration = w.positiveNumber("duration", scene.duration);
@@ -133,7 +139,10 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene);
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
   scene_detail::parseSpawns(root, baseDir, scene);
-  if (scene.bodies.empty()) throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block)");
+  const bool hasParticles = root.has("particles") && root.raw("particles").is_array() && !root.raw("particles").empty();
+  if (scene.bodies.empty() && !hasParticles) {
+    throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, or particles)");
+  }
   std::unordered_map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     if (!names.emplace(scene.bodies[i].name, i).second) {
@@ -143,6 +152,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     }
   }
   scene_detail::parsePlanes(root, scene);
+  scene_detail::parseParticleSystems(root, scene);
   parseView(root, scene);
   return scene;
 }
@@ -191,6 +201,7 @@ World buildWorld(const Scene& scene) {
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
   for (const Spring& s : scene.springs) world.addSpring(s);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
+  for (const ParticleSystemDef& def : scene.particleSystems) world.addParticleSystem(def);
   return world;
 }
 

@@ -8,6 +8,7 @@
 
 #include "body/body_def.h"
 #include "collision/contact.h"
+#include "particles/particle_def.h"
 #include "world/scripts.h"
 #include "world/spring.h"
 #include "world/settings.h"
@@ -34,6 +35,18 @@ struct ViewDesc {
   std::string caption;
 };
 
+// How one particle system is drawn: camera-facing sprites whose colour, opacity and size follow
+// the particle's age fraction a = age / lifetime from birth (a = 0) to death (a = 1).
+struct ParticleLook {
+  enum class Blend { Additive, Alpha };
+  Blend blend = Blend::Alpha;        // additive: light adds up (fire); alpha: covers (smoke)
+  bool hasColorEnd = false;          // false: the birth colour throughout
+  Vec3 colorEnd = Vec3::Zero();      // linear RGB at a = 1, mixed linearly from the birth colour
+  double alphaStart = 1.0;           // opacity at a = 0 [1]
+  double alphaEnd = 1.0;             // opacity at a = 1 [1]
+  double sizeEndScale = 1.0;         // drawn size at a = 1 over the size at birth [1]
+};
+
 struct Scene {
   std::string file;        // where it came from, for messages
   std::string title;
@@ -46,6 +59,11 @@ struct Scene {
   std::vector<Spring> springs;
   std::vector<Plane> planes;  // static, infinite
   std::vector<Material> planeMaterials;  // per plane
+  // world.particle_integrator: the integrator of particle systems that do not name their own, as
+  // world.integrator is for bodies.
+  ParticleIntegrator particleIntegrator = ParticleIntegrator::SemiImplicitEuler;
+  std::vector<ParticleSystemDef> particleSystems;
+  std::vector<ParticleLook> particleLooks;  // per particle system
   ViewDesc view;
 
   std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep
@@ -66,7 +84,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
 // as JSON, otherwise a string. Bodies may be named: "bodies.box.mass=2".
 void applyOverride(nlohmann::json& document, const std::string& assignment);
 
-// A World holding the scene's bodies, forces and pose events.
+// A World holding the scene's bodies, forces, pose events, planes and particle systems.
 World buildWorld(const Scene& scene);
 
 }  // namespace rbsim

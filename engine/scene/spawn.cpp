@@ -2,8 +2,8 @@
 // drawn from a seeded generator so that a scene file describes a reproducible crowd.
 #include <cmath>
 #include <cstdint>
-#include <random>
 
+#include "math/uniform_random.h"
 #include "scene/body_parser.h"
 
 namespace rbsim::scene_detail {
@@ -12,28 +12,6 @@ namespace {
 
 // More bodies than this in one block is almost certainly a typo for a smaller number.
 constexpr int kMaxSpawnCount = 100000;
-
-// Uniform doubles in [0, 1) from the top 53 bits: std::uniform_real_distribution is
-// implementation-defined, and a scene must give the same bodies with every standard library.
-class Uniform {
- public:
-  explicit Uniform(std::uint64_t seed) : engine_(seed) {}
-  double next() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-  double between(double lo, double hi) { return lo + (hi - lo) * next(); }
-  Vec3 direction() {  // uniform on the unit sphere (Archimedes: z uniform in [-1, 1])
-    const double z = between(-1.0, 1.0), phi = between(0.0, 2.0 * M_PI);
-    const double r = std::sqrt(1.0 - z * z);
-    return {r * std::cos(phi), r * std::sin(phi), z};
-  }
-  Quat rotation() {  // uniform over SO(3) (Shoemake 1992, "Uniform random rotations")
-    const double u1 = next(), u2 = between(0.0, 2.0 * M_PI), u3 = between(0.0, 2.0 * M_PI);
-    const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
-    return Quat(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
-  }
-
- private:
-  std::mt19937_64 engine_;
-};
 
 // [lo, hi] with 0 <= lo <= hi.
 std::pair<double, double> range(const JsonObject& o, const char* key, const char* unit) {
@@ -74,7 +52,7 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     scene.bodies.pop_back();
     scene.inertiaMethods.pop_back();
 
-    Uniform random(static_cast<std::uint64_t>(seed));
+    UniformRandom random(static_cast<std::uint64_t>(seed));
     for (int k = 0; k < count; ++k) {
       BodyDef def = prototype;
       def.name = prefix + "_" + std::to_string(k);

@@ -29,7 +29,7 @@ std::pair<Vec3, Vec3> inWorldFrame(const ScriptedForce& f, const RigidBody& body
 // Seed 000 "particle systems" spring: F = -(k (|d| - rest) + c v_p . u) u at the body point p,
 // d = p - anchor, u = d / |d|. For rest = 0, F = -k d - c (v_p . u) u needs no direction when
 // d = 0, so a zero-length spring is well defined; for rest > 0 and d = 0 there is no direction.
-std::pair<Vec3, Vec3> springForce(const Spring& spring, const RigidBody& body) {
+std::pair<Vec3, Vec3> forceOfSpring(const Spring& spring, const RigidBody& body) {
   const Vec3 point = body.bodyToWorld(spring.point);
   const Vec3 d = point - spring.anchor;
   const double length = d.norm();
@@ -68,6 +68,7 @@ const char* stageName(Stage stage) {
     case Stage::NarrowPhase: return "narrow-phase";
     case Stage::SolveContacts: return "solve-contacts";
     case Stage::UpdateSleep: return "update-sleep";
+    case Stage::StepParticles: return "step-particles";
     case Stage::Count: break;
   }
   return "unknown";
@@ -97,7 +98,7 @@ void World::addForce(const ScriptedForce& force) {
   forces_.push_back(force);
 }
 
-void World::addSpring(const Spring& spring) {
+std::size_t World::addSpring(const Spring& spring) {
   if (spring.body >= bodies_.size()) throw std::invalid_argument("spring names no body");
   if (bodies_[spring.body].isStatic()) throw std::invalid_argument("spring on static body '" + bodies_[spring.body].name() + "'");
   if (!spring.anchor.allFinite() || !spring.point.allFinite() || !(spring.stiffness >= 0.0) || !(spring.restLength >= 0.0) ||
@@ -105,6 +106,24 @@ void World::addSpring(const Spring& spring) {
     throw std::invalid_argument("spring on body '" + bodies_[spring.body].name() + "': expected finite anchor and point, k, rest length and damping >= 0");
   }
   springs_.push_back(spring);
+  return springs_.size() - 1;
+}
+
+void World::moveSpringAnchor(std::size_t spring, const Vec3& anchor) {
+  if (spring >= springs_.size()) throw std::invalid_argument("moveSpringAnchor: no such spring");
+  if (!anchor.allFinite()) throw std::invalid_argument("moveSpringAnchor: expected a finite anchor");
+  springs_[spring].anchor = anchor;
+  bodies_[springs_[spring].body].wake();
+}
+
+std::pair<Vec3, Vec3> World::springForce(std::size_t spring) const {
+  if (spring >= springs_.size()) throw std::invalid_argument("springForce: no such spring");
+  return forceOfSpring(springs_[spring], bodies_[springs_[spring].body]);
+}
+
+void World::removeSpring(std::size_t spring) {
+  if (spring >= springs_.size()) throw std::invalid_argument("removeSpring: no such spring");
+  springs_.erase(springs_.begin() + static_cast<std::ptrdiff_t>(spring));
 }
 
 void World::addPlane(const Plane& plane, const Material& material) {
@@ -115,6 +134,11 @@ void World::addPlane(const Plane& plane, const Material& material) {
   if (!problem.empty()) throw std::invalid_argument("plane: " + problem);
   planes_.push_back(plane);
   planeMaterials_.push_back(material);
+}
+
+std::size_t World::addParticleSystem(const ParticleSystemDef& def) {
+  particleSystems_.emplace_back(def, bodies_);
+  return particleSystems_.size() - 1;
 }
 
 void World::addPoseEvent(const PoseEvent& event) {
@@ -175,6 +199,9 @@ void World::step() {
     if (settings_.respondToContacts) solveContacts();
   });
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
+  runStage(Stage::StepParticles, !particleSystems_.empty(), [&] {
+    for (ParticleSystem& system : particleSystems_) system.step(t, settings_.timeStep, settings_.gravity, bodies_, planes_);
+  });
   ++stepCount_;
 }
 
@@ -220,7 +247,7 @@ void World::accumulateForces(bool withGravity) {
   for (const Spring& spring : springs_) {
     RigidBody& body = bodies_[spring.body];
     if (!body.awake()) continue;
-    const auto [point, force] = springForce(spring, body);
+    const auto [point, force] = forceOfSpring(spring, body);
     body.applyForceAtPoint(force, point);
   }
 }
@@ -341,6 +368,7 @@ std::uint64_t World::stateHash() const {
     for (int i = 0; i < 3; ++i) mix(s.linearMomentum[i]);
     for (int i = 0; i < 3; ++i) mix(s.angularMomentum[i]);
   }
+  for (const ParticleSystem& system : particleSystems_) hash = system.hashState(hash);
   return hash;
 }
 

@@ -10,6 +10,7 @@
 #include "collision/contact.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/material.h"
+#include "particles/particle_system.h"
 #include "world/collision_pipeline.h"
 #include "world/scripts.h"
 #include "world/spring.h"
@@ -29,6 +30,8 @@ enum class Stage : int {
   NarrowPhase,       // contact manifolds of candidate pairs and of bodies against planes
   SolveContacts,     // impulses: restitution, friction, resting contact; split-impulse correction
   UpdateSleep,       // islands of touching bodies, all slow for Settings::timeToSleep, fall asleep
+  StepParticles,     // particle systems: emit, forces, integrate, collide with planes and the
+                     // bodies where they now are, age; skipped when the World has none
   Count
 };
 const char* stageName(Stage stage);
@@ -46,9 +49,17 @@ class World {
   std::size_t addBody(const BodyDef& def);  // throws std::invalid_argument on an invalid def
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
-  void addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
+  std::size_t addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
+  // A spring whose anchor is moved by hand (window mode drags a body by one, as Box2D's mouse
+  // joint): wakes the body, as every manual change does. Throws on a bad index or anchor.
+  void moveSpringAnchor(std::size_t spring, const Vec3& anchor);
+  void removeSpring(std::size_t spring);  // later springs move down one index
+  // (point, force) of a spring on its body now, world frame: what AccumulateForces applies.
+  std::pair<Vec3, Vec3> springForce(std::size_t spring) const;
   // Static and infinite; throws unless the normal is unit and the material valid.
   void addPlane(const Plane& plane, const Material& material = {});
+  // Throws std::invalid_argument when checkParticleSystemDef finds a problem.
+  std::size_t addParticleSystem(const ParticleSystemDef& def);
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
   void step();
@@ -61,6 +72,8 @@ class World {
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
   const std::vector<Spring>& springs() const { return springs_; }
   const std::vector<Plane>& planes() const { return planes_; }
+  const std::vector<ParticleSystem>& particleSystems() const { return particleSystems_; }
+  std::vector<ParticleSystem>& particleSystems() { return particleSystems_; }
   std::size_t awakeCount() const;
   const CollisionPipeline& collision() const { return collision_; }
   const std::vector<Contact>& contacts() const { return collision_.contacts(); }
@@ -74,7 +87,8 @@ class World {
   // Used by stage AccumulateForces and by renderers that draw force arrows.
   std::vector<std::pair<Vec3, Vec3>> activeForces(std::size_t body, double t) const;
 
-  // FNV-1a over the bit patterns of every body's state: equal hashes mean bit-identical runs.
+  // FNV-1a over the bit patterns of every body's state, then of every particle's (when there are
+  // any, so a scene without particles hashes as it always has): equal hashes mean identical runs.
   std::uint64_t stateHash() const;
 
  private:
@@ -95,6 +109,7 @@ class World {
   std::vector<Plane> planes_;
   std::vector<Material> bodyMaterials_;   // per body
   std::vector<Material> planeMaterials_;  // per plane
+  std::vector<ParticleSystem> particleSystems_;
   CollisionPipeline collision_;
   ContactSolver contactSolver_;
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]

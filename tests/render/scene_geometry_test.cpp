@@ -50,5 +50,28 @@ TEST(SceneGeometry, ForceArrowHasScaledLengthAndDirection) {
   EXPECT_TRUE(g.forceShafts.empty());
 }
 
+TEST(SceneGeometry, SmoothSurfaceAveragesNormalsAndOutlinesOnlyItsBorder) {
+  // Two triangles folded 90 degrees along their shared edge (a cloth bent over a box's edge).
+  static const std::vector<std::array<std::uint32_t, 3>> triangles = {{0, 1, 2}, {0, 2, 3}};
+  FrameData frame;
+  BodyView cloth;
+  cloth.worldVertices = {{0, 0, 0}, {1, 0, 0}, {0, 0, -1}, {0, -1, 0}};
+  cloth.triangles = &triangles;
+  cloth.axisLength = 0.0f;
+  frame.bodies.push_back(cloth);
+  SceneGeometry flat;
+  buildSceneGeometry(frame, flat);
+  EXPECT_EQ(flat.edges.size(), 2u * 5u) << "4 border edges and the crease";
+  frame.bodies[0].smooth = true;
+  SceneGeometry smooth;
+  buildSceneGeometry(frame, smooth);
+  EXPECT_EQ(smooth.edges.size(), 2u * 4u) << "the border only";
+  // Vertex 0 is shared: its normal is the normalised sum of +y and -x (equal areas 1/2).
+  const glm::vec3 shared = smooth.bodies[0].normal;
+  EXPECT_NEAR(shared.x, -std::sqrt(0.5f), 1e-6f);
+  EXPECT_NEAR(shared.y, std::sqrt(0.5f), 1e-6f);
+  EXPECT_NEAR(smooth.bodies[1].normal.y, 1.0f, 1e-6f) << "vertex 1 is on the first triangle only";
+}
+
 }  // namespace
 }  // namespace rbsim::render::test

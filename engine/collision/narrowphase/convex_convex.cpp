@@ -134,11 +134,10 @@ ConvexContact collideConvex(const std::vector<Vec3>& a, const std::vector<Vec3>&
     out.usedBoxSat = true;
     const BoxBoxResult sat = collideBoxes(*boxA, *boxB, margin);
     out.overlap = sat.separation <= 0.0;
+    // Apart, the SAT's separation stands for the distance: a GJK run per separated pair would
+    // cost a pile a tenth of its step for a figure only the query log reads.
     if (!out.overlap) {
-      const GjkResult g = gjk(a, b);
-      out.distance = g.distance;
-      out.pointA = g.pointA;
-      out.pointB = g.pointB;
+      out.distance = sat.separation;
     } else {
       out.depth = -sat.separation;
     }

@@ -21,9 +21,13 @@ inline constexpr double kSupportFeatureTolerance = 1e-3;
 struct ConvexContact {
   ContactManifold manifold;  // normal from A to B; count 0 when apart by more than the margin
   bool overlap = false;      // the hulls touch or intersect
-  double distance = 0.0;     // [m] GJK distance when apart; 0 when overlapping
+  // [m] when apart, GJK's distance; for box pairs (usedBoxSat) the SAT separation, the largest
+  // gap along the 15 axes: exact when the closest features are a face or two edges, a lower
+  // bound when they are vertices. 0 when overlapping.
+  double distance = 0.0;
   double depth = 0.0;        // [m] penetration depth (EPA, or SAT for boxes) when overlapping
-  // Closest points when apart, deepest points (pointA - pointB = depth n) when overlapping [m].
+  // Closest points when apart (GJK only), deepest points (pointA - pointB = depth n) when
+  // overlapping [m].
   Vec3 pointA = Vec3::Zero();
   Vec3 pointB = Vec3::Zero();
   bool usedBoxSat = false;  // both boxes were given, so collideBoxes made the manifold

@@ -25,7 +25,7 @@ struct QueryRecord {
   QueryKind kind = QueryKind::ConvexConvex;
   std::uint32_t idA = 0, idB = 0;  // the caller's ids of the two bodies or proxies
   bool overlap = false;
-  double distance = 0.0;  // [m] when apart
+  double distance = 0.0;  // [m] when apart (for box pairs the SAT separation: ConvexContact)
   double depth = 0.0;     // [m] largest penetration when overlapping
   Vec3 normal = Vec3::Zero();  // from A to B
   int count = 0;          // contact points

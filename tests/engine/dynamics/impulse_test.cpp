@@ -45,6 +45,23 @@ TEST(CoupledImpulseFactor, IsSymmetricPositiveDefiniteAndItsTopLeftIsK) {
   EXPECT_TRUE(allNear(Vec3(change.head<3>()), domega.cross(r), 1e-15));
 }
 
+// The solver's friction factor is seed 002's 6x6 K seen through the friction coordinates.
+TEST(FrictionImpulseFactor, EqualsTheCoupledFactorRestrictedToTangentsAndTwist) {
+  const Mat3 inverseInertia = Mat3(Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, -1.0).normalized())) *
+                              Vec3(2.0, 0.5, 1.25).asDiagonal() *
+                              Mat3(Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, -1.0).normalized())).transpose();
+  const Vec3 r(0.3, -0.2, 0.5);
+  const Vec3 n = Vec3(0.2, 1.0, -0.3).normalized();
+  const Vec3 t1 = n.cross(Vec3::UnitX()).normalized();
+  const Vec3 t2 = n.cross(t1);
+  Eigen::Matrix<double, 6, 3> s = Eigen::Matrix<double, 6, 3>::Zero();
+  s.block<3, 1>(0, 0) = t1;
+  s.block<3, 1>(0, 1) = t2;
+  s.block<3, 1>(3, 2) = n;
+  const Mat3 expected = s.transpose() * coupledImpulseFactor(0.25, inverseInertia, r) * s;
+  EXPECT_TRUE(allNear(frictionImpulseFactor(0.25, inverseInertia, r, t1, t2, n), expected, 1e-14));
+}
+
 // Two unit point masses, head on: j_n = -(1 + c_R) u_N / (1/m1 + 1/m2).
 TEST(CollisionImpulse, HeadOnPointMassesReverseTheApproachTimesRestitution) {
   for (double e : {0.0, 0.5, 1.0}) {

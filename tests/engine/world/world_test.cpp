@@ -238,5 +238,34 @@ TEST(World, ScriptsMustNameABody) {
   EXPECT_THROW(world.addPoseEvent(e), std::invalid_argument);
 }
 
+// The hand-moved spring of window mode's drag: moving its anchor wakes a sleeping body and pulls
+// it towards the anchor with seed 000's spring force; removed, it no longer acts.
+TEST(World, AMovedSpringWakesItsBodyPullsItAndStopsWhenRemoved) {
+  Settings settings;
+  settings.gravity = Vec3::Zero();
+  World world(settings);
+  world.addBody(boxDef(Vec3(1.0, 1.0, 1.0), 2.0));
+  Spring spring;
+  spring.body = 0;
+  spring.anchor = Vec3::Zero();
+  spring.point = Vec3(0.5, 0.0, 0.0);  // on the +x face
+  spring.stiffness = 10.0;
+  const std::size_t index = world.addSpring(spring);
+  world.bodies()[0].sleep();
+  world.moveSpringAnchor(index, Vec3(1.5, 0.0, 0.0));
+  EXPECT_TRUE(world.bodies()[0].awake());
+  const auto [point, force] = world.springForce(index);
+  EXPECT_TRUE(allNear(point, Vec3(0.5, 0.0, 0.0), 0.0));
+  EXPECT_TRUE(allNear(force, Vec3(10.0, 0.0, 0.0), 1e-15)) << "k |d| along d, d = 1 m";
+  world.step();
+  EXPECT_NEAR(world.bodies()[0].velocity().x(), 10.0 / 2.0 * settings.timeStep, 1e-15) << "F / m dt";
+  world.removeSpring(index);
+  const double v = world.bodies()[0].velocity().x();
+  world.step();
+  EXPECT_EQ(world.bodies()[0].velocity().x(), v);
+  EXPECT_TRUE(world.springs().empty());
+  EXPECT_THROW(world.moveSpringAnchor(0, Vec3::Zero()), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace rbsim

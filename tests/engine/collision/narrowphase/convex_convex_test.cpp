@@ -121,13 +121,21 @@ TEST(CollideConvex, TetrahedronFaceDownOnABoxHasThreePoints) {
   }
 }
 
-TEST(CollideConvex, BoxPathReportsDistanceWhenApart) {
-  const OrientedBox a = makeOrientedBox(Vec3::Zero(), kHalf), b = makeOrientedBox(Vec3(2, 2, 2), kHalf);
-  const ConvexContact c = collideConvex(boxCorners(a), boxCorners(b), 0.0, &a, &b);
+// Apart, the box path reports the SAT separation: the distance when faces are closest, a lower
+// bound (the gap along one axis) when corners are.
+TEST(CollideConvex, BoxPathReportsTheSatSeparationWhenApart) {
+  const OrientedBox a = makeOrientedBox(Vec3::Zero(), kHalf);
+  const OrientedBox faceToFace = makeOrientedBox(Vec3(1.75, 0.2, -0.1), kHalf);
+  ConvexContact c = collideConvex(boxCorners(a), boxCorners(faceToFace), 0.0, &a, &faceToFace);
   EXPECT_TRUE(c.usedBoxSat);
   EXPECT_FALSE(c.overlap);
   EXPECT_EQ(c.manifold.count, 0);
-  EXPECT_NEAR(c.distance, std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(c.distance, 0.75, 1e-12);
+  const OrientedBox cornerToCorner = makeOrientedBox(Vec3(2, 2, 2), kHalf);
+  c = collideConvex(boxCorners(a), boxCorners(cornerToCorner), 0.0, &a, &cornerToCorner);
+  EXPECT_FALSE(c.overlap);
+  EXPECT_NEAR(c.distance, 1.0, 1e-12);
+  EXPECT_LT(c.distance, convexDistance(boxCorners(a), boxCorners(cornerToCorner)).distance);
 }
 
 // Random box pairs through the general path: every point midway between the surfaces (on the

@@ -1,0 +1,361 @@
+#include "window/interactive.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <thread>
+#include <utility>
+
+#include "io/input_error.h"
+#include "render/debug_shapes.h"
+#include "render/frame_sink.h"
+#include "render/offscreen_renderer.h"
+#include "render/png_sequence_writer.h"
+#include "run/frame_builder.h"
+#include "run/runner.h"
+#include "run/to_glm.h"
+#include "scene/scene.h"
+#include "window/control_panel.h"
+#include "window/orbit_camera.h"
+#include "window/picking.h"
+#include "window/x11_window.h"
+#include "world/simulation_error.h"
+
+namespace rbsim::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The drag is a damped spring from the pointer to the grabbed point (seed 000's spring, as Box2D's
+// mouse joint): stiffness per kilogram, so every body follows at the same angular frequency
+// sqrt(k/m) = 7 rad/s, damped at 0.7 of critical.
+constexpr double kDragStiffnessPerKg = 50.0;  // [N/(m kg)]
+constexpr double kDragDampingRatio = 0.7;     // [1] of critical damping 2 sqrt(k m)
+// Arrows of the drag: the force is drawn 1 m long per body weight m|g| (or per m * 9.81 N when
+// there is no gravity), the torque about the centre of mass 1 m per weight times metre.
+constexpr double kStandardGravity = 9.81;     // [m/s^2]
+constexpr glm::vec3 kDragForceColor{1.0f, 1.0f, 1.0f};
+constexpr glm::vec3 kDragTorqueColor{0.3f, 1.0f, 0.4f};
+
+std::string shellQuoted(const std::string& s) { return "'" + s + "'"; }
+
+}  // namespace
+
+class Session {
+ public:
+  Session(const SceneSource& source, const WindowOptions& options) : source_(source), options_(options) {
+    scene_ = load(phase_, {});
+    world_ = std::make_unique<World>(buildWorld(scene_));
+  }
+
+  void run() {
+    X11Window window(scene_.view.width, scene_.view.height, "rbsim: " + title());
+    render::OffscreenRenderer renderer(scene_.view.width, scene_.view.height);
+    WindowInput input;
+    auto last = Clock::now();
+    for (std::uint64_t shown = 0; options_.frames == 0 || shown < options_.frames; ++shown) {
+      const auto frameStart = Clock::now();
+      window.poll(input);
+      if (input.closed || !handleKeys(input.keys)) break;
+      handlePointer(input, renderer.uiWantsPointer());
+      if (!paused_) advanceOneFrame();
+
+      render::UiFrame ui;
+      ui.input.mouseX = static_cast<float>(input.mouseX);
+      ui.input.mouseY = static_cast<float>(input.mouseY);
+      for (int b = 0; b < 3; ++b) ui.input.mouseDown[b] = input.down[b];
+      ui.input.wheel = input.wheel;
+      ui.input.deltaSeconds = std::max(1e-3f, std::chrono::duration<float>(frameStart - last).count());
+      last = frameStart;
+      PanelRequests requests;
+      ui.draw = [&] { requests = drawControlPanel(panelView(), scene_.view.width, scene_.view.height); };
+      const std::vector<std::uint8_t>& pixels = renderer.render(frame(), &ui);
+      window.present(pixels);
+      if (recorder_) recorder_->submit(pixels);
+      apply(requests);
+      if (options_.frames == 0) {
+        const auto period = std::chrono::duration<double>(1.0 / scene_.view.fps);
+        std::this_thread::sleep_until(frameStart + std::chrono::duration_cast<Clock::duration>(period));
+      }
+    }
+    if (recorder_) stopRecording();
+    if (!options_.screenshot.empty()) {
+      render::writePng(options_.screenshot, window.width(), window.height(), window.capture());
+      if (!options_.quiet) std::printf("screenshot: %s\n", options_.screenshot.c_str());
+    }
+  }
+
+ private:
+  std::string title() const { return source_.title.empty() ? scene_.title : source_.title; }
+
+  std::vector<std::string> overrides(const std::vector<std::pair<std::string, std::string>>& panel) const {
+    std::vector<std::string> all = source_.overrides;
+    for (const auto& [path, value] : panel) all.push_back(path + "=" + value);
+    return all;
+  }
+
+  Scene load(std::size_t phase, const std::vector<std::pair<std::string, std::string>>& panel) const {
+    return loadScene(source_.files[phase], overrides(panel));
+  }
+
+  // Frame k shows the step nearest k / fps, as in the off-screen runner, so that the window and
+  // the video agree frame for frame.
+  void advanceOneFrame() {
+    const std::uint64_t target = stepOfFrame(frameIndex_, scene_.view.fps, scene_.settings.timeStep);
+    stepUntil(target);
+    ++frameIndex_;
+  }
+
+  void stepUntil(std::uint64_t target) {
+    try {
+      while (world_->stepCount() < target) world_->step();
+    } catch (const SimulationError& e) {
+      paused_ = true;
+      message_ = std::string("diverged, paused: ") + e.what();
+    }
+    history_.add(world_->bodies()[scene_.view.selected]);
+  }
+
+  void stepOnce() {
+    stepUntil(world_->stepCount() + 1);
+    // The next frame is the first one at or after this step.
+    while (stepOfFrame(frameIndex_, scene_.view.fps, scene_.settings.timeStep) < world_->stepCount()) ++frameIndex_;
+  }
+
+  void restart() {
+    drag_.reset();
+    world_ = std::make_unique<World>(buildWorld(scene_));
+    frameIndex_ = 0;
+    history_.clear();
+  }
+
+  // false: quit.
+  bool handleKeys(const std::string& keys) {
+    for (char key : keys) {
+      if (key == 'q' || key == '\x1b') return false;
+      if (key == ' ') paused_ = !paused_;
+      if (key == 's') stepOnce();
+      if (key == 'r') restart();
+    }
+    return true;
+  }
+
+  render::Camera camera() const { return orbit_ ? orbit_->camera() : sceneCamera(scene_.view); }
+
+  OrbitCamera& orbit() {
+    if (!orbit_) orbit_.emplace(camera());
+    return *orbit_;
+  }
+
+  void handlePointer(const WindowInput& input, bool overPanel) {
+    const int dx = input.mouseX - lastX_, dy = input.mouseY - lastY_;
+    lastX_ = input.mouseX;
+    lastY_ = input.mouseY;
+    if (input.pressed[0] && !overPanel && input.mouseX >= 0) grab(input.mouseX, input.mouseY);
+    if (!input.down[0]) {
+      if (drag_) world_->removeSpring(drag_->spring);
+      drag_.reset();
+      orbitingWithLeft_ = false;
+    }
+    if (drag_) {
+      const Ray ray = pixelRay(camera(), scene_.view.width, scene_.view.height, input.mouseX, input.mouseY);
+      if (const auto anchor = rayPlane(ray, drag_->planePoint, drag_->planeNormal)) world_->moveSpringAnchor(drag_->spring, *anchor);
+    }
+    if (input.mouseX < 0 || (overPanel && !orbitingWithLeft_ && !input.down[1] && !input.down[2])) return;
+    if ((orbitingWithLeft_ || input.down[1]) && (dx != 0 || dy != 0) && !input.pressed[0] && !input.pressed[1]) orbit().orbit(dx, dy);
+    if (input.down[2] && (dx != 0 || dy != 0) && !input.pressed[2]) orbit().pan(dx, dy, scene_.view.height);
+    if (input.wheel != 0.0f && !overPanel) orbit().zoom(input.wheel);
+  }
+
+  // A left press on a body selects it and, unless it is static, starts dragging it; on empty
+  // space it starts orbiting.
+  void grab(int x, int y) {
+    const Ray ray = pixelRay(camera(), scene_.view.width, scene_.view.height, x, y);
+    const std::optional<Pick> pick = pickBody(*world_, ray);
+    if (!pick) {
+      orbitingWithLeft_ = true;
+      return;
+    }
+    scene_.view.selected = pick->body;
+    setPanelValue("view.selected", "\"" + scene_.bodies[pick->body].name + "\"");
+    history_.clear();
+    const RigidBody& body = world_->bodies()[pick->body];
+    if (body.isStatic()) return;
+    Spring spring;
+    spring.body = pick->body;
+    spring.anchor = pick->point;
+    spring.point = body.rotation().transpose() * (pick->point - body.position());
+    spring.stiffness = kDragStiffnessPerKg * body.mass();
+    spring.damping = kDragDampingRatio * 2.0 * std::sqrt(spring.stiffness * body.mass());
+    drag_ = Drag{world_->addSpring(spring), pick->point, -ray.direction};
+    world_->moveSpringAnchor(drag_->spring, pick->point);  // wakes the body
+  }
+
+  render::FrameData frame() {
+    render::FrameData f = buildFrame(*world_, scene_, title());
+    if (orbit_) f.camera = orbit_->camera();
+    if (drag_) {
+      const auto [point, force] = world_->springForce(drag_->spring);
+      const RigidBody& body = world_->bodies()[world_->springs()[drag_->spring].body];
+      const double gravity = world_->settings().gravity.norm() > 0.0 ? world_->settings().gravity.norm() : kStandardGravity;
+      const double weight = body.mass() * gravity;  // [N]
+      const Vec3 torque = (point - body.position()).cross(force);
+      const Vec3 anchor = world_->springs()[drag_->spring].anchor;
+      f.lines.push_back({toGlm(point), toGlm(anchor), kDragForceColor, true});
+      render::appendArrowLines(f.lines, toGlm(point), toGlm(Vec3(point + force / weight)), kDragForceColor);
+      render::appendArrowLines(f.lines, toGlm(body.position()), toGlm(Vec3(body.position() + torque / weight)),
+                               kDragTorqueColor);
+      f.overlay.rows.push_back({"drag force", format3(force, "N")});
+      f.overlay.rows.push_back({"drag torque", format3(torque, "N m")});
+    }
+    return f;
+  }
+
+  static std::string format3(const Vec3& v, const char* unit) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%+.3f %+.3f %+.3f %s", v.x(), v.y(), v.z(), unit);
+    return text;
+  }
+
+  PanelView panelView() {
+    PanelView v;
+    v.scene = &scene_;
+    v.world = world_.get();
+    v.history = &history_;
+    v.phases = source_.files;
+    v.phase = phase_;
+    v.paused = paused_;
+    v.recording = recorder_ != nullptr;
+    v.recordingPath = recordingPath_;
+    v.message = message_;
+    return v;
+  }
+
+  void setPanelValue(const std::string& path, const std::string& value) {
+    for (auto& entry : panel_) {
+      if (entry.first == path) {
+        entry.second = value;
+        return;
+      }
+    }
+    panel_.emplace_back(path, value);
+  }
+
+  void apply(const PanelRequests& r) {
+    if (r.togglePause) paused_ = !paused_;
+    if (r.step) stepOnce();
+    if (r.reset) restart();
+    if (r.phase >= 0 && static_cast<std::size_t>(r.phase) != phase_) switchPhase(static_cast<std::size_t>(r.phase));
+    for (const PanelRequests::Assignment& a : r.assignments) assign(a);
+    if (r.toggleRecording) recorder_ ? stopRecording() : startRecording();
+    if (r.copyCommand) {
+      message_ = commandLine();
+      std::printf("%s\n", message_.c_str());
+      std::fflush(stdout);
+    }
+  }
+
+  // Every change goes through the scene parser, exactly as the same --set would: a bad value is
+  // reported in the panel and not applied.
+  void assign(const PanelRequests::Assignment& a) {
+    std::vector<std::pair<std::string, std::string>> next = panel_;
+    bool replaced = false;
+    for (auto& entry : next) {
+      if (entry.first == a.path) {
+        entry.second = a.value;
+        replaced = true;
+      }
+    }
+    if (!replaced) next.emplace_back(a.path, a.value);
+    try {
+      Scene scene = load(phase_, next);
+      panel_ = std::move(next);
+      message_.clear();
+      if (a.restart) {
+        scene_ = std::move(scene);
+        restart();
+      } else {
+        scene_.view = scene.view;
+      }
+    } catch (const InputError& e) {
+      message_ = e.what();
+    }
+  }
+
+  void switchPhase(std::size_t phase) {
+    try {
+      scene_ = load(phase, panel_);
+      phase_ = phase;
+    } catch (const InputError& e) {
+      // The panel's assignments may name bodies the other phase lacks: start it from its file.
+      scene_ = load(phase, {});
+      phase_ = phase;
+      panel_.clear();
+      message_ = std::string("settings dropped for this phase: ") + e.what();
+    }
+    orbit_.reset();
+    restart();
+  }
+
+  std::string commandLine() const {
+    std::string line = "rbsim run " + shellQuoted(source_.files[phase_]);
+    for (const std::string& o : overrides(panel_)) line += " --set " + shellQuoted(o);
+    return line;
+  }
+
+  void startRecording() {
+    const std::string stem = std::filesystem::path(source_.files[phase_]).stem().string();
+    int n = 1;
+    do {
+      recordingPath_ = "videos/window-" + stem + "-" + std::to_string(n++) + ".mp4";
+    } while (std::filesystem::exists(recordingPath_));
+    render::SinkOptions sink;
+    sink.videoPath = recordingPath_;
+    sink.fps = scene_.view.fps;
+    sink.width = scene_.view.width;
+    sink.height = scene_.view.height;
+    recorder_ = std::make_unique<render::FrameSink>(sink);
+  }
+
+  void stopRecording() {
+    recorder_->finish();
+    message_ = "recorded " + recordingPath_ + " (" + std::to_string(recorder_->frames()) + " frames)";
+    if (!options_.quiet) std::printf("%s\n", message_.c_str());
+    recorder_.reset();
+  }
+
+  struct Drag {
+    std::size_t spring = 0;
+    Vec3 planePoint = Vec3::Zero();   // the grabbed point: the anchor moves in the plane
+    Vec3 planeNormal = Vec3::UnitZ(); // through it, facing the camera
+  };
+
+  SceneSource source_;
+  WindowOptions options_;
+  std::size_t phase_ = 0;
+  std::vector<std::pair<std::string, std::string>> panel_;  // scene-key assignments made in the window
+  Scene scene_;
+  std::unique_ptr<World> world_;
+  std::uint64_t frameIndex_ = 0;
+  bool paused_ = false;
+  std::optional<OrbitCamera> orbit_;  // unset until the user moves the camera
+  std::optional<Drag> drag_;
+  bool orbitingWithLeft_ = false;
+  int lastX_ = -1, lastY_ = -1;
+  PlotHistory history_;
+  std::unique_ptr<render::FrameSink> recorder_;
+  std::string recordingPath_;
+  std::string message_;
+};
+
+void runWindow(const SceneSource& source, const WindowOptions& options) {
+  Session session(source, options);
+  session.run();
+}
+
+}  // namespace rbsim::app

@@ -1,0 +1,11 @@
+#pragma once
+// Scene-file parsing of "particles" blocks into ParticleSystemDef and ParticleLook (keys in
+// README.md, "Scene format"). Internal to scene/; bodies and planes must be parsed first.
+#include "scene/json_fields.h"
+#include "scene/scene.h"
+
+namespace rbsim::scene_detail {
+
+void parseParticleSystems(const JsonObject& root, Scene& scene);
+
+}  // namespace rbsim::scene_detail

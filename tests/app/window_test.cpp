@@ -1,0 +1,149 @@
+// Window mode under Xvfb (issue 8): the real rbsim binary opens its X11 window on a virtual
+// display, shows a few frames and reads the window back from the X server. The image must show
+// the body and the control panel, and outside the panel it must be the off-screen path's frame.
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>  // implementation is in Debian's libstb, linked via rbsim_render
+
+#include "render/frame_data.h"
+#include "render/projection.h"
+#include "window/control_panel.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScene = std::string(RBSIM_WINDOW_DATA_DIR) + "/one_box.json";
+constexpr int kWidth = 640, kHeight = 360;  // the scene's view.size
+constexpr int kFramesShown = 5;
+
+std::pair<int, std::string> run(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer{};
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgba;
+  const unsigned char* at(int x, int y) const { return &rgba[4 * (static_cast<std::size_t>(y) * width + x)]; }
+};
+
+Image readPng(const fs::path& path) {
+  Image image;
+  int channels = 0;
+  unsigned char* pixels = stbi_load(path.c_str(), &image.width, &image.height, &channels, 4);
+  if (pixels == nullptr) return image;
+  image.rgba.assign(pixels, pixels + static_cast<std::size_t>(image.width) * image.height * 4);
+  stbi_image_free(pixels);
+  return image;
+}
+
+class WindowMode : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("rbsim_window_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    // A 24-bit screen: xvfb-run's default is 8 bits, which has no TrueColor visual.
+    const std::string window = "xvfb-run -a -s '-screen 0 1280x1024x24' '" + std::string(RBSIM_BINARY) + "' run '" +
+                               kScene + "' --window --window-frames " + std::to_string(kFramesShown) +
+                               " --screenshot '" + (dir_ / "window.png").string() + "' --quiet";
+    windowRun_ = run(window);
+    const std::string offscreen = "'" + std::string(RBSIM_BINARY) + "' run '" + kScene + "' --frames '" +
+                                  (dir_ / "frames").string() + "' --video '" + (dir_ / "offscreen.mp4").string() +
+                                  "' --quiet";
+    offscreenRun_ = run(offscreen);
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  static fs::path dir_;
+  static std::pair<int, std::string> windowRun_, offscreenRun_;
+};
+
+fs::path WindowMode::dir_;
+std::pair<int, std::string> WindowMode::windowRun_, WindowMode::offscreenRun_;
+
+TEST_F(WindowMode, OpensUnderXvfbAndWritesTheScreenshot) {
+  ASSERT_EQ(windowRun_.first, 0) << "xvfb-run (Debian's xvfb, installed by .ci/setup) and rbsim --window: "
+                                 << windowRun_.second;
+  const Image shot = readPng(dir_ / "window.png");
+  EXPECT_EQ(shot.width, kWidth);
+  EXPECT_EQ(shot.height, kHeight);
+}
+
+TEST_F(WindowMode, ShowsTheBodyWhereTheCameraProjectsIt) {
+  const Image shot = readPng(dir_ / "window.png");
+  ASSERT_EQ(shot.width, kWidth) << windowRun_.second;
+  // The box spins about y at its place, so its centre stays at (0, 1, 0).
+  rbsim::render::Camera camera;
+  camera.eye = glm::vec3(-0.6f, 1.0f, 4.0f);
+  camera.target = glm::vec3(-0.6f, 1.0f, 0.0f);
+  const glm::vec4 clip = rbsim::render::viewProjection(camera, kWidth, kHeight) * glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+  const int x = static_cast<int>(std::lround((clip.x / clip.w * 0.5 + 0.5) * kWidth));
+  const int y = static_cast<int>(std::lround((0.5 - clip.y / clip.w * 0.5) * kHeight));
+  const unsigned char* p = shot.at(x, y);
+  // A red body (0.9, 0.2, 0.1), lit: red well above green and blue; the sky and ground are grey-blue.
+  EXPECT_GT(p[0], p[1] + 60) << "pixel (" << x << ", " << y << ")";
+  EXPECT_GT(p[0], p[2] + 60) << "pixel (" << x << ", " << y << ")";
+}
+
+TEST_F(WindowMode, ShowsTheControlPanelAndOtherwiseTheOffscreenFrame) {
+  ASSERT_EQ(offscreenRun_.first, 0) << offscreenRun_.second;
+  const Image shot = readPng(dir_ / "window.png");
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06d.png", kFramesShown - 1);
+  const Image frame = readPng(dir_ / "frames" / name);
+  ASSERT_EQ(shot.width, kWidth) << windowRun_.second;
+  ASSERT_EQ(frame.width, kWidth) << offscreenRun_.second;
+  const rbsim::app::PanelRect panel = rbsim::app::panelRect(kWidth, kHeight);
+  double outsideDiff = 0.0, insideDiff = 0.0;
+  long outside = 0, inside = 0, outsideOff = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      int diff = 0;
+      for (int c = 0; c < 3; ++c) diff += std::abs(shot.at(x, y)[c] - frame.at(x, y)[c]);
+      const bool inPanel = x >= panel.x - 1 && x <= panel.x + panel.width + 1 && y >= panel.y - 1 &&
+                           y <= panel.y + panel.height + 1;
+      if (inPanel) {
+        insideDiff += diff;
+        ++inside;
+      } else {
+        outsideDiff += diff;
+        ++outside;
+        if (diff > 3 * 8) ++outsideOff;
+      }
+    }
+  }
+  // Same renderer, same step, same camera: equal but for rounding (the panel's ImGui frame is
+  // shared with the variables panel, nothing else differs).
+  EXPECT_LT(outsideDiff / (3.0 * outside), 0.5) << "mean difference per channel outside the control panel";
+  EXPECT_LT(outsideOff, outside / 1000) << "pixels off by more than 8 levels";
+  // The panel is drawn: its area is clearly not the scene behind it.
+  EXPECT_GT(insideDiff / (3.0 * inside), 10.0) << "mean difference per channel inside the control panel";
+}
+
+TEST(WindowModeErrors, NoDisplayAndMisplacedFlagsExitTwoWithAMessage) {
+  const std::string binary = "'" + std::string(RBSIM_BINARY) + "'";
+  auto [code, output] = run("env -u DISPLAY " + binary + " run '" + kScene + "' --window");
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("cannot open the X display"), std::string::npos) << output;
+  std::tie(code, output) = run(binary + " run '" + kScene + "' --screenshot /tmp/never.png");
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("only with --window"), std::string::npos) << output;
+}
+
+}  // namespace

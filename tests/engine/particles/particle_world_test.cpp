@@ -1,0 +1,80 @@
+// Particles in the World: stepped by the StepParticles stage only when there are any, and never
+// changing a rigid body (the coupling is one-way).
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "particle_test_util.h"
+
+namespace rbsim {
+namespace {
+
+using test::stepN;
+
+World boxes(bool withParticles) {
+  Settings settings;
+  World world(settings);
+  world.addPlane(Plane{});
+  for (int i = 0; i < 3; ++i) {
+    BodyDef box;
+    box.name = "box" + std::to_string(i);
+    box.mesh = std::make_shared<Mesh>(makeBox(Vec3(0.5, 0.5, 0.5)));
+    box.position = Vec3(0.6 * i, 1.0 + i, 0.0);
+    box.angularVelocity = Vec3(1.0, 2.0, 0.5 * i);
+    world.addBody(box);
+  }
+  if (withParticles) {
+    ParticleSystemDef def;
+    EmitterDef e;
+    e.position = Vec3(0.5, 4.0, 0.0);
+    e.direction = -Vec3::UnitY();
+    e.rate = 2000.0;
+    e.lifetimeMin = e.lifetimeMax = 1.0;
+    def.emitters.push_back(e);
+    world.addParticleSystem(def);
+  }
+  return world;
+}
+
+TEST(ParticleWorld, TheStageIsSkippedWithoutParticles) {
+  World world = boxes(false);
+  stepN(world, 50);
+  EXPECT_EQ(world.stageStats(Stage::StepParticles).runs, 0u);
+  EXPECT_EQ(world.stageStats(Stage::StepParticles).skipped, 50u);
+  EXPECT_STREQ(stageName(Stage::StepParticles), "step-particles");
+}
+
+TEST(ParticleWorld, ParticlesNeverChangeTheRigidBodies) {
+  World plain = boxes(false);
+  World sprayed = boxes(true);
+  stepN(plain, 480);
+  stepN(sprayed, 480);
+  EXPECT_EQ(sprayed.stageStats(Stage::StepParticles).runs, 480u);
+  EXPECT_GT(sprayed.particleSystems()[0].particles().count(), 1000u);
+  for (std::size_t b = 0; b < plain.bodies().size(); ++b) {
+    const BodyState& a = plain.bodies()[b].state();
+    const BodyState& c = sprayed.bodies()[b].state();
+    EXPECT_EQ(a.position, c.position);
+    EXPECT_EQ(a.orientation.coeffs(), c.orientation.coeffs());
+    EXPECT_EQ(a.linearMomentum, c.linearMomentum);
+    EXPECT_EQ(a.angularMomentum, c.angularMomentum);
+  }
+  EXPECT_NE(plain.stateHash(), sprayed.stateHash()) << "the particles are part of the state";
+}
+
+TEST(ParticleWorld, ABadDefinitionIsRefusedNamingTheField) {
+  World world = boxes(false);
+  ParticleSystemDef def;
+  def.emitters.push_back(EmitterDef{});
+  def.emitters[0].shape = EmitterShape::MeshSurface;
+  def.emitters[0].body = 7;
+  try {
+    world.addParticleSystem(def);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("emitters[0].body"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rbsim
