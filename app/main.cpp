@@ -33,19 +33,23 @@ struct Flags {
   std::vector<std::string> sets;
 
   void attach(CLI::App& cmd) {
-    cmd.add_option("--frames", run.framesDir, "write PNG frames into this folder");
-    cmd.add_option("--video", run.videoPath, "write the MP4 here (default videos/<name>.mp4)");
-    cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here");
+    // An empty value would otherwise read as "flag not given": the flag would be ignored silently.
+    const CLI::Validator nonEmpty([](const std::string& value) { return value.empty() ? "expected a non-empty value" : ""; },
+                                  "NONEMPTY");
+    cmd.add_option("--frames", run.framesDir, "write PNG frames into this folder")->check(nonEmpty);
+    cmd.add_option("--video", run.videoPath, "write the MP4 here (default videos/<name>.mp4)")->check(nonEmpty);
+    cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here")->check(nonEmpty);
     cmd.add_option("--trace-every", run.traceEvery, "trace every K-th step")->check(CLI::Range(1, 1000000000));
-    cmd.add_option("--steps", steps, "number of steps per scene (world.steps)");
-    cmd.add_option("--dt", dt, "time step in seconds (world.dt)");
-    cmd.add_option("--fps", fps, "frames per simulated second (view.fps)");
-    cmd.add_option("--size", size, "image size WxH in pixels (view.size)");
-    cmd.add_option("--integrator", integrator, "integrator name (world.integrator); see `rbsim list`");
-    cmd.add_option("--inertia", inertia, "cube|exact: default inertia method (world.inertia)");
+    cmd.add_option("--steps", steps, "number of steps per scene (world.steps)")->check(nonEmpty);
+    cmd.add_option("--dt", dt, "time step in seconds (world.dt)")->check(nonEmpty);
+    cmd.add_option("--fps", fps, "frames per simulated second (view.fps)")->check(nonEmpty);
+    cmd.add_option("--size", size, "image size WxH in pixels (view.size)")->check(nonEmpty);
+    cmd.add_option("--integrator", integrator, "integrator name (world.integrator); see `rbsim list`")->check(nonEmpty);
+    cmd.add_option("--inertia", inertia, "cube|exact: default inertia method (world.inertia)")->check(nonEmpty);
     cmd.add_option("--particle-integrator", particleIntegrator,
-                   "explicit-euler|semi-implicit-euler: of particle systems naming none (world.particle_integrator)");
-    cmd.add_option("--set", sets, "override any scene key: path=value, e.g. bodies.box.mass=2");
+                   "explicit-euler|semi-implicit-euler: of particle systems naming none (world.particle_integrator)")
+        ->check(nonEmpty);
+    cmd.add_option("--set", sets, "override any scene key: path=value, e.g. bodies.box.mass=2")->check(nonEmpty);
     cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
     cmd.add_flag("--quiet", run.quiet, "print nothing on success");

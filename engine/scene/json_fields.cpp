@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <Eigen/SVD>
 
@@ -12,6 +13,13 @@
 namespace rbsim {
 
 namespace {
+
+// Six significant digits in %g style: std::to_string would print 1e-7 as "0.000000".
+std::string formatNumber(double d) {
+  std::ostringstream out;
+  out << d;
+  return out.str();
+}
 
 const char* typeName(const nlohmann::json& v) {
   return v.is_number() ? "a number" : v.type_name();
@@ -97,7 +105,7 @@ double JsonObject::requiredNumber(const char* key) const {
 
 double JsonObject::positiveNumber(const char* key, double fallback) const {
   const double d = number(key, fallback);
-  if (!(d > 0.0)) fail(key, "expected a positive number, got " + std::to_string(d));
+  if (!(d > 0.0)) fail(key, "expected a positive number, got " + formatNumber(d));
   return d;
 }
 
@@ -181,7 +189,7 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
     const Quat q(n[0], n[1], n[2], n[3]);
     if (normalize && !(q.norm() > 0.0)) o.fail("quaternion", "the zero quaternion has no direction to normalise");
     if (!normalize && std::abs(q.norm() - 1.0) > kRotationTolerance) {
-      o.fail("quaternion", "expected a unit quaternion [w, x, y, z], its norm is " + std::to_string(q.norm()) +
+      o.fail("quaternion", "expected a unit quaternion [w, x, y, z], its norm is " + formatNumber(q.norm()) +
                                " (add \"normalize\": true to have it normalised)");
     }
     return q.normalized();  // within tolerance: removes only the rounding of typed digits
@@ -201,7 +209,7 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
     if (normalize && R.determinant() > 0.0) R = nearestRotation(R);
     if (orthonormalityError(R) > kRotationTolerance || R.determinant() < 0.0) {
       o.fail("matrix", "expected a rotation matrix (orthonormal, determinant +1); ||R^T R - I|| = " +
-                           std::to_string(orthonormalityError(R)) + ", det = " + std::to_string(R.determinant()) +
+                           formatNumber(orthonormalityError(R)) + ", det = " + formatNumber(R.determinant()) +
                            (normalize ? " (no rotation is near a matrix of determinant <= 0)"
                                       : " (add \"normalize\": true for the nearest rotation)"));
     }
@@ -211,7 +219,8 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
   const std::vector<double> n = o.numbers("axis_angle_deg", 4);
   const Vec3 axis(n[0], n[1], n[2]);
   if (!(axis.stableNorm() > 0.0)) o.fail("axis_angle_deg", "the axis must be non-zero");
-  return quatFromAxisAngle(axis.stableNormalized() * n[3] * M_PI / 180.0);
+  // fmod is exact: the same rotation, and 1e308 degrees no longer overflows in the conversion.
+  return quatFromAxisAngle(axis.stableNormalized() * (std::fmod(n[3], 360.0) * M_PI / 180.0));
 }
 
 JsonObject JsonObject::object(const char* key, std::initializer_list<const char*> allowed) const {

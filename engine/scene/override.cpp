@@ -38,6 +38,9 @@ void applyOverride(nlohmann::json& document, const std::string& assignment) {
     throw InputError("", "--set", "expected key=value (e.g. world.dt=0.001), got \"" + assignment + "\"");
   }
   const std::vector<std::string> parts = splitPath(assignment.substr(0, eq));
+  if (parts.empty()) {
+    throw InputError("", "--set", "expected a key before '=' (e.g. world.dt=0.001), got \"" + assignment + "\"");
+  }
   const std::string text = assignment.substr(eq + 1);
   nlohmann::json value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (value.is_discarded()) value = text;  // a bare word such as rk4 or cube is a string

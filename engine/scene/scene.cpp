@@ -162,6 +162,8 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a folder; expected a scene file (JSON)");
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
   std::stringstream buffer;

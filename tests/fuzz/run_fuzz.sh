@@ -23,9 +23,10 @@ if ! command -v clang++ > /dev/null; then
 fi
 bash .ci/setup
 
+mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" \
-  -DRBSIM_SANITIZE=ON -DRBSIM_FUZZ=ON -DRBSIM_BUILD_BENCH=OFF > "$build.configure.log"
+  -DRBSIM_SANITIZE=ON -DRBSIM_FUZZ=ON -DRBSIM_BUILD_BENCH=OFF > "$build/configure.log"
 cmake --build "$build" -j2 --target scene_fuzzer obj_fuzzer
 
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1"

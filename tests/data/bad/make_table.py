@@ -43,7 +43,8 @@ def main():
             code, message = run(binary, case, tmp)
         if code != case.get("exit", 2):
             sys.exit(f"{case['name']}: rbsim exited {code}, cases.json expects {case.get('exit', 2)}: {message}")
-        command = " ".join(["rbsim"] + [a.replace("{dir}/", "").replace("{tmp}", "$TMP") for a in case["args"]])
+        shown = [a.replace("{dir}/", "").replace("{dir}", ".").replace("{tmp}", "$TMP") for a in case["args"]]
+        command = " ".join(["rbsim"] + [a if a else "''" for a in shown])
         env = " ".join(f"{k}={v.replace('{dir}/', '')}" for k, v in case.get("env", {}).items())
         rows.append(f"| `{case['name']}` | {cell(case['why'])} | `{cell((env + ' ' if env else '') + command)}` "
                     f"| {code} | {cell(message) if message else '(runs; prints nothing with --quiet)'} |")

@@ -1,5 +1,5 @@
-// Long runs: a tumbling box for 1e6 steps and a pile of 100 boxes for 1e5 steps (RBSIM_STRESS=long;
-// 1e5 and 5e3 by default, stress_length.h) stay finite, keep their energy bounded and hold their
+// Long runs: a tumbling box for 1e6 steps, a pile of 100 boxes and a particle fountain for 1e5
+// steps each (RBSIM_STRESS=long; 1e5, 5e3 and 5e3 by default, stress_length.h) stay finite, keep their energy bounded and hold their
 // memory flat: the peak resident set and the heap in use are read at checkpoints (1e4 and 1e5
 // steps, and the end) and may not grow after the first (a leak or an ever-growing cache would).
 #include <algorithm>
@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "mass/mass_properties.h"
+#include "particles/particle_def.h"
+#include "particles/particle_system.h"
 #include "stress/stress_length.h"
 #include "test_util.h"
 #include "world/world.h"
@@ -150,6 +152,60 @@ TEST(LongRun, HundredBoxPileStaysFiniteLosesEnergyAndKeepsFlatMemory) {
   EXPECT_LE(energyMax, energy0 * (1.0 + 1e-9));
   EXPECT_GT(lowest, 0.5 - 0.05) << "a box centre sank more than 5 cm into the plane";
   EXPECT_LT(fastestAtEnd, 0.05) << "the pile should be at rest";
+  memory.expectFlat();
+}
+
+// A fountain of 1000 particles/s living 2 s, launched at 2 to 6 m/s from a disc on a bouncing
+// plane (restitution 0.3), dt = 1/240 s: about 2000 alive at once, born and dying every step.
+// Launch gives each at most e = v^2 / 2 = 18 J/kg; gravity under semi-implicit Euler and the
+// bounces only take energy away, so no particle may ever hold more.
+TEST(LongRun, ParticleFountainStaysFiniteBoundedAndKeepsFlatMemory) {
+  const long steps = test::stressSteps(5000, 100000);
+  const Vec3 gravity(0.0, -9.81, 0.0);
+  Settings settings;
+  settings.timeStep = 1.0 / 240.0;
+  settings.gravity = gravity;
+  World world(settings);
+  world.addPlane(Plane{});
+  ParticleSystemDef def;
+  def.capacity = 4000;
+  def.collision.restitution = 0.3;
+  EmitterDef fountain;
+  fountain.shape = EmitterShape::Disc;
+  fountain.radius = 0.2;
+  fountain.rate = 1000.0;
+  fountain.speedMin = 2.0;
+  fountain.speedMax = 6.0;
+  fountain.spreadDegrees = 20.0;
+  fountain.lifetimeMin = fountain.lifetimeMax = 2.0;
+  def.emitters.push_back(fountain);
+  world.addParticleSystem(def);
+  const ParticleSystem& system = world.particleSystems()[0];
+  const double energyCeiling = 0.5 * fountain.speedMax * fountain.speedMax * (1.0 + 1e-9);  // [J/kg]
+  double energyMax = 0.0, lowest = 0.0;
+  std::size_t mostAlive = 0;
+  bool allFinite = true;
+  MemoryLog memory(test::longStress() ? std::vector<long>{10000, steps} : std::vector<long>{2500, steps});
+  for (long i = 1; i <= steps; ++i) {
+    world.step();
+    const ParticleStore& p = system.particles();
+    mostAlive = std::max(mostAlive, p.count());
+    if (i % 50 == 0 || i == steps) {
+      for (std::size_t k = 0; k < p.count(); ++k) {
+        allFinite = allFinite && p.position[k].allFinite() && p.velocity[k].allFinite();
+        energyMax = std::max(energyMax, 0.5 * p.velocity[k].squaredNorm() - gravity.dot(p.position[k]));
+        lowest = std::min(lowest, p.position[k].y());
+      }
+    }
+    memory.afterStep(i);
+  }
+  RecordProperty("most_alive", std::to_string(mostAlive));
+  RecordProperty("energy_max_j_per_kg", std::to_string(energyMax));
+  EXPECT_TRUE(allFinite);
+  EXPECT_LE(energyMax, energyCeiling);
+  EXPECT_GE(lowest, -1e-9) << "a particle went through the plane";
+  EXPECT_LE(mostAlive, 2000u + 5u) << "rate x lifetime, within a step's births";
+  EXPECT_EQ(system.lost(), 0u) << "the store never filled";
   memory.expectFlat();
 }
 
