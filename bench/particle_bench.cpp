@@ -19,18 +19,19 @@
 #include "math/uniform_random.h"
 #include "render/offscreen_renderer.h"
 #include "run/particle_view.h"
+#include "memory_bound.h"
 #include "world/world.h"
 
 namespace {
 
 using namespace rbsim;
+using namespace rbsim::bench;
 
 constexpr int kParticleCounts[] = {1000, 100000, 1000000};
 constexpr int kOutOfCacheParticles = 1000000;  // the count the bound is stated for
 constexpr int kSpriteCount = 100000;
 constexpr int kImageWidth = 1280, kImageHeight = 720;  // [px]
 constexpr std::uint64_t kSeed = 20261122;
-constexpr std::size_t kKiB = 1024, kMiB = 1024 * kKiB;
 constexpr double kHalfSpread = 5.0;  // [m] particles fill [-5, 5] x [0, 10] x [-5, 5]
 constexpr double kMaxSpeed = 5.0;    // [m/s] per component
 
@@ -110,26 +111,7 @@ void stepParticles(benchmark::State& state) {
   state.counters["state_bytes_per_particle"] = static_cast<double>(kStateBytes);
 }
 
-// The last-level cache as the system reports it (a virtual machine may report the host's).
-std::size_t lastLevelCacheBytes() {
-  for (int name : {_SC_LEVEL4_CACHE_SIZE, _SC_LEVEL3_CACHE_SIZE, _SC_LEVEL2_CACHE_SIZE}) {
-    const long bytes = sysconf(name);
-    if (bytes > 0) return static_cast<std::size_t>(bytes);
-  }
-  return 0;
-}
 
-// memcpy out of every cache; bytes processed = read + written, the step's convention.
-void copyBuffer(benchmark::State& state) {
-  const std::size_t size = std::max<std::size_t>(256 * kMiB, 2 * lastLevelCacheBytes());
-  std::vector<char> source(size, 1), destination(size, 0);
-  for (auto _ : state) {
-    std::memcpy(destination.data(), source.data(), size);
-    benchmark::DoNotOptimize(destination.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(2 * size));
-}
 
 // A fountain-sized cloud of 1e5 particles in front of the default camera, as the app draws it.
 struct SpriteScene {
@@ -182,34 +164,12 @@ void renderNoSprites(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
-class SummaryReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs) {
-      if (run.error_occurred) continue;
-      if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
-      for (const char* rate : {"items_per_second", "bytes_per_second"}) {
-        const auto it = run.counters.find(rate);
-        if (it != run.counters.end()) rates_[run.run_name.str()] = it->second.value;
-      }
-    }
-  }
-  double rate(const std::string& name) const {
-    const auto it = rates_.find(name);
-    return it == rates_.end() ? 0.0 : it->second;
-  }
-
- private:
-  std::map<std::string, double> rates_;
-};
-
 void printSummary(const SummaryReporter& results) {
   std::printf("\nBytes read + written per particle-step (particle_system.cpp, one pass):\n");
   for (const FieldTraffic& f : kEveryStep) std::printf("  %-14s read %3zu  written %3zu\n", f.field, f.readBytes, f.writtenBytes);
   const double bytes = static_cast<double>(bytesPerParticleStep());
   std::printf("  total %.0f B per particle-step; state %zu B per particle (with colour and size)\n", bytes, kStateBytes);
-  const double bandwidth = results.rate("memcpy");
+  const double bandwidth = results.rate(copyBenchmarkName(outOfCacheBytes()));
   const double measured = results.rate("step/" + std::to_string(kOutOfCacheParticles));
   if (bandwidth > 0.0 && measured > 0.0) {
     std::printf("\nAt %d particles: memcpy %.2f GB/s -> bound %.4g particle-steps/s; measured %.4g; bound/x = %.2f\n",
@@ -231,7 +191,7 @@ int main(int argc, char** argv) {
   for (int count : kParticleCounts) {
     benchmark::RegisterBenchmark("step", stepParticles)->Arg(count)->Unit(benchmark::kMicrosecond);
   }
-  benchmark::RegisterBenchmark("memcpy", copyBuffer)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("memcpy", copyBuffer)->Arg(static_cast<std::int64_t>(outOfCacheBytes()))->Unit(benchmark::kMillisecond);
   using Blend = ParticleLook::Blend;
   benchmark::RegisterBenchmark("build_1e5_sprites/additive", buildSprites, Blend::Additive)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("build_1e5_sprites/alpha", buildSprites, Blend::Alpha)->Unit(benchmark::kMillisecond);

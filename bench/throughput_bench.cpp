@@ -17,16 +17,17 @@
 #include <vector>
 
 #include "random_boxes.h"
+#include "memory_bound.h"
 #include "world/world.h"
 
 namespace {
 
 using namespace rbsim;
+using namespace rbsim::bench;
 
 constexpr int kBodyCounts[] = {1, 1000, 100000};
 constexpr int kOutOfCacheBodies = 100000;  // the count the 2x goal is stated for
 constexpr std::uint64_t kSeed = 20240301;
-constexpr std::size_t kKiB = 1024, kMiB = 1024 * kKiB;
 
 // Boxes of random size (each its own mesh, so its 8 body-space vertices are its own memory, as
 // for bodies loaded from different shapes), random pose, velocity and spin; gravity on and no
@@ -94,57 +95,13 @@ void stepBodies(benchmark::State& state, Integrator integrator) {
   state.counters["bytes_per_body"] = static_cast<double>(bytesPerBodyStep(integrator));
 }
 
-// The last-level cache as the system reports it (a virtual machine may report the host's).
-std::size_t lastLevelCacheBytes() {
-  for (int name : {_SC_LEVEL4_CACHE_SIZE, _SC_LEVEL3_CACHE_SIZE, _SC_LEVEL2_CACHE_SIZE}) {
-    const long bytes = sysconf(name);
-    if (bytes > 0) return static_cast<std::size_t>(bytes);
-  }
-  return 0;
-}
 
-// Out of cache: at least 256 MiB and twice what the last-level cache is said to hold.
-std::size_t outOfCacheBytes() { return std::max<std::size_t>(256 * kMiB, 2 * lastLevelCacheBytes()); }
 
-// memcpy of state.range(0) bytes; bytes processed = read + written, the step's convention.
-void copyBuffer(benchmark::State& state) {
-  const std::size_t size = static_cast<std::size_t>(state.range(0));
-  std::vector<char> source(size, 1), destination(size, 0);
-  for (auto _ : state) {
-    std::memcpy(destination.data(), source.data(), size);
-    benchmark::DoNotOptimize(destination.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(2 * size));
-}
 
-// Keeps every run's rates (the median when repetitions are aggregated) for the summary.
-class SummaryReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs) {
-      if (run.error_occurred) continue;
-      if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
-      for (const char* rate : {"items_per_second", "bytes_per_second"}) {
-        const auto it = run.counters.find(rate);
-        if (it != run.counters.end()) rates_[run.run_name.str()] = it->second.value;
-      }
-    }
-  }
-  double rate(const std::string& name) const {
-    const auto it = rates_.find(name);
-    return it == rates_.end() ? 0.0 : it->second;
-  }
-
- private:
-  std::map<std::string, double> rates_;
-};
 
 std::string stepName(const std::string& integrator, int count) {
   return "step/" + integrator + "/" + std::to_string(count);
 }
-std::string copyName(std::size_t bytes) { return "memcpy/" + std::to_string(bytes); }
 
 void printSummary(const SummaryReporter& results, const std::vector<std::size_t>& copySizes) {
   std::printf("\nBytes read + written per body-step by every integrator (world.cpp, rigid_body.cpp):\n");
@@ -154,9 +111,9 @@ void printSummary(const SummaryReporter& results, const std::vector<std::size_t>
   std::printf("  plus what the integrator reads of R, v, omega, I_body, E, principal moments\n");
   std::printf("\nmemcpy bandwidth (read + written; GB = 1e9 B, the table above counts 2^30):\n");
   for (std::size_t size : copySizes) {
-    std::printf("  %10zu KiB  %7.2f GB/s\n", size / kKiB, results.rate(copyName(size)) / 1e9);
+    std::printf("  %10zu KiB  %7.2f GB/s\n", size / kKiB, results.rate(copyBenchmarkName(size)) / 1e9);
   }
-  const double bandwidth = results.rate(copyName(copySizes.back()));
+  const double bandwidth = results.rate(copyBenchmarkName(copySizes.back()));
   if (bandwidth <= 0.0) return;  // the filter left out the out-of-cache copy
   std::printf("\nAt %d bodies: bound = %.2f GB/s / (bytes per body-step); goal: bound/x <= 2\n", kOutOfCacheBodies,
               bandwidth / 1e9);

@@ -7,17 +7,12 @@
 #include "collision/broadphase/brute_force.h"
 #include "collision/narrowphase/convex_convex.h"
 #include "render/debug_shapes.h"
+#include "run/format.h"
 #include "run/to_glm.h"
 
 namespace rbsim::app {
 
 namespace {
-
-std::string format(const char* fmt, double a, double b = 0.0) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, fmt, a, b);
-  return buffer;
-}
 
 constexpr float kNormalLength = 0.3f;       // drawn length of a contact normal [m]
 constexpr float kContactPointPixels = 9.0f;  // [px]

@@ -3,19 +3,10 @@
 #include <cstdio>
 #include <string>
 
+#include "run/format.h"
 #include "run/to_glm.h"
 
 namespace rbsim::app {
-
-namespace {
-
-std::string format(const char* pattern, double a, double b = 0.0) {
-  char text[96];
-  std::snprintf(text, sizeof text, pattern, a, b);
-  return text;
-}
-
-}  // namespace
 
 void addSoftView(const World& world, render::FrameData& frame) {
   for (const SoftBody& soft : world.softBodies()) {

@@ -39,6 +39,8 @@ constexpr double kDragDampingRatio = 0.7;     // [1] of critical damping 2 sqrt(
 // Arrows of the drag: the force is drawn 1 m long per body weight m|g| (or per m * 9.81 N when
 // there is no gravity), the torque about the centre of mass 1 m per weight times metre.
 constexpr double kStandardGravity = 9.81;     // [m/s^2]
+// ImGui asserts on a zero frame time; frames closer than this are counted as this long.
+constexpr float kMinFrameSeconds = 1e-3f;  // [s]
 constexpr glm::vec3 kDragForceColor{1.0f, 1.0f, 1.0f};
 constexpr glm::vec3 kDragTorqueColor{0.3f, 1.0f, 0.4f};
 
@@ -70,7 +72,7 @@ class Session {
       ui.input.mouseY = static_cast<float>(input.mouseY);
       for (int b = 0; b < 3; ++b) ui.input.mouseDown[b] = input.down[b];
       ui.input.wheel = input.wheel;
-      ui.input.deltaSeconds = std::max(1e-3f, std::chrono::duration<float>(frameStart - last).count());
+      ui.input.deltaSeconds = std::max(kMinFrameSeconds, std::chrono::duration<float>(frameStart - last).count());
       last = frameStart;
       PanelRequests requests;
       ui.draw = [&] { requests = drawControlPanel(panelView(), scene_.view.width, scene_.view.height); };

@@ -9,6 +9,9 @@ namespace rbsim::app {
 
 namespace {
 
+// A ray this close to parallel with a plane (|cos| of the angle to the plane) meets it nowhere useful.
+constexpr double kParallelCosine = 1e-9;  // [1]
+
 // Moller and Trumbore, "Fast, minimum storage ray-triangle intersection" (1997): the distance
 // along the ray, or a negative number when it misses or the triangle faces away.
 double rayTriangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -60,7 +63,7 @@ std::optional<Pick> pickBody(const World& world, const Ray& ray) {
 
 std::optional<Vec3> rayPlane(const Ray& ray, const Vec3& point, const Vec3& normal) {
   const double along = ray.direction.dot(normal);
-  if (std::abs(along) < 1e-9) return std::nullopt;
+  if (std::abs(along) < kParallelCosine) return std::nullopt;
   const double distance = (point - ray.origin).dot(normal) / along;
   return ray.origin + distance * ray.direction;
 }

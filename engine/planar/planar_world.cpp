@@ -10,6 +10,12 @@ namespace rbsim {
 
 namespace {
 
+// A line normal may be off unit length by this much (rounding of a normalised input).
+constexpr double kUnitTolerance = 1e-9;  // [1]
+// The reference edge stays on polygon a unless b's axis separates by more than this fraction of
+// the slop: equal axes (a box resting flat on another) would otherwise swap from step to step.
+constexpr double kReferenceBias = 1e-3;  // [1] of contactSlop
+
 Vec2 outwardNormal(const std::vector<Vec2>& corners, std::size_t edge) {
   const Vec2 d = corners[(edge + 1) % corners.size()] - corners[edge];
   return Vec2(d.y(), -d.x()).normalized();  // counter-clockwise polygons
@@ -64,7 +70,7 @@ std::size_t PlanarWorld::addBody(const PlanarBody& body) {
 }
 
 void PlanarWorld::addLine(const PlanarLine& line) {
-  if (std::abs(line.normal.norm() - 1.0) > 1e-9) throw std::invalid_argument("planar line: expected a unit normal");
+  if (std::abs(line.normal.norm() - 1.0) > kUnitTolerance) throw std::invalid_argument("planar line: expected a unit normal");
   lines_.push_back(line);
 }
 
@@ -75,8 +81,7 @@ void PlanarWorld::collidePolygons(std::size_t i, std::size_t j, const std::vecto
   const auto [separationA, edgeA] = maxSeparation(a, b);
   const auto [separationB, edgeB] = maxSeparation(b, a);
   if (std::max(separationA, separationB) > settings_.contactMargin) return;
-  // A small preference for a, so that the choice does not flip between equal axes each step.
-  const bool referenceIsA = separationA >= separationB - 1e-3 * settings_.contactSlop;
+  const bool referenceIsA = separationA >= separationB - kReferenceBias * settings_.contactSlop;
   const std::vector<Vec2>& reference = referenceIsA ? a : b;
   const std::vector<Vec2>& incident = referenceIsA ? b : a;
   const std::size_t edge = referenceIsA ? edgeA : edgeB;

@@ -11,6 +11,9 @@ namespace rbsim::scene_detail {
 
 namespace {
 
+// Nodes within this of the pinned face's coordinate lie on it (the grid puts them there exactly,
+// up to the rounding of extents * i / n).
+constexpr double kOnFaceTolerance = 1e-12;  // [m]
 // More cells than this per axis is a typo or a machine-filling mistake (1e6 tetrahedra).
 constexpr int kMaxCellsPerAxis = 60;
 
@@ -27,7 +30,7 @@ void pinFace(const JsonObject& s, SoftBodyDef& def) {
   double extreme = which % 2 == 0 ? INFINITY : -INFINITY;
   for (const Vec3& p : def.mesh.nodes) extreme = which % 2 == 0 ? std::min(extreme, p[axis]) : std::max(extreme, p[axis]);
   for (std::size_t i = 0; i < def.mesh.nodes.size(); ++i) {
-    if (std::abs(def.mesh.nodes[i][axis] - extreme) < 1e-12) def.pinned.push_back(static_cast<std::uint32_t>(i));
+    if (std::abs(def.mesh.nodes[i][axis] - extreme) < kOnFaceTolerance) def.pinned.push_back(static_cast<std::uint32_t>(i));
   }
 }
 

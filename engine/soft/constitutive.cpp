@@ -23,6 +23,10 @@ constexpr ModelName kModelNames[] = {
 
 double doubleContraction(const Mat3& a, const Mat3& b) { return (a.array() * b.array()).sum(); }
 
+// The two strain measures of seed 002 1.1: Cauchy's, linear in F, and Green's, zero under rotation.
+Mat3 cauchyStrain(const Mat3& F) { return 0.5 * (F + F.transpose()) - Mat3::Identity(); }
+Mat3 greenStrain(const Mat3& F) { return 0.5 * (F.transpose() * F - Mat3::Identity()); }
+
 }  // namespace
 
 const char* constitutiveModelName(ConstitutiveModel model) {
@@ -71,11 +75,11 @@ double strainEnergyDensity(const Elasticity& e, const Mat3& F) {
   const Mat3 I = Mat3::Identity();
   switch (e.model) {
     case ConstitutiveModel::Linear: {
-      const Mat3 eps = 0.5 * (F + F.transpose()) - I;
+      const Mat3 eps = cauchyStrain(F);
       return mu * doubleContraction(eps, eps) + 0.5 * lambda * eps.trace() * eps.trace();
     }
     case ConstitutiveModel::StVenantKirchhoff: {
-      const Mat3 G = 0.5 * (F.transpose() * F - I);
+      const Mat3 G = greenStrain(F);
       return mu * doubleContraction(G, G) + 0.5 * lambda * G.trace() * G.trace();
     }
     case ConstitutiveModel::Corotated: {
@@ -98,11 +102,11 @@ Mat3 firstPiolaStress(const Elasticity& e, const Mat3& F) {
   const Mat3 I = Mat3::Identity();
   switch (e.model) {
     case ConstitutiveModel::Linear: {
-      const Mat3 eps = 0.5 * (F + F.transpose()) - I;
+      const Mat3 eps = cauchyStrain(F);
       return 2.0 * mu * eps + lambda * eps.trace() * I;
     }
     case ConstitutiveModel::StVenantKirchhoff: {
-      const Mat3 G = 0.5 * (F.transpose() * F - I);
+      const Mat3 G = greenStrain(F);
       return F * (2.0 * mu * G + lambda * G.trace() * I);
     }
     case ConstitutiveModel::Corotated: {
@@ -140,7 +144,7 @@ Mat3 stressDifferential(const Elasticity& e, const StressLinearization& at, cons
     case ConstitutiveModel::Linear:
       return mu * (dF + dF.transpose()) + lambda * dF.trace() * I;
     case ConstitutiveModel::StVenantKirchhoff: {
-      const Mat3 G = 0.5 * (F.transpose() * F - I);
+      const Mat3 G = greenStrain(F);
       const Mat3 dG = 0.5 * (dF.transpose() * F + F.transpose() * dF);
       return dF * (2.0 * mu * G + lambda * G.trace() * I) + F * (2.0 * mu * dG + lambda * dG.trace() * I);
     }

@@ -225,7 +225,11 @@ void World::step() {
       for (const RigidBody& body : bodies_) softContactShapes_.push_back(convexShapeOf(body.mesh()));
     }
     for (SoftBody& soft : softBodies_) {
-      soft.step(settings_.timeStep, settings_.gravity, planes_, planeMaterials_);
+      try {
+        soft.step(settings_.timeStep, settings_.gravity, planes_, planeMaterials_);
+      } catch (const std::domain_error& e) {  // non-finite nodes, or an inverted neo-Hookean element
+        throw SimulationError("step " + std::to_string(stepCount_) + ": " + e.what());
+      }
       if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, softContactShapes_, bodyMaterials_, soft.material());
     }
   });
