@@ -28,8 +28,8 @@ void addSoftView(const World& world, render::FrameData& frame) {
   const SoftBody& soft = world.softBodies().front();
   std::vector<std::pair<std::string, std::string>>& rows = frame.overlay.rows;
   rows.push_back({"soft body", soft.name() + format(" (%.0f tetrahedra, %.3g kg)", static_cast<double>(soft.tetCount()), soft.mass())});
-  rows.push_back({"model", std::string(constitutiveModelName(soft.elasticity().model)) +
-                               format(", mu %.3g Pa, lambda %.3g Pa", soft.elasticity().lame.mu, soft.elasticity().lame.lambda)});
+  rows.push_back({"model", constitutiveModelName(soft.elasticity().model)});
+  rows.push_back({"Lame mu, lambda", format("%.3g Pa, %.3g Pa", soft.elasticity().lame.mu, soft.elasticity().lame.lambda)});
   std::string integrator = softIntegratorName(soft.integrator());
   if (soft.integrator() == SoftIntegrator::BackwardEuler) integrator += format(", %.0f CG iterations", soft.lastIterations());
   rows.push_back({"soft integrator", integrator});
