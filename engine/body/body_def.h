@@ -11,6 +11,8 @@
 
 namespace rbsim {
 
+struct FracturePattern;  // fracture/fracture.h
+
 struct BodyDef {
   std::string name = "body";
   std::shared_ptr<const Mesh> mesh;        // body space: the origin is the centre of mass
@@ -28,6 +30,9 @@ struct BodyDef {
   // Set when the shape is a box primitive: its half extents [m] in body axes, which lets the
   // narrow phase use the box-box separating-axis test instead of GJK on the vertex list.
   std::optional<Vec3> boxHalfExtents;
+  // Set for a body that breaks into these pieces when a contact impulse exceeds the pattern's
+  // threshold (seed 000 "Fracture"; World stage BreakBodies).
+  std::shared_ptr<const FracturePattern> fracture;
 };
 
 }  // namespace rbsim

@@ -1,58 +1,16 @@
 #include "particles/particle_collision.h"
 
-#include <cmath>
-#include <limits>
-
 namespace rbsim {
 
-namespace {
-// Faces whose normals and offsets agree this closely are one plane (a box face's two triangles).
-constexpr double kSamePlaneTolerance = 1e-9;  // [1] and [m]
-}  // namespace
-
-ConvexShape convexShapeOf(const Mesh& mesh) {
-  ConvexShape shape;
-  for (const Vec3& p : mesh.vertices) shape.boundingRadius = std::max(shape.boundingRadius, p.norm());
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3& a = mesh.vertices[t[0]];
-    const Vec3 n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
-    if (!(n.norm() > 0.0)) continue;  // degenerate: no plane
-    const Vec3 unit = n.normalized();
-    const double offset = unit.dot(a);
-    bool known = false;
-    for (std::size_t f = 0; f < shape.normals.size() && !known; ++f) {
-      known = (shape.normals[f] - unit).norm() < kSamePlaneTolerance &&
-              std::abs(shape.offsets[f] - offset) < kSamePlaneTolerance;
-    }
-    if (!known) {
-      shape.normals.push_back(unit);
-      shape.offsets.push_back(offset);
-    }
-  }
-  return shape;
-}
-
-FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local) {
-  FaceDistance out{0, -std::numeric_limits<double>::infinity()};
-  for (std::size_t f = 0; f < shape.normals.size(); ++f) {
-    const double d = shape.normals[f].dot(local) - shape.offsets[f];
-    if (d > out.distance) out = {f, d};
-  }
-  return out;
-}
-
-bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const ConvexShape& shape, const ParticleCollisionDef& c) {
+bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const BodyShape& shape, const ParticleCollisionDef& c) {
   const Vec3 arm = x - body.position();
-  const double reach = shape.boundingRadius + c.radius;
-  if (arm.squaredNorm() > reach * reach || shape.normals.empty()) return false;
+  const double reach = shape.convex.boundingRadius + c.radius;
+  if (arm.squaredNorm() > reach * reach) return false;  // before the rotation, which costs more
   const Mat3& R = body.rotation();
-  const Vec3 local = R.transpose() * arm;
-  // The signed distance to the convex set is at least the largest face distance; inside, it is
-  // exactly that, and the face it belongs to is the nearest way out.
-  const auto [face, largest] = nearestFace(shape, local);
-  const double depth = c.radius - largest;
+  const SurfaceQuery surface = querySurface(shape, R.transpose() * arm, c.radius);
+  const double depth = c.radius - surface.distance;
   if (!(depth > 0.0)) return false;
-  const Vec3 normal = R * shape.normals[face];
+  const Vec3 normal = R * surface.normal;
   x += depth * normal;
   const Vec3 surfaceVelocity = body.velocity() + body.angularVelocity().cross(x - body.position());
   v = surfaceVelocity + respond(v - surfaceVelocity, normal, c);

@@ -9,29 +9,12 @@
 #include <vector>
 
 #include "body/rigid_body.h"
+#include "collision/body_shape.h"
 #include "collision/contact.h"
 #include "geometry/mesh.h"
 #include "particles/particle_def.h"
 
 namespace rbsim {
-
-// A body's solid as the intersection of its face planes' inner half-spaces, in body frame: exact
-// for convex meshes (boxes), the convex core of a concave one.
-struct ConvexShape {
-  std::vector<Vec3> normals;    // unit, outward
-  std::vector<double> offsets;  // n . p = offset on the face [m]
-  double boundingRadius = 0.0;  // every vertex within it of the body origin [m]
-};
-ConvexShape convexShapeOf(const Mesh& mesh);
-
-// The face of the shape a body-frame point is least deep behind, and its signed distance to that
-// face's plane: the signed distance to the convex set when the point is inside (< 0), a lower
-// bound of it outside. Empty shapes give face 0 at -infinity.
-struct FaceDistance {
-  std::size_t face = 0;
-  double distance = 0.0;  // [m]
-};
-FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local);
 
 // The velocity relative to a surface of normal n after the impact, when it approaches (v.n < 0).
 inline Vec3 respond(const Vec3& v, const Vec3& n, const ParticleCollisionDef& c) {
@@ -53,8 +36,9 @@ inline bool collidePlane(Vec3& x, Vec3& v, const Plane& plane, const ParticleCol
   return true;
 }
 
-// Keeps x outside the body's convex shape by c.radius, pushing it out through the face it is
-// least deep behind; the response uses the velocity relative to the body's surface point.
-bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const ConvexShape& shape, const ParticleCollisionDef& c);
+// Keeps x outside the body's solid by c.radius, pushing it out along the surface normal (seed 000
+// "Collision Detection": a point in object space tested against the implicit volume); the
+// response uses the velocity relative to the body's surface point.
+bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const BodyShape& shape, const ParticleCollisionDef& c);
 
 }  // namespace rbsim

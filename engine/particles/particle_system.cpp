@@ -30,26 +30,22 @@ ParticleSystem::ParticleSystem(const ParticleSystemDef& def, const std::vector<R
   for (const EmitterDef& e : def_.emitters) emitters_.emplace_back(e, bodies);
   if (def_.cloth.enabled) buildCloth(def_.cloth, store_, springs_, clothTriangles_);
   if (!springs_.empty() || def_.flock.enabled) force_.assign(def_.capacity, Vec3::Zero());
-  for (const RigidBody& body : bodies) shapes_.push_back(convexShapeOf(body.mesh()));
 }
 
 void ParticleSystem::step(double t, double dt, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-                          const std::vector<Plane>& planes) {
+                          const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes) {
   for (Emitter& emitter : emitters_) {
     const std::size_t before = store_.count();
     lost_ += emitter.emit(t, dt, store_, random_, bodies);
     emitted_ += store_.count() - before;
   }
-  if (def_.collision.bodies) {
-    for (std::size_t b = shapes_.size(); b < bodies.size(); ++b) shapes_.push_back(convexShapeOf(bodies[b].mesh()));
-  }
   const double h = dt / def_.substeps;
-  for (int k = 0; k < def_.substeps; ++k) substep(t + k * h, h, gravity, bodies, planes);
+  for (int k = 0; k < def_.substeps; ++k) substep(t + k * h, h, gravity, bodies, shapes, planes);
   if (++steps_ % kDivergenceCheckInterval == 0) checkFinite(t, dt);
 }
 
 void ParticleSystem::substep(double t, double h, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-                             const std::vector<Plane>& planes) {
+                             const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes) {
   ParticleStore& s = store_;
   const std::size_t n = s.count();
   const bool pairForces = !force_.empty();
@@ -102,7 +98,7 @@ void ParticleSystem::substep(double t, double h, const Vec3& gravity, const std:
         else if (speed < def_.flock.minSpeed && speed > 0.0) v *= def_.flock.minSpeed / speed;
       }
       if (hitBodies) {
-        for (std::size_t b = 0; b < bodies.size(); ++b) collideBody(x, v, bodies[b], shapes_[b], c);
+        for (std::size_t b = 0; b < bodies.size(); ++b) collideBody(x, v, bodies[b], shapes[b], c);
       }
       // Planes last: a body may push a particle, a plane never lets it below.
       if (hitPlanes) {

@@ -28,7 +28,7 @@ class ParticleSystem {
   // Every kDivergenceCheckInterval steps, throws SimulationError naming the system, a particle
   // and the integrator if a particle has left the finite numbers.
   void step(double t, double dt, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-            const std::vector<Plane>& planes);
+            const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes);
 
   const ParticleSystemDef& def() const { return def_; }
   const ParticleStore& particles() const { return store_; }
@@ -43,7 +43,7 @@ class ParticleSystem {
 
  private:
   void substep(double t, double h, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-               const std::vector<Plane>& planes);
+               const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes);
   // A pass of its own over the velocities, made every few steps: the same test inside the step's
   // pass cost 17 % of a step (bench/particle_bench), this one costs 24 B per particle every
   // kDivergenceCheckInterval steps, about 1 % of the step's 128 B.
@@ -57,7 +57,6 @@ class ParticleSystem {
   std::vector<ParticleSpring> springs_;
   std::vector<Triangle> clothTriangles_;
   std::vector<Vec3> force_;          // pair forces (springs, flocking) of the current substep [N]
-  std::vector<ConvexShape> shapes_;  // per rigid body, made when the body is first met
   std::uint64_t steps_ = 0;
   std::uint64_t emitted_ = 0;
   std::uint64_t lost_ = 0;

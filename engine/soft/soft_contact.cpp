@@ -6,7 +6,7 @@
 
 namespace rbsim {
 
-int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<ConvexShape>& shapes,
+int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                          const std::vector<Material>& materials, const Material& softMaterial) {
   int touching = 0;
   std::vector<Vec3>& x = soft.positions();
@@ -14,17 +14,17 @@ int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const s
   const std::vector<double>& m = soft.nodeMasses();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     RigidBody& body = bodies[b];
-    const ConvexShape& shape = shapes[b];
-    if (shape.normals.empty()) continue;
+    const BodyShape& shape = shapes[b];
     const Material material = combine(softMaterial, materials[b]);
     const Mat3& R = body.rotation();
     for (std::size_t i = 0; i < x.size(); ++i) {
       const Vec3 arm = x[i] - body.position();
-      if (arm.squaredNorm() > shape.boundingRadius * shape.boundingRadius) continue;
-      const auto [face, largest] = nearestFace(shape, R.transpose() * arm);
+      if (arm.squaredNorm() > shape.convex.boundingRadius * shape.convex.boundingRadius) continue;
+      const SurfaceQuery surface = querySurface(shape, R.transpose() * arm, 0.0);
+      const double largest = surface.distance;
       if (!(largest < 0.0)) continue;
       ++touching;
-      const Vec3 n = R * shape.normals[face];  // out of the body, towards the node
+      const Vec3 n = R * surface.normal;  // out of the body, towards the node
       x[i] -= largest * n;
       const Vec3 r = x[i] - body.position();
       const Vec3 u = v[i] - (body.velocity() + body.angularVelocity().cross(r));

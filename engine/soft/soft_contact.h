@@ -1,5 +1,5 @@
 #pragma once
-// Soft bodies against rigid bodies, both ways: a node found inside a body's convex shape is put
+// Soft bodies against rigid bodies, both ways: a node found inside a body's solid is put
 // back on its surface, and the pair exchanges the impulse of seed 000's collision response for
 // a point mass against a rigid body (K = 1/m_node + K_body): restitution on the approach, Coulomb
 // friction up to mu j_n. The body receives -j at the node, so momentum is exchanged exactly.
@@ -7,13 +7,13 @@
 
 #include "body/rigid_body.h"
 #include "dynamics/material.h"
-#include "particles/particle_collision.h"
+#include "collision/body_shape.h"
 #include "soft/soft_body.h"
 
 namespace rbsim {
 
 // Returns the number of nodes in contact. `shapes` and `materials` are per rigid body.
-int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<ConvexShape>& shapes,
+int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                          const std::vector<Material>& materials, const Material& softMaterial);
 
 }  // namespace rbsim

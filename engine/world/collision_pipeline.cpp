@@ -36,23 +36,42 @@ SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) 
 CollisionPipeline::CollisionPipeline(const Settings& settings)
     : settings_(settings), broad_(makeBroadPhase(settings.broadPhase)), log_(settings.queryLogCapacity) {}
 
-void CollisionPipeline::addBody(const RigidBody& body) {
+void CollisionPipeline::measure(std::size_t index, const RigidBody& body) {
   double radius = 0.0;
   Aabb local;
   for (const Vec3& p : body.mesh().vertices) {
     radius = std::max(radius, p.norm());
     local.grow(p);
   }
-  const Aabb box = Aabb::of(body.worldVertices()).inflated(settings_.contactMargin);
-  proxies_.push_back(broad_->add(box, body.isStatic()));
+  radius_[index] = radius;
+  thickness_[index] = local.extents().minCoeff();
+  boxes_[index] = Aabb::of(body.worldVertices()).inflated(settings_.contactMargin);
+}
+
+void CollisionPipeline::addBody(const RigidBody& body) {
+  const std::size_t index = proxies_.size();
+  radius_.push_back(0.0);
+  thickness_.push_back(0.0);
+  boxes_.emplace_back();
+  measure(index, body);
+  proxies_.push_back(broad_->add(boxes_[index], body.isStatic()));
   // narrowPhase reads a pair's proxy ids as body indices: bodies are never removed, so the
   // broad phase hands out 0, 1, 2, ... in order.
-  if (proxies_.back() != proxies_.size() - 1) throw std::logic_error("broad phase ids are not body indices");
-  radius_.push_back(radius);
-  thickness_.push_back(local.extents().minCoeff());
+  if (proxies_.back() != index) throw std::logic_error("broad phase ids are not body indices");
   start_.push_back(body.state());
   fast_.push_back(0);
-  boxes_.push_back(box);
+}
+
+void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body) {
+  measure(index, body);
+  // Removed and added again, since the piece may be dynamic where the body was static; the pool
+  // hands back the smallest free id, which is this one.
+  broad_->remove(proxies_[index]);
+  if (broad_->add(boxes_[index], body.isStatic()) != proxies_[index]) {
+    throw std::logic_error("broad phase did not reuse the replaced body's id");
+  }
+  start_[index] = body.state();
+  fast_[index] = 0;
 }
 
 bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const {

@@ -35,6 +35,9 @@ class CollisionPipeline {
   explicit CollisionPipeline(const Settings& settings);
 
   void addBody(const RigidBody& body);  // bodies are added in World order; ids are indices
+  // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
+  // bounds are rebuilt, and it may have stopped being static.
+  void replaceBody(std::size_t index, const RigidBody& body);
 
   // The state of every body before Integrate, kept for the continuous stage.
   void rememberStart(const std::vector<RigidBody>& bodies);
@@ -58,6 +61,7 @@ class CollisionPipeline {
 
  private:
   bool isFast(std::size_t body) const;
+  void measure(std::size_t index, const RigidBody& body);  // radius_, thickness_, boxes_ of a body
 
   Settings settings_;
   std::unique_ptr<BroadPhase> broad_;

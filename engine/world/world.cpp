@@ -68,6 +68,7 @@ const char* stageName(Stage stage) {
     case Stage::BroadPhase: return "broad-phase";
     case Stage::NarrowPhase: return "narrow-phase";
     case Stage::SolveContacts: return "solve-contacts";
+    case Stage::BreakBodies: return "break-bodies";
     case Stage::UpdateSleep: return "update-sleep";
     case Stage::StepParticles: return "step-particles";
     case Stage::StepSoftBodies: return "step-soft-bodies";
@@ -90,8 +91,15 @@ World::World(const Settings& settings) : settings_(checked(settings)), collision
 std::size_t World::addBody(const BodyDef& def) {
   const std::string problem = checkMaterial(def.material);
   if (!problem.empty()) throw std::invalid_argument("body '" + def.name + "': " + problem);
+  if (def.fracture) {
+    const std::string misfit = checkFracturePattern(*def.fracture, def);
+    if (!misfit.empty()) throw std::invalid_argument("body '" + def.name + "': fracture: " + misfit);
+  }
   bodies_.emplace_back(def);
   bodyMaterials_.push_back(def.material);
+  bodyShapes_.push_back(bodyShapeOf(*def.mesh));
+  fracturePatterns_.push_back(def.fracture);
+  if (def.fracture) ++breakableBodies_;
   collision_.addBody(bodies_.back());
   return bodies_.size() - 1;
 }
@@ -212,25 +220,24 @@ void World::step() {
   });
   // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
   // are contacts between sleeping bodies, which receive nothing.
-  runStage(Stage::SolveContacts, anyAwakeNow && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+  const bool solved = runStage(Stage::SolveContacts, anyAwakeNow && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
     if (settings_.respondToContacts) solveContacts();
+  });
+  runStage(Stage::BreakBodies, breakableBodies_ > 0 && solved && settings_.respondToContacts, [&] {
+    if (breakableBodies_ > 0 && solved && settings_.respondToContacts) breakBodies();
   });
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
   runStage(Stage::StepParticles, !particleSystems_.empty(), [&] {
-    for (ParticleSystem& system : particleSystems_) system.step(t, settings_.timeStep, settings_.gravity, bodies_, planes_);
+    for (ParticleSystem& system : particleSystems_) system.step(t, settings_.timeStep, settings_.gravity, bodies_, bodyShapes_, planes_);
   });
   runStage(Stage::StepSoftBodies, !softBodies_.empty(), [&] {
-    if (softContactShapes_.size() != bodies_.size()) {
-      softContactShapes_.clear();
-      for (const RigidBody& body : bodies_) softContactShapes_.push_back(convexShapeOf(body.mesh()));
-    }
     for (SoftBody& soft : softBodies_) {
       try {
         soft.step(settings_.timeStep, settings_.gravity, planes_, planeMaterials_);
       } catch (const std::domain_error& e) {  // non-finite nodes, or an inverted neo-Hookean element
         throw SimulationError("step " + std::to_string(stepCount_) + ": " + e.what());
       }
-      if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, softContactShapes_, bodyMaterials_, soft.material());
+      if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, bodyShapes_, bodyMaterials_, soft.material());
     }
   });
   runStage(Stage::StepPlanar, planar_.has_value(), [&] {

@@ -8,9 +8,11 @@
 #include <vector>
 
 #include "body/rigid_body.h"
+#include "collision/body_shape.h"
 #include "collision/contact.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/material.h"
+#include "fracture/fracture.h"
 #include "particles/particle_collision.h"
 #include "particles/particle_system.h"
 #include "planar/planar_world.h"
@@ -33,6 +35,8 @@ enum class Stage : int {
   BroadPhase,        // sweep and prune over world AABBs: candidate pairs
   NarrowPhase,       // contact manifolds of candidate pairs and of bodies against planes
   SolveContacts,     // impulses: restitution, friction, resting contact; split-impulse correction
+  BreakBodies,       // bodies whose contact impulses this step exceed their fracture threshold
+                     // break into their pieces (seed 000 "Fracture"); skipped when none can
   UpdateSleep,       // islands of touching bodies, all slow for Settings::timeToSleep, fall asleep
   StepParticles,     // particle systems: emit, forces, integrate, collide with planes and the
                      // bodies where they now are, age; skipped when the World has none
@@ -42,6 +46,16 @@ enum class Stage : int {
   Count
 };
 const char* stageName(Stage stage);
+
+// A body that broke: it became its first piece, and the others were added after every body
+// there was.
+struct FractureEvent {
+  double time = 0.0;            // [s]
+  std::size_t body = 0;         // now the first piece
+  std::size_t firstAdded = 0;   // the other pieces are bodies firstAdded .. firstAdded + added - 1
+  std::size_t added = 0;
+  double impulse = 0.0;         // the normal impulses that broke it [N s]
+};
 
 struct StageStats {
   std::uint64_t runs = 0;     // steps in which the stage ran
@@ -53,7 +67,9 @@ class World {
  public:
   explicit World(const Settings& settings);  // throws std::invalid_argument (checkSettings)
 
-  std::size_t addBody(const BodyDef& def);  // throws std::invalid_argument on an invalid def
+  // Throws std::invalid_argument on an invalid def, naming the body (also for a fracture pattern
+  // that does not fit it: fracture/fracture.h checkFracturePattern).
+  std::size_t addBody(const BodyDef& def);
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
   std::size_t addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
@@ -94,6 +110,9 @@ class World {
   // Every contact point of the last step with the impulse the solver gave it.
   const std::vector<SolvedContactPoint>& contactPoints() const { return contactSolver_.points(); }
   const Material& bodyMaterial(std::size_t body) const { return bodyMaterials_[body]; }
+  // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
+  const std::vector<BodyShape>& bodyShapes() const { return bodyShapes_; }
+  const std::vector<FractureEvent>& fractureEvents() const { return fractureEvents_; }
   const Material& planeMaterial(std::size_t plane) const { return planeMaterials_[plane]; }
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
 
@@ -111,6 +130,8 @@ class World {
   void integrateBodies(bool withGravity);   // adds m g to F first if asked
   void solveContacts();
   void updateSleep();
+  void breakBodies();  // world/break_bodies.cpp
+  void breakBody(std::size_t body, double impulse);
   [[noreturn]] void reportDivergence(const RigidBody& body, const BodyState& next) const;
 
   template <typename Fn>
@@ -126,7 +147,11 @@ class World {
   std::vector<ParticleSystem> particleSystems_;
   std::vector<SoftBody> softBodies_;
   std::optional<PlanarWorld> planar_;
-  std::vector<ConvexShape> softContactShapes_;  // per rigid body, built when the first soft body is added
+  std::vector<BodyShape> bodyShapes_;     // per body
+  std::vector<std::shared_ptr<const FracturePattern>> fracturePatterns_;  // per body; null: unbreakable
+  std::size_t breakableBodies_ = 0;      // bodies with a pattern that have not broken yet
+  std::vector<double> receivedImpulse_;  // BreakBodies' scratch, per body [N s]
+  std::vector<FractureEvent> fractureEvents_;
   CollisionPipeline collision_;
   ContactSolver contactSolver_;
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]

@@ -1,0 +1,39 @@
+// Stage BreakBodies of World::step (seed 000 "Fracture"): a breakable body whose contacts took
+// more normal impulse this step than its pattern's threshold becomes its pieces. The first piece
+// takes the body's index, so every index held elsewhere stays valid; the others are appended.
+#include <string>
+
+#include "world/world.h"
+
+namespace rbsim {
+
+void World::breakBodies() {
+  receivedImpulse_.assign(bodies_.size(), 0.0);
+  const std::vector<Contact>& contacts = collision_.contacts();
+  for (const SolvedContactPoint& point : contactSolver_.points()) {
+    const Contact& contact = contacts[point.contact];
+    receivedImpulse_[contact.b] += point.normalImpulse;
+    if (contact.kind == Contact::Kind::BodyBody) receivedImpulse_[contact.a] += point.normalImpulse;
+  }
+  const std::size_t count = bodies_.size();  // pieces appended below are not looked at
+  for (std::size_t i = 0; i < count; ++i) {
+    if (fracturePatterns_[i] && receivedImpulse_[i] > fracturePatterns_[i]->impulseThreshold) {
+      breakBody(i, receivedImpulse_[i]);
+    }
+  }
+}
+
+void World::breakBody(std::size_t body, double impulse) {
+  const std::shared_ptr<const FracturePattern> pattern = std::move(fracturePatterns_[body]);
+  --breakableBodies_;
+  // The pieces start from the state the solver left: the impulse that broke the body is in it.
+  std::vector<BodyDef> pieces = fracturePieces(bodies_[body], *pattern, bodyMaterials_[body]);
+  FractureEvent event{time(), body, bodies_.size(), pieces.size() - 1, impulse};
+  bodies_[body] = RigidBody(pieces.front());
+  bodyShapes_[body] = bodyShapeOf(*pieces.front().mesh);
+  collision_.replaceBody(body, bodies_[body]);
+  for (std::size_t k = 1; k < pieces.size(); ++k) addBody(pieces[k]);
+  fractureEvents_.push_back(event);
+}
+
+}  // namespace rbsim
