@@ -5,6 +5,7 @@
 #include "io/input_error.h"
 #include "io/obj_loader.h"
 #include "mass/mass_model.h"
+#include "scene/fracture_parser.h"
 
 namespace rbsim::scene_detail {
 
@@ -98,6 +99,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   if (def.isStatic && (def.velocity != Vec3::Zero() || def.angularVelocity != Vec3::Zero())) {
     b.fail(def.velocity != Vec3::Zero() ? "velocity" : "angular_velocity", "a static body cannot move; expected zero");
   }
+  if (b.has("fracture")) def.fracture = parseFracture(b, def);
   scene.bodies.push_back(def);
   scene.inertiaMethods.emplace_back(inertiaMethodName(method));
 }
