@@ -64,12 +64,14 @@ if [ $run_bench = 1 ]; then
     accuracy_timing=()
     broadphase_filter=()
   fi
-  # Google Benchmark programs: their own CSV (one row per run, or per aggregate with repetitions).
+  # Google Benchmark programs: JSON, turned into CSV (one row per run, or per aggregate with
+  # repetitions) by bench/report/json_to_csv.py, since their CSV reporter cannot mix counters.
   gbench() {  # gbench NAME PROGRAM [ARGS...]
     local name=$1 program=$2; shift 2
     say "running $program -> $results/$name.csv"
-    low "$build/bench/$program" "$@" --benchmark_out="$results/$name.csv" --benchmark_out_format=csv \
+    low "$build/bench/$program" "$@" --benchmark_out="$logs/$name.json" --benchmark_out_format=json \
       > "$logs/$name.log" 2>&1 || { tail -20 "$logs/$name.log"; exit 1; }
+    python3 bench/report/json_to_csv.py "$logs/$name.json" "$results/$name.csv"
   }
   gbench step step_bench "${gb_reps[@]}"
   gbench throughput throughput_bench "${gb_reps[@]}"
@@ -123,10 +125,10 @@ if [ $make_stills = 1 ]; then
   while read -r number name at; do
     if [ ! -f "videos/$name.mp4" ]; then
       say "rendering demo $number (videos/$name.mp4 is missing)"
-      low "$build/rbsim" demo "$number" > "$logs/demo$number.log" 2>&1 || { tail -20 "$logs/demo$number.log"; exit 1; }
+      low "$build/rbsim" demo "$number" < /dev/null > "$logs/demo$number.log" 2>&1 || { tail -20 "$logs/demo$number.log"; exit 1; }
     fi
     say "still of videos/$name.mp4 at $at s -> videos/stills/$name.png"
-    ffmpeg -v error -y -ss "$at" -i "videos/$name.mp4" -frames:v 1 -vf scale=640:-1 "videos/stills/$name.png"
+    ffmpeg -nostdin -v error -y -ss "$at" -i "videos/$name.mp4" -frames:v 1 -vf scale=640:-1 "videos/stills/$name.png"
   done < bench/report/stills.txt
 fi
 
