@@ -1,0 +1,137 @@
+#!/bin/bash
+# Regenerates every figure of REPORT.md (issue 11): builds the benchmarks, runs each one writing a
+# CSV into bench/results/, draws the plots (PNG) with gnuplot from those CSVs, extracts one still
+# per demo video into videos/stills/ (rendering the demo first when its MP4 is missing), and
+# rewrites the generated blocks of REPORT.md (<!-- fig:NAME --> ... <!-- /fig:NAME -->) from the CSVs.
+#
+# usage: bash bench/make_report.sh [--quick] [--no-bench] [--no-stills] [--build DIR]
+#   --quick      fewer repetitions and sizes: a check in minutes (the report says it was quick)
+#   --no-bench   keep the CSVs in bench/results/, only redraw the plots and refill REPORT.md
+#   --no-stills  keep videos/stills/ as it is
+#   --build DIR  the Release build folder (default build/)
+# Needs: cmake, a C++ compiler, gnuplot, ffmpeg, python3 (standard library only).
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+mode=full
+run_bench=1
+make_stills=1
+build=build
+while [ $# -gt 0 ]; do
+  case $1 in
+    --quick) mode=quick ;;
+    --no-bench) run_bench=0 ;;
+    --no-stills) make_stills=0 ;;
+    --build) build=$2; shift ;;
+    *) echo "usage: bash bench/make_report.sh [--quick] [--no-bench] [--no-stills] [--build DIR]" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+results=bench/results
+logs=$results/logs
+mkdir -p "$results" "$logs" videos/stills
+started=$(date +%s)
+say() { printf '[make_report %4ds] %s\n' $(( $(date +%s) - started )) "$*"; }
+# Heavy work runs at the lowest priority: the machine is shared with other builds.
+low() { nice -n 19 "$@"; }
+
+targets=(rbsim step_bench throughput_bench stage_skip_bench broadphase_bench contact_pile
+         bullet_pile bullet_pile_double particle_bench soft_bench accuracy_sweep)
+
+if [ $run_bench = 1 ] || [ $make_stills = 1 ]; then
+  say "configuring $build (Release, benchmarks on)"
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DRBSIM_BUILD_BENCH=ON > "$logs/cmake.log" 2>&1 \
+    || { tail -20 "$logs/cmake.log"; exit 1; }
+  say "building ${targets[*]} (log: $logs/build.log)"
+  low cmake --build "$build" -j2 --target "${targets[@]}" > "$logs/build.log" 2>&1 \
+    || { tail -30 "$logs/build.log"; exit 1; }
+fi
+
+if [ $run_bench = 1 ]; then
+  load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+  if [ $mode = quick ]; then
+    gb_reps=(--benchmark_repetitions=1 --benchmark_min_time=0.1)
+    piles=(100 1000)
+    soft_moduli=(1e5)
+    accuracy_timing=(--timing-seconds 0.02)
+    broadphase_filter=(--benchmark_filter='/(1000|10000)/')
+  else
+    gb_reps=(--benchmark_repetitions=3 --benchmark_min_time=1 --benchmark_report_aggregates_only=true)
+    piles=(100 1000 4000)
+    soft_moduli=(1e5 1e7)
+    accuracy_timing=()
+    broadphase_filter=()
+  fi
+  # Google Benchmark programs: JSON, turned into CSV (one row per run, or per aggregate with
+  # repetitions) by bench/report/json_to_csv.py, since their CSV reporter cannot mix counters.
+  gbench() {  # gbench NAME PROGRAM [ARGS...]
+    local name=$1 program=$2; shift 2
+    say "running $program -> $results/$name.csv"
+    low "$build/bench/$program" "$@" --benchmark_out="$logs/$name.json" --benchmark_out_format=json \
+      > "$logs/$name.log" 2>&1 || { tail -20 "$logs/$name.log"; exit 1; }
+    python3 bench/report/json_to_csv.py "$logs/$name.json" "$results/$name.csv"
+  }
+  gbench step step_bench "${gb_reps[@]}"
+  gbench throughput throughput_bench "${gb_reps[@]}"
+  gbench stage_skip stage_skip_bench "${gb_reps[@]}"
+  gbench broadphase broadphase_bench "${broadphase_filter[@]}"
+  gbench particles particle_bench "${gb_reps[@]}"
+  # Programs that time whole runs themselves: their printed lines become CSV (bench/report/logs_to_csv.py).
+  say "running contact_pile ${piles[*]}"
+  low "$build/bench/contact_pile" "${piles[@]}" > "$logs/contact_pile.log"
+  for variant in bullet_pile bullet_pile_double; do
+    if [ -x "$build/bench/$variant" ]; then
+      say "running $variant ${piles[*]}"
+      low "$build/bench/$variant" "${piles[@]}" > "$logs/$variant.log"
+    else
+      say "WARNING: $variant not built (apt-get install libbullet-dev); the pile has no Bullet rows"
+      rm -f "$logs/$variant.log"
+    fi
+  done
+  say "running soft_bench ${soft_moduli[*]}"
+  low "$build/bench/soft_bench" "${soft_moduli[@]}" > "$logs/soft.log"
+  python3 bench/report/logs_to_csv.py "$logs" "$results"
+  say "running accuracy_sweep -> $results/accuracy.csv"
+  low "$build/bench/accuracy_sweep" "$results/accuracy.csv" "${accuracy_timing[@]}" > "$logs/accuracy.log" 2>&1
+  load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+  # The machine the figures come from.
+  {
+    echo "key,value"
+    echo "mode,$mode"
+    echo "date,$(date -u +%Y-%m-%dT%H:%MZ)"
+    echo "commit,$(git rev-parse --short HEAD)"
+    echo "nproc,$(nproc)"
+    echo "cpu,\"$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')\""
+    echo "memory_gib,$(awk '/MemTotal/ { printf "%.1f", $2 / 1048576 }' /proc/meminfo)"
+    echo "os,\"$(. /etc/os-release && echo "$PRETTY_NAME")\""
+    echo "compiler,\"$(c++ --version | head -1)\""
+    echo "load_before,\"$load_before\""
+    echo "load_after,\"$load_after\""
+    echo "bench_seconds,$(( $(date +%s) - started ))"
+  } > "$results/machine.csv"
+fi
+
+say "drawing plots with gnuplot"
+gnuplot -e "csv='$results/accuracy.csv'; outdir='$results'" bench/plot_accuracy.gp
+plot_data=$(mktemp -d)
+trap 'rm -rf "$plot_data"' EXIT
+python3 bench/report/plot_data.py "$results" "$plot_data"
+gnuplot -e "data='$plot_data'; outdir='$results'" bench/report/plots.gp
+
+if [ $make_stills = 1 ]; then
+  # demo number, video name, time of the still [s] (a moment that shows what the section is about)
+  while read -r number name at; do
+    if [ ! -f "videos/$name.mp4" ]; then
+      say "rendering demo $number (videos/$name.mp4 is missing)"
+      low "$build/rbsim" demo "$number" < /dev/null > "$logs/demo$number.log" 2>&1 || { tail -20 "$logs/demo$number.log"; exit 1; }
+    fi
+    say "still of videos/$name.mp4 at $at s -> videos/stills/$name.png"
+    ffmpeg -nostdin -v error -y -ss "$at" -i "videos/$name.mp4" -frames:v 1 -vf scale=640:-1 "videos/stills/$name.png"
+  done < bench/report/stills.txt
+fi
+
+say "filling the generated blocks of REPORT.md"
+python3 bench/report/fill_report.py REPORT.md "$results"
+say "done in $(( $(date +%s) - started )) s ($mode)"
