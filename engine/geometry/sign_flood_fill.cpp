@@ -22,7 +22,7 @@ Vec3 faceNormal(const Mesh& mesh, std::uint32_t t) {
 }  // namespace
 
 SignRegions floodFillSigns(const GridShape& shape, const TriangleBvh& bvh, const Mesh& mesh,
-                           const std::vector<bool>& nearSurface) {
+                           const std::vector<SurfaceProximity>& proximity) {
   const std::size_t n = shape.pointCount();
   // Bit `axis` set: the edge from this point to its +axis neighbour is occluded.
   std::vector<std::uint8_t> occluded(n, 0);
@@ -35,7 +35,7 @@ SignRegions floodFillSigns(const GridShape& shape, const TriangleBvh& bvh, const
         for (int axis = 0; axis < 3; ++axis) {
           if (c[axis] + 1 == shape.dims[axis]) continue;
           const std::size_t q = p + shape.stride(axis);
-          if (!nearSurface[p] && !nearSurface[q]) continue;
+          if (proximity[p] == SurfaceProximity::Far && proximity[q] == SurfaceProximity::Far) continue;
           Vec3i cq = c;
           ++cq[axis];
           const Vec3 a = shape.point(i, j, k), b = shape.point(cq.x(), cq.y(), cq.z());
@@ -53,19 +53,21 @@ SignRegions floodFillSigns(const GridShape& shape, const TriangleBvh& bvh, const
   // Flood fill with an explicit stack, seeds in index order: deterministic region numbers.
   constexpr int kUnlabelled = -1;
   std::vector<int> region(n, kUnlabelled);
-  std::vector<bool> touchesBoundary;
+  std::vector<bool> touchesBoundary, offSurface;
   std::vector<std::size_t> stack;
   int regions = 0;
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (region[seed] != kUnlabelled) continue;
     const int label = regions++;
     touchesBoundary.push_back(false);
+    offSurface.push_back(false);
     region[seed] = label;
     stack.push_back(seed);
     while (!stack.empty()) {
       const std::size_t p = stack.back();
       stack.pop_back();
       const Vec3i c = shape.coordinates(p);
+      if (proximity[p] != SurfaceProximity::OnSurface) offSurface[label] = true;
       for (int axis = 0; axis < 3; ++axis) {
         const std::size_t step = shape.stride(axis);
         if (c[axis] == 0 || c[axis] + 1 == shape.dims[axis]) touchesBoundary[label] = true;
@@ -89,7 +91,7 @@ SignRegions floodFillSigns(const GridShape& shape, const TriangleBvh& bvh, const
     vote[region[x.to]] += x.toInside ? 1 : -1;
   }
   SignRegions out;
-  out.regions = regions;
+  for (int r = 0; r < regions; ++r) out.regions += offSurface[r] ? 1 : 0;
   out.inside.resize(n);
   for (std::size_t p = 0; p < n; ++p) {
     const int r = region[p];

@@ -93,7 +93,7 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
   }
   std::vector<MarchLabel> labels(n, MarchLabel::White);
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
-  std::vector<bool> withinOneCell(n, false);
+  std::vector<SurfaceProximity> proximity(n, SurfaceProximity::Far);
   for (std::size_t p = 0; p < n; ++p) {
     if (!candidate[p]) continue;
     const Vec3i c = shape.coordinates(p);
@@ -101,12 +101,16 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
     if (!hit) continue;
     labels[p] = MarchLabel::Black;
     distance[p] = hit->distance;
-    withinOneCell[p] = hit->distance <= h;
+    if (hit->distance <= kOnSurfaceCells * h) {
+      proximity[p] = SurfaceProximity::OnSurface;
+    } else if (hit->distance <= h) {
+      proximity[p] = SurfaceProximity::WithinOneCell;
+    }
     ++grid.stats_.exactPoints;
   }
 
   grid.stats_.marchedPoints = fastMarch(shape, labels, distance);
-  const SignRegions sign = floodFillSigns(shape, bvh, mesh, withinOneCell);
+  const SignRegions sign = floodFillSigns(shape, bvh, mesh, proximity);
   grid.stats_.regions = sign.regions;
   grid.values_ = std::move(distance);
   for (std::size_t p = 0; p < n; ++p) {

@@ -27,7 +27,8 @@ class SignedDistanceGrid {
   struct BuildStats {
     std::size_t exactPoints = 0;    // distances from the closest point on the mesh
     std::size_t marchedPoints = 0;  // distances by fast marching
-    int regions = 0;                // regions of the sign flood fill
+    int regions = 0;                // regions of the sign flood fill (not counting single grid
+                                    // points on the surface, which it cuts off)
     double seconds = 0.0;           // wall time of build() [s]
   };
 

@@ -74,16 +74,16 @@ TriangleBvh::TriangleBvh(const Mesh& mesh) : vertices_(mesh.vertices), triangles
   order_.resize(triangles_.size());
   for (std::uint32_t t = 0; t < order_.size(); ++t) order_[t] = t;
   nodes_.reserve(2 * triangles_.size());
-  buildNode(0, static_cast<std::uint32_t>(order_.size()), centroids);
+  nodes_.emplace_back();
+  buildNode(0, 0, static_cast<std::uint32_t>(order_.size()), centroids);
 }
 
 // Top-down: split at the median centroid along the longest axis of the centroids' box. The
 // median split keeps the tree balanced (depth log2(n / leaf)), and the order is a pure function
 // of the mesh, so the tree and every query are deterministic.
-std::uint32_t TriangleBvh::buildNode(std::uint32_t begin, std::uint32_t end,
-                                     const std::vector<Vec3>& centroids) {
-  const std::uint32_t index = static_cast<std::uint32_t>(nodes_.size());
-  nodes_.emplace_back();
+// Children are allocated side by side before either is built, so the right child is first + 1.
+void TriangleBvh::buildNode(std::uint32_t index, std::uint32_t begin, std::uint32_t end,
+                            const std::vector<Vec3>& centroids) {
   Aabb box, centroidBox;
   for (std::uint32_t i = begin; i < end; ++i) {
     for (std::uint32_t v : triangles_[order_[i]]) box.grow(vertices_[v]);
@@ -93,7 +93,7 @@ std::uint32_t TriangleBvh::buildNode(std::uint32_t begin, std::uint32_t end,
   if (end - begin <= kBvhLeafTriangles) {
     nodes_[index].first = begin;
     nodes_[index].count = end - begin;
-    return index;
+    return;
   }
   Eigen::Index axis = 0;
   centroidBox.extents().maxCoeff(&axis);
@@ -103,10 +103,12 @@ std::uint32_t TriangleBvh::buildNode(std::uint32_t begin, std::uint32_t end,
                      const double cx = centroids[x][axis], cy = centroids[y][axis];
                      return cx < cy || (cx == cy && x < y);
                    });
-  const std::uint32_t left = buildNode(begin, mid, centroids);
-  buildNode(mid, end, centroids);
+  const std::uint32_t left = static_cast<std::uint32_t>(nodes_.size());
   nodes_[index].first = left;
-  return index;
+  nodes_.emplace_back();
+  nodes_.emplace_back();
+  buildNode(left, begin, mid, centroids);
+  buildNode(left + 1, mid, end, centroids);
 }
 
 void TriangleBvh::closest(const Vec3& p, double& best2, SurfacePoint& best) const {

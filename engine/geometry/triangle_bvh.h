@@ -64,7 +64,8 @@ class TriangleBvh {
     std::uint32_t first = 0;  // leaf: first entry of order_; inner: index of the left child
     std::uint32_t count = 0;  // leaf: number of triangles; inner: 0 (the right child is first + 1)
   };
-  std::uint32_t buildNode(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centroids);
+  void buildNode(std::uint32_t index, std::uint32_t begin, std::uint32_t end,
+                 const std::vector<Vec3>& centroids);
   // Closest point with distance^2 below best2, updating best and best2.
   void closest(const Vec3& p, double& best2, SurfacePoint& best) const;
 

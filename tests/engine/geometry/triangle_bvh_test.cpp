@@ -103,7 +103,7 @@ TEST_F(TriangleBvhOnATorus, SegmentCrossingsMatchTestingEveryTriangle) {
   std::mt19937 rng(14);
   int crossed = 0;
   for (int n = 0; n < 2000; ++n) {
-    const Vec3 a = randomPoint(rng, 1.6), b = a + randomPoint(rng, 0.3);
+    const Vec3 a = randomPoint(rng, 1.4), b = a + randomPoint(rng, 0.5);
     int brute = 0;
     for (const Triangle& tri : mesh.triangles) {
       double t = 0.0;
