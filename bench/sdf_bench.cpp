@@ -3,7 +3,9 @@
 // point count N so fast marching's O(N log N) shows as a flat ns per N log2 N; accuracy against
 // resolution (max and RMS |phi_grid - phi_exact| at random points within 0.1 m of the surface of
 // a unit sphere or of the torus (R 1 m, r 0.3 m), in metres and in cells); and the cost of one
-// phi() + gradient() query. Times are the thread's CPU time (the machine is shared).
+// phi() + gradient() query. Times are processor time (the machine is shared): build_ms and its
+// phases from build()'s stats (exact band incl. the BVH build, marching over its M points, sign). With fine meshes the exact band and the BVH dominate small grids, so the marching phase
+// is reported per M log2 M on its own.
 // Meshes are fine (sphere 256 x 128, torus 256 x 96) so their faceting, not the grid, is < 0.03 cell.
 //   usage: sdf_bench                       Google Benchmark: build and query timings
 //          sdf_bench --csv bench/results/sdf.csv    the table on stdout and as CSV (about 2 min)
@@ -90,17 +92,17 @@ int writeCsv(const char* path) {
     std::fprintf(stderr, "sdf_bench: cannot write %s\n", path);
     return 2;
   }
-  std::fprintf(csv, "shape,resolution,points,exact_points,marched_points,regions,build_ms,"
-                    "ns_per_NlogN,max_err_m,rms_err_m,max_err_cells,rms_err_cells,query_ns\n");
-  std::printf("%-7s %4s %9s %9s %9s %10s %8s %10s %10s %8s %8s %8s\n", "shape", "res", "points",
-              "exact", "build_ms", "ns/NlogN", "h_m", "max_err_m", "rms_err_m", "max_h", "rms_h",
-              "query_ns");
+  std::fprintf(csv, "shape,resolution,points,exact_points,marched_points,regions,build_ms,exact_ms,"
+                    "march_ms,sign_ms,ns_per_NlogN,march_ns_per_MlogM,cell_m,max_err_m,rms_err_m,"
+                    "max_err_cells,rms_err_cells,query_ns\n");
+  std::printf("%-6s %4s %8s %8s %8s %8s %8s %8s %8s %9s %7s %9s %9s %6s %6s %6s\n", "shape", "res",
+              "points", "exact", "build_ms", "exact_ms", "march_ms", "sign_ms", "ns/NlgN",
+              "march/MlgM", "h_m", "max_err_m", "rms_err_m", "max_h", "rms_h", "q_ns");
   for (const Shape& shape : shapes()) {
     const std::vector<Vec3> samples = pointsNearSurface(shape, kAccuracySamples);
     for (int resolution : kResolutions) {
-      const double start = threadSeconds();
       const SignedDistanceGrid grid = SignedDistanceGrid::build(shape.mesh, {resolution, 3, 2});
-      const double buildSeconds = threadSeconds() - start;
+      const double buildSeconds = grid.stats().seconds;
       const double n = static_cast<double>(grid.pointCount());
       double maxErr = 0.0, sumSq = 0.0;
       for (const Vec3& p : samples) {
@@ -112,13 +114,17 @@ int writeCsv(const char* path) {
       const double h = grid.cellSize();
       const double ns = queryNs(grid);
       const double perNlogN = 1e9 * buildSeconds / (n * std::log2(n));
-      std::fprintf(csv, "%s,%d,%zu,%zu,%zu,%d,%.3f,%.3f,%.6e,%.6e,%.4f,%.4f,%.1f\n",
-                   shape.name.c_str(), resolution, grid.pointCount(), grid.stats().exactPoints,
-                   grid.stats().marchedPoints, grid.stats().regions, 1e3 * buildSeconds, perNlogN,
-                   maxErr, rms, maxErr / h, rms / h, ns);
-      std::printf("%-7s %4d %9zu %9zu %9.1f %10.2f %8.4f %10.2e %10.2e %8.3f %8.3f %8.1f\n",
-                  shape.name.c_str(), resolution, grid.pointCount(), grid.stats().exactPoints,
-                  1e3 * buildSeconds, perNlogN, h, maxErr, rms, maxErr / h, rms / h, ns);
+      const SignedDistanceGrid::BuildStats& s = grid.stats();
+      const double m = static_cast<double>(s.marchedPoints);
+      const double marchPerMlogM = 1e9 * s.marchSeconds / (m * std::log2(m));
+      std::fprintf(csv, "%s,%d,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.6f,%.6e,%.6e,%.4f,%.4f,%.1f\n",
+                   shape.name.c_str(), resolution, grid.pointCount(), s.exactPoints, s.marchedPoints,
+                   s.regions, 1e3 * buildSeconds, 1e3 * s.exactSeconds, 1e3 * s.marchSeconds,
+                   1e3 * s.signSeconds, perNlogN, marchPerMlogM, h, maxErr, rms, maxErr / h, rms / h, ns);
+      std::printf("%-6s %4d %8zu %8zu %8.1f %8.1f %8.1f %8.1f %8.1f %9.1f %7.4f %9.2e %9.2e %6.3f %6.3f %6.1f\n",
+                  shape.name.c_str(), resolution, grid.pointCount(), s.exactPoints, 1e3 * buildSeconds,
+                  1e3 * s.exactSeconds, 1e3 * s.marchSeconds, 1e3 * s.signSeconds, perNlogN,
+                  marchPerMlogM, h, maxErr, rms, maxErr / h, rms / h, ns);
       std::fflush(stdout);
     }
   }

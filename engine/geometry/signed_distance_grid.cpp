@@ -1,7 +1,7 @@
 #include "geometry/signed_distance_grid.h"
 
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -65,13 +65,17 @@ GridShape layOut(const Mesh& mesh, const SdfGridOptions& options) {
 }  // namespace
 
 SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  // Processor time (the build is single-threaded): on a shared machine wall time would also count
+  // the time other processes hold the core.
+  const auto since = [](std::clock_t t) { return double(std::clock() - t) / CLOCKS_PER_SEC; };
+  const std::clock_t start = std::clock();
   validate(mesh, options);
   SignedDistanceGrid grid;
   GridShape& shape = grid.shape_;
   shape = layOut(mesh, options);
   const double h = shape.cellSize;
   const std::size_t n = shape.pointCount();
+  std::clock_t phase = std::clock();
   const TriangleBvh bvh(mesh);
 
   // Exact band: the seed's sphere of a few cells around each grid point, asked only of points
@@ -109,15 +113,19 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
     ++grid.stats_.exactPoints;
   }
 
+  grid.stats_.exactSeconds = since(phase);
+  phase = std::clock();
   grid.stats_.marchedPoints = fastMarch(shape, labels, distance);
+  grid.stats_.marchSeconds = since(phase);
+  phase = std::clock();
   const SignRegions sign = floodFillSigns(shape, bvh, mesh, proximity);
+  grid.stats_.signSeconds = since(phase);
   grid.stats_.regions = sign.regions;
   grid.values_ = std::move(distance);
   for (std::size_t p = 0; p < n; ++p) {
     if (sign.inside[p]) grid.values_[p] = -grid.values_[p];
   }
-  grid.stats_.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  grid.stats_.seconds = since(start);
   return grid;
 }
 
