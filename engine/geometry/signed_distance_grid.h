@@ -1,0 +1,74 @@
+#pragma once
+// Discrete implicit surface (seed 000 "Discrete Implicit Surfaces", "Constructing Signed Distance
+// Functions"): signed distances phi [m] at the points of a grid laid over a padded bounding box of
+// a closed triangle mesh, trilinearly interpolated between them; phi < 0 inside, > 0 outside.
+#include <cstddef>
+#include <vector>
+
+#include "geometry/grid_shape.h"
+#include "geometry/mesh.h"
+#include "math/types.h"
+
+namespace rbsim {
+
+// Bounds of the options (a grid of kMaxSdfResolution^3 points is already 8 GB of doubles).
+inline constexpr int kMinSdfResolution = 4;
+inline constexpr int kMaxSdfResolution = 1024;
+
+struct SdfGridOptions {
+  int resolution = 32;     // cells along the longest side of the mesh's bounding box [1], >= 4
+  int paddingCells = 3;    // cells of padding on every side [1], >= 1
+  int exactBandCells = 2;  // points within this many cells of the surface get exact distances
+                           // [1], >= 1 (the sign pass needs every point within one cell exact)
+};
+
+class SignedDistanceGrid {
+ public:
+  struct BuildStats {
+    std::size_t exactPoints = 0;    // distances from the closest point on the mesh
+    std::size_t marchedPoints = 0;  // distances by fast marching
+    int regions = 0;                // regions of the sign flood fill (not counting single grid
+                                    // points on the surface, which it cuts off)
+    double seconds = 0.0;           // processor time of build() [s], of which:
+    double exactSeconds = 0.0;      //   the exact band (BVH built and queried) [s]
+    double marchSeconds = 0.0;      //   fast marching [s]
+    double signSeconds = 0.0;       //   occlusion tests and the flood fill [s]
+  };
+
+  // Throws std::invalid_argument (naming the mesh and what is wrong) for an open, inconsistently
+  // oriented, inside-out or degenerate mesh, non-finite vertices, or options out of range.
+  static SignedDistanceGrid build(const Mesh& mesh, const SdfGridOptions& options = {});
+  // A grid of given values (x fastest, as GridShape::index), e.g. one read back from a file.
+  // Throws std::invalid_argument when the counts disagree, an axis has fewer than 2 points, the
+  // cell size is not positive or a value is not finite.
+  static SignedDistanceGrid fromValues(const GridShape& shape, std::vector<double> values);
+
+  // Trilinear interpolation of the grid values [m]. Outside the grid's box: the distance to the
+  // box plus phi at the nearest point of the box.
+  double phi(const Vec3& p) const;
+  // The exact derivative of phi() above (of the trilinear interpolant inside the box; outside, the
+  // direction away from the box along the clamped axes and the interpolant's derivative along the
+  // others). On a cell face, the cell on the + side.
+  Vec3 gradient(const Vec3& p) const;
+  // gradient / |gradient| (seed 000 "Collision Detection"); the zero vector where the gradient
+  // vanishes (a point of the medial axis where the interpolant is flat).
+  Vec3 normal(const Vec3& p) const;
+
+  const Vec3& origin() const { return shape_.origin; }
+  double cellSize() const { return shape_.cellSize; }
+  const Vec3i& dims() const { return shape_.dims; }
+  std::size_t pointCount() const { return shape_.pointCount(); }
+  Vec3 point(int i, int j, int k) const { return shape_.point(i, j, k); }
+  double value(int i, int j, int k) const { return values_[shape_.index(i, j, k)]; }
+  const BuildStats& stats() const { return stats_; }
+
+ private:
+  // phi and its gradient at a point of the grid's box.
+  double interpolate(const Vec3& p, Vec3* gradient) const;
+
+  GridShape shape_;
+  std::vector<double> values_;
+  BuildStats stats_;
+};
+
+}  // namespace rbsim

@@ -1,0 +1,41 @@
+#include "geometry/surface_samples.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+namespace rbsim {
+
+std::vector<Vec3> surfaceSamples(const Mesh& mesh, double spacing) {
+  std::vector<Vec3> samples = mesh.vertices;
+  if (!(spacing > 0.0)) return samples;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> edgesDone;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3* v[3] = {&mesh.vertices[t[0]], &mesh.vertices[t[1]], &mesh.vertices[t[2]]};
+    double longest = 0.0;
+    for (int e = 0; e < 3; ++e) {
+      const Vec3& a = *v[e];
+      const Vec3& b = *v[(e + 1) % 3];
+      const double length = (b - a).norm();
+      longest = std::max(longest, length);
+      if (!edgesDone.insert(std::minmax(t[e], t[(e + 1) % 3])).second) continue;
+      // From the smaller index, so both triangles of an edge would place the same points.
+      const bool forward = t[e] < t[(e + 1) % 3];
+      const Vec3& from = forward ? a : b;
+      const Vec3& to = forward ? b : a;
+      const int parts = static_cast<int>(std::ceil(length / spacing));
+      for (int s = 1; s < parts; ++s) samples.push_back(from + (to - from) * (double(s) / parts));
+    }
+    const int steps = static_cast<int>(std::ceil(longest / spacing));
+    for (int i = 1; i < steps; ++i) {
+      for (int j = 1; i + j < steps; ++j) {
+        const double u = double(i) / steps, w = double(j) / steps;
+        samples.push_back((1.0 - u - w) * *v[0] + u * *v[1] + w * *v[2]);
+      }
+    }
+  }
+  return samples;
+}
+
+}  // namespace rbsim

@@ -1,0 +1,78 @@
+#pragma once
+// Bounding-volume hierarchy of axis-aligned boxes over a mesh's triangles (seed 000 "Constructing
+// Signed Distance Functions": "an acceleration structure is useful, e.g. bounding box hierarchy").
+// It answers the signed distance grid's three questions: the closest surface point within a
+// radius (the seed's sphere around a grid point), the nearest triangle anywhere, and which
+// triangles a segment between two grid points crosses (the sign flood fill's occlusion).
+// Closest points on a triangle are Ericson's Voronoi-region method, closestPointOnTriangle in
+// collision/narrowphase/distance.h (exact up to rounding in all seven regions).
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "collision/aabb.h"
+#include "geometry/mesh.h"
+#include "math/types.h"
+
+namespace rbsim {
+
+// Triangles per leaf at most: below this, testing them all is cheaper than descending further.
+inline constexpr std::uint32_t kBvhLeafTriangles = 4;
+// Tolerance of the segment-triangle test [1], on barycentric coordinates and on the segment
+// parameter: a segment through a shared edge or vertex must count as crossing at least one of
+// the triangles there, or the sign flood fill would leak through the crack.
+inline constexpr double kSegmentTriangleTolerance = 1e-9;
+
+struct SurfacePoint {
+  Vec3 point = Vec3::Zero();   // on the mesh [m]
+  double distance = 0.0;       // from the query point [m]
+  std::uint32_t triangle = 0;  // index into Mesh::triangles
+};
+
+// The crossings of a segment a -> b with the mesh: the first and the last along the segment.
+struct SegmentCrossings {
+  int count = 0;                    // triangles crossed (a segment through an edge counts both)
+  std::uint32_t firstTriangle = 0;  // smallest segment parameter t
+  std::uint32_t lastTriangle = 0;   // largest t
+};
+
+// Whether the closed segment pq meets the closed triangle abc (Moller-Trumbore with the tolerance
+// above); t receives the segment parameter of the meeting point. A segment in the triangle's plane
+// does not cross it and returns false.
+bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
+                            const Vec3& c, double& t);
+
+class TriangleBvh {
+ public:
+  // Copies the mesh's vertices and triangles. Indices must be valid (checkMesh); the mesh needs
+  // at least one triangle.
+  explicit TriangleBvh(const Mesh& mesh);
+
+  // The closest surface point no farther than `radius` [m] from p, or none.
+  std::optional<SurfacePoint> closestWithin(const Vec3& p, double radius) const;
+  // The closest surface point of the whole mesh.
+  SurfacePoint nearest(const Vec3& p) const;
+  SegmentCrossings crossings(const Vec3& a, const Vec3& b) const;
+
+  std::size_t triangleCount() const { return triangles_.size(); }
+  std::size_t nodeCount() const { return nodes_.size(); }
+  const Aabb& bounds() const { return nodes_.front().box; }
+
+ private:
+  struct Node {
+    Aabb box;
+    std::uint32_t first = 0;  // leaf: first entry of order_; inner: index of the left child
+    std::uint32_t count = 0;  // leaf: number of triangles; inner: 0 (the right child is first + 1)
+  };
+  void buildNode(std::uint32_t index, std::uint32_t begin, std::uint32_t end,
+                 const std::vector<Vec3>& centroids);
+  // Closest point with distance^2 below best2, updating best and best2.
+  void closest(const Vec3& p, double& best2, SurfacePoint& best) const;
+
+  std::vector<Vec3> vertices_;
+  std::vector<Triangle> triangles_;
+  std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf
+  std::vector<Node> nodes_;           // nodes_[0] is the root
+};
+
+}  // namespace rbsim
