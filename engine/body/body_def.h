@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dynamics/material.h"
 #include "geometry/mesh.h"
@@ -11,7 +12,8 @@
 
 namespace rbsim {
 
-struct FracturePattern;  // fracture/fracture.h
+struct FracturePattern;     // fracture/fracture.h
+class SignedDistanceGrid;   // geometry/signed_distance_grid.h
 
 struct BodyDef {
   std::string name = "body";
@@ -33,6 +35,11 @@ struct BodyDef {
   // Set for a body that breaks into these pieces when a contact impulse exceeds the pattern's
   // threshold (seed 000 "Fracture"; World stage BreakBodies).
   std::shared_ptr<const FracturePattern> fracture;
+  // Set for a body of any shape, convex or not (seed 000 "Rigid Body Modeling"): its interior as
+  // a signed distance grid in body frame, and the surface points tested against other bodies'
+  // grids (null: the vertices). Without a grid, contacts treat the body as convex.
+  std::shared_ptr<const SignedDistanceGrid> sdf;
+  std::shared_ptr<const std::vector<Vec3>> surfaceSamples;
 };
 
 }  // namespace rbsim

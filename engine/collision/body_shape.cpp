@@ -41,13 +41,23 @@ FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local) {
   return out;
 }
 
-BodyShape bodyShapeOf(const Mesh& mesh) { return BodyShape{convexShapeOf(mesh)}; }
+BodyShape bodyShapeOf(const BodyDef& def) { return BodyShape{convexShapeOf(*def.mesh), def.sdf, def.surfaceSamples}; }
 
 SurfaceQuery querySurface(const BodyShape& shape, const Vec3& local, double reach) {
   const double r = shape.convex.boundingRadius + reach;
-  if (local.squaredNorm() > r * r || shape.convex.normals.empty()) {
-    return {std::numeric_limits<double>::infinity(), Vec3::UnitY()};
+  if (local.squaredNorm() > r * r) return {std::numeric_limits<double>::infinity(), Vec3::UnitY()};
+  if (shape.sdf) {
+    // Seed 000 "Collision Detection": phi at the object-space point, grad phi / |grad phi| as the
+    // normal. Where the gradient vanishes (the medial axis of a flat-bottomed interpolant), the
+    // way out is taken as straight away from the body's centre.
+    Vec3 gradient;
+    const double phi = shape.sdf->phiAndGradient(local, gradient);
+    const double length = gradient.norm();
+    if (length > 0.0) return {phi, gradient / length};
+    const double radial = local.norm();
+    return {phi, radial > 0.0 ? Vec3(local / radial) : Vec3::UnitY()};
   }
+  if (shape.convex.normals.empty()) return {std::numeric_limits<double>::infinity(), Vec3::UnitY()};
   // The signed distance to the convex set is at least the largest face distance; inside, it is
   // exactly that, and the face it belongs to is the nearest way out.
   const auto [face, distance] = nearestFace(shape.convex, local);

@@ -5,7 +5,9 @@
 #include <memory>
 #include <vector>
 
+#include "body/body_def.h"
 #include "geometry/mesh.h"
+#include "geometry/signed_distance_grid.h"
 #include "math/types.h"
 
 namespace rbsim {
@@ -28,11 +30,14 @@ struct FaceDistance {
 };
 FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local);
 
-// What the World keeps per body for point queries.
+// What the World keeps per body for point queries: the face planes, and for a body of any shape
+// (a bowl, a torus) its signed distance grid and the surface points it tests against others.
 struct BodyShape {
-  ConvexShape convex;
+  ConvexShape convex;                                // face planes; boundingRadius bounds the body
+  std::shared_ptr<const SignedDistanceGrid> sdf;     // null: the face planes are the solid
+  std::shared_ptr<const std::vector<Vec3>> samples;  // body frame; null: the mesh's vertices
 };
-BodyShape bodyShapeOf(const Mesh& mesh);
+BodyShape bodyShapeOf(const BodyDef& def);
 
 // Where a body-frame point is: its signed distance to the surface (< 0 inside; exact inside, and
 // outside a lower bound, enough to tell contact) and the outward unit normal there, body frame.

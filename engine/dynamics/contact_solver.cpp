@@ -10,9 +10,12 @@ namespace rbsim {
 
 namespace {
 
+// Kind (1 bit), the manifold's part of the pair (7 bits), then a and b (28 bits each: 268 M
+// bodies, far beyond what a step can hold).
 std::uint64_t pairKey(const Contact& c) {
   const std::uint64_t kind = c.kind == Contact::Kind::PlaneBody ? 1u : 0u;
-  return (kind << 63) | (static_cast<std::uint64_t>(c.a) << 32) | static_cast<std::uint64_t>(c.b);
+  return (kind << 63) | (static_cast<std::uint64_t>(c.part & 0x7f) << 56) | (static_cast<std::uint64_t>(c.a) << 28) |
+         static_cast<std::uint64_t>(c.b);
 }
 
 // Two unit tangents completing the normal to a right-handed basis.

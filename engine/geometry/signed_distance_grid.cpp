@@ -180,17 +180,22 @@ double SignedDistanceGrid::phi(const Vec3& p) const {
   return (p - q).norm() + interpolate(q, nullptr);
 }
 
-Vec3 SignedDistanceGrid::gradient(const Vec3& p) const {
+double SignedDistanceGrid::phiAndGradient(const Vec3& p, Vec3& gradient) const {
   const Vec3 hi = shape_.origin + shape_.cellSize * (shape_.dims - Vec3i::Ones()).cast<double>();
   const Vec3 q = p.cwiseMax(shape_.origin).cwiseMin(hi);
-  Vec3 g;
-  interpolate(q, &g);
+  const double inside = interpolate(q, &gradient);
   const Vec3 away = p - q;
   const double length = away.norm();
-  if (length == 0.0) return g;
+  if (length == 0.0) return inside;
   for (int axis = 0; axis < 3; ++axis) {
-    if (away[axis] != 0.0) g[axis] = away[axis] / length;
+    if (away[axis] != 0.0) gradient[axis] = away[axis] / length;
   }
+  return length + inside;
+}
+
+Vec3 SignedDistanceGrid::gradient(const Vec3& p) const {
+  Vec3 g;
+  phiAndGradient(p, g);
   return g;
 }
 

@@ -50,6 +50,8 @@ class SignedDistanceGrid {
   // direction away from the box along the clamped axes and the interpolant's derivative along the
   // others). On a cell face, the cell on the + side.
   Vec3 gradient(const Vec3& p) const;
+  // phi(p), and gradient(p) into `gradient`, with one interpolation.
+  double phiAndGradient(const Vec3& p, Vec3& gradient) const;
   // gradient / |gradient| (seed 000 "Collision Detection"); the zero vector where the gradient
   // vanishes (a point of the medial axis where the interpolant is flat).
   Vec3 normal(const Vec3& p) const;

@@ -1,15 +1,24 @@
 #include "scene/body_parser.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "io/input_error.h"
 #include "io/obj_loader.h"
+#include "fracture/pieces.h"
+#include "geometry/shapes.h"
+#include "geometry/signed_distance_grid.h"
+#include "geometry/surface_samples.h"
 #include "mass/mass_model.h"
 #include "scene/fracture_parser.h"
 
 namespace rbsim::scene_detail {
 
 namespace {
+
+// A mesh is treated as convex when no vertex lies outside a face plane by more than this
+// fraction of its size: rounding in an OBJ file's 6 digits, not a dent.
+constexpr double kConvexTolerance = 1e-6;  // [1]
 
 Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
   const std::string name = o.string(key, fallback == Frame::Body ? "body" : "world");
@@ -18,13 +27,42 @@ Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
   o.fail(key, "expected \"body\" or \"world\", got \"" + name + "\"");
 }
 
+// Tessellation of the generated round shapes: fine enough that a sphere's inscribed mesh loses
+// under 1 % of its volume, coarse enough that rendering and surface sampling stay cheap.
+constexpr int kRoundSegments = 48;  // around the axis [1]
+constexpr int kRoundRings = 24;     // from pole to pole (half as many for a bowl) [1]
+
 Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def) {
-  const JsonObject shape = body.object("shape", {"type", "extents", "file", "scale"});
+  const JsonObject shape = body.object("shape", {"type", "extents", "file", "scale", "radius", "major_radius",
+                                                  "minor_radius", "thickness", "stroke"});
   const std::string type = shape.requiredString("type");
-  if (type == "box") {
-    const Vec3 extents = shape.positiveVec3("extents");
-    def.boxHalfExtents = 0.5 * extents;
-    return makeBox(extents);
+  try {
+    if (type == "box") {
+      const Vec3 extents = shape.positiveVec3("extents");
+      def.boxHalfExtents = 0.5 * extents;
+      return makeBox(extents);
+    }
+    if (type == "sphere") return makeUvSphere(shape.positiveNumber("radius", 0.5), kRoundSegments, kRoundRings);
+    if (type == "torus") {
+      const double major = shape.positiveNumber("major_radius", 0.5), minor = shape.positiveNumber("minor_radius", 0.15);
+      if (!(minor < major)) shape.fail("minor_radius", "expected less than major_radius");
+      return makeTorus(major, minor, kRoundSegments, kRoundRings);
+    }
+    if (type == "bowl") {
+      const double radius = shape.positiveNumber("radius", 1.0), thickness = shape.positiveNumber("thickness", 0.1);
+      if (!(thickness < radius)) shape.fail("thickness", "expected less than radius");
+      return makeBowl(radius, thickness, kRoundSegments, kRoundRings / 2);
+    }
+    if (type == "letter_u") {
+      const Vec3 extents = shape.positiveVec3("extents");  // width, height, depth
+      const double stroke = shape.positiveNumber("stroke", 0.25 * extents.x());
+      if (!(2.0 * stroke < extents.x() && stroke < extents.y())) {
+        shape.fail("stroke", "expected less than half the width and less than the height");
+      }
+      return makeLetterU(extents.x(), extents.y(), stroke, extents.z());
+    }
+  } catch (const std::invalid_argument& e) {  // the generators' own range checks
+    shape.fail("type", e.what());
   }
   if (type == "mesh") {
     const std::string file = shape.requiredString("file");
@@ -39,7 +77,33 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
     for (Vec3& p : mesh.vertices) p *= scale;
     return mesh;
   }
-  shape.fail("type", "expected \"box\" or \"mesh\", got \"" + type + "\"");
+  shape.fail("type", "expected \"box\", \"sphere\", \"torus\", \"bowl\", \"letter_u\" or \"mesh\", got \"" + type + "\"");
+}
+
+// A body of any shape gets a signed distance grid (seed 000 "Constructing Signed Distance
+// Functions") and surface samples: asked for with "sdf": {"resolution", "sample_spacing"}, and
+// always for a non-convex mesh, which the convex narrow phase would treat as its hull.
+void parseCollisionShape(const JsonObject& b, BodyDef& def) {
+  const Mesh& mesh = *def.mesh;
+  const bool convex = isConvex(mesh, kConvexTolerance * (mesh.boundsMax() - mesh.boundsMin()).norm());
+  if (!b.has("sdf") && convex) return;
+  const JsonObject o = b.has("sdf") ? b.object("sdf", {"resolution", "sample_spacing"}) : b;
+  SdfGridOptions options;
+  options.resolution = b.has("sdf") ? o.positiveInt("resolution", options.resolution) : options.resolution;
+  if (options.resolution < kMinSdfResolution || options.resolution > kMaxSdfResolution) {
+    o.fail("resolution", "expected " + std::to_string(kMinSdfResolution) + " to " + std::to_string(kMaxSdfResolution) +
+                             " cells along the longest side");
+  }
+  try {
+    def.sdf = std::make_shared<const SignedDistanceGrid>(SignedDistanceGrid::build(mesh, options));
+  } catch (const std::invalid_argument& e) {
+    b.fail("shape", std::string("no signed distance grid for this shape: ") + e.what());
+  }
+  // By default the samples are as dense as the grid: finer would test points the grid cannot
+  // tell apart, coarser would let an edge sink between samples.
+  const double spacing = b.has("sdf") && o.has("sample_spacing") ? o.number("sample_spacing", 0.0) : def.sdf->cellSize();
+  if (spacing < 0.0) o.fail("sample_spacing", "expected a spacing >= 0 m (0: the vertices only)");
+  def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(surfaceSamples(mesh, spacing));
 }
 
 double nonNegative(const JsonObject& o, const char* key, double fallback, const char* unit) {
@@ -88,6 +152,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   } catch (const InputError& e) {
     throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
   }
+  parseCollisionShape(b, def);
   def.position = b.vec3("position", Vec3::Zero());
   def.orientation = b.optionalOrientation("orientation").value_or(Quat::Identity());
   def.velocity = b.vec3("velocity", Vec3::Zero());

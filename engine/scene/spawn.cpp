@@ -42,7 +42,7 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
 
     // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
     const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs",
-                                               "restitution", "friction_static", "friction_kinetic"});
+                                               "restitution", "friction_static", "friction_kinetic", "fracture", "sdf"});
     const std::size_t first = scene.bodies.size();
     parseBody(body, baseDir, scene);
     parseScripts(body, first, scene);

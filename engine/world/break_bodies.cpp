@@ -30,7 +30,7 @@ void World::breakBody(std::size_t body, double impulse) {
   std::vector<BodyDef> pieces = fracturePieces(bodies_[body], *pattern, bodyMaterials_[body]);
   FractureEvent event{time(), body, bodies_.size(), pieces.size() - 1, impulse};
   bodies_[body] = RigidBody(pieces.front());
-  bodyShapes_[body] = bodyShapeOf(*pieces.front().mesh);
+  bodyShapes_[body] = bodyShapeOf(pieces.front());
   collision_.replaceBody(body, bodies_[body]);
   for (std::size_t k = 1; k < pieces.size(); ++k) addBody(pieces[k]);
   fractureEvents_.push_back(event);

@@ -8,6 +8,7 @@
 #include "collision/narrowphase/box_box.h"
 #include "collision/narrowphase/convex_convex.h"
 #include "collision/narrowphase/convex_plane.h"
+#include "collision/narrowphase/sdf_contact.h"
 #include "world/continuous_collision.h"
 
 namespace rbsim {
@@ -139,7 +140,8 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
   broad_->update();
 }
 
-void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes, double time) {
+void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+                                    const std::vector<Plane>& planes, double time) {
   contacts_.clear();
   const double margin = settings_.contactMargin;
   for (const ProxyPair& pair : broad_->pairs()) {
@@ -147,6 +149,14 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) continue;
+    if (shapes[pair.a].sdf || shapes[pair.b].sdf) {
+      const std::vector<ContactManifold> manifolds = collideSdf(a, shapes[pair.a], b, shapes[pair.b], margin);
+      for (std::size_t k = 0; k < manifolds.size(); ++k) {
+        log_.record(summarize(QueryKind::Sdf, pair.a, pair.b, manifolds[k], 0.0, time));
+        contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, static_cast<std::uint8_t>(k), manifolds[k]});
+      }
+      continue;
+    }
     std::optional<OrientedBox> boxA, boxB;
     if (a.boxHalfExtents() && b.boxHalfExtents()) {
       boxA = OrientedBox{a.position(), a.rotation(), *a.boxHalfExtents()};
@@ -156,14 +166,14 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
                                           boxB ? &*boxB : nullptr);
     log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold,
                           c.distance, time));
-    if (c.manifold.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, c.manifold});
+    if (c.manifold.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold});
   }
   for (std::size_t p = 0; p < planes.size(); ++p) {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       if (bodies[i].isStatic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
       const ContactManifold m = collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin);
       log_.record(summarize(QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
-      if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, m});
+      if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, 0, m});
     }
   }
 }

@@ -3,10 +3,12 @@
 // collision for fast bodies, the broad phase over world AABBs, and the narrow phase turning
 // candidate pairs and planes into contact manifolds. Owned by the World; plain data out.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "body/rigid_body.h"
+#include "collision/body_shape.h"
 #include "collision/broadphase/broad_phase.h"
 #include "collision/contact.h"
 #include "collision/narrowphase/query_log.h"
@@ -19,6 +21,9 @@ namespace rbsim {
 struct Contact {
   enum class Kind { BodyBody, PlaneBody } kind = Kind::BodyBody;
   std::size_t a = 0, b = 0;
+  // Which of the pair's manifolds (a body of any shape may touch another along several normals:
+  // collision/narrowphase/sdf_contact.h); part of the warm-start key.
+  std::uint8_t part = 0;
   ContactManifold manifold;
 };
 
@@ -48,7 +53,9 @@ class CollisionPipeline {
   // bodies) into the broad phase, then the candidate pairs.
   void broadPhase(const std::vector<RigidBody>& bodies);
   // Stage NarrowPhase: contacts of candidate pairs and of bodies against planes.
-  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes, double time);
+  // `shapes` are per body (World::bodyShapes): pairs with a signed distance grid use them.
+  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+                   const std::vector<Plane>& planes, double time);
 
   // Something awake and something to meet: two bodies, or a body and a plane. The stage also
   // refreshes boxes(), which the plane tests of the narrow phase read.

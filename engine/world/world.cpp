@@ -97,7 +97,7 @@ std::size_t World::addBody(const BodyDef& def) {
   }
   bodies_.emplace_back(def);
   bodyMaterials_.push_back(def.material);
-  bodyShapes_.push_back(bodyShapeOf(*def.mesh));
+  bodyShapes_.push_back(bodyShapeOf(def));
   fracturePatterns_.push_back(def.fracture);
   if (def.fracture) ++breakableBodies_;
   collision_.addBody(bodies_.back());
@@ -216,7 +216,7 @@ void World::step() {
     if (settings_.detectCollisions) collision_.broadPhase(bodies_);
   });
   runStage(Stage::NarrowPhase, collides && anyAwakeNow, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, planes_, time());
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
   });
   // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
   // are contacts between sleeping bodies, which receive nothing.

@@ -14,6 +14,7 @@ const char* queryKindName(QueryKind kind) {
     case QueryKind::BoxBox: return "box-box";
     case QueryKind::Distance: return "distance";
     case QueryKind::TriangleTriangle: return "triangle-triangle";
+    case QueryKind::Sdf: return "surface-points-vs-sdf";
   }
   return "unknown";
 }

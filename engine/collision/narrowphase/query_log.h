@@ -13,7 +13,7 @@
 
 namespace rbsim {
 
-enum class QueryKind : std::uint8_t { PlaneConvex, ConvexConvex, BoxBox, Distance, TriangleTriangle };
+enum class QueryKind : std::uint8_t { PlaneConvex, ConvexConvex, BoxBox, Distance, TriangleTriangle, Sdf };
 
 const char* queryKindName(QueryKind kind);
 
