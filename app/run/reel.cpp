@@ -1,6 +1,7 @@
 #include "run/reel.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
