@@ -14,6 +14,8 @@
 #include "render/render_error.h"
 #include "window/interactive.h"
 #include "window/x11_window.h"
+#include "run/progress.h"
+#include "run/reel.h"
 #include "run/runner.h"
 #include "scene/scene.h"
 #include "world/simulation_error.h"
@@ -84,6 +86,20 @@ struct Flags {
   }
 };
 
+int parseDemoNumber(const std::string& text) {
+  std::size_t used = 0;
+  int number = 0;
+  try {
+    number = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size()) {
+    throw InputError("", "demo " + text, "expected a demo number (see `rbsim list`) or `all`");
+  }
+  return number;
+}
+
 int listEverything() {
   std::printf("demos:\n");
   for (const rbsim::app::Demo& demo : rbsim::app::allDemos()) {
@@ -97,17 +113,48 @@ int listEverything() {
   return 0;
 }
 
+// `rbsim demo all`: every demo into videos/<name>.mp4 and, after title cards, into one reel, all
+// at 1280x720 and 60 fps. Flags that choose one phase, one output file, a window, another format
+// or no rendering contradict that, so they are refused rather than half-applied.
+int renderAllDemos(const CLI::App& demo, Flags& flags) {
+  for (const char* name : {"--phase", "--video", "--trace", "--trace-every", "--fps", "--size", "--no-render", "--window",
+                           "--window-frames", "--screenshot"}) {
+    if (demo.get_option(name)->count() > 0) {
+      throw InputError("", std::string(name) + " with `demo all`",
+                       "not allowed: `demo all` renders every demo at 1280x720, 60 fps into videos/<name>.mp4 and "
+                       "videos/rbsim-demos.mp4; use `demo N` for one demo");
+    }
+  }
+  rbsim::app::ReelOptions reel;
+  const RunOptions run = flags.finish("");
+  reel.overrides = run.overrides;
+  reel.quiet = run.quiet;
+  if (!run.framesDir.empty()) reel.framesBase = run.framesDir;
+  const rbsim::app::ReelPlan plan = rbsim::app::planReel(rbsim::app::allDemos(), reel);
+  if (!reel.quiet) {
+    std::fprintf(stderr, "rbsim: %zu demos, %llu frames (%s of video at %dx%d, %d fps)\n", plan.demos.size(),
+                 static_cast<unsigned long long>(plan.totalFrames),
+                 rbsim::app::formatClock(static_cast<double>(plan.totalFrames) / reel.fps).c_str(), reel.width,
+                 reel.height, reel.fps);
+  }
+  const rbsim::app::ReelResult result = rbsim::app::renderReel(plan, reel);
+  rbsim::app::printReelSummary(result, reel);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"rbsim: rigid-body simulator with numbered coursework demos, rendered off-screen"};
   app.require_subcommand(1);
 
-  int demoNumber = 0;
+  std::string demoArgument;
   int demoPhase = 0;  // 0: every phase
   Flags demoFlags;
   CLI::App* demo = app.add_subcommand("demo", "run numbered assignment demo N into videos/");
-  demo->add_option("N", demoNumber, "demo number (see `rbsim list`)")->required();
+  demo->add_option("N", demoArgument, "demo number (see `rbsim list`), or `all`: every demo, and the reel "
+                                      "videos/rbsim-demos.mp4")
+      ->required();
   demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4")
       ->check(CLI::PositiveNumber);
   demoFlags.attach(*demo);
@@ -134,7 +181,9 @@ int main(int argc, char** argv) {
     std::string title;
     RunOptions options;
     Flags& flags = app.got_subcommand("demo") ? demoFlags : runFlags;
+    if (app.got_subcommand("demo") && demoArgument == "all") return renderAllDemos(*demo, demoFlags);
     if (app.got_subcommand("demo")) {
+      const int demoNumber = parseDemoNumber(demoArgument);
       const rbsim::app::Demo* chosen = rbsim::app::findDemo(demoNumber);
       if (!chosen) {
         throw InputError("", "demo " + std::to_string(demoNumber), "no such demo; `rbsim list` shows them");

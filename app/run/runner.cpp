@@ -28,7 +28,18 @@ std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt) {
   return static_cast<std::uint64_t>(std::llround(static_cast<double>(frame) / (fps * dt)));
 }
 
-RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title) {
+std::uint64_t frameCount(std::uint64_t steps, double fps, double dt) {
+  std::uint64_t frames = 0;
+  while (stepOfFrame(frames, fps, dt) <= steps) ++frames;
+  return frames;
+}
+
+std::uint64_t frameCount(const Scene& scene) {
+  return frameCount(scene.stepCount(), scene.view.fps, scene.settings.timeStep);
+}
+
+RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title,
+                     const FrameObserver& observer) {
   RunSummary summary;
   const auto wallStart = Clock::now();
   const ViewDesc& first = scenes.front().view;
@@ -70,6 +81,7 @@ RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options
         start = Clock::now();
         sink->submit(pixels);
         summary.submitSeconds += secondsSince(start);
+        if (observer) observer(pixels);
         ++nextFrame;
         ++summary.frames;
       }

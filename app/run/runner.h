@@ -2,6 +2,7 @@
 // Runs scenes: steps the World, renders frames at the scene's fps, streams them to PNG files
 // and an MP4, writes the trace, and reports where the time went.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,13 +23,25 @@ struct RunSummary {
   double wallSeconds = 0.0;
 };
 
-// Frame k of a scene shows the state at the step nearest to k / fps.
+// Frame k of a scene shows the state at the step nearest to k / fps. When dt does not divide
+// 1/fps the frames' times jitter by at most dt/2 but never drift; none is dropped, and a step is
+// shown twice only when dt > 1/fps.
 std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt);
+
+// How many frames runScenes renders for a scene of `steps` steps: every k with
+// stepOfFrame(k) <= steps (frame 0 is the initial state).
+std::uint64_t frameCount(std::uint64_t steps, double fps, double dt);
+std::uint64_t frameCount(const Scene& scene);
+
+// Called with every rendered image (top-down RGBA8) after it went to the run's own outputs:
+// `rbsim demo all` copies it into the reel and counts it for the progress line.
+using FrameObserver = std::function<void(const std::vector<std::uint8_t>& rgbaTopDown)>;
 
 // Plays the scenes one after another into the same frames folder and video (a demo's phases).
 // Every scene must have the same image size. `title` heads the overlay (the scene's own title
 // when empty).
-RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title);
+RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title,
+                     const FrameObserver& observer = {});
 
 void printSummary(const RunSummary& summary, const RunOptions& options);
 

@@ -1,0 +1,200 @@
+#include "run/reel.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "io/input_error.h"
+#include "paths.h"
+#include "render/frame_sink.h"
+#include "render/png_sequence_writer.h"
+#include "render/title_card.h"
+#include "run/progress.h"
+#include "run/runner.h"
+
+namespace rbsim::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Cards fade in from black and out to black over this time [s]: a cut from a still card
+// straight into a moving scene looks like a glitch.
+constexpr double kFadeSeconds = 0.3;
+
+std::string seconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.1f s", s);
+  return buffer;
+}
+
+// "Demo 1 (a): a fountain on the ground" -> "a fountain on the ground": the card already names
+// the demo.
+std::string phaseCaption(const std::string& title) {
+  const std::size_t colon = title.find(": ");
+  return colon == std::string::npos ? title : title.substr(colon + 2);
+}
+
+std::string formatLine(const ReelOptions& o) {
+  return std::to_string(o.width) + "\xc3\x97" + std::to_string(o.height) + "  \xc2\xb7  " + std::to_string(o.fps) +
+         " fps  \xc2\xb7  H.264";  // U+00D7 multiplication sign, U+00B7 middle dot (in DejaVu)
+}
+
+double demoSeconds(const ReelDemo& d, int fps) { return static_cast<double>(d.frames) / fps; }
+
+render::TitleCard openingCard(const ReelPlan& plan, const ReelOptions& options) {
+  std::size_t scenes = 0;
+  for (const ReelDemo& d : plan.demos) scenes += d.scenes.size();
+  render::TitleCard card;
+  card.kicker = "RBSIM  \xc2\xb7  DEMO REEL";
+  card.title = "Physically based animation";
+  card.description = "Every numbered coursework demo, simulated by rbsim's engine and rendered off-screen by its own "
+                     "renderer: " + std::to_string(plan.demos.size()) + " demos, " + std::to_string(scenes) +
+                     " scenes, " + formatClock(static_cast<double>(plan.totalFrames) / options.fps) + " in all.";
+  card.listHeading = "DEMOS";
+  for (const ReelDemo& d : plan.demos) {
+    card.list.push_back({std::to_string(d.demo.number), d.demo.name, d.demo.description, seconds(demoSeconds(d, options.fps))});
+  }
+  card.footerLeft = "rbsim  \xc2\xb7  rigid-body simulator";
+  card.footerRight = formatLine(options);
+  return card;
+}
+
+render::TitleCard demoCard(const ReelPlan& plan, std::size_t index, const ReelOptions& options) {
+  const ReelDemo& d = plan.demos[index];
+  render::TitleCard card;
+  card.kicker = "DEMO " + std::to_string(index + 1) + " OF " + std::to_string(plan.demos.size());
+  card.number = std::to_string(d.demo.number);
+  card.title = d.demo.name;
+  card.description = d.demo.description;
+  card.description[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(card.description[0])));
+  card.listHeading = d.scenes.size() == 1 ? "SCENE" : "PHASES";
+  for (std::size_t p = 0; p < d.scenes.size(); ++p) {
+    const Scene& scene = d.scenes[p];
+    card.list.push_back({std::to_string(p + 1), phaseCaption(scene.title), "",
+                         seconds(static_cast<double>(frameCount(scene)) / options.fps)});
+  }
+  card.footerLeft = "rbsim demo " + std::to_string(d.demo.number) + "  \xc2\xb7  videos/" + d.demo.name + ".mp4";
+  card.footerRight = formatLine(options);
+  return card;
+}
+
+// The card's frame `k` of `count`, faded from and to black.
+std::vector<std::uint8_t> fadedFrame(const std::vector<std::uint8_t>& card, std::uint64_t k, std::uint64_t count,
+                                     int fps) {
+  const double t = (static_cast<double>(k) + 0.5) / fps, end = static_cast<double>(count) / fps;
+  const double gain = std::clamp(std::min(t, end - t) / kFadeSeconds, 0.0, 1.0);
+  std::vector<std::uint8_t> frame(card);
+  if (gain >= 1.0) return frame;
+  for (std::size_t i = 0; i < frame.size(); i += 4) {
+    for (std::size_t c = 0; c < 3; ++c) frame[i + c] = static_cast<std::uint8_t>(std::lround(gain * frame[i + c]));
+  }
+  return frame;
+}
+
+std::uintmax_t fileSize(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  return error ? 0 : size;
+}
+
+}  // namespace
+
+ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options) {
+  if (options.cardSeconds <= 0.0) throw InputError("", "card seconds", "expected a positive time");
+  std::vector<std::string> overrides = {"view.fps=" + std::to_string(options.fps),
+                                        "view.size=[" + std::to_string(options.width) + "," + std::to_string(options.height) + "]"};
+  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  ReelPlan plan;
+  plan.cardFrames = static_cast<std::uint64_t>(std::llround(options.cardSeconds * options.fps));
+  plan.totalFrames = plan.cardFrames;  // the opening card
+  for (const Demo& demo : demos) {
+    ReelDemo entry{demo, {}, 0};
+    for (const std::string& file : demo.scenes) {
+      entry.scenes.push_back(loadScene(assetDir() + "/scenes/" + file, overrides));
+      entry.frames += frameCount(entry.scenes.back());
+    }
+    plan.totalFrames += plan.cardFrames + entry.frames;
+    plan.demos.push_back(std::move(entry));
+  }
+  return plan;
+}
+
+ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
+  const auto wallStart = Clock::now();
+  ReelResult result;
+  const std::filesystem::path reelPath = options.videoDir / options.reelFile;
+  render::SinkOptions reelSink;
+  reelSink.videoPath = reelPath;
+  reelSink.fps = options.fps;
+  reelSink.width = options.width;
+  reelSink.height = options.height;
+  render::FrameSink reel(reelSink);  // checks ffmpeg and the folder before any frame
+  render::TitleCardRenderer cards(options.width, options.height);
+  ProgressMeter meter(stderr, isTerminal(stderr), options.quiet);
+
+  std::uint64_t done = 0;
+  std::size_t item = 0;
+  std::string name = "(opening card)";
+  const auto report = [&](bool force = false) {
+    meter.update({item, plan.demos.size(), name, done, plan.totalFrames,
+                  std::chrono::duration<double>(Clock::now() - wallStart).count()},
+                 force);
+  };
+  const auto playCard = [&](const render::TitleCard& card, const std::string& still) {
+    const std::vector<std::uint8_t>& image = cards.render(card);
+    const std::filesystem::path path = options.framesBase / "cards" / (still + ".png");
+    render::ensureWritableDirectory(path.parent_path());
+    render::writePng(path, options.width, options.height, image);
+    result.cardImages.push_back(path);
+    for (std::uint64_t k = 0; k < plan.cardFrames; ++k) {
+      reel.submit(fadedFrame(image, k, plan.cardFrames, options.fps));
+      ++done;
+      report();
+    }
+  };
+
+  playCard(openingCard(plan, options), "00_opening");
+  for (std::size_t i = 0; i < plan.demos.size(); ++i) {
+    const ReelDemo& d = plan.demos[i];
+    item = i + 1;
+    name = d.demo.name;
+    char still[64];
+    std::snprintf(still, sizeof still, "%02zu_", item);
+    playCard(demoCard(plan, i, options), still + d.demo.name);
+    RunOptions run;
+    run.framesDir = (options.framesBase / d.demo.name).string();
+    run.videoPath = (options.videoDir / (d.demo.name + ".mp4")).string();
+    run.quiet = true;
+    const RunSummary summary =
+        runScenes(d.scenes, run, "Demo " + std::to_string(d.demo.number) + ": " + d.demo.name,
+                  [&](const std::vector<std::uint8_t>& image) {
+                    reel.submit(image);
+                    ++done;
+                    report();
+                  });
+    result.videos.push_back({run.videoPath, summary.frames, static_cast<double>(summary.frames) / options.fps,
+                             fileSize(run.videoPath)});
+  }
+  reel.finish();
+  report(true);
+  meter.finish();
+  result.videos.push_back({reelPath, done, static_cast<double>(done) / options.fps, fileSize(reelPath)});
+  result.wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
+  return result;
+}
+
+void printReelSummary(const ReelResult& result, const ReelOptions& options) {
+  if (options.quiet) return;
+  for (const VideoReport& v : result.videos) {
+    std::printf("%-28s %7.2f s  %6llu frames  %6.1f MB\n", v.path.string().c_str(), v.seconds,
+                static_cast<unsigned long long>(v.frames), static_cast<double>(v.bytes) / 1e6);
+  }
+  if (!result.cardImages.empty()) std::printf("title cards: %s\n", result.cardImages.front().parent_path().string().c_str());
+  std::printf("frames: %s/<name>/\n", options.framesBase.string().c_str());
+  std::printf("wall time %s (%.1f s)\n", formatClock(result.wallSeconds).c_str(), result.wallSeconds);
+}
+
+}  // namespace rbsim::app

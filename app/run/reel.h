@@ -1,0 +1,61 @@
+#pragma once
+// `rbsim demo all`: every numbered demo in registry order, each into its own video and PNG
+// folder as `rbsim demo N` would, and the same frames, each demo after a title card and the
+// whole after an opening card, into one reel (videos/rbsim-demos.mp4), all in one format.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "demos/demo.h"
+#include "scene/scene.h"
+
+namespace rbsim::app {
+
+struct ReelOptions {
+  int width = 1280;  // image size [px], forced on every scene (view.size)
+  int height = 720;
+  int fps = 60;               // frames per second, forced on every scene (view.fps)
+  double cardSeconds = 2.5;   // time each title card stays on screen [s]
+  std::vector<std::string> overrides;  // the user's scene assignments, applied after the format
+  std::filesystem::path framesBase = "build/frames";  // demo <name>'s PNGs go to framesBase/<name>/
+  std::filesystem::path videoDir = "videos";          // <name>.mp4 and the reel go here
+  std::string reelFile = "rbsim-demos.mp4";
+  bool quiet = false;  // no progress and no summary
+};
+
+struct ReelDemo {
+  Demo demo;
+  std::vector<Scene> scenes;  // loaded with the reel's format and the user's overrides
+  std::uint64_t frames = 0;   // rendered for its scenes (frameCount of each, summed)
+};
+
+struct ReelPlan {
+  std::vector<ReelDemo> demos;
+  std::uint64_t cardFrames = 0;   // of one title card
+  std::uint64_t totalFrames = 0;  // of the reel: opening card, then each demo's card and frames
+};
+
+// Loads every demo's scenes (bad input fails here, before anything renders) and counts frames.
+ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options);
+
+struct VideoReport {
+  std::filesystem::path path;
+  std::uint64_t frames = 0;
+  double seconds = 0.0;      // frames / fps
+  std::uintmax_t bytes = 0;  // file size after ffmpeg finished
+};
+
+struct ReelResult {
+  std::vector<VideoReport> videos;  // each demo's, in order, then the reel
+  std::vector<std::filesystem::path> cardImages;  // one PNG still of each title card
+  double wallSeconds = 0.0;
+};
+
+// Renders the plan; progress goes to stderr (see progress.h) unless options.quiet.
+ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options);
+
+// "videos/particles.mp4  24.02 s  1441 frames  3.1 MB" per video, then the wall time.
+void printReelSummary(const ReelResult& result, const ReelOptions& options);
+
+}  // namespace rbsim::app
