@@ -82,11 +82,15 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
 
 // A body of any shape gets a signed distance grid (seed 000 "Constructing Signed Distance
 // Functions") and surface samples: asked for with "sdf": {"resolution", "sample_spacing"}, and
-// always for a non-convex mesh, which the convex narrow phase would treat as its hull.
+// always for a closed non-convex mesh, which the convex narrow phase would treat as its hull.
 void parseCollisionShape(const JsonObject& b, BodyDef& def) {
   const Mesh& mesh = *def.mesh;
-  const bool convex = isConvex(mesh, kConvexTolerance * (mesh.boundsMax() - mesh.boundsMin()).norm());
-  if (!b.has("sdf") && convex) return;
+  if (!b.has("sdf")) {
+    // An open mesh (accepted with the cube inertia) has no inside to grid: it stays convex.
+    const MeshCheck check = checkMesh(mesh);
+    const bool solid = check.closed && check.consistentlyOriented && check.degenerateTriangles == 0;
+    if (!solid || isConvex(mesh, kConvexTolerance * (mesh.boundsMax() - mesh.boundsMin()).norm())) return;
+  }
   const JsonObject o = b.has("sdf") ? b.object("sdf", {"resolution", "sample_spacing"}) : b;
   SdfGridOptions options;
   options.resolution = b.has("sdf") ? o.positiveInt("resolution", options.resolution) : options.resolution;
