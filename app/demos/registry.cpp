@@ -7,10 +7,11 @@ Demo demo2Unconstrained();
 Demo demo3Broadphase();
 Demo demo4Narrowphase();
 Demo demo5Contact();
+Demo demo6Implicit();
 Demo demo7Soft();
 
 const std::vector<Demo>& allDemos() {
-  static const std::vector<Demo> demos = {demo1Particles(), demo2Unconstrained(), demo3Broadphase(), demo4Narrowphase(), demo5Contact(),
+  static const std::vector<Demo> demos = {demo1Particles(), demo2Unconstrained(), demo3Broadphase(), demo4Narrowphase(), demo5Contact(), demo6Implicit(),
                                            demo7Soft()};
   return demos;
 }

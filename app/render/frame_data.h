@@ -59,6 +59,7 @@ inline constexpr glm::vec3 kDebugOverlapAabbColor{1.00f, 0.08f, 0.06f};    // re
 inline constexpr glm::vec3 kDebugSweptAabbColor{0.75f, 0.78f, 0.82f};      // light grey
 inline constexpr glm::vec3 kDebugContactPointColor{1.00f, 0.90f, 0.00f};   // yellow
 inline constexpr glm::vec3 kDebugContactNormalColor{1.00f, 0.10f, 0.90f};  // magenta
+inline constexpr glm::vec3 kDebugGridNormalColor{0.30f, 1.00f, 0.25f};     // green: normal from grad phi
 inline constexpr glm::vec3 kDebugImpulseColor{1.00f, 0.50f, 0.00f};        // orange: impulse j
 
 // One particle drawn as a camera-facing sprite; the layout is the renderer's instance attribute.

@@ -86,17 +86,23 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
   if (!view.contacts) return;
   int points = 0;
   double deepest = -std::numeric_limits<double>::infinity();
+  int fromGrids = 0;
   for (const Contact& c : world.contacts()) {
+    // Normals that came from a signed distance grid (grad phi, seed 000) are drawn in their own
+    // colour, so a demo shows which contacts the grid found.
+    const bool fromGrid = c.kind == Contact::Kind::BodyBody && (world.bodyShapes()[c.a].sdf || world.bodyShapes()[c.b].sdf);
+    fromGrids += fromGrid ? 1 : 0;
     for (int k = 0; k < c.manifold.count; ++k) {
       const ContactPoint& p = c.manifold.points[k];
       frame.points.push_back({toGlm(p.position), render::kDebugContactPointColor, kContactPointPixels});
       render::appendArrowLines(frame.lines, toGlm(p.position), toGlm(p.position) + kNormalLength * toGlm(c.manifold.normal),
-                               render::kDebugContactNormalColor);
+                               fromGrid ? render::kDebugGridNormalColor : render::kDebugContactNormalColor);
       deepest = std::max(deepest, p.depth);
       ++points;
     }
   }
   frame.overlay.rows.push_back({"contacts", format("%.0f manifolds, %.0f points", static_cast<double>(world.contacts().size()), points)});
+  if (fromGrids > 0) frame.overlay.rows.push_back({"from SDF grids", format("%.0f manifolds, green normals", fromGrids)});
   if (points > 0) frame.overlay.rows.push_back({"deepest penetration", format("%.4f m", deepest)});
   drawImpulses(world, frame);
   std::size_t listed = 0;
