@@ -40,6 +40,10 @@ struct Flags {
                                   "NONEMPTY");
     cmd.add_option("--frames", run.framesDir, "write PNG frames into this folder")->check(nonEmpty);
     cmd.add_option("--video", run.videoPath, "write the MP4 here (default videos/<name>.mp4)")->check(nonEmpty);
+    cmd.add_option("--png-level", run.pngLevel,
+                   "zlib level of the --frames PNGs, 0 (stored, fastest) to 9 (smallest); default 1, "
+                   "see app/render/png_file.h")
+        ->check(CLI::Range(rbsim::render::kMinPngLevel, rbsim::render::kMaxPngLevel));
     cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here")->check(nonEmpty);
     cmd.add_option("--trace-every", run.traceEvery, "trace every K-th step")->check(CLI::Range(1, 1000000000));
     cmd.add_option("--steps", steps, "number of steps per scene (world.steps)")->check(nonEmpty);

@@ -38,7 +38,7 @@ say() { printf '[make_report %4ds] %s\n' $(( $(date +%s) - started )) "$*"; }
 low() { nice -n 19 "$@"; }
 
 targets=(rbsim step_bench throughput_bench stage_skip_bench broadphase_bench contact_pile
-         bullet_pile bullet_pile_double particle_bench soft_bench accuracy_sweep)
+         bullet_pile bullet_pile_double particle_bench soft_bench accuracy_sweep sdf_bench sdf_contact_bench)
 
 if [ $run_bench = 1 ] || [ $make_stills = 1 ]; then
   say "configuring $build (Release, benchmarks on)"
@@ -93,6 +93,14 @@ if [ $run_bench = 1 ]; then
   say "running soft_bench ${soft_moduli[*]}"
   low "$build/bench/soft_bench" "${soft_moduli[@]}" > "$logs/soft.log"
   python3 bench/report/logs_to_csv.py "$logs" "$results"
+  say "running sdf_bench -> $results/sdf.csv"
+  low "$build/bench/sdf_bench" --csv "$results/sdf.csv" > "$logs/sdf.log" 2>&1
+  say "running sdf_contact_bench -> $results/sdf_contact.csv"
+  low "$build/bench/sdf_contact_bench" "$results/sdf_contact.csv" > "$logs/sdf_contact.log" 2>&1
+  # Not niced: the frame pipeline's wall time is the figure, and it needs both cores.
+  say "running bench/frame_pipeline.sh -> $results/frame_pipeline.csv"
+  bash bench/frame_pipeline.sh "$build" $([ $mode = quick ] && echo 1 || echo 2) > "$logs/frame_pipeline.log" 2>&1 \
+    || { tail -20 "$logs/frame_pipeline.log"; exit 1; }
   say "running accuracy_sweep -> $results/accuracy.csv"
   low "$build/bench/accuracy_sweep" "$results/accuracy.csv" "${accuracy_timing[@]}" > "$logs/accuracy.log" 2>&1
   load_after=$(cut -d' ' -f1-3 /proc/loadavg)

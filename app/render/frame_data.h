@@ -3,6 +3,7 @@
 // The engine never sees this file; the renderer never sees the engine.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +28,13 @@ struct BodyView {
   // A smooth surface (a cloth): normals averaged over the triangles sharing each vertex, and only
   // its open border outlined, instead of flat faces with every crease drawn.
   bool smooth = false;
+  // The rigid mesh the body was built from (type-erased: the renderer never sees the engine), or
+  // empty for a surface that deforms (cloth, soft body) or a one-off shape. Bodies naming the same
+  // mesh may be drawn as instances of it: the renderer uploads its shape once, in body space, and
+  // per frame only each body's (R, x) - the engine's own transform, unchanged, so the picture is
+  // the one worldVertices describe (seed 004: the app, not a graphics call, owns the pose).
+  // Holding the owner keeps the address, the renderer's cache key, from being reused meanwhile.
+  std::shared_ptr<const void> mesh;
 };
 
 // A force drawn as an arrow from its application point (world frame).

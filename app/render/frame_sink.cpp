@@ -21,7 +21,8 @@ FrameSink::FrameSink(SinkOptions options) : options_(std::move(options)) {
   }
   if (options_.pngDir) {
     png_ = std::make_unique<PngSequenceWriter>(*options_.pngDir, options_.width, options_.height,
-                                               options_.pngThreads, options_.queueFrames);
+                                               options_.pngLevel, options_.pngThreads,
+                                               options_.queueFrames);
   }
 }
 
@@ -81,7 +82,6 @@ SinkTiming FrameSink::timing() const {
   t.frames = frames_;
   t.pngMs = png_ ? png_->meanWriteMs() : 0.0;
   t.videoMs = video_ ? video_->meanWriteMs() : 0.0;
-  t.encodeMs = t.pngMs + t.videoMs;
   t.blockedMs = blockedMs_.mean();
   return t;
 }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "png_file.h"
 #include "timing.h"
 
 namespace rbsim::render {
@@ -17,6 +18,7 @@ struct SinkOptions {
   int fps = 30;
   int width = 0;   // must match the images submitted
   int height = 0;
+  int pngLevel = kDefaultPngLevel;  // zlib level in [0, 9]; see png_file.h for measured costs
   int pngThreads = 2;
   std::size_t queueFrames = 8;  // per writer; 8 frames of 1280x720 RGBA is 30 MB
 };

@@ -75,6 +75,9 @@ GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int 
       shadowProgram_(shaderDir, "shadow.vert", "shadow.frag"),
       meshProgram_(shaderDir, "mesh.vert", "mesh.frag"),
       lineProgram_(shaderDir, "line.vert", "line.frag"),
+      meshInstancedProgram_(shaderDir, "mesh_instanced.vert", "mesh.frag"),
+      shadowInstancedProgram_(shaderDir, "shadow_instanced.vert", "shadow.frag"),
+      lineInstancedProgram_(shaderDir, "line_instanced.vert", "line.frag"),
       debugDraw_(width, height, shaderDir),
       particleDraw_(shaderDir) {
   glGenVertexArrays(1, &emptyVao_);
@@ -219,32 +222,49 @@ void GlRenderer::drawShadows(const glm::mat4& viewProj) {
   glDepthFunc(GL_LEQUAL);
   glEnable(GL_POLYGON_OFFSET_FILL);  // coplanar with the ground: pull towards the camera
   glPolygonOffset(-2.0f, -2.0f);
+  for (const ShaderProgram* program : {&shadowProgram_, &shadowInstancedProgram_}) {
+    program->use();
+    program->set("uViewProj", viewProj);
+    program->set("uLightDir", kLightDir);
+    program->set("uAlpha", kShadowAlpha);
+  }
   shadowProgram_.use();
-  shadowProgram_.set("uViewProj", viewProj);
-  shadowProgram_.set("uLightDir", kLightDir);
-  shadowProgram_.set("uAlpha", kShadowAlpha);
   glBindVertexArray(meshVao_);
   glDrawArrays(GL_TRIANGLES, 0, ghostsFirst_);
+  shadowInstancedProgram_.use();
+  instanced_.drawShadows();
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
 }
 
+void GlRenderer::setMeshUniforms(const ShaderProgram& program, const FrameData& frame,
+                                 const glm::mat4& viewProj, bool wireframe, float alpha) const {
+  program.use();
+  program.set("uViewProj", viewProj);
+  program.set("uEye", frame.camera.eye);
+  program.set("uLightDir", kLightDir);
+  program.set("uLightColor", glm::vec3(0.80f, 0.78f, 0.74f));
+  program.set("uSkyAmbient", glm::vec3(0.34f, 0.36f, 0.40f));
+  program.set("uGroundAmbient", glm::vec3(0.12f, 0.12f, 0.12f));
+  program.set("uWireframe", wireframe ? 1 : 0);
+  program.set("uWireColor", glm::vec3(0.02f, 0.02f, 0.03f));
+  program.set("uAlpha", alpha);
+}
+
 void GlRenderer::drawMeshes(const FrameData& frame, const glm::mat4& viewProj, GLint first,
                             GLsizei count, bool wireframe, float alpha) {
   if (count <= 0) return;
-  meshProgram_.use();
-  meshProgram_.set("uViewProj", viewProj);
-  meshProgram_.set("uEye", frame.camera.eye);
-  meshProgram_.set("uLightDir", kLightDir);
-  meshProgram_.set("uLightColor", glm::vec3(0.80f, 0.78f, 0.74f));
-  meshProgram_.set("uSkyAmbient", glm::vec3(0.34f, 0.36f, 0.40f));
-  meshProgram_.set("uGroundAmbient", glm::vec3(0.12f, 0.12f, 0.12f));
-  meshProgram_.set("uWireframe", wireframe ? 1 : 0);
-  meshProgram_.set("uWireColor", glm::vec3(0.02f, 0.02f, 0.03f));
-  meshProgram_.set("uAlpha", alpha);
+  setMeshUniforms(meshProgram_, frame, viewProj, wireframe, alpha);
   glBindVertexArray(meshVao_);
   glDrawArrays(GL_TRIANGLES, first, count);
+}
+
+void GlRenderer::drawOpaqueBodies(const FrameData& frame, const glm::mat4& viewProj) {
+  drawMeshes(frame, viewProj, 0, ghostsFirst_, frame.options.wireframe, 1.0f);
+  if (instanced_.empty()) return;
+  setMeshUniforms(meshInstancedProgram_, frame, viewProj, frame.options.wireframe, 1.0f);
+  instanced_.drawSurfaces();
 }
 
 void GlRenderer::drawLines(const glm::mat4& viewProj, GLint first, GLsizei count, float widthPx,
@@ -253,6 +273,21 @@ void GlRenderer::drawLines(const glm::mat4& viewProj, GLint first, GLsizei count
   lineProgram_.use();
   lineProgram_.set("uViewProj", viewProj);
   lineProgram_.set("uAlpha", alpha);
+  glBindVertexArray(lineVao_);
+  withLineState(widthPx, [first, count] { glDrawArrays(GL_LINES, first, count); });
+}
+
+void GlRenderer::drawBodyEdges(const glm::mat4& viewProj) {
+  drawLines(viewProj, 0, static_cast<GLsizei>(geometry_.edges.size()), kEdgeWidth, 1.0f);
+  if (instanced_.empty()) return;
+  lineInstancedProgram_.use();
+  lineInstancedProgram_.set("uViewProj", viewProj);
+  lineInstancedProgram_.set("uAlpha", 1.0f);
+  lineInstancedProgram_.set("uEdgeShade", kEdgeShade);
+  withLineState(kEdgeWidth, [this] { instanced_.drawEdges(); });
+}
+
+void GlRenderer::withLineState(float widthPx, const std::function<void()>& draw) {
   glLineWidth(widthPx * pixelScale_);
   // Without multisampling, smooth lines are the antialiasing: they also cover the bodies'
   // silhouettes, since every silhouette edge of a box is a feature edge. Needs blending.
@@ -263,8 +298,7 @@ void GlRenderer::drawLines(const glm::mat4& viewProj, GLint first, GLsizei count
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   }
-  glBindVertexArray(lineVao_);
-  glDrawArrays(GL_LINES, first, count);
+  draw();
   if (smooth) {
     glDisable(GL_LINE_SMOOTH);
     if (!blendWasOn) glDisable(GL_BLEND);
@@ -326,6 +360,7 @@ void GlRenderer::drawGhosts(const FrameData& frame, const glm::mat4& viewProj) {
 void GlRenderer::draw(const FrameData& frame) {
   buildSceneGeometry(frame, geometry_);
   upload(geometry_);
+  instanced_.upload(frame);
   debugDraw_.upload(frame);
   particleDraw_.upload(frame);
   const glm::mat4 viewProj = viewProjection(frame.camera, width_, height_);
@@ -351,7 +386,7 @@ void GlRenderer::draw(const FrameData& frame) {
   glDepthMask(GL_TRUE);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  drawMeshes(frame, viewProj, 0, ghostsFirst_, frame.options.wireframe, 1.0f);
+  drawOpaqueBodies(frame, viewProj);
   glDisable(GL_POLYGON_OFFSET_FILL);
   if (frame.options.grid) {
     drawGround(frame, viewProj);
@@ -360,7 +395,7 @@ void GlRenderer::draw(const FrameData& frame) {
   drawSky(frame, viewProj);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  drawLines(viewProj, 0, static_cast<GLsizei>(geometry_.edges.size()), kEdgeWidth, 1.0f);
+  drawBodyEdges(viewProj);
   drawLines(viewProj, highlightFirst_, static_cast<GLsizei>(geometry_.highlight.size()),
             kHighlightWidth, 1.0f);
   particleDraw_.draw(frame, glm::lookAt(frame.camera.eye, frame.camera.target, frame.camera.up), viewProj);

@@ -1,8 +1,10 @@
 #pragma once
 // Draws one FrameData with OpenGL into the current context's default framebuffer: sky gradient,
 // ground grid with planar shadows, flat-shaded bodies with outlines (optional wireframe), body
-// axes and force arrows, see-through ghost bodies, particle sprites, debug lines and points. Multisampled into an
+// axes and force arrows, see-through ghost bodies, particle sprites, debug lines and points. Bodies
+// sharing a rigid mesh are drawn as instances (instanced_bodies.h). Multisampled into an
 // off-screen framebuffer (when asked for), then resolved.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +14,7 @@
 #include "debug_draw.h"
 #include "frame_data.h"
 #include "gl_api.h"
+#include "instanced_bodies.h"
 #include "projection.h"
 #include "particle_draw.h"
 #include "scene_geometry.h"
@@ -40,10 +43,16 @@ class GlRenderer {
   void drawSky(const FrameData& frame, const glm::mat4& viewProj);
   void drawGround(const FrameData& frame, const glm::mat4& viewProj);
   void drawShadows(const glm::mat4& viewProj);
+  void setMeshUniforms(const ShaderProgram& program, const FrameData& frame,
+                       const glm::mat4& viewProj, bool wireframe, float alpha) const;
   void drawMeshes(const FrameData& frame, const glm::mat4& viewProj, GLint first, GLsizei count,
                   bool wireframe, float alpha);
   void drawLines(const glm::mat4& viewProj, GLint first, GLsizei count, float widthPx,
                  float alpha);
+  // Runs `draw` (line primitives, program bound) at widthPx, smoothed when not multisampled.
+  void withLineState(float widthPx, const std::function<void()>& draw);
+  void drawOpaqueBodies(const FrameData& frame, const glm::mat4& viewProj);
+  void drawBodyEdges(const glm::mat4& viewProj);
   void drawOverlays(const FrameData& frame, const glm::mat4& viewProj);
   void drawGhosts(const FrameData& frame, const glm::mat4& viewProj);
 
@@ -56,6 +65,10 @@ class GlRenderer {
   ShaderProgram shadowProgram_;
   ShaderProgram meshProgram_;
   ShaderProgram lineProgram_;
+  ShaderProgram meshInstancedProgram_;
+  ShaderProgram shadowInstancedProgram_;
+  ShaderProgram lineInstancedProgram_;
+  InstancedBodies instanced_;
   DebugDraw debugDraw_;
   ParticleDraw particleDraw_;
   GLuint emptyVao_ = 0;  // for the buffer-less sky and ground draws

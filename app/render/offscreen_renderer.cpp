@@ -34,7 +34,7 @@ struct OffscreenRenderer::Impl {
   Overlay overlay;
   std::vector<std::uint8_t> image;
   MeanMs renderMs;
-  MeanMs copyMs;
+  MeanMs readbackMs;
   long frames = 0;
   bool uiWantsPointer = false;
 
@@ -81,7 +81,7 @@ const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& fram
     std::memcpy(d.image.data() + static_cast<std::size_t>(y) * rowBytes,
                 source + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
   }
-  d.copyMs.add(millisecondsSince(copyStart));
+  d.readbackMs.add(millisecondsSince(copyStart));
   ++d.frames;
   return d.image;
 }
@@ -93,7 +93,7 @@ int OffscreenRenderer::height() const { return impl_->context.height(); }
 int OffscreenRenderer::samples() const { return impl_->scene.samples(); }
 
 RenderTiming OffscreenRenderer::timing() const {
-  return {impl_->frames, impl_->renderMs.mean(), impl_->copyMs.mean()};
+  return {impl_->frames, impl_->renderMs.mean(), impl_->readbackMs.mean()};
 }
 
 }  // namespace rbsim::render

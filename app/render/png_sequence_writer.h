@@ -1,6 +1,6 @@
 #pragma once
-// Writes frames as dir/frame_000000.png ... with stb_image_write on a small pool of threads
-// (PNG deflate is the slowest step of the output path, and frames are independent).
+// Writes frames as dir/frame_000000.png ... with libpng on a small pool of threads (PNG deflate
+// is the slowest step of the output path, and frames are independent).
 #include <cstdint>
 #include <filesystem>
 #include <mutex>
@@ -17,8 +17,8 @@ namespace rbsim::render {
 class PngSequenceWriter {
  public:
   // Creates dir (and parents) and checks that a file can be written there; throws RenderError
-  // with the path otherwise.
-  PngSequenceWriter(std::filesystem::path dir, int width, int height, int threads,
+  // with the path otherwise, std::invalid_argument for a zlib level outside [0, 9].
+  PngSequenceWriter(std::filesystem::path dir, int width, int height, int zlibLevel, int threads,
                     std::size_t queueFrames);
   ~PngSequenceWriter();  // finishes, swallowing errors (call finish() to see them)
   PngSequenceWriter(const PngSequenceWriter&) = delete;
@@ -37,6 +37,7 @@ class PngSequenceWriter {
   std::filesystem::path dir_;
   int width_;
   int height_;
+  int zlibLevel_;
   BoundedQueue<OutputFrame> queue_;
   std::vector<std::thread> workers_;
   MeanMs writeMs_;

@@ -75,8 +75,7 @@ void addBody(const BodyView& body, const BodyTarget& out,
       ++edge.faces;
     }
   }
-  // Darker than the body itself so edges read as shading, not as a second colour.
-  const glm::vec4 edgeColor(body.color * 0.25f, out.alpha);
+  const glm::vec4 edgeColor(body.color * kEdgeShade, out.alpha);
   const glm::vec4 highlightColor(kHighlightColor, out.alpha);
   for (const auto& [key, edge] : edgeMap) {
     if (edge.faces != 1 && (!edge.crease || body.smooth)) continue;
@@ -92,6 +91,7 @@ void addBody(const BodyView& body, const BodyTarget& out,
 }
 
 bool isGhost(const BodyView& body) { return body.opacity < 1.0f; }  // NaN counts as opaque
+bool isDrawn(const BodyView& body) { return body.opacity > 0.0f; }
 
 void addAxes(const BodyView& body, SceneGeometry& out) {
   for (int axis = 0; axis < 3; ++axis) {
@@ -142,6 +142,29 @@ void addForce(const ForceArrow& arrow, float scale, SceneGeometry& out) {
 
 }  // namespace
 
+bool drawnAsInstance(const BodyView& body) {
+  return body.mesh != nullptr && body.triangles != nullptr && !body.smooth && !body.selected &&
+         isDrawn(body) && !isGhost(body);
+}
+
+void buildBodyShape(const BodyView& body, std::vector<MeshVertex>& triangles,
+                    std::vector<LineVertex>& edges) {
+  BodyView local;
+  local.triangles = body.triangles;
+  local.color = glm::vec3(1.0f);
+  local.worldVertices.reserve(body.worldVertices.size());
+  const glm::mat3 toBody = glm::transpose(body.rotation);  // R^-1 of a rotation
+  for (const glm::vec3& p : body.worldVertices) {
+    local.worldVertices.push_back(toBody * (p - body.position));
+  }
+  std::vector<LineVertex> unusedHighlight;
+  std::unordered_map<std::uint64_t, EdgeFaces> edgeMap;
+  std::vector<glm::vec3> unusedNormals;
+  triangles.clear();
+  edges.clear();
+  addBody(local, {triangles, edges, unusedHighlight, 1.0f}, edgeMap, unusedNormals);
+}
+
 void SceneGeometry::clear() {
   bodies.clear();
   arrowHeads.clear();
@@ -161,9 +184,9 @@ void buildSceneGeometry(const FrameData& frame, SceneGeometry& out) {
   std::vector<const BodyView*> ghosts;
   const BodyTarget opaque{out.bodies, out.edges, out.highlight, 1.0f};
   for (const BodyView& body : frame.bodies) {
-    if (!(body.opacity > 0.0f)) continue;
+    if (!isDrawn(body)) continue;
     if (isGhost(body)) ghosts.push_back(&body);
-    else addBody(body, opaque, edgeMap, normals);
+    else if (!drawnAsInstance(body)) addBody(body, opaque, edgeMap, normals);
     if (frame.options.axes && body.axisLength > 0.0f) addAxes(body, out);
   }
   // Blending is order-dependent: the farthest ghost goes first so nearer ones tint it. Stable,

@@ -41,14 +41,27 @@ struct SceneGeometry {
   void clear();
 };
 
-// Fills `out` (reusing its capacity) from one frame. Triangle indices outside a body's vertex list
-// are skipped rather than trusted, since they come from a mesh file.
+// Whether a body is drawn as an instance of its mesh (instanced_bodies.h) rather than from its
+// world vertices here: an opaque rigid body with a mesh, not smooth, not selected (the highlight
+// of the selected one is drawn with its own edges here). Ghosts and cloths stay on this path.
+bool drawnAsInstance(const BodyView& body);
+
+// Fills `out` (reusing its capacity) from one frame, leaving out the surfaces and outlines of
+// bodies drawnAsInstance (their axes stay). Triangle indices outside a body's vertex list are
+// skipped rather than trusted, since they come from a mesh file.
 void buildSceneGeometry(const FrameData& frame, SceneGeometry& out);
+
+// The body's shape in its own frame, p = R^T (p' - x), as buildSceneGeometry would draw it: 3
+// vertices per triangle with its flat normal (colour white), and its feature edges as segments.
+void buildBodyShape(const BodyView& body, std::vector<MeshVertex>& triangles,
+                    std::vector<LineVertex>& edges);
 
 // Colours shared by the geometry and the tests (linear RGB).
 inline constexpr glm::vec3 kAxisColors[3] = {
     {0.90f, 0.10f, 0.08f}, {0.15f, 0.75f, 0.12f}, {0.10f, 0.30f, 1.00f}};
 inline constexpr glm::vec3 kForceColor{1.00f, 0.78f, 0.05f};
 inline constexpr glm::vec3 kHighlightColor{1.00f, 1.00f, 1.00f};
+// Outlines are this fraction of the body's colour, so edges read as shading, not a second colour.
+inline constexpr float kEdgeShade = 0.25f;
 
 }  // namespace rbsim::render

@@ -1,27 +1,21 @@
 #pragma once
-// Per-frame cost of the output path, averaged, so the app can print
-// "ms per frame: render X, copy Y, encode Z (background)".
+// Per-frame cost of the output path, averaged, so the app can say where a frame's time went.
 #include <mutex>
-#include <string>
 
 namespace rbsim::render {
 
 struct RenderTiming {
   long frames = 0;
-  double renderMs = 0.0;  // GL draw of scene and overlay, including glFinish
-  double copyMs = 0.0;    // flipping the GL buffer into the top-down RGBA image
+  double renderMs = 0.0;    // GL draw of scene and overlay, up to glFinish (rasterised)
+  double readbackMs = 0.0;  // the finished OSMesa buffer flipped into the top-down RGBA image
 };
 
 struct SinkTiming {
   long frames = 0;
-  double encodeMs = 0.0;   // pngMs + videoMs: background work per frame
-  double pngMs = 0.0;      // stb PNG encode + write of one frame, per worker
-  double videoMs = 0.0;    // handing one frame to ffmpeg (waits while it encodes)
+  double pngMs = 0.0;      // deflate + write of one PNG, on a worker thread
+  double videoMs = 0.0;    // pipe write of one frame to ffmpeg (waits while ffmpeg encodes)
   double blockedMs = 0.0;  // time submit() waited on a full queue (0 when background keeps up)
 };
-
-// "ms per frame: render 12.3, copy 0.8, encode 20.1 (background)"
-std::string formatTiming(const RenderTiming& render, const SinkTiming& sink);
 
 // A thread-safe running mean of durations in milliseconds.
 class MeanMs {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "render/png_file.h"
+
 namespace rbsim::app {
 
 struct RunOptions {
@@ -14,6 +16,7 @@ struct RunOptions {
   std::string videoPath;               // write an MP4 here when non-empty
   std::string tracePath;               // write the CSV trace here when non-empty
   std::uint64_t traceEvery = 1;        // trace every K-th step
+  int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames, [0, 9]
   bool render = true;                  // --no-render turns frames and video off
   bool quiet = false;
 };

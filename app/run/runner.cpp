@@ -59,6 +59,7 @@ RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options
     sinkOptions.fps = first.fps;
     sinkOptions.width = first.width;
     sinkOptions.height = first.height;
+    sinkOptions.pngLevel = options.pngLevel;
     sink = std::make_unique<render::FrameSink>(sinkOptions);  // checks ffmpeg and folders first
     renderer = std::make_unique<render::OffscreenRenderer>(first.width, first.height);
   }
@@ -77,7 +78,6 @@ RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options
         summary.buildSeconds += secondsSince(start);
         start = Clock::now();
         const std::vector<std::uint8_t>& pixels = renderer->render(frame);
-        summary.renderSeconds += secondsSince(start);
         start = Clock::now();
         sink->submit(pixels);
         summary.submitSeconds += secondsSince(start);
@@ -97,7 +97,11 @@ RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options
     sink->finish();
     summary.finishSeconds = secondsSince(start);
     const render::SinkTiming timing = sink->timing();
-    summary.encodeSeconds = 1e-3 * timing.encodeMs * static_cast<double>(timing.frames);
+    summary.pngMsPerFrame = timing.pngMs;
+    summary.videoMsPerFrame = timing.videoMs;
+    const render::RenderTiming drawn = renderer->timing();
+    summary.renderSeconds = 1e-3 * drawn.renderMs * static_cast<double>(drawn.frames);
+    summary.readbackSeconds = 1e-3 * drawn.readbackMs * static_cast<double>(drawn.frames);
   }
   summary.wallSeconds = secondsSince(wallStart);
   return summary;
@@ -110,10 +114,11 @@ void printSummary(const RunSummary& s, const RunOptions& options) {
   std::printf("simulate: %.4f ms per step\n", s.steps ? 1e3 * s.simulateSeconds / s.steps : 0.0);
   if (s.frames > 0) {
     const double perFrame = 1e3 / static_cast<double>(s.frames);
-    std::printf("ms per frame: simulate %.2f, build %.2f, render %.2f, hand-off %.2f "
-                "(encode %.2f on writer threads, in parallel); final flush %.0f ms\n",
+    std::printf("ms per frame: simulate %.2f, build %.2f, render %.2f, readback %.2f, hand-off %.2f; "
+                "on writer threads, in parallel: png %.2f, video %.2f; final flush %.0f ms\n",
                 perFrame * s.simulateSeconds, perFrame * s.buildSeconds, perFrame * s.renderSeconds,
-                perFrame * s.submitSeconds, perFrame * s.encodeSeconds, 1e3 * s.finishSeconds);
+                perFrame * s.readbackSeconds, perFrame * s.submitSeconds, s.pngMsPerFrame,
+                s.videoMsPerFrame, 1e3 * s.finishSeconds);
   }
   if (!options.videoPath.empty() && s.frames > 0) std::printf("video: %s\n", options.videoPath.c_str());
   if (!options.framesDir.empty() && s.frames > 0) std::printf("frames: %s\n", options.framesDir.c_str());

@@ -16,9 +16,11 @@ struct RunSummary {
   std::uint64_t frames = 0;
   double simulateSeconds = 0.0;  // World::step
   double buildSeconds = 0.0;     // World -> FrameData
-  double renderSeconds = 0.0;    // GL draw, overlay, readback
+  double renderSeconds = 0.0;    // GL draw and overlay, up to glFinish (rasterised)
+  double readbackSeconds = 0.0;  // the finished image flipped into a top-down RGBA buffer
   double submitSeconds = 0.0;    // hand-off to the writer threads (blocks only on a full queue)
-  double encodeSeconds = 0.0;    // PNG + video encoding on the writer threads (in parallel)
+  double pngMsPerFrame = 0.0;    // deflate + write of one PNG on a worker thread (in parallel)
+  double videoMsPerFrame = 0.0;  // pipe write of one frame to ffmpeg (waits while it encodes)
   double finishSeconds = 0.0;    // waiting for the writers after the last frame
   double wallSeconds = 0.0;
 };

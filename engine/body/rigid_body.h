@@ -25,6 +25,8 @@ class alignas(64) RigidBody {
   // Constants.
   const std::string& name() const { return cold_->name; }
   const Mesh& mesh() const { return *cold_->mesh; }
+  // The same mesh, shared by every body made from one template (a spawn block): its owner.
+  const std::shared_ptr<const Mesh>& sharedMesh() const { return cold_->mesh; }
   double mass() const { return mass_; }
   const Mat3& inertiaBody() const { return cold_->inertia.inertiaBody; }
   const Mat3& inverseInertiaBody() const { return inputs_.inverseInertiaBody; }

@@ -14,6 +14,7 @@
 
 #include "render/debug_shapes.h"
 #include "render/offscreen_renderer.h"
+#include "render/png_file.h"
 #include "render/png_sequence_writer.h"
 #include "render_test_util.h"
 
@@ -152,7 +153,7 @@ int main(int argc, char** argv) {
   const FrameData frame = exampleFrame();
   renderer.render(frame);  // the overlay panel shows from the second frame on
   auto image = std::make_shared<std::vector<std::uint8_t>>(renderer.render(frame));
-  PngSequenceWriter writer(argv[1], kWidth, kHeight, 1, 1);
+  PngSequenceWriter writer(argv[1], kWidth, kHeight, rbsim::render::kDefaultPngLevel, 1, 1);
   writer.submit({0, image});
   writer.finish();
   std::printf("wrote %s/frame_000000.png (%zu lines, %zu points)\n", argv[1], frame.lines.size(),

@@ -1,0 +1,63 @@
+#include "png_file.h"
+
+#include <csetjmp>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <png.h>
+
+#include "render_error.h"
+
+namespace rbsim::render {
+
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* file) const { std::fclose(file); }
+};
+
+// libpng reports errors by longjmp; keep every C++ object with a destructor outside the frame
+// that calls setjmp, so none is skipped. Returns false on any libpng error.
+bool writeRows(std::FILE* file, int width, int height, png_bytep* rows, int zlibLevel) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (png == nullptr) return false;
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_init_io(png, file);
+  png_set_compression_level(png, zlibLevel);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+               PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  png_write_info(png, info);
+  png_write_image(png, rows);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+}  // namespace
+
+void encodePngFile(const std::filesystem::path& path, int width, int height, const std::uint8_t* rgba,
+                   int zlibLevel) {
+  if (zlibLevel < kMinPngLevel || zlibLevel > kMaxPngLevel) {
+    throw std::invalid_argument("PNG compression level: expected an integer in [0, 9], got " +
+                                std::to_string(zlibLevel));
+  }
+  std::vector<png_bytep> rows(static_cast<std::size_t>(height));
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
+  for (std::size_t y = 0; y < rows.size(); ++y) {
+    rows[y] = const_cast<png_bytep>(rgba + y * rowBytes);  // libpng's API is not const-correct
+  }
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.string().c_str(), "wb"));
+  bool ok = file != nullptr && writeRows(file.get(), width, height, rows.data(), zlibLevel);
+  if (file) ok = std::fclose(file.release()) == 0 && ok;
+  if (!ok) throw RenderError("could not write PNG " + path.string());
+}
+
+}  // namespace rbsim::render
