@@ -129,14 +129,16 @@ python3 bench/report/plot_data.py "$results" "$plot_data"
 gnuplot -e "data='$plot_data'; outdir='$results'" bench/report/plots.gp
 
 if [ $make_stills = 1 ]; then
-  # demo number, video name, time of the still [s] (a moment that shows what the section is about)
-  while read -r number name at; do
+  # demo number, video name, time of the still [s] (a moment that shows what the section is about),
+  # and optionally the still's name when a demo gives several (default: the video's name)
+  while read -r number name at still; do
+    still=${still:-$name}
     if [ ! -f "videos/$name.mp4" ]; then
       say "rendering demo $number (videos/$name.mp4 is missing)"
       low "$build/rbsim" demo "$number" < /dev/null > "$logs/demo$number.log" 2>&1 || { tail -20 "$logs/demo$number.log"; exit 1; }
     fi
-    say "still of videos/$name.mp4 at $at s -> videos/stills/$name.png"
-    ffmpeg -nostdin -v error -y -ss "$at" -i "videos/$name.mp4" -frames:v 1 -vf scale=640:-1 "videos/stills/$name.png"
+    say "still of videos/$name.mp4 at $at s -> videos/stills/$still.png"
+    ffmpeg -nostdin -v error -y -ss "$at" -i "videos/$name.mp4" -frames:v 1 -vf scale=640:-1 "videos/stills/$still.png"
   done < bench/report/stills.txt
 fi
 
