@@ -31,7 +31,7 @@ void World::breakBody(std::size_t body, double impulse) {
   FractureEvent event{time(), body, bodies_.size(), pieces.size() - 1, impulse};
   bodies_[body] = RigidBody(pieces.front());
   bodyShapes_[body] = bodyShapeOf(pieces.front());
-  collision_.replaceBody(body, bodies_[body]);
+  collision_.replaceBody(body, bodies_[body], bodyShapes_[body].sdf != nullptr);
   for (std::size_t k = 1; k < pieces.size(); ++k) addBody(pieces[k]);
   fractureEvents_.push_back(event);
 }

@@ -49,7 +49,7 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body) {
   boxes_[index] = Aabb::of(body.worldVertices()).inflated(settings_.contactMargin);
 }
 
-void CollisionPipeline::addBody(const RigidBody& body) {
+void CollisionPipeline::addBody(const RigidBody& body, bool hasGrid) {
   const std::size_t index = proxies_.size();
   radius_.push_back(0.0);
   thickness_.push_back(0.0);
@@ -61,9 +61,10 @@ void CollisionPipeline::addBody(const RigidBody& body) {
   if (proxies_.back() != index) throw std::logic_error("broad phase ids are not body indices");
   start_.push_back(body.state());
   fast_.push_back(0);
+  hasGrid_.push_back(hasGrid ? 1 : 0);
 }
 
-void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body) {
+void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, bool hasGrid) {
   measure(index, body);
   // Removed and added again, since the piece may be dynamic where the body was static; the pool
   // hands back the smallest free id, which is this one.
@@ -73,6 +74,7 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body) {
   }
   start_[index] = body.state();
   fast_[index] = 0;
+  hasGrid_[index] = hasGrid ? 1 : 0;
 }
 
 bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const {
@@ -92,7 +94,7 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const RigidBody& body = bodies[i];
     fast_[i] = 0;
-    if (!body.awake() || !haveStart_) continue;
+    if (!body.awake() || !haveStart_ || hasGrid_[i]) continue;
     const double motion = motionBound(sweptOf(body, start_[i], radius_[i]));
     fast_[i] = motion > settings_.ccdMotionFraction * thickness_[i] ? 1 : 0;
   }
@@ -117,7 +119,7 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     Aabb sweep = Aabb::of(worldVerticesAt(swept, 0.0));
     sweep.grow(Aabb::of(bodies[i].worldVertices()));
     for (std::size_t j = 0; j < bodies.size(); ++j) {
-      if (j == i || !sweep.overlaps(stepBoxes[j])) continue;
+      if (j == i || hasGrid_[j] || !sweep.overlaps(stepBoxes[j])) continue;
       const SweptBody partner = sweptOf(bodies[j], start_[j], radius_[j]);
       if (const auto s = timeOfImpact(swept, partner)) first = std::min(first, *s);
     }

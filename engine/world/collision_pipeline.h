@@ -39,10 +39,12 @@ class CollisionPipeline {
  public:
   explicit CollisionPipeline(const Settings& settings);
 
-  void addBody(const RigidBody& body);  // bodies are added in World order; ids are indices
+  // Bodies are added in World order; ids are indices. `hasGrid`: the body's shape has a signed
+  // distance grid (BodyShape::sdf), so its convex hull is not its shape.
+  void addBody(const RigidBody& body, bool hasGrid);
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
-  void replaceBody(std::size_t index, const RigidBody& body);
+  void replaceBody(std::size_t index, const RigidBody& body, bool hasGrid);
 
   // The state of every body before Integrate, kept for the continuous stage.
   void rememberStart(const std::vector<RigidBody>& bodies);
@@ -77,6 +79,9 @@ class CollisionPipeline {
   std::vector<double> thickness_;       // per body: smallest extent of its body-frame bounds [m]
   std::vector<BodyState> start_;        // per body, before Integrate
   std::vector<char> fast_;              // per body: swept this step
+  // Per body: shaped by a grid. Continuous collision sweeps convex hulls, so it leaves such bodies
+  // and their partners alone (a hull would stop a body at a bowl's rim, above its cavity).
+  std::vector<char> hasGrid_;
   bool haveStart_ = false;              // start_ holds this step's start (rememberStart ran)
   std::vector<Aabb> boxes_;
   std::vector<Contact> contacts_;

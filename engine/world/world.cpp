@@ -100,7 +100,7 @@ std::size_t World::addBody(const BodyDef& def) {
   bodyShapes_.push_back(bodyShapeOf(def));
   fracturePatterns_.push_back(def.fracture);
   if (def.fracture) ++breakableBodies_;
-  collision_.addBody(bodies_.back());
+  collision_.addBody(bodies_.back(), bodyShapes_.back().sdf != nullptr);
   return bodies_.size() - 1;
 }
 
