@@ -2,6 +2,7 @@
 fill_report.py. Every accessor fails loudly (MissingData) when a file, a row or a column is absent:
 a figure is never filled from stale or guessed numbers."""
 import csv
+import re
 import os
 
 TIME_UNIT_SECONDS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
@@ -37,7 +38,8 @@ class GoogleBenchmark:
                 if name.endswith(suffix):
                     break
             else:
-                self.rows[name.removesuffix("_median")] = row
+                # A run with a fixed iteration count carries it in its name ("/iterations:1").
+                self.rows[re.sub(r"/iterations:\d+", "", name.removesuffix("_median"))] = row
         self.repetitions = any(r["name"].endswith("_median") for r in read_csv(path))
 
     def row(self, name):
