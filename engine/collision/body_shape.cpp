@@ -43,9 +43,7 @@ FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local) {
 
 BodyShape bodyShapeOf(const BodyDef& def) { return BodyShape{convexShapeOf(*def.mesh), def.sdf, def.surfaceSamples}; }
 
-SurfaceQuery querySurface(const BodyShape& shape, const Vec3& local, double reach) {
-  const double r = shape.convex.boundingRadius + reach;
-  if (local.squaredNorm() > r * r) return {std::numeric_limits<double>::infinity(), Vec3::UnitY()};
+SurfaceQuery querySurface(const BodyShape& shape, const Vec3& local) {
   if (shape.sdf) {
     // Seed 000 "Collision Detection": phi at the object-space point, grad phi / |grad phi| as the
     // normal. Where the gradient vanishes (the medial axis of a flat-bottomed interpolant), the

@@ -41,12 +41,12 @@ BodyShape bodyShapeOf(const BodyDef& def);
 
 // Where a body-frame point is: its signed distance to the surface (< 0 inside; exact inside, and
 // outside a lower bound, enough to tell contact) and the outward unit normal there, body frame.
-// `reach` [m]: points farther than it from the body's bounding sphere are not looked at and
-// report +infinity.
+// Callers cull points outside the bounding sphere (convex.boundingRadius) first, before rotating
+// them into the body frame, so the query does not test it again.
 struct SurfaceQuery {
   double distance = 0.0;        // [m]
   Vec3 normal = Vec3::UnitY();  // unit, body frame
 };
-SurfaceQuery querySurface(const BodyShape& shape, const Vec3& local, double reach);
+SurfaceQuery querySurface(const BodyShape& shape, const Vec3& local);
 
 }  // namespace rbsim

@@ -7,7 +7,7 @@ bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const BodyShape& shape
   const double reach = shape.convex.boundingRadius + c.radius;
   if (arm.squaredNorm() > reach * reach) return false;  // before the rotation, which costs more
   const Mat3& R = body.rotation();
-  const SurfaceQuery surface = querySurface(shape, R.transpose() * arm, c.radius);
+  const SurfaceQuery surface = querySurface(shape, R.transpose() * arm);
   const double depth = c.radius - surface.distance;
   if (!(depth > 0.0)) return false;
   const Vec3 normal = R * surface.normal;

@@ -20,7 +20,7 @@ int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const s
     for (std::size_t i = 0; i < x.size(); ++i) {
       const Vec3 arm = x[i] - body.position();
       if (arm.squaredNorm() > shape.convex.boundingRadius * shape.convex.boundingRadius) continue;
-      const SurfaceQuery surface = querySurface(shape, R.transpose() * arm, 0.0);
+      const SurfaceQuery surface = querySurface(shape, R.transpose() * arm);
       const double largest = surface.distance;
       if (!(largest < 0.0)) continue;
       ++touching;

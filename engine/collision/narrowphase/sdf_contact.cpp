@@ -21,7 +21,7 @@ struct PointContact {
 void pointsAgainstSolid(const RigidBody& body, const BodyShape& bodyShape, const RigidBody& solid,
                         const BodyShape& solidShape, double margin, bool solidIsA, std::vector<PointContact>& out) {
   const Mat3& R = body.rotation();
-  const Mat3 Rs = solid.rotation();
+  const Mat3& Rs = solid.rotation();
   const Mat3 RsT = Rs.transpose();
   const double reach = solidShape.convex.boundingRadius + margin;
   const std::vector<Vec3>& samples = bodyShape.samples ? *bodyShape.samples : body.mesh().vertices;
@@ -29,7 +29,7 @@ void pointsAgainstSolid(const RigidBody& body, const BodyShape& bodyShape, const
     const Vec3 world = R * p + body.position();
     const Vec3 arm = world - solid.position();
     if (arm.squaredNorm() > reach * reach) continue;
-    const SurfaceQuery q = querySurface(solidShape, RsT * arm, margin);  // x_o = R^T (x_w - x)
+    const SurfaceQuery q = querySurface(solidShape, RsT * arm);  // x_o = R^T (x_w - x)
     if (!(q.distance <= margin)) continue;
     const Vec3 outward = Rs * q.normal;
     const double depth = -q.distance;
