@@ -3,32 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dynamics/contact_key.h"
 #include "dynamics/impulse.h"
 #include "integrate/integrator.h"
 
 namespace rbsim {
-
-namespace {
-
-// Kind (1 bit), the manifold's part of the pair (7 bits), then a and b (28 bits each: 268 M
-// bodies, far beyond what a step can hold).
-std::uint64_t pairKey(const Contact& c) {
-  const std::uint64_t kind = c.kind == Contact::Kind::PlaneBody ? 1u : 0u;
-  return (kind << 63) | (static_cast<std::uint64_t>(c.part & 0x7f) << 56) | (static_cast<std::uint64_t>(c.a) << 28) |
-         static_cast<std::uint64_t>(c.b);
-}
-
-// Two unit tangents completing the normal to a right-handed basis.
-void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
-  // Some component of a unit vector is at least 1/sqrt(3); crossing with x while |n.x| is below
-  // that keeps the cross product well away from zero.
-  const double oneOverSqrt3 = 1.0 / std::sqrt(3.0);
-  const Vec3 seed = std::abs(n.x()) < oneOverSqrt3 ? Vec3::UnitX() : Vec3::UnitY();
-  t1 = n.cross(seed).normalized();
-  t2 = n.cross(t1);
-}
-
-}  // namespace
 
 int ContactSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) {
   if (bodies[body].isStatic()) return 0;

@@ -17,26 +17,11 @@
 
 #include "body/rigid_body.h"
 #include "dynamics/material.h"
+#include "dynamics/solved_contact_point.h"
 #include "world/collision_pipeline.h"
 #include "world/settings.h"
 
 namespace rbsim {
-
-// One contact point after the solve. Body 1 is the contact's body B, body 2 its body A or plane,
-// so the normal (the manifold's, from A to B) points towards body 1, as seed 000's N does.
-struct SolvedContactPoint {
-  std::size_t contact = 0;          // index into World::contacts()
-  Vec3 position = Vec3::Zero();     // world [m]
-  Vec3 normal = Vec3::UnitY();      // unit, towards body 1
-  double depth = 0.0;               // [m], < 0 for a speculative contact
-  double normalImpulse = 0.0;       // j_N >= 0 this step [N s]
-  Vec3 frictionImpulse = Vec3::Zero();  // the point's share of its manifold's friction [N s]
-  double approachVelocity = 0.0;    // u_rel,N before the solve [m/s]
-  double normalVelocity = 0.0;      // u_rel,N after it [m/s]
-  bool sticking = false;            // its manifold stuck: static friction, inside the mu_s cone
-
-  Vec3 impulse() const { return normalImpulse * normal + frictionImpulse; }  // on body 1
-};
 
 class ContactSolver {
  public:

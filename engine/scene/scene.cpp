@@ -83,6 +83,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
   if (root.has("world")) {
     const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "collisions", "ccd", "broad_phase", "contact_margin",
+                                         "solver", "substeps", "contact_hertz", "contact_damping_ratio", "contact_push_speed",
                                          "velocity_iterations", "position_iterations", "restitution_threshold",
                                          "contact_slop", "position_correction", "warm_starting", "response",
                                          "particle_integrator"});
@@ -106,6 +107,19 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     scene.settings.contactMargin = w.number("contact_margin", scene.settings.contactMargin);
     if (!(scene.settings.contactMargin >= 0.0)) w.fail("contact_margin", "expected a distance >= 0 m");
     Settings& s = scene.settings;
+    const std::string solver = w.string("solver", "soft-step");
+    if (solver == "pgs") {
+      s.solver = Settings::ContactSolverMethod::Pgs;
+    } else if (solver != "soft-step") {
+      w.fail("solver", "expected \"soft-step\" or \"pgs\", got \"" + solver + "\"");
+    }
+    s.substeps = w.positiveInt("substeps", s.substeps);
+    if (s.substeps > kMaxSubsteps) w.fail("substeps", "expected an integer in [1, " + std::to_string(kMaxSubsteps) + "]");
+    s.contactHertz = w.number("contact_hertz", s.contactHertz);
+    if (!(s.contactHertz >= 0.0)) w.fail("contact_hertz", "expected a frequency >= 0 Hz");
+    s.contactDampingRatio = w.number("contact_damping_ratio", s.contactDampingRatio);
+    if (!(s.contactDampingRatio >= 0.0)) w.fail("contact_damping_ratio", "expected a damping ratio >= 0");
+    s.contactPushSpeed = w.positiveNumber("contact_push_speed", s.contactPushSpeed);
     s.velocityIterations = w.positiveInt("velocity_iterations", s.velocityIterations);
     s.positionIterations = w.positiveInt("position_iterations", s.positionIterations);
     s.restitutionThreshold = w.number("restitution_threshold", s.restitutionThreshold);

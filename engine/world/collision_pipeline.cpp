@@ -53,6 +53,7 @@ void CollisionPipeline::addBody(const RigidBody& body, bool hasGrid) {
   const std::size_t index = proxies_.size();
   radius_.push_back(0.0);
   thickness_.push_back(0.0);
+  reach_.push_back(0.0);
   boxes_.emplace_back();
   measure(index, body);
   proxies_.push_back(broad_->add(boxes_[index], body.isStatic()));
@@ -136,7 +137,12 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
     if (!bodies[i].awake()) continue;
     Aabb box = Aabb::of(bodies[i].worldVertices());
     if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
-    boxes_[i] = box.inflated(settings_.contactMargin);
+    if (settings_.solver == Settings::ContactSolverMethod::SoftStep) {
+      const double dt = settings_.timeStep;
+      reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
+                        dt * settings_.gravity.norm());
+    }
+    boxes_[i] = box.inflated(settings_.contactMargin + reach_[i]);
     broad_->move(proxies_[i], boxes_[i]);
   }
   broad_->update();
@@ -145,12 +151,12 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
 void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                                     const std::vector<Plane>& planes, double time) {
   contacts_.clear();
-  const double margin = settings_.contactMargin;
   for (const ProxyPair& pair : broad_->pairs()) {
     // Proxies are added in body order and never removed, so a proxy id is its body's index.
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) continue;
+    const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
     if (shapes[pair.a].sdf || shapes[pair.b].sdf) {
       const std::vector<ContactManifold> manifolds = collideSdf(a, shapes[pair.a], b, shapes[pair.b], margin);
       for (std::size_t k = 0; k < manifolds.size(); ++k) {
@@ -173,7 +179,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   for (std::size_t p = 0; p < planes.size(); ++p) {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       if (bodies[i].isStatic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
-      const ContactManifold m = collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin);
+      const ContactManifold m = collidePlaneConvex(planes[p], bodies[i].worldVertices(), settings_.contactMargin + reach_[i]);
       log_.record(summarize(QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
       if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, 0, m});
     }

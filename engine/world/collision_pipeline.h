@@ -77,6 +77,11 @@ class CollisionPipeline {
   std::vector<ProxyId> proxies_;        // per body
   std::vector<double> radius_;          // per body: farthest vertex from the centre of mass [m]
   std::vector<double> thickness_;       // per body: smallest extent of its body-frame bounds [m]
+  // Per body: how far its points may move in the coming step, dt (|v| + |omega| radius + dt |g|),
+  // with soft step, which detects contacts before it moves the bodies; 0 with PGS, which
+  // detects them after. Added to the contact margin, so that a contact is known (speculative,
+  // depth < 0) before the surfaces meet (as Bepu's and Jolt's speculative contacts) [m].
+  std::vector<double> reach_;
   std::vector<BodyState> start_;        // per body, before Integrate
   std::vector<char> fast_;              // per body: swept this step
   // Per body: shaped by a grid. Continuous collision sweeps convex hulls, so it leaves such bodies

@@ -194,6 +194,7 @@ void World::step() {
   const double t = time();
   stageClock_ = std::chrono::steady_clock::now();
   const bool anyAwake = std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); });
+  const std::uint64_t solveRunsBefore = stats_[static_cast<int>(Stage::SolveContacts)].runs;
   const bool anyForce = std::any_of(forces_.begin(), forces_.end(), [t](const ScriptedForce& f) { return isActive(f, t); });
   const bool posed = runStage(Stage::ApplyPoseEvents, !pendingEvents_.empty() && pendingEvents_.front().time <= t,
                               [&] { applyPoseEvents(); });
@@ -206,23 +207,12 @@ void World::step() {
   const bool anyAwakeNow =
       anyAwake || ((posed || pushed) && std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); }));
   const bool collides = settings_.detectCollisions && (!planes_.empty() || bodies_.size() >= 2);
-  const bool sweeping = settings_.continuousCollision && collides && anyAwakeNow;
-  runStage(Stage::Integrate, anyAwakeNow, [&] {
-    if (sweeping) collision_.rememberStart(bodies_);
-    integrateBodies(!otherForces);
-  });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
-  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
-    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
-  });
-  runStage(Stage::NarrowPhase, collides && anyAwakeNow, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
-  });
-  // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
-  // are contacts between sleeping bodies, which receive nothing.
-  const bool solved = runStage(Stage::SolveContacts, anyAwakeNow && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
-    if (settings_.respondToContacts) solveContacts();
-  });
+  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
+    stepPgs(!otherForces, anyAwakeNow, collides);
+  } else {
+    stepSoft(!otherForces, anyAwakeNow, collides);
+  }
+  const bool solved = stats_[static_cast<int>(Stage::SolveContacts)].runs > solveRunsBefore;
   runStage(Stage::BreakBodies, breakableBodies_ > 0 && solved && settings_.respondToContacts, [&] {
     if (breakableBodies_ > 0 && solved && settings_.respondToContacts) breakBodies();
   });
@@ -244,6 +234,47 @@ void World::step() {
     if (planar_) planar_->step();  // skipIdleStages = false runs every stage, needed or not
   });
   ++stepCount_;
+}
+
+void World::stepSoft(bool withGravity, bool awake, bool collides) {
+  // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
+  // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
+  // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
+  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  });
+  runStage(Stage::NarrowPhase, collides && awake, [&] {
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+  });
+  const bool sweeping = settings_.continuousCollision && collides && awake;
+  if (sweeping) collision_.rememberStart(bodies_);
+  softStep_.clearAdvanced();
+  // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
+  // are contacts between sleeping bodies, which receive nothing.
+  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+    if (settings_.respondToContacts) solveContacts(withGravity);
+  });
+  runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
+}
+
+void World::stepPgs(bool withGravity, bool awake, bool collides) {
+  // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
+  const bool sweeping = settings_.continuousCollision && collides && awake;
+  runStage(Stage::Integrate, awake, [&] {
+    if (sweeping) collision_.rememberStart(bodies_);
+    integrateBodies(withGravity);
+  });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
+  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  });
+  runStage(Stage::NarrowPhase, collides && awake, [&] {
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+  });
+  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+    if (settings_.respondToContacts) solveContacts(withGravity);
+  });
 }
 
 void World::applyPoseEvents() {
@@ -312,7 +343,7 @@ void World::integrateBodies(bool withGravity) {
     for (std::size_t i = first; i < end; ++i) {
       if (i + kPrefetchAhead < count) bodies_[i + kPrefetchAhead].prefetchForStep();
       RigidBody& body = bodies_[i];
-      if (!body.awake()) continue;
+      if (!body.awake() || softStep_.advanced(i)) continue;
       if (addGravity) body.applyForce(body.mass() * gravity);  // F = 0 + m g, as AccumulateForces would
       next[n] = integrate(settings_.integrator, body.state(), body.stepInputs(), dt);
       if (!isFinite(next[n])) {
@@ -325,7 +356,7 @@ void World::integrateBodies(bool withGravity) {
   }
 }
 
-void World::solveContacts() {
+void World::solveContacts(bool withGravity) {
   // A body at rest touched by an awake one takes part again (its island wakes layer by layer).
   for (const Contact& contact : collision_.contacts()) {
     if (contact.kind == Contact::Kind::BodyBody) {
@@ -337,7 +368,18 @@ void World::solveContacts() {
       }
     }
   }
-  contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
+  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
+    contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
+    return;
+  }
+  softStep_.step(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_, withGravity);
+  checkFinite(softStep_.advancedBodies());
+}
+
+void World::checkFinite(const std::vector<std::size_t>& bodies) const {
+  for (std::size_t i : bodies) {
+    if (!isFinite(bodies_[i].state())) reportDivergence(bodies_[i], bodies_[i].state());
+  }
 }
 
 void World::reportDivergence(const RigidBody& body, const BodyState& next) const {
@@ -449,6 +491,14 @@ std::string checkSettings(const Settings& s) {
     problem << "query_log_capacity: expected at least one record";
   } else if (s.velocityIterations < 1 || s.positionIterations < 0) {
     problem << "velocity_iterations, position_iterations: expected >= 1 and >= 0 sweeps";
+  } else if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
+    problem << "substeps: expected an integer in [1, " << kMaxSubsteps << "]";
+  } else if (!(s.contactHertz >= 0.0) || !std::isfinite(s.contactHertz)) {
+    problem << "contact_hertz: expected a finite frequency >= 0 Hz";
+  } else if (!(s.contactDampingRatio >= 0.0) || !std::isfinite(s.contactDampingRatio)) {
+    problem << "contact_damping_ratio: expected a finite ratio >= 0";
+  } else if (!(s.contactPushSpeed > 0.0) || !std::isfinite(s.contactPushSpeed)) {
+    problem << "contact_push_speed: expected a finite speed > 0 m/s";
   } else if (!(s.restitutionThreshold >= 0.0) || !std::isfinite(s.restitutionThreshold)) {
     problem << "restitution_threshold: expected a finite speed >= 0 m/s";
   } else if (!(s.contactSlop >= 0.0) || !std::isfinite(s.contactSlop)) {

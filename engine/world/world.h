@@ -12,6 +12,7 @@
 #include "collision/contact.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/material.h"
+#include "dynamics/soft_step_solver.h"
 #include "fracture/fracture.h"
 #include "particles/particle_collision.h"
 #include "particles/particle_system.h"
@@ -30,11 +31,13 @@ enum class Stage : int {
   ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step
   AccumulateForces,  // scripted forces and springs (and gravity, when they act) into F and tau
   Integrate,         // the chosen integrator advances awake bodies (adding gravity when no other
-                     // force acts); accumulators are cleared
+                     // force acts), with soft step only those the solver did not; accumulators
+                     // are cleared
   ContinuousCollision,  // fast bodies stop at their time of impact instead of tunnelling
   BroadPhase,        // sweep and prune over world AABBs: candidate pairs
   NarrowPhase,       // contact manifolds of candidate pairs and of bodies against planes
-  SolveContacts,     // impulses: restitution, friction, resting contact; split-impulse correction
+  SolveContacts,     // soft step: substeps advancing the bodies in contact; PGS: impulses on the
+                     // integrated bodies and a split-impulse correction
   BreakBodies,       // bodies whose contact impulses this step exceed their fracture threshold
                      // break into their pieces (seed 000 "Fracture"); skipped when none can
   UpdateSleep,       // islands of touching bodies, all slow for Settings::timeToSleep, fall asleep
@@ -108,7 +111,9 @@ class World {
   const CollisionPipeline& collision() const { return collision_; }
   const std::vector<Contact>& contacts() const { return collision_.contacts(); }
   // Every contact point of the last step with the impulse the solver gave it.
-  const std::vector<SolvedContactPoint>& contactPoints() const { return contactSolver_.points(); }
+  const std::vector<SolvedContactPoint>& contactPoints() const {
+    return settings_.solver == Settings::ContactSolverMethod::Pgs ? contactSolver_.points() : softStep_.points();
+  }
   const Material& bodyMaterial(std::size_t body) const { return bodyMaterials_[body]; }
   // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
   const std::vector<BodyShape>& bodyShapes() const { return bodyShapes_; }
@@ -128,7 +133,10 @@ class World {
   void applyPoseEvents();
   void accumulateForces(bool withGravity);  // scripted forces and springs, after gravity if asked
   void integrateBodies(bool withGravity);   // adds m g to F first if asked
-  void solveContacts();
+  void stepSoft(bool withGravity, bool awake, bool collides);  // the middle of step() with soft step
+  void stepPgs(bool withGravity, bool awake, bool collides);   // ... and with PGS
+  void solveContacts(bool withGravity);
+  void checkFinite(const std::vector<std::size_t>& bodies) const;  // after the soft step
   void updateSleep();
   void breakBodies();  // world/break_bodies.cpp
   void breakBody(std::size_t body, double impulse);
@@ -153,7 +161,8 @@ class World {
   std::vector<double> receivedImpulse_;  // BreakBodies' scratch, per body [N s]
   std::vector<FractureEvent> fractureEvents_;
   CollisionPipeline collision_;
-  ContactSolver contactSolver_;
+  ContactSolver contactSolver_;  // PGS
+  SoftStepSolver softStep_;
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::uint64_t stepCount_ = 0;

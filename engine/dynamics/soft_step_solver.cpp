@@ -1,0 +1,379 @@
+#include "dynamics/soft_step_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/contact_key.h"
+#include "integrate/integrator.h"
+
+namespace rbsim {
+
+namespace {
+
+// Gauss-Seidel sweeps of the restitution pass. One sweep (Box2D v3's) leaves a box landing flat
+// on four points with uneven bounces, each point's impulse disturbing the ones already done; a
+// few more converge them to one common rebound.
+constexpr int kRestitutionSweeps = 4;
+
+// The stiffness of the contact spring is capped at this fraction of the substep rate: an implicit
+// spring much stiffer than the substep can resolve only adds error (Box2D v3's solver.c caps
+// contactHertz at a quarter of the substep rate).
+constexpr double kMaxHertzPerSubstepRate = 0.25;  // [1]
+
+}  // namespace
+
+int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings,
+                         bool addGravity) {
+  const RigidBody& b = bodies[body];
+  if (b.isStatic()) return 0;
+  int& s = slotOfBody_[body];
+  if (s != 0) return s;
+  BodySim sim;
+  sim.body = body;
+  sim.inverseMass = 1.0 / b.mass();
+  sim.inverseInertia = b.inverseInertiaWorld();
+  sim.inverseInertiaNow = sim.inverseInertia;
+  sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
+  sim.torque = b.torque();
+  sims_.push_back(sim);
+  states_.push_back(SolverState{b.velocity(), b.angularVelocity(), Vec3::Zero(), b.orientation()});
+  s = static_cast<int>(sims_.size() - 1);
+  advanced_[body] = 1;
+  advancedList_.push_back(body);
+  return s;
+}
+
+const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {
+  const auto it = std::lower_bound(cache_.begin(), cache_.end(), key,
+                                   [](const Cached& c, std::uint64_t k) { return c.key < k; });
+  return it != cache_.end() && it->key == key ? &*it : nullptr;
+}
+
+void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
+                             const Material& material, const Settings& settings) {
+  const bool plane = contact.kind == Contact::Kind::PlaneBody;
+  const ContactManifold& m = contact.manifold;
+  Constraint c;
+  c.a = plane ? 0 : slotOfBody_[contact.a];
+  c.b = slotOfBody_[contact.b];
+  c.normal = m.normal;
+  tangentBasis(c.normal, c.tangent1, c.tangent2);
+  c.restitution = material.restitution;
+  c.softness = softness_;
+  c.firstPoint = points_.size();
+  c.pointCount = static_cast<std::size_t>(m.count);
+  c.contact = index;
+  c.key = pairKey(contact);
+  const Cached* old = settings.warmStarting ? cached(c.key) : nullptr;
+  // A new manifold first assumes sticking (seed 000); a known one keeps the regime its last step
+  // ended in: sliding when friction reached the cone, sticking again when it stayed inside.
+  c.sticking = old == nullptr || old->sticking;
+  c.friction = c.sticking ? material.staticFriction : material.kineticFriction;
+
+  const Vec3 xA = plane ? Vec3::Zero() : bodies[contact.a].position();
+  const Vec3 xB = bodies[contact.b].position();
+  const BodySim& simA = sims_[c.a];
+  const BodySim& simB = sims_[c.b];
+  const SolverState& stateA = states_[c.a];
+  const SolverState& stateB = states_[c.b];
+  const Vec3& n = c.normal;
+  const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
+  // The normal acceleration the applied forces give the pair, for the speed at which the
+  // surfaces meet within the step (restitution).
+  const double normalAcceleration = n.dot(simB.acceleration - simA.acceleration);
+  for (int i = 0; i < m.count; ++i) {
+    Point p;
+    const Vec3& position = m.points[i].position;
+    p.anchorA = position - xA;
+    p.anchorB = position - xB;
+    // The ground's slot never rotates, so its anchors are their own body-frame coordinates.
+    p.localA = c.a == 0 ? p.anchorA : Vec3(stateA.orientation.conjugate() * p.anchorA);
+    p.localB = c.b == 0 ? p.anchorB : Vec3(stateB.orientation.conjugate() * p.anchorB);
+    const double separation = -m.points[i].depth;
+    p.baseSeparation = separation - n.dot(p.anchorB - p.anchorA);
+    const Vec3 crossA = p.anchorA.cross(n), crossB = p.anchorB.cross(n);
+    p.angularA = simA.inverseInertia * crossA;
+    p.angularB = simB.inverseInertia * crossB;
+    // n^T K n with K = (1/m) 1 + r*^T I^-1 r* summed over the pair (seed 000).
+    p.normalMass = 1.0 / (simA.inverseMass + simB.inverseMass + crossA.dot(p.angularA) + crossB.dot(p.angularB));
+    for (int k = 0; k < 2; ++k) {
+      const Vec3 tA = p.anchorA.cross(tangents[k]), tB = p.anchorB.cross(tangents[k]);
+      p.frictionA[k] = simA.inverseInertia * tA;
+      p.frictionB[k] = simB.inverseInertia * tB;
+      p.tangentMass[k] = 1.0 / (simA.inverseMass + simB.inverseMass + tA.dot(p.frictionA[k]) + tB.dot(p.frictionB[k]));
+    }
+    p.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + crossB.dot(stateB.angularVelocity) -
+                         crossA.dot(stateA.angularVelocity);
+    // Energy of the normal motion from the step's start to the touch: u^2 = u0^2 - 2 a_n s0.
+    if (p.relativeVelocity < 0.0) {
+      const double squared = p.relativeVelocity * p.relativeVelocity - 2.0 * normalAcceleration * std::max(separation, 0.0);
+      p.impactSpeed = std::sqrt(std::max(squared, 0.0));
+    }
+    if (old != nullptr) {
+      for (int j = 0; j < old->count; ++j) {
+        if ((old->localPoints[j] - p.localB).norm() <= settings.warmStartDistance) {
+          p.normalImpulse = old->normalImpulses[j];
+          p.tangentImpulse = {tangents[0].dot(old->frictionImpulses[j]), tangents[1].dot(old->frictionImpulses[j])};
+          break;
+        }
+      }
+    }
+    points_.push_back(p);
+  }
+  constraints_.push_back(c);
+}
+
+void SoftStepSolver::integrateVelocities(double h) {
+  for (std::size_t i = 1; i < states_.size(); ++i) {
+    states_[i].linearVelocity += h * sims_[i].acceleration;
+    states_[i].angularVelocity += h * (sims_[i].inverseInertiaNow * sims_[i].torque);
+  }
+}
+
+void SoftStepSolver::warmStart() {
+  for (const Constraint& c : constraints_) {
+    SolverState& A = states_[c.a];
+    SolverState& B = states_[c.b];
+    const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+      Point& p = points_[j];
+      const Vec3 friction = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+      const Vec3 impulse = p.normalImpulse * c.normal + friction;
+      const Vec3 angularA = p.normalImpulse * p.angularA + p.tangentImpulse[0] * p.frictionA[0] + p.tangentImpulse[1] * p.frictionA[1];
+      const Vec3 angularB = p.normalImpulse * p.angularB + p.tangentImpulse[0] * p.frictionB[0] + p.tangentImpulse[1] * p.frictionB[1];
+      if (c.a != 0) {
+        A.linearVelocity -= mA * impulse;
+        A.angularVelocity -= angularA;
+      }
+      if (c.b != 0) {
+        B.linearVelocity += mB * impulse;
+        B.angularVelocity += angularB;
+      }
+      p.totalNormalImpulse += p.normalImpulse;
+      p.totalFriction += friction;
+    }
+  }
+}
+
+void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
+  for (Constraint& c : constraints_) {
+    SolverState& A = states_[c.a];
+    SolverState& B = states_[c.b];
+    const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+    Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
+    const Vec3 dp = B.deltaPosition - A.deltaPosition;
+    const Vec3& n = c.normal;
+    // Non-penetration first, friction with the new normal impulses after (Box2D v3's order).
+    for (std::size_t k = 0; k < c.pointCount; ++k) {
+      Point& p = points_[c.firstPoint + k];
+      // The separation now, from the anchors carried by the bodies (no collision detection).
+      const Vec3 ds = dp + B.orientation * p.localB - A.orientation * p.localA;
+      const double s = p.baseSeparation + n.dot(ds);
+      double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+      if (s > 0.0) {
+        bias = s * inverseH;  // speculative: the gap may close within the substep, no further
+      } else if (useBias) {
+        bias = std::max(c.softness.biasRate * s, -settings.contactPushSpeed);
+        massScale = c.softness.massScale;
+        impulseScale = c.softness.impulseScale;
+      }
+      const double vn = n.dot(vB - vA) + p.anchorB.cross(n).dot(wB) - p.anchorA.cross(n).dot(wA);
+      const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
+      // Accumulated and kept repulsive (seed 001: f_i >= 0).
+      const double total = std::max(p.normalImpulse + impulse, 0.0);
+      const double delta = total - p.normalImpulse;
+      p.normalImpulse = total;
+      p.totalNormalImpulse += delta;
+      vA -= (mA * delta) * n;
+      wA -= delta * p.angularA;
+      vB += (mB * delta) * n;
+      wB += delta * p.angularB;
+    }
+    const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
+    for (std::size_t k = 0; k < c.pointCount; ++k) {
+      Point& p = points_[c.firstPoint + k];
+      const Vec3 slip = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
+      // The impulse that stops the slip, then onto the friction cone of this point's normal
+      // impulse (seed 000: sticking inside mu j_N, sliding on its boundary).
+      double candidate[2];
+      for (int k = 0; k < 2; ++k) candidate[k] = p.tangentImpulse[k] - p.tangentMass[k] * tangents[k].dot(slip);
+      const double limit = c.friction * p.normalImpulse;
+      const double length = std::hypot(candidate[0], candidate[1]);
+      if (length > limit) {
+        const double scale = length > 0.0 ? limit / length : 0.0;
+        candidate[0] *= scale;
+        candidate[1] *= scale;
+        if (lastRelax) c.insideCone = false;
+      }
+      const double d0 = candidate[0] - p.tangentImpulse[0], d1 = candidate[1] - p.tangentImpulse[1];
+      p.tangentImpulse = {candidate[0], candidate[1]};
+      const Vec3 impulse = d0 * c.tangent1 + d1 * c.tangent2;
+      p.totalFriction += impulse;
+      vA -= mA * impulse;
+      wA -= d0 * p.frictionA[0] + d1 * p.frictionA[1];
+      vB += mB * impulse;
+      wB += d0 * p.frictionB[0] + d1 * p.frictionB[1];
+    }
+    if (c.a != 0) {
+      A.linearVelocity = vA;
+      A.angularVelocity = wA;
+    }
+    if (c.b != 0) {
+      B.linearVelocity = vB;
+      B.angularVelocity = wB;
+    }
+  }
+}
+
+void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, double h) {
+  for (std::size_t i = 1; i < states_.size(); ++i) {
+    SolverState& s = states_[i];
+    const RigidBody& body = bodies[sims_[i].body];
+    s.deltaPosition += h * s.linearVelocity;
+    // The rotation by angle |omega| h (seed 004's alternative), with L = I omega carried over:
+    // free rotation keeps L, so omega follows the new orientation (the gyroscopic term of
+    // Euler's equations, which a fixed omega would drop).
+    const Mat3 R = s.orientation.toRotationMatrix();
+    const Vec3 L = R * (body.inertiaBody() * (R.transpose() * s.angularVelocity));
+    s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
+    const Mat3 next = s.orientation.toRotationMatrix();
+    sims_[i].inverseInertiaNow = next * body.inverseInertiaBody() * next.transpose();
+    s.angularVelocity = sims_[i].inverseInertiaNow * L;
+  }
+}
+
+void SoftStepSolver::applyRestitution(const Settings& settings) {
+  // Box2D v3's b2ApplyRestitution, with the speed at the touch instead of the speed at the step's
+  // start: a ball dropped onto the ground bounces with the speed it reached, not with the speed
+  // it had up to a step earlier, so e = 1 neither gains nor loses the energy of that last gap.
+  for (int sweep = 0; sweep < kRestitutionSweeps; ++sweep) {
+    for (const Constraint& c : constraints_) {
+      if (c.restitution == 0.0) continue;
+      SolverState& A = states_[c.a];
+      SolverState& B = states_[c.b];
+      const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+      const Vec3& n = c.normal;
+      for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+        Point& p = points_[j];
+        // Slower approaches are resting contact; a point that never pushed did not collide.
+        if (p.impactSpeed <= settings.restitutionThreshold || p.totalNormalImpulse == 0.0) continue;
+        const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.anchorB.cross(n).dot(B.angularVelocity) -
+                          p.anchorA.cross(n).dot(A.angularVelocity);
+        // Seed 000: u_rel,N^new = c_R u_rel,N at the touch.
+        const double impulse = -p.normalMass * (vn - c.restitution * p.impactSpeed);
+        const double total = std::max(p.normalImpulse + impulse, 0.0);
+        const double delta = total - p.normalImpulse;
+        p.normalImpulse = total;
+        p.totalNormalImpulse += delta;
+        if (c.a != 0) {
+          A.linearVelocity -= (mA * delta) * n;
+          A.angularVelocity -= delta * p.angularA;
+        }
+        if (c.b != 0) {
+          B.linearVelocity += (mB * delta) * n;
+          B.angularVelocity += delta * p.angularB;
+        }
+      }
+    }
+  }
+}
+
+void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts) {
+  for (const Constraint& c : constraints_) {
+    const ContactManifold& m = contacts[c.contact].manifold;
+    const SolverState& A = states_[c.a];
+    const SolverState& B = states_[c.b];
+    for (std::size_t j = 0; j < c.pointCount; ++j) {
+      const Point& p = points_[c.firstPoint + j];
+      SolvedContactPoint out;
+      out.contact = c.contact;
+      out.position = m.points[j].position;
+      out.normal = c.normal;
+      out.depth = m.points[j].depth;
+      out.normalImpulse = p.totalNormalImpulse;
+      out.frictionImpulse = p.totalFriction;
+      out.approachVelocity = p.relativeVelocity;
+      out.normalVelocity = c.normal.dot(B.linearVelocity - A.linearVelocity) + p.anchorB.cross(c.normal).dot(B.angularVelocity) -
+                           p.anchorA.cross(c.normal).dot(A.angularVelocity);
+      out.sticking = c.sticking && c.insideCone;
+      solved_.push_back(out);
+    }
+    Cached cache;
+    cache.key = c.key;
+    cache.count = static_cast<int>(c.pointCount);
+    for (std::size_t j = 0; j < c.pointCount; ++j) {
+      const Point& p = points_[c.firstPoint + j];
+      cache.localPoints[j] = p.localB;
+      cache.normalImpulses[j] = p.normalImpulse;
+      cache.frictionImpulses[j] = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+    }
+    cache.sticking = c.insideCone;
+    nextCache_.push_back(cache);
+  }
+  std::sort(nextCache_.begin(), nextCache_.end(), [](const Cached& a, const Cached& b) { return a.key < b.key; });
+  cache_.swap(nextCache_);
+  nextCache_.clear();
+
+  for (std::size_t i = 1; i < states_.size(); ++i) {
+    const SolverState& s = states_[i];
+    RigidBody& body = bodies[sims_[i].body];
+    rbsim::BodyState state = body.state();
+    state.position += s.deltaPosition;
+    state.orientation = s.orientation.normalized();
+    state.linearMomentum = body.mass() * s.linearVelocity;
+    const Mat3 R = state.orientation.toRotationMatrix();
+    state.angularMomentum = R * (body.inertiaBody() * (R.transpose() * s.angularVelocity));
+    body.setState(state);
+    body.clearAccumulators();
+    slotOfBody_[sims_[i].body] = 0;
+  }
+}
+
+void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
+                          const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
+                          const Settings& settings, bool addGravity) {
+  clearAdvanced();
+  advanced_.resize(bodies.size(), 0);
+  slotOfBody_.resize(bodies.size(), 0);
+  states_.assign(1, SolverState{});
+  sims_.assign(1, BodySim{});
+  constraints_.clear();
+  points_.clear();
+  solved_.clear();
+
+  const double h = settings.timeStep / settings.substeps;
+  const double hertz = std::min(settings.contactHertz, kMaxHertzPerSubstepRate / h);
+  softness_ = makeSoftness(hertz, settings.contactDampingRatio, h);
+
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& contact = contacts[i];
+    const bool plane = contact.kind == Contact::Kind::PlaneBody;
+    // A sleeping pair receives nothing (World wakes the sleeping side of a pair with an awake one).
+    const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
+    if (contact.manifold.count == 0 || !awake) continue;
+    slot(bodies, contact.b, settings, addGravity);
+    if (!plane) slot(bodies, contact.a, settings, addGravity);
+  }
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& contact = contacts[i];
+    const bool plane = contact.kind == Contact::Kind::PlaneBody;
+    if (contact.manifold.count == 0) continue;
+    const int b = slotOfBody_[contact.b], a = plane ? 0 : slotOfBody_[contact.a];
+    if (a == 0 && b == 0) continue;  // asleep, or static against static
+    const Material material = combine(bodyMaterials[contact.b], plane ? planeMaterials[contact.a] : bodyMaterials[contact.a]);
+    prepare(bodies, contact, i, material, settings);
+  }
+
+  const double inverseH = 1.0 / h;
+  for (int substep = 0; substep < settings.substeps; ++substep) {
+    integrateVelocities(h);
+    warmStart();  // the last substep's impulses (at the first, the last step's, when kept)
+    solve(inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
+    integratePositions(bodies, h);
+    solve(inverseH, settings, /*useBias=*/false, /*lastRelax=*/substep == settings.substeps - 1);
+  }
+  applyRestitution(settings);
+  finish(bodies, contacts);
+}
+
+}  // namespace rbsim

@@ -1,0 +1,129 @@
+#pragma once
+// Stage SolveContacts with Settings::solver = soft-step (the default): the "soft step" of Catto,
+// "Solver2D" (2024), as Box2D v3 runs it (src/solver.c b2SolverStage, src/contact_solver.c).
+// Every awake body that touches something is advanced by this solver over the whole step, in
+// Settings::substeps substeps of
+//   integrate velocities (forces, gravity), warm start, solve (soft contacts, with bias),
+//   integrate positions, relax (solve again, rigid and without bias);
+// then one restitution pass and the impulses kept for the next step's warm start. Bodies without
+// contact are left to the World's integrator, so free flight is exactly what it always was.
+//
+// Contact anchors stay fixed in the bodies across the substeps and each point's separation is
+// updated from them (s = s0 + n . (dx_B + dR_B r_B - dx_A - dR_A r_A), Box2D v3's comment at the
+// top of contact_solver.c): collision detection runs once per step, not per substep.
+//
+// A penetrating point is a soft constraint: a spring of Settings::contactHertz and
+// contactDampingRatio solved implicitly over the substep (Catto, "Soft Constraints", GDC 2011),
+// which gives the bias velocity, a mass scale and an impulse scale (softness.h). The relax sweep
+// then removes the velocity that bias added, so pushing out never becomes kinetic energy.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "body/rigid_body.h"
+#include "dynamics/material.h"
+#include "dynamics/softness.h"
+#include "dynamics/solved_contact_point.h"
+#include "world/collision_pipeline.h"
+#include "world/settings.h"
+
+namespace rbsim {
+
+class SoftStepSolver {
+ public:
+  // Advances by settings.timeStep every awake body in a contact with a manifold (x, q, P, L),
+  // using the forces and torques accumulated in it, plus m g when `addGravity` (the World adds
+  // gravity in its Integrate pass unless other forces act). Clears their accumulators.
+  void step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
+            const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
+            const Settings& settings, bool addGravity);
+
+  // Forgets which bodies the last step advanced: a step that does not run the solver advanced none.
+  void clearAdvanced() {
+    for (std::size_t body : advancedList_) advanced_[body] = 0;
+    advancedList_.clear();
+  }
+  // Whether the last step advanced World body `body` (then the World must not integrate it).
+  bool advanced(std::size_t body) const { return body < advanced_.size() && advanced_[body] != 0; }
+  const std::vector<std::size_t>& advancedBodies() const { return advancedList_; }
+  const std::vector<SolvedContactPoint>& points() const { return solved_; }
+
+ private:
+  // Hot: what a substep reads and writes per body, 104 bytes (Box2D's b2BodyState). Slot 0 is
+  // the ground (planes and static bodies): it never moves and is never written.
+  struct SolverState {
+    Vec3 linearVelocity = Vec3::Zero();   // v [m/s]
+    Vec3 angularVelocity = Vec3::Zero();  // omega [rad/s]
+    Vec3 deltaPosition = Vec3::Zero();    // x - x0 [m]
+    Quat orientation = Quat::Identity();  // q now
+  };
+  // Per body and step, read once per substep at most.
+  struct BodySim {
+    std::size_t body = 0;                    // World index
+    double inverseMass = 0.0;                // [1/kg]
+    Mat3 inverseInertia = Mat3::Zero();      // R I_body^-1 R^T at the step's start, for the rows
+    Mat3 inverseInertiaNow = Mat3::Zero();   // the same for the current orientation, for torques
+    Vec3 acceleration = Vec3::Zero();        // F / m (+ g) over the step [m/s^2]
+    Vec3 torque = Vec3::Zero();              // tau about x [N m]
+  };
+  struct Point {  // one manifold point
+    Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // from each centre of mass, world, step start [m]
+    Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();    // the same in each body's frame [m]
+    Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
+    std::array<Vec3, 2> frictionA{}, frictionB{};          // I^-1 (r x t_k)
+    double baseSeparation = 0.0;     // s0 - n . (r_B - r_A) [m]
+    double normalMass = 0.0;         // 1 / (n^T K n) [kg]
+    std::array<double, 2> tangentMass{};  // 1 / (t_k^T K t_k) [kg]
+    double relativeVelocity = 0.0;   // u_rel,N before the step [m/s]
+    double impactSpeed = 0.0;        // |u_rel,N| when the surfaces meet (restitution) [m/s]
+    double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
+    std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
+    double totalNormalImpulse = 0.0;  // applied over the step [N s]
+    Vec3 totalFriction = Vec3::Zero();  // applied over the step, world [N s]
+  };
+  struct Constraint {  // one manifold
+    int a = 0, b = 0;  // body slots; 0 is the ground
+    Vec3 normal = Vec3::UnitY(), tangent1 = Vec3::UnitX(), tangent2 = Vec3::UnitZ();
+    double friction = 0.0;     // mu_s while sticking, mu_k while sliding [1]
+    double restitution = 0.0;  // [1]
+    Softness softness;
+    bool sticking = true;      // this step's regime (from the last step's outcome)
+    bool insideCone = true;    // no point's friction reached the cone in the last relax
+    std::size_t firstPoint = 0, pointCount = 0;
+    std::size_t contact = 0;   // index into the contacts
+    std::uint64_t key = 0;     // pairKey
+  };
+  struct Cached {  // one manifold of the last step
+    std::uint64_t key = 0;
+    int count = 0;
+    std::array<Vec3, kMaxManifoldPoints> localPoints{};  // body B's frame [m]
+    std::array<double, kMaxManifoldPoints> normalImpulses{};
+    std::array<Vec3, kMaxManifoldPoints> frictionImpulses{};  // world [N s]
+    bool sticking = true;
+  };
+
+  int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
+  void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
+               const Settings& settings);
+  const Cached* cached(std::uint64_t key) const;
+  void integrateVelocities(double h);
+  void warmStart();
+  void solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
+  void integratePositions(const std::vector<RigidBody>& bodies, double h);
+  void applyRestitution(const Settings& settings);
+  void finish(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts);
+
+  std::vector<SolverState> states_;  // per slot
+  std::vector<BodySim> sims_;      // per slot
+  std::vector<Constraint> constraints_;
+  std::vector<Point> points_;
+  std::vector<int> slotOfBody_;    // per World body: its slot, or 0
+  std::vector<char> advanced_;     // per World body
+  std::vector<std::size_t> advancedList_;
+  std::vector<SolvedContactPoint> solved_;
+  std::vector<Cached> cache_, nextCache_;  // sorted by key
+  Softness softness_;  // of every contact this step
+};
+
+}  // namespace rbsim
