@@ -20,6 +20,11 @@ constexpr int kRestitutionSweeps = 4;
 // contactHertz at a quarter of the substep rate).
 constexpr double kMaxHertzPerSubstepRate = 0.25;  // [1]
 
+// A patch whose points slip slower than this at the end of a step sticks in the next one (static
+// friction, mu_s); faster, it slides (mu_k). The scale of Box2D's b2_linearSleepTolerance: a
+// contact that slow is at rest for every purpose a user sees.
+constexpr double kStickingSlipSpeed = 0.01;  // [m/s]
+
 }  // namespace
 
 int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings,
@@ -33,6 +38,7 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   sim.inverseMass = 1.0 / b.mass();
   sim.inverseInertia = b.inverseInertiaWorld();
   sim.inverseInertiaNow = sim.inverseInertia;
+  sim.position0 = b.position();
   sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
   sim.torque = b.torque();
   sims_.push_back(sim);
@@ -49,7 +55,7 @@ const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {
   return it != cache_.end() && it->key == key ? &*it : nullptr;
 }
 
-void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
+void SoftStepSolver::prepare(const Contact& contact, std::size_t index,
                              const Material& material, const Settings& settings) {
   const bool plane = contact.kind == Contact::Kind::PlaneBody;
   const ContactManifold& m = contact.manifold;
@@ -70,8 +76,7 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   c.sticking = old == nullptr || old->sticking;
   c.friction = c.sticking ? material.staticFriction : material.kineticFriction;
 
-  const Vec3 xA = plane ? Vec3::Zero() : bodies[contact.a].position();
-  const Vec3 xB = bodies[contact.b].position();
+  const Vec3 xA = sims_[c.a].position0, xB = sims_[c.b].position0;
   const BodySim& simA = sims_[c.a];
   const BodySim& simB = sims_[c.b];
   const SolverState& stateA = states_[c.a];
@@ -84,24 +89,13 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   for (int i = 0; i < m.count; ++i) {
     Point p;
     const Vec3& position = m.points[i].position;
-    p.anchorA = position - xA;
-    p.anchorB = position - xB;
-    // The ground's slot never rotates, so its anchors are their own body-frame coordinates.
-    p.localA = c.a == 0 ? p.anchorA : Vec3(stateA.orientation.conjugate() * p.anchorA);
-    p.localB = c.b == 0 ? p.anchorB : Vec3(stateB.orientation.conjugate() * p.anchorB);
+    // The ground's slot never moves, so its anchors are their own body-frame coordinates.
+    p.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - xA));
+    p.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - xB));
     const double separation = -m.points[i].depth;
-    p.baseSeparation = separation - n.dot(p.anchorB - p.anchorA);
+    p.baseSeparation = separation - n.dot((position - xB) - (position - xA));
+    updateJacobians(c, p);
     const Vec3 crossA = p.anchorA.cross(n), crossB = p.anchorB.cross(n);
-    p.angularA = simA.inverseInertia * crossA;
-    p.angularB = simB.inverseInertia * crossB;
-    // n^T K n with K = (1/m) 1 + r*^T I^-1 r* summed over the pair (seed 000).
-    p.normalMass = 1.0 / (simA.inverseMass + simB.inverseMass + crossA.dot(p.angularA) + crossB.dot(p.angularB));
-    for (int k = 0; k < 2; ++k) {
-      const Vec3 tA = p.anchorA.cross(tangents[k]), tB = p.anchorB.cross(tangents[k]);
-      p.frictionA[k] = simA.inverseInertia * tA;
-      p.frictionB[k] = simB.inverseInertia * tB;
-      p.tangentMass[k] = 1.0 / (simA.inverseMass + simB.inverseMass + tA.dot(p.frictionA[k]) + tB.dot(p.frictionB[k]));
-    }
     p.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + crossB.dot(stateB.angularVelocity) -
                          crossA.dot(stateA.angularVelocity);
     // Energy of the normal motion from the step's start to the touch: u^2 = u0^2 - 2 a_n s0.
@@ -121,6 +115,40 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     points_.push_back(p);
   }
   constraints_.push_back(c);
+}
+
+void SoftStepSolver::updateJacobians(const Constraint& c, Point& p) const {
+  // Both bodies' impulses act at one world point, midway between where each body now carries its
+  // anchor, with the inverse inertia of the current orientation: then every impulse changes
+  // x x P + L of the pair by (p - p) x j = 0, and angular momentum is exchanged exactly (fixed
+  // anchors from the step's start, as Box2D keeps them, would lose (dx_B - dx_A) x j).
+  const SolverState& A = states_[c.a];
+  const SolverState& B = states_[c.b];
+  const Vec3 xA = sims_[c.a].position0 + A.deltaPosition, xB = sims_[c.b].position0 + B.deltaPosition;
+  const Vec3 point = 0.5 * (xA + A.orientation * p.localA + xB + B.orientation * p.localB);
+  p.anchorA = point - xA;
+  p.anchorB = point - xB;
+  const Mat3& iA = sims_[c.a].inverseInertiaNow;
+  const Mat3& iB = sims_[c.b].inverseInertiaNow;
+  const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+  const Vec3 crossA = p.anchorA.cross(c.normal), crossB = p.anchorB.cross(c.normal);
+  p.angularA = iA * crossA;
+  p.angularB = iB * crossB;
+  // n^T K n with K = (1/m) 1 + r*^T I^-1 r* summed over the pair (seed 000).
+  p.normalMass = 1.0 / (mA + mB + crossA.dot(p.angularA) + crossB.dot(p.angularB));
+  const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 tA = p.anchorA.cross(tangents[k]), tB = p.anchorB.cross(tangents[k]);
+    p.frictionA[k] = iA * tA;
+    p.frictionB[k] = iB * tB;
+    p.tangentMass[k] = 1.0 / (mA + mB + tA.dot(p.frictionA[k]) + tB.dot(p.frictionB[k]));
+  }
+}
+
+void SoftStepSolver::updateJacobians() {
+  for (const Constraint& c : constraints_) {
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) updateJacobians(c, points_[j]);
+  }
 }
 
 void SoftStepSolver::integrateVelocities(double h) {
@@ -184,6 +212,7 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
       const double delta = total - p.normalImpulse;
       p.normalImpulse = total;
       p.totalNormalImpulse += delta;
+      if (s <= 0.0 && total > 0.0) p.touched = true;
       vA -= (mA * delta) * n;
       wA -= delta * p.angularA;
       vB += (mB * delta) * n;
@@ -203,7 +232,6 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
         const double scale = length > 0.0 ? limit / length : 0.0;
         candidate[0] *= scale;
         candidate[1] *= scale;
-        if (lastRelax) c.insideCone = false;
       }
       const double d0 = candidate[0] - p.tangentImpulse[0], d1 = candidate[1] - p.tangentImpulse[1];
       p.tangentImpulse = {candidate[0], candidate[1]};
@@ -213,6 +241,19 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
       wA -= d0 * p.frictionA[0] + d1 * p.frictionA[1];
       vB += mB * impulse;
       wB += d0 * p.frictionB[0] + d1 * p.frictionB[1];
+    }
+    if (lastRelax) {
+      // Seed 000's regimes decided by the slip the step ends with: a patch slipping faster than
+      // kStickingSlipSpeed slides (mu_k) next step, a slower one sticks (mu_s). Deciding by
+      // which points reached their cone would flip a patch that sticks as a whole to sliding
+      // whenever the load is uneven across its points.
+      double slip = 0.0;
+      for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+        const Point& p = points_[j];
+        const Vec3 v = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
+        slip = std::max(slip, (v - v.dot(n) * n).norm());
+      }
+      c.slipping = slip > kStickingSlipSpeed;
     }
     if (c.a != 0) {
       A.linearVelocity = vA;
@@ -255,8 +296,9 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
       const Vec3& n = c.normal;
       for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
         Point& p = points_[j];
-        // Slower approaches are resting contact; a point that never pushed did not collide.
-        if (p.impactSpeed <= settings.restitutionThreshold || p.totalNormalImpulse == 0.0) continue;
+        // Slower approaches are resting contact; a point whose surfaces never met, or met without
+        // pushing, did not collide (a warm-started speculative point must not bounce early).
+        if (p.impactSpeed <= settings.restitutionThreshold || !p.touched) continue;
         const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.anchorB.cross(n).dot(B.angularVelocity) -
                           p.anchorA.cross(n).dot(A.angularVelocity);
         // Seed 000: u_rel,N^new = c_R u_rel,N at the touch.
@@ -295,7 +337,7 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
       out.approachVelocity = p.relativeVelocity;
       out.normalVelocity = c.normal.dot(B.linearVelocity - A.linearVelocity) + p.anchorB.cross(c.normal).dot(B.angularVelocity) -
                            p.anchorA.cross(c.normal).dot(A.angularVelocity);
-      out.sticking = c.sticking && c.insideCone;
+      out.sticking = c.sticking && !c.slipping;
       solved_.push_back(out);
     }
     Cached cache;
@@ -307,7 +349,7 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
       cache.normalImpulses[j] = p.normalImpulse;
       cache.frictionImpulses[j] = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
     }
-    cache.sticking = c.insideCone;
+    cache.sticking = !c.slipping;
     nextCache_.push_back(cache);
   }
   std::sort(nextCache_.begin(), nextCache_.end(), [](const Cached& a, const Cached& b) { return a.key < b.key; });
@@ -361,7 +403,7 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     const int b = slotOfBody_[contact.b], a = plane ? 0 : slotOfBody_[contact.a];
     if (a == 0 && b == 0) continue;  // asleep, or static against static
     const Material material = combine(bodyMaterials[contact.b], plane ? planeMaterials[contact.a] : bodyMaterials[contact.a]);
-    prepare(bodies, contact, i, material, settings);
+    prepare(contact, i, material, settings);
   }
 
   const double inverseH = 1.0 / h;
@@ -370,6 +412,7 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     warmStart();  // the last substep's impulses (at the first, the last step's, when kept)
     solve(inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
     integratePositions(bodies, h);
+    updateJacobians();  // for the relax, and the next substep's warm start and solve
     solve(inverseH, settings, /*useBias=*/false, /*lastRelax=*/substep == settings.substeps - 1);
   }
   applyRestitution(settings);

@@ -47,6 +47,7 @@ class SoftStepSolver {
   // Whether the last step advanced World body `body` (then the World must not integrate it).
   bool advanced(std::size_t body) const { return body < advanced_.size() && advanced_[body] != 0; }
   const std::vector<std::size_t>& advancedBodies() const { return advancedList_; }
+  const std::vector<char>& advancedFlags() const { return advanced_; }  // per World body
   const std::vector<SolvedContactPoint>& points() const { return solved_; }
 
  private:
@@ -62,14 +63,15 @@ class SoftStepSolver {
   struct BodySim {
     std::size_t body = 0;                    // World index
     double inverseMass = 0.0;                // [1/kg]
-    Mat3 inverseInertia = Mat3::Zero();      // R I_body^-1 R^T at the step's start, for the rows
-    Mat3 inverseInertiaNow = Mat3::Zero();   // the same for the current orientation, for torques
+    Mat3 inverseInertia = Mat3::Zero();      // R I_body^-1 R^T at the step's start
+    Mat3 inverseInertiaNow = Mat3::Zero();   // the same for the current orientation
+    Vec3 position0 = Vec3::Zero();           // x at the step's start [m]
     Vec3 acceleration = Vec3::Zero();        // F / m (+ g) over the step [m/s^2]
     Vec3 torque = Vec3::Zero();              // tau about x [N m]
   };
   struct Point {  // one manifold point
-    Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // from each centre of mass, world, step start [m]
-    Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();    // the same in each body's frame [m]
+    Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // the point from each centre of mass, world [m]
+    Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();    // the point as each body carries it, body frame [m]
     Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
     std::array<Vec3, 2> frictionA{}, frictionB{};          // I^-1 (r x t_k)
     double baseSeparation = 0.0;     // s0 - n . (r_B - r_A) [m]
@@ -80,6 +82,7 @@ class SoftStepSolver {
     double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
     std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
     double totalNormalImpulse = 0.0;  // applied over the step [N s]
+    bool touched = false;             // pushed while the surfaces met (s <= 0): a collision
     Vec3 totalFriction = Vec3::Zero();  // applied over the step, world [N s]
   };
   struct Constraint {  // one manifold
@@ -88,8 +91,8 @@ class SoftStepSolver {
     double friction = 0.0;     // mu_s while sticking, mu_k while sliding [1]
     double restitution = 0.0;  // [1]
     Softness softness;
-    bool sticking = true;      // this step's regime (from the last step's outcome)
-    bool insideCone = true;    // no point's friction reached the cone in the last relax
+    bool sticking = true;      // this step's regime: the last step ended without slipping
+    bool slipping = false;     // the patch ended the step slipping (then mu_k next step)
     std::size_t firstPoint = 0, pointCount = 0;
     std::size_t contact = 0;   // index into the contacts
     std::uint64_t key = 0;     // pairKey
@@ -104,9 +107,10 @@ class SoftStepSolver {
   };
 
   int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
-  void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
-               const Settings& settings);
+  void prepare(const Contact& contact, std::size_t index, const Material& material, const Settings& settings);
   const Cached* cached(std::uint64_t key) const;
+  void updateJacobians(const Constraint& c, Point& p) const;
+  void updateJacobians();
   void integrateVelocities(double h);
   void warmStart();
   void solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax);

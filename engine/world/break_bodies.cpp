@@ -10,7 +10,7 @@ namespace rbsim {
 void World::breakBodies() {
   receivedImpulse_.assign(bodies_.size(), 0.0);
   const std::vector<Contact>& contacts = collision_.contacts();
-  for (const SolvedContactPoint& point : contactSolver_.points()) {
+  for (const SolvedContactPoint& point : contactPoints()) {
     const Contact& contact = contacts[point.contact];
     receivedImpulse_[contact.b] += point.normalImpulse;
     if (contact.kind == Contact::Kind::BodyBody) receivedImpulse_[contact.a] += point.normalImpulse;

@@ -90,12 +90,16 @@ void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies) {
 
 bool CollisionPipeline::isFast(std::size_t body) const { return fast_[body] != 0; }
 
-void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) {
+void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes,
+                                   const std::vector<char>* solved) {
   impacts_.clear();
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const RigidBody& body = bodies[i];
     fast_[i] = 0;
     if (!body.awake() || !haveStart_ || hasGrid_[i]) continue;
+    // Stopping a body the solver moved would undo its speculative contacts, which already hold
+    // it at the surfaces it can reach this step (and hold it still, again, every step after).
+    if (solved != nullptr && i < solved->size() && (*solved)[i] != 0) continue;
     const double motion = motionBound(sweptOf(body, start_[i], radius_[i]));
     fast_[i] = motion > settings_.ccdMotionFraction * thickness_[i] ? 1 : 0;
   }

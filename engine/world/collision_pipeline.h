@@ -50,7 +50,10 @@ class CollisionPipeline {
   void rememberStart(const std::vector<RigidBody>& bodies);
   // Stage ContinuousCollision: fast bodies that would pass through a plane or a body this step
   // are moved back to their time of impact. Returns the impacts of this step.
-  void continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes);
+  // `solved`: per body, nonzero when a contact solver already moved it through speculative
+  // contacts this step (soft step); those are left alone. Null: none was.
+  void continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes,
+                  const std::vector<char>* solved = nullptr);
   // Stage BroadPhase: every moved body's AABB (inflated by the contact margin; swept for fast
   // bodies) into the broad phase, then the candidate pairs.
   void broadPhase(const std::vector<RigidBody>& bodies);

@@ -255,7 +255,7 @@ void World::stepSoft(bool withGravity, bool awake, bool collides) {
     if (settings_.respondToContacts) solveContacts(withGravity);
   });
   runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_, &softStep_.advancedFlags()); });
 }
 
 void World::stepPgs(bool withGravity, bool awake, bool collides) {

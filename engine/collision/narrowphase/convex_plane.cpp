@@ -1,5 +1,7 @@
 #include "collision/narrowphase/convex_plane.h"
 
+#include <algorithm>
+
 #include "collision/narrowphase/manifold_reduction.h"
 
 namespace rbsim {
@@ -10,7 +12,20 @@ ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& 
     const double s = plane.signedDistance(p);
     if (s <= margin) candidates.push_back({p - plane.normal * (0.5 * s), -s});
   }
-  return reduceContacts(candidates, plane.normal);
+  // A vertex above a deeper one, higher by more than it lies beside it, is shadowed: the deeper
+  // vertex meets the plane first and holds the body there. Reduction by area sees the plane's
+  // projection only, so without this it may keep the top corner of a thin plate (within the
+  // margin, at the same place seen from above) and drop the bottom corner under it, which then
+  // sinks unopposed.
+  std::vector<ContactPoint> visible;
+  for (const ContactPoint& c : candidates) {
+    const bool shadowed = std::any_of(candidates.begin(), candidates.end(), [&](const ContactPoint& d) {
+      const Vec3 beside = d.position - c.position - plane.normal * plane.normal.dot(d.position - c.position);
+      return d.depth - c.depth > beside.norm();
+    });
+    if (!shadowed) visible.push_back(c);
+  }
+  return reduceContacts(visible, plane.normal);
 }
 
 }  // namespace rbsim
