@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
 
   try {
     if (app.got_subcommand("list")) return listEverything();
-    std::vector<rbsim::Scene> scenes;
+    std::vector<rbsim::app::Phase> phases;
     std::vector<std::string> files;
     std::string title;
     RunOptions options;
@@ -217,8 +217,8 @@ int main(int argc, char** argv) {
       rbsim::app::runWindow({files, options.overrides, title}, flags.windowOptions);
       return 0;
     }
-    for (const std::string& file : files) scenes.push_back(rbsim::loadScene(file, options.overrides));
-    const rbsim::app::RunSummary summary = rbsim::app::runScenes(scenes, options, title);
+    for (const std::string& file : files) phases.push_back(rbsim::app::loadPhase(file, options.overrides));
+    const rbsim::app::RunSummary summary = rbsim::app::runPhases(phases, options, title);
     rbsim::app::printSummary(summary, options);
     return 0;
   } catch (const InputError& e) {

@@ -104,11 +104,20 @@ struct RenderOptions {
   float debugLineWidth = 1.5f;
 };
 
-// Text for the overlay panel: a title and rows of (label, value) already formatted by the app.
+// A caption pinned to a point of the image, e.g. the value each world of a side-by-side
+// comparison runs with (app/run/phase.h). The app projects its world point (projection.h).
+struct OverlayLabel {
+  std::string text;
+  glm::vec2 pixel{0.0f};  // where the caption's top centre goes, in pixels from the top left
+};
+
+// Text for the overlay panel: a title and rows of (label, value) already formatted by the app,
+// and captions pinned to points of the image.
 struct OverlayData {
   std::string title;
   std::string caption;  // e.g. the demo phase being shown
   std::vector<std::pair<std::string, std::string>> rows;
+  std::vector<OverlayLabel> labels;
 };
 
 struct FrameData {

@@ -16,6 +16,11 @@ namespace rbsim::render {
 
 namespace {
 
+// Captions pinned to the image (OverlayLabel) are this many times the panel's text size: they
+// name what a whole region of the image shows and are read from across the frame [1].
+constexpr float kLabelFontScale = 1.6f;
+const ImVec4 kTitleColor(1.0f, 0.82f, 0.35f, 1.0f);  // amber, the panel's title and the captions
+
 constexpr const char* kMonoFontPaths[] = {
     "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf",
     "/usr/share/fonts/TTF/DejaVuSansMono.ttf",
@@ -88,6 +93,7 @@ Overlay::Overlay(int width, int height) : width_(width), height_(height) {
   const float sizePx = std::clamp(std::round(static_cast<float>(height) * 0.0235f), 11.0f, 48.0f);
   bodyFont_ = loadFont(io, sizePx);
   titleFont_ = loadFont(io, std::round(sizePx * 1.2f));
+  labelFont_ = loadFont(io, std::round(sizePx * kLabelFontScale));
   applyStyle();
   ImGui::GetStyle().ScaleAllSizes(std::max(0.75f, sizePx / 17.0f));
   if (!ImGui_ImplOpenGL2_Init()) {
@@ -104,7 +110,7 @@ Overlay::~Overlay() {
 
 bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui) {
   const bool panel = !(data.title.empty() && data.caption.empty() && data.rows.empty());  // no empty box
-  if (!panel && ui == nullptr) return false;
+  if (!panel && data.labels.empty() && ui == nullptr) return false;
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
@@ -116,6 +122,7 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
   }
   ImGui_ImplOpenGL2_NewFrame();
   ImGui::NewFrame();
+  drawLabels(data);
   if (panel) drawPanel(data);
   if (ui != nullptr && ui->draw) {
     ImGui::PushFont(bodyFont_);
@@ -175,7 +182,7 @@ void Overlay::drawPanel(const OverlayData& data) {
                                  ImGuiWindowFlags_NoFocusOnAppearing;
   if (ImGui::Begin("##rbsim-overlay", nullptr, flags)) {
     ImGui::PushFont(titleFont_);
-    ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.35f, 1.0f), "%s", data.title.c_str());
+    ImGui::TextColored(kTitleColor, "%s", data.title.c_str());
     ImGui::PopFont();
     ImGui::PushFont(bodyFont_);
     if (!data.caption.empty()) {
@@ -204,6 +211,29 @@ void Overlay::drawPanel(const OverlayData& data) {
     ImGui::PopFont();
   }
   ImGui::End();
+}
+
+void Overlay::drawLabels(const OverlayData& data) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoFocusOnAppearing;
+  ImGui::PushFont(labelFont_);
+  for (std::size_t i = 0; i < data.labels.size(); ++i) {
+    const OverlayLabel& label = data.labels[i];
+    const ImVec2 text = ImGui::CalcTextSize(label.text.c_str());
+    const ImVec2 size(text.x + 2.0f * style.WindowPadding.x, text.y + 2.0f * style.WindowPadding.y);
+    // Top centre on the point, moved inside the image when the point is near its edge.
+    const float x = std::clamp(label.pixel.x - 0.5f * size.x, 0.0f, std::max(0.0f, io.DisplaySize.x - size.x));
+    const float y = std::clamp(label.pixel.y, 0.0f, std::max(0.0f, io.DisplaySize.y - size.y));
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(size);  // fixed: see overlay.h
+    const std::string id = "##rbsim-label-" + std::to_string(i);
+    if (ImGui::Begin(id.c_str(), nullptr, flags)) ImGui::TextColored(kTitleColor, "%s", label.text.c_str());
+    ImGui::End();
+  }
+  ImGui::PopFont();
 }
 
 }  // namespace rbsim::render

@@ -19,20 +19,22 @@ class Overlay {
   Overlay& operator=(const Overlay&) = delete;
 
   // Draws a fixed-size, fixed-position panel at the top left into framebuffer 0 (none when
-  // `data` is empty). Fixed size, because ImGui hides an auto-sized window on its first frame
-  // (DESIGN.md). With `ui`, its pointer drives ImGui and its windows are drawn in the same frame;
+  // `data` has no title, caption or rows), and each of data.labels in a box of its own. Fixed
+  // size, because ImGui hides an auto-sized window on its first frame (DESIGN.md). With `ui`, its pointer drives ImGui and its windows are drawn in the same frame;
   // returns whether ImGui wants the pointer (it is over a control). Leaves no program, vertex
   // array or buffer bound; the GL renderer sets everything else it needs each frame.
   bool draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui = nullptr);
 
  private:
   void drawPanel(const OverlayData& data);  // inside an ImGui frame
+  void drawLabels(const OverlayData& data);  // inside an ImGui frame
 
   int width_;
   int height_;
   ImGuiContext* context_ = nullptr;
   ImFont* bodyFont_ = nullptr;
   ImFont* titleFont_ = nullptr;
+  ImFont* labelFont_ = nullptr;
 };
 
 }  // namespace rbsim::render

@@ -10,8 +10,6 @@
 
 namespace rbsim::app {
 
-namespace {
-
 std::string formatVec(const Vec3& v, const char* unit) {
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "%+9.4f %+9.4f %+9.4f %s", v.x(), v.y(), v.z(), unit);
@@ -24,8 +22,6 @@ std::string formatNumber(double value, const char* unit) {
   return buffer;
 }
 
-}  // namespace
-
 render::Camera sceneCamera(const ViewDesc& view) {
   render::Camera camera;
   camera.eye = toGlm(view.eye);
@@ -35,7 +31,8 @@ render::Camera sceneCamera(const ViewDesc& view) {
   return camera;
 }
 
-render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle) {
+render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
+                             bool selectedBodyRows) {
   render::FrameData frame;
   const ViewDesc& view = scene.view;
   frame.camera = sceneCamera(view);
@@ -73,7 +70,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
       {"integrator", std::string(integratorName(world.settings().integrator)) + ", dt " +
                          formatNumber(world.settings().timeStep, "s")},
   };
-  if (view.selected < world.bodies().size()) {  // a scene of particles alone has no bodies
+  if (selectedBodyRows && view.selected < world.bodies().size()) {  // a scene of particles alone has no bodies
     const RigidBody& body = world.bodies()[view.selected];
     const Mat3& R = body.rotation();
     const Quat& q = body.orientation();

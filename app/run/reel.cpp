@@ -46,7 +46,7 @@ double demoSeconds(const ReelDemo& d, int fps) { return static_cast<double>(d.fr
 
 render::TitleCard openingCard(const ReelPlan& plan, const ReelOptions& options) {
   std::size_t scenes = 0;
-  for (const ReelDemo& d : plan.demos) scenes += d.scenes.size();
+  for (const ReelDemo& d : plan.demos) scenes += d.phases.size();
   render::TitleCard card;
   card.kicker = "RBSIM  \xc2\xb7  DEMO REEL";
   card.title = "Physically based animation";
@@ -70,11 +70,11 @@ render::TitleCard demoCard(const ReelPlan& plan, std::size_t index, const ReelOp
   card.title = d.demo.name;
   card.description = d.demo.description;
   card.description[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(card.description[0])));
-  card.listHeading = d.scenes.size() == 1 ? "SCENE" : "PHASES";
-  for (std::size_t p = 0; p < d.scenes.size(); ++p) {
-    const Scene& scene = d.scenes[p];
-    card.list.push_back({std::to_string(p + 1), phaseCaption(scene.title), "",
-                         seconds(static_cast<double>(frameCount(scene)) / options.fps)});
+  card.listHeading = d.phases.size() == 1 ? "SCENE" : "PHASES";
+  for (std::size_t p = 0; p < d.phases.size(); ++p) {
+    const Phase& phase = d.phases[p];
+    card.list.push_back({std::to_string(p + 1), phaseCaption(phase.scene().title), "",
+                         seconds(static_cast<double>(frameCount(phase)) / options.fps)});
   }
   card.footerLeft = "rbsim demo " + std::to_string(d.demo.number) + "  \xc2\xb7  videos/" + d.demo.name + ".mp4";
   card.footerRight = formatLine(options);
@@ -113,8 +113,8 @@ ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options) {
   for (const Demo& demo : demos) {
     ReelDemo entry{demo, {}, 0};
     for (const std::string& file : demo.scenes) {
-      entry.scenes.push_back(loadScene(assetDir() + "/scenes/" + file, overrides));
-      entry.frames += frameCount(entry.scenes.back());
+      entry.phases.push_back(loadPhase(assetDir() + "/scenes/" + file, overrides));
+      entry.frames += frameCount(entry.phases.back());
     }
     plan.totalFrames += plan.cardFrames + entry.frames;
     plan.demos.push_back(std::move(entry));
@@ -169,7 +169,7 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
     run.videoPath = (options.videoDir / (d.demo.name + ".mp4")).string();
     run.quiet = true;
     const RunSummary summary =
-        runScenes(d.scenes, run, "Demo " + std::to_string(d.demo.number) + ": " + d.demo.name,
+        runPhases(d.phases, run, "Demo " + std::to_string(d.demo.number) + ": " + d.demo.name,
                   [&](const std::vector<std::uint8_t>& image) {
                     reel.submit(image);
                     ++done;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "demos/demo.h"
-#include "scene/scene.h"
+#include "run/phase.h"
 
 namespace rbsim::app {
 
@@ -26,8 +26,8 @@ struct ReelOptions {
 
 struct ReelDemo {
   Demo demo;
-  std::vector<Scene> scenes;  // loaded with the reel's format and the user's overrides
-  std::uint64_t frames = 0;   // rendered for its scenes (frameCount of each, summed)
+  std::vector<Phase> phases;  // its scenes, loaded with the reel's format and the user's overrides
+  std::uint64_t frames = 0;   // rendered for its phases (frameCount of each, summed)
 };
 
 struct ReelPlan {

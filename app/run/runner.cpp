@@ -1,5 +1,6 @@
 #include "run/runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,7 +10,7 @@
 #include "io/input_error.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
-#include "run/frame_builder.h"
+#include "run/compare_view.h"
 #include "run/trace_writer.h"
 
 namespace rbsim::app {
@@ -38,14 +39,15 @@ std::uint64_t frameCount(const Scene& scene) {
   return frameCount(scene.stepCount(), scene.view.fps, scene.settings.timeStep);
 }
 
-RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title,
+RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
                      const FrameObserver& observer) {
   RunSummary summary;
   const auto wallStart = Clock::now();
-  const ViewDesc& first = scenes.front().view;
-  for (const Scene& scene : scenes) {
-    if (scene.view.width != first.width || scene.view.height != first.height || scene.view.fps != first.fps) {
-      throw InputError(scene.file, "view", "every phase of one video needs the same size and fps as the first");
+  const ViewDesc& first = phases.front().scene().view;
+  for (const Phase& phase : phases) {
+    const ViewDesc& view = phase.scene().view;
+    if (view.width != first.width || view.height != first.height || view.fps != first.fps) {
+      throw InputError(phase.file, "view", "every phase of one video needs the same size and fps as the first");
     }
   }
 
@@ -66,31 +68,51 @@ RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options
   std::optional<TraceWriter> trace;
   if (!options.tracePath.empty()) trace.emplace(options.tracePath);
 
-  for (const Scene& scene : scenes) {
-    World world = buildWorld(scene);
-    const std::uint64_t steps = scene.stepCount();
-    std::uint64_t nextFrame = 0;
-    for (std::uint64_t s = 0;; ++s) {
-      if (trace && (summary.steps % options.traceEvery == 0)) trace->write(world, summary.steps, world.time());
-      while (renderer && stepOfFrame(nextFrame, scene.view.fps, scene.settings.timeStep) == s) {
-        auto start = Clock::now();
-        const render::FrameData frame = buildFrame(world, scene, title);
-        summary.buildSeconds += secondsSince(start);
-        start = Clock::now();
-        const std::vector<std::uint8_t>& pixels = renderer->render(frame);
-        start = Clock::now();
-        sink->submit(pixels);
-        summary.submitSeconds += secondsSince(start);
-        if (observer) observer(pixels);
-        ++nextFrame;
-        ++summary.frames;
+  std::uint64_t stepBase = 0;  // the trace's step column: the steps of the phases before this one
+  for (const Phase& phase : phases) {
+    std::vector<World> worlds;
+    worlds.reserve(phase.worlds.size());
+    for (const PhaseWorld& w : phase.worlds) worlds.push_back(buildWorld(w.scene));
+    const auto traceRow = [&](std::size_t k) {
+      const std::uint64_t step = stepBase + worlds[k].stepCount();
+      if (trace && step % options.traceEvery == 0) {
+        trace->write(worlds[k], step, worlds[k].time(), phase.compared() ? std::to_string(k) + "/" : "");
       }
-      if (s == steps) break;
-      const auto start = Clock::now();
-      world.step();
-      summary.simulateSeconds += secondsSince(start);
-      ++summary.steps;
+    };
+    const auto advance = [&](std::size_t k, std::uint64_t target) {
+      while (worlds[k].stepCount() < target) {
+        const auto start = Clock::now();
+        worlds[k].step();
+        summary.simulateSeconds += secondsSince(start);
+        ++summary.steps;
+        traceRow(k);
+      }
+    };
+    for (std::size_t k = 0; k < worlds.size(); ++k) traceRow(k);
+    const double fps = phase.scene().view.fps;
+    const std::uint64_t frames = frameCount(phase);
+    for (std::uint64_t f = 0; f < frames; ++f) {
+      for (std::size_t k = 0; k < worlds.size(); ++k) {
+        const Scene& scene = phase.worlds[k].scene;
+        advance(k, std::min(stepOfFrame(f, fps, scene.settings.timeStep), scene.stepCount()));
+      }
+      if (!renderer) continue;
+      auto start = Clock::now();
+      const render::FrameData frame = buildPhaseFrame(worlds, phase, title);
+      summary.buildSeconds += secondsSince(start);
+      const std::vector<std::uint8_t>& pixels = renderer->render(frame);
+      start = Clock::now();
+      sink->submit(pixels);
+      summary.submitSeconds += secondsSince(start);
+      if (observer) observer(pixels);
+      ++summary.frames;
     }
+    std::uint64_t longest = 0;
+    for (std::size_t k = 0; k < worlds.size(); ++k) {
+      advance(k, phase.worlds[k].scene.stepCount());  // past the last frame, as the trace expects
+      longest = std::max(longest, phase.worlds[k].scene.stepCount());
+    }
+    stepBase += longest;
   }
   if (sink) {
     const auto start = Clock::now();

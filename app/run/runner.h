@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "run/phase.h"
 #include "run/run_options.h"
 #include "scene/scene.h"
 
@@ -30,7 +31,7 @@ struct RunSummary {
 // shown twice only when dt > 1/fps.
 std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt);
 
-// How many frames runScenes renders for a scene of `steps` steps: every k with
+// How many frames runPhases renders for a scene of `steps` steps: every k with
 // stepOfFrame(k) <= steps (frame 0 is the initial state).
 std::uint64_t frameCount(std::uint64_t steps, double fps, double dt);
 std::uint64_t frameCount(const Scene& scene);
@@ -39,10 +40,14 @@ std::uint64_t frameCount(const Scene& scene);
 // `rbsim demo all` copies it into the reel and counts it for the progress line.
 using FrameObserver = std::function<void(const std::vector<std::uint8_t>& rgbaTopDown)>;
 
-// Plays the scenes one after another into the same frames folder and video (a demo's phases).
-// Every scene must have the same image size. `title` heads the overlay (the scene's own title
-// when empty).
-RunSummary runScenes(const std::vector<Scene>& scenes, const RunOptions& options, const std::string& title,
+// Plays the phases one after another into the same frames folder and video (a demo's phases).
+// Every phase must have the same image size and fps. `title` heads the overlay (the scene's own
+// title when empty). The worlds of a compared phase (phase.h) advance in lockstep: before frame
+// k each one is stepped to its own step nearest k / fps (so worlds of different dt stay at the
+// same time) and all are drawn into the frame; the phase lasts as long as its longest world.
+// The trace has every world's rows; a compared world's bodies are named "K/NAME" for world K.
+// RunSummary::steps counts the steps of every world.
+RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
                      const FrameObserver& observer = {});
 
 void printSummary(const RunSummary& summary, const RunOptions& options);

@@ -23,14 +23,14 @@ TraceWriter::TraceWriter(const std::string& path) {
   out_ << std::setprecision(std::numeric_limits<double>::max_digits10);
 }
 
-void TraceWriter::write(const World& world, std::uint64_t globalStep, double time) {
+void TraceWriter::write(const World& world, std::uint64_t globalStep, double time, const std::string& bodyPrefix) {
   for (const RigidBody& body : world.bodies()) {
     const Vec3& x = body.position();
     const Quat& q = body.orientation();
     const Vec3& v = body.velocity();
     const Vec3& w = body.angularVelocity();
     const Vec3& L = body.state().angularMomentum;
-    out_ << globalStep << ',' << time << ',' << body.name() << ',' << x.x() << ',' << x.y() << ','
+    out_ << globalStep << ',' << time << ',' << bodyPrefix << body.name() << ',' << x.x() << ',' << x.y() << ','
          << x.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << v.x()
          << ',' << v.y() << ',' << v.z() << ',' << w.x() << ',' << w.y() << ',' << w.z() << ','
          << L.x() << ',' << L.y() << ',' << L.z() << ',' << body.kineticEnergy() << '\n';

@@ -12,7 +12,8 @@ namespace rbsim::app {
 class TraceWriter {
  public:
   explicit TraceWriter(const std::string& path);  // throws InputError if it cannot be written
-  void write(const World& world, std::uint64_t globalStep, double time);
+  // `bodyPrefix` goes before every body name: "K/" for world K of a compared phase (phase.h).
+  void write(const World& world, std::uint64_t globalStep, double time, const std::string& bodyPrefix = "");
 
  private:
   std::ofstream out_;

@@ -16,6 +16,7 @@
 #include "render/offscreen_renderer.h"
 #include "render/png_sequence_writer.h"
 #include "run/frame_builder.h"
+#include "run/phase.h"
 #include "run/runner.h"
 #include "run/to_glm.h"
 #include "scene/scene.h"
@@ -101,8 +102,17 @@ class Session {
     return all;
   }
 
+  // A compared phase (run/phase.h) shows its first world only: picking, dragging and the panel's
+  // physics act on one World. The caption says so; the video (`rbsim run`) shows them all.
   Scene load(std::size_t phase, const std::vector<std::pair<std::string, std::string>>& panel) const {
-    return loadScene(source_.files[phase], overrides(panel));
+    Phase loaded = loadPhase(source_.files[phase], overrides(panel));
+    Scene scene = std::move(loaded.worlds.front().scene);
+    if (loaded.compared()) {
+      scene.view.caption = "window mode shows the first of the " + std::to_string(loaded.worlds.size()) +
+                           " compared worlds (" + loaded.compareKey + "): " + loaded.worlds.front().label +
+                           "; the video shows them side by side. " + scene.view.caption;
+    }
+    return scene;
   }
 
   // Frame k shows the step nearest k / fps, as in the off-screen runner, so that the window and

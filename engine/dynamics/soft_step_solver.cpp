@@ -13,7 +13,7 @@ namespace {
 // Gauss-Seidel sweeps of the restitution pass. One sweep (Box2D v3's) leaves a box landing flat
 // on four points with uneven bounces, each point's impulse disturbing the ones already done; a
 // few more converge them to one common rebound.
-constexpr int kRestitutionSweeps = 4;
+constexpr int kRestitutionSweeps = 16;
 
 // The stiffness of the contact spring is capped at this fraction of the substep rate: an implicit
 // spring much stiffer than the substep can resolve only adds error (Box2D v3's solver.c caps
@@ -212,7 +212,9 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
       const double delta = total - p.normalImpulse;
       p.normalImpulse = total;
       p.totalNormalImpulse += delta;
-      if (s <= 0.0 && total > 0.0) p.touched = true;
+      // Pushing within the slop of touching: the surfaces met (a speculative point lands a body
+      // at s = 0 up to rounding, so s <= 0 alone can miss it).
+      if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
       vA -= (mA * delta) * n;
       wA -= delta * p.angularA;
       vB += (mB * delta) * n;
@@ -294,11 +296,17 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
       SolverState& B = states_[c.b];
       const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
       const Vec3& n = c.normal;
+      // A manifold whose surfaces never met, or met without pushing, did not collide (a
+      // warm-started speculative contact must not bounce early).
+      if (!c.touched) continue;
+      const Vec3 dp = B.deltaPosition - A.deltaPosition;
       for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
         Point& p = points_[j];
-        // Slower approaches are resting contact; a point whose surfaces never met, or met without
-        // pushing, did not collide (a warm-started speculative point must not bounce early).
-        if (p.impactSpeed <= settings.restitutionThreshold || !p.touched) continue;
+        // Slower approaches are resting contact. Every point the step ends touching bounces,
+        // not only those that pushed: in a Gauss-Seidel sweep the first point of a box landing
+        // flat stops it alone, and bouncing that point alone would set the box spinning.
+        const double s = p.baseSeparation + n.dot(dp + B.orientation * p.localB - A.orientation * p.localA);
+        if (p.impactSpeed <= settings.restitutionThreshold || s > settings.contactSlop) continue;
         const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.anchorB.cross(n).dot(B.angularVelocity) -
                           p.anchorA.cross(n).dot(A.angularVelocity);
         // Seed 000: u_rel,N^new = c_R u_rel,N at the touch.

@@ -82,7 +82,6 @@ class SoftStepSolver {
     double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
     std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
     double totalNormalImpulse = 0.0;  // applied over the step [N s]
-    bool touched = false;             // pushed while the surfaces met (s <= 0): a collision
     Vec3 totalFriction = Vec3::Zero();  // applied over the step, world [N s]
   };
   struct Constraint {  // one manifold
@@ -93,6 +92,7 @@ class SoftStepSolver {
     Softness softness;
     bool sticking = true;      // this step's regime: the last step ended without slipping
     bool slipping = false;     // the patch ended the step slipping (then mu_k next step)
+    bool touched = false;      // a point pushed while the surfaces met (s <= 0): a collision
     std::size_t firstPoint = 0, pointCount = 0;
     std::size_t contact = 0;   // index into the contacts
     std::uint64_t key = 0;     // pairKey

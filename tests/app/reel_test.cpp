@@ -77,7 +77,7 @@ TEST(Reel, PlanMatchesTheFramesAShortRunWrites) {
   std::uint64_t sum = plan.cardFrames;
   for (const ReelDemo& d : plan.demos) {
     // Each scene: 0.1 s at 60 fps is frames 0..6, whatever its time step.
-    EXPECT_EQ(d.frames, 7u * d.scenes.size()) << d.demo.name;
+    EXPECT_EQ(d.frames, 7u * d.phases.size()) << d.demo.name;
     sum += plan.cardFrames + d.frames;
   }
   EXPECT_EQ(plan.totalFrames, sum);

@@ -68,5 +68,47 @@ TEST(Overlay, PanelWithTextOnTheFirstFrame) {
   }
 }
 
+// A caption pinned to a point (OverlayLabel, the worlds of a compared phase): drawn on the very
+// first frame, its top centre at the point, in the title's gold, and drawn with no panel at all.
+TEST(Overlay, LabelHangsBelowItsPointOnTheFirstFrame) {
+  const glm::vec2 point(0.75f * kWidth, 0.6f * kHeight);  // right of and below the panel
+  FrameData frame = overlayFrame(true);
+  frame.overlay.labels.push_back({"PGS", point});
+  std::vector<std::uint8_t> with, without, alone;
+  {
+    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    with = renderer.render(frame);
+  }
+  {
+    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    without = renderer.render(overlayFrame(true));
+  }
+  {
+    FrameData bare = overlayFrame(true);
+    bare.overlay = OverlayData{};
+    bare.overlay.labels.push_back({"PGS", point});
+    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    alone = renderer.render(bare);
+  }
+  // Changed pixels and gold text in the box below the point; nothing changed above it.
+  const auto count = [&](const std::vector<std::uint8_t>& image, int y0, int y1, bool goldOnly) {
+    int n = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = static_cast<int>(point.x) - 20; x < static_cast<int>(point.x) + 20; ++x) {
+        const Rgb a = pixelAt(image, kWidth, x, y), b = pixelAt(without, kWidth, x, y);
+        const bool gold = a.r > 190 && a.g > 150 && a.b < 140;
+        const bool changed = std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b) > 12;
+        n += goldOnly ? gold : changed;
+      }
+    }
+    return n;
+  };
+  const int y = static_cast<int>(point.y);
+  EXPECT_GT(count(with, y, y + 20, false), 200) << "the caption's box should cover the region below the point";
+  EXPECT_GT(count(with, y, y + 20, true), 10) << "its text should be drawn in gold";
+  EXPECT_EQ(count(with, y - 20, y - 2, false), 0) << "nothing above the point changes";
+  EXPECT_GT(count(alone, y, y + 20, true), 10) << "a caption is drawn without a panel too";
+}
+
 }  // namespace
 }  // namespace rbsim::render::test

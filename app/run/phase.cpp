@@ -1,0 +1,207 @@
+#include "run/phase.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "io/input_error.h"
+#include "run/runner.h"
+#include "scene/json_fields.h"
+
+namespace rbsim::app {
+
+namespace {
+
+// "bodies[1].mass" and "bodies.1.mass" both give {bodies, 1, mass}, as the --set flag reads them
+// (engine/scene/override.cpp).
+std::vector<std::string> splitKey(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string current;
+  for (char c : key) {
+    if (c == '.' || c == '[' || c == ']') {
+      if (!current.empty()) parts.push_back(current);
+      current.clear();
+    } else {
+      current += c;
+    }
+  }
+  if (!current.empty()) parts.push_back(current);
+  return parts;
+}
+
+// "pgs" for a string, the JSON text otherwise: how a value reads in a caption.
+std::string shown(const nlohmann::json& value) {
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
+
+// The box around the scene's bodies at t = 0 (world vertices R p + x), or false without bodies.
+bool bodiesBox(const Scene& scene, Vec3& lo, Vec3& hi) {
+  lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  hi = -lo;
+  bool any = false;
+  for (const BodyDef& def : scene.bodies) {
+    if (!def.mesh) continue;
+    for (const Vec3& p : def.mesh->vertices) {
+      const Vec3 world = def.orientation * p + def.position;
+      lo = lo.cwiseMin(world);
+      hi = hi.cwiseMax(world);
+      any = true;
+    }
+  }
+  return any;
+}
+
+// Below the middle of the front bottom edge of the world's bodies at t = 0 (the front faces the
+// camera), or at the camera's target without bodies.
+Vec3 labelAnchor(const Scene& scene) {
+  Vec3 lo, hi;
+  if (!bodiesBox(scene, lo, hi)) return scene.view.target;
+  const Vec3 centre = 0.5 * (lo + hi);
+  const Vec3 toEye = scene.view.eye - centre;
+  const double front = toEye.z() >= 0.0 ? hi.z() + kCompareLabelAhead : lo.z() - kCompareLabelAhead;
+  return Vec3(centre.x(), lo.y(), front);
+}
+
+Vec3 defaultOffset(const Scene& scene) {
+  Vec3 lo, hi;
+  const double width = bodiesBox(scene, lo, hi) ? hi.x() - lo.x() : 0.0;
+  return Vec3(std::max(kCompareSpacingFactor * width, kMinCompareSpacing), 0.0, 0.0);
+}
+
+// A --set assignment that changes the compared key (or something inside it) would be replaced
+// by every world's own value: refused rather than silently lost.
+void refuseOverridesOfTheKey(const std::vector<std::string>& overrides, const std::string& key,
+                             const std::string& file) {
+  const std::vector<std::string> keyParts = splitKey(key);
+  for (const std::string& assignment : overrides) {
+    const std::vector<std::string> parts = splitKey(assignment.substr(0, assignment.find('=')));
+    if (parts.size() >= keyParts.size() && std::equal(keyParts.begin(), keyParts.end(), parts.begin())) {
+      throw InputError(file, "--set " + assignment,
+                       "sets " + key + ", which compare.key gives each world from compare.values; change "
+                       "compare.values instead (e.g. --set 'compare.values=[...]')");
+    }
+  }
+}
+
+Phase parseCompared(nlohmann::json document, const std::string& file, const std::string& baseDir,
+                    const std::vector<std::string>& overrides) {
+  const nlohmann::json block = document["compare"];
+  document.erase("compare");  // the engine's scene parser knows nothing of it
+  const JsonObject c(block, file, "compare", {"key", "values", "labels", "offset"});
+  const std::string key = c.requiredString("key");
+  const std::vector<std::string> parts = splitKey(key);
+  if (parts.empty()) c.fail("key", "expected a scene key in --set form, such as world.solver or bodies.box.mass");
+  const std::string expected = "; expected a key of world, bodies, planes, particles, soft_bodies or planar";
+  if (parts.front() == "view") c.fail("key", "\"" + key + "\": every world is drawn with the one view" + expected);
+  if (parts.front() == "compare") c.fail("key", "\"" + key + "\": a comparison cannot compare itself" + expected);
+  if (!c.has("values")) c.fail("values", "missing; expected an array of 2 to " + std::to_string(kMaxComparedWorlds) + " values of " + key);
+  const nlohmann::json& values = c.raw("values");
+  if (!values.is_array() || values.size() < 2 || values.size() > kMaxComparedWorlds) {
+    c.fail("values", "expected an array of 2 to " + std::to_string(kMaxComparedWorlds) + " values of " + key +
+                         " (one world each), got " +
+                         (values.is_array() ? std::to_string(values.size()) + (values.size() == 1 ? " value" : " values") : values.dump()));
+  }
+  for (std::size_t k = 1; k < values.size(); ++k) {
+    for (std::size_t j = 0; j < k; ++j) {
+      if (values[k] == values[j]) {
+        throw InputError(file, "compare.values[" + std::to_string(k) + "]",
+                         "repeats compare.values[" + std::to_string(j) + "] (" + values[j].dump() +
+                             "); every world needs a value of its own");
+      }
+    }
+  }
+  std::vector<std::string> labels;
+  if (c.has("labels")) {
+    const nlohmann::json& l = c.raw("labels");
+    if (!l.is_array() || l.size() != values.size() ||
+        !std::all_of(l.begin(), l.end(), [](const nlohmann::json& s) { return s.is_string(); })) {
+      c.fail("labels", "expected an array of " + std::to_string(values.size()) + " strings, one caption per value");
+    }
+    for (const nlohmann::json& s : l) labels.push_back(s.get<std::string>());
+  }
+  const std::optional<Vec3> offset = c.optionalVec3("offset");
+  refuseOverridesOfTheKey(overrides, key, file);
+
+  Phase phase;
+  phase.file = file;
+  phase.compareKey = key;
+  Vec3 spacing = Vec3::Zero();  // from one world to the next [m]
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const std::string field = "compare.values[" + std::to_string(k) + "]";
+    nlohmann::json variant = document;
+    try {
+      applyOverride(variant, key + "=" + values[k].dump());  // the --set path
+    } catch (const InputError& e) {
+      throw InputError(file, "compare.key", "\"" + key + "\": " + e.problem());
+    }
+    PhaseWorld world;
+    try {
+      world.scene = parseScene(variant, file, baseDir);
+    } catch (const InputError& e) {
+      parseScene(document, file, baseDir);  // a fault of the scene itself is reported as such
+      // A misspelt key is the key's fault, not the value's.
+      if (e.field() == key && e.problem().rfind("unknown key", 0) == 0) throw InputError(file, "compare.key", "\"" + key + "\": " + e.problem());
+      throw InputError(file, field, key + " = " + values[k].dump() + " gives a bad scene: " + e.field() + ": " + e.problem());
+    }
+    world.value = values[k].dump();
+    world.label = labels.empty() ? key + " = " + shown(values[k]) : labels[k];
+    if (k == 0) spacing = offset ? *offset : defaultOffset(world.scene);
+    world.offset = static_cast<double>(k) * spacing;
+    world.labelAnchor = labelAnchor(world.scene) + world.offset;
+    phase.worlds.push_back(std::move(world));
+  }
+  return phase;
+}
+
+}  // namespace
+
+Phase singleWorldPhase(Scene scene) {
+  Phase phase;
+  phase.file = scene.file;
+  PhaseWorld world;
+  world.labelAnchor = labelAnchor(scene);
+  world.scene = std::move(scene);
+  phase.worlds.push_back(std::move(world));
+  return phase;
+}
+
+Phase parsePhaseText(const std::string& text, const std::string& file, const std::string& baseDir,
+                     const std::vector<std::string>& overrides) {
+  nlohmann::json document = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (document.is_discarded()) {
+    parseSceneText(text, file, baseDir);  // throws the engine's message: line, column, what
+    throw InputError(file, "", "invalid JSON");
+  }
+  for (const std::string& assignment : overrides) {
+    try {
+      applyOverride(document, assignment);
+    } catch (const InputError& e) {
+      throw InputError(file, "--set " + assignment, e.problem());  // as parseSceneText words it
+    }
+  }
+  if (!document.is_object() || !document.contains("compare")) {
+    return singleWorldPhase(parseScene(document, file, baseDir));
+  }
+  return parseCompared(std::move(document), file, baseDir, overrides);
+}
+
+Phase loadPhase(const std::string& path, const std::vector<std::string>& overrides) {
+  // The same checks and messages as the engine's loadScene.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a folder; expected a scene file (JSON)");
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parsePhaseText(buffer.str(), path, std::filesystem::path(path).parent_path().string(), overrides);
+}
+
+std::uint64_t frameCount(const Phase& phase) {
+  std::uint64_t frames = 0;
+  for (const PhaseWorld& world : phase.worlds) frames = std::max(frames, frameCount(world.scene));
+  return frames;
+}
+
+}  // namespace rbsim::app
