@@ -1,4 +1,4 @@
-// Box pile benchmark (issue 5): N unit boxes dropped in a loose grid onto a plane (pile_layout.h,
+// Box pile benchmark (issues 5 and 18), with soft step and with PGS: N unit boxes dropped in a loose grid onto a plane (pile_layout.h,
 // the same pile bullet_pile drops in Bullet), dt = 1/60 s, 10 solver sweeps, 600 steps. Prints, per N: the median ms per step over the last 300 steps,
 // the contact points, the deepest penetration, whether the pile is at rest, and how the stages
 // share the time, with sleeping on (as engines run) and off. Not a Google Benchmark: one long run per N is the measurement.
@@ -25,8 +25,9 @@ constexpr int kSteps = kPileSteps;
 constexpr int kTimedSteps = kPileTimedSteps;
 constexpr double kRestSpeed = kPileRestSpeed;
 
-void runPile(int count, bool allowSleep) {
+void runPile(int count, bool allowSleep, Settings::ContactSolverMethod solver) {
   Settings settings;
+  settings.solver = solver;
   settings.allowSleep = allowSleep;
   settings.timeStep = kDt;
   settings.velocityIterations = kPileSolverIterations;
@@ -63,9 +64,9 @@ void runPile(int count, bool allowSleep) {
     points += static_cast<std::size_t>(c.manifold.count);
   }
   for (const RigidBody& b : world.bodies()) fastest = std::max(fastest, b.velocity().norm());
-  std::printf("N = %5d, sleep %-3s: %8.3f ms/step (median of last %d of %d), %6zu contact points, deepest %.4f m, "
+  std::printf("%-9s N = %5d, sleep %-3s: %8.3f ms/step (median of last %d of %d), %6zu contact points, deepest %.4f m, "
               "fastest %.4f m/s (%s), %zu awake\n",
-              count, allowSleep ? "on" : "off", tail[kTimedSteps / 2], kTimedSteps, kSteps, points, deepest, fastest,
+              solver == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step", count, allowSleep ? "on" : "off", tail[kTimedSteps / 2], kTimedSteps, kSteps, points, deepest, fastest,
               fastest < kRestSpeed ? "at rest" : "moving", world.awakeCount());
   double total = 0.0;
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) total += world.stageStats(static_cast<Stage>(s)).seconds;
@@ -86,8 +87,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "contact_pile: expected positive box counts\n");
       return 2;
     }
-    runPile(count, true);
-    runPile(count, false);
+    for (const auto solver : {Settings::ContactSolverMethod::SoftStep, Settings::ContactSolverMethod::Pgs}) {
+      runPile(count, true, solver);
+      runPile(count, false, solver);
+    }
   }
   return 0;
 }
