@@ -95,9 +95,8 @@ void SoftStepSolver::prepare(const Contact& contact, std::size_t index,
     const double separation = -m.points[i].depth;
     p.baseSeparation = separation - n.dot((position - xB) - (position - xA));
     updateJacobians(c, p);
-    const Vec3 crossA = p.anchorA.cross(n), crossB = p.anchorB.cross(n);
-    p.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + crossB.dot(stateB.angularVelocity) -
-                         crossA.dot(stateA.angularVelocity);
+    p.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + p.crossB.dot(stateB.angularVelocity) -
+                         p.crossA.dot(stateA.angularVelocity);
     // Energy of the normal motion from the step's start to the touch: u^2 = u0^2 - 2 a_n s0.
     if (p.relativeVelocity < 0.0) {
       const double squared = p.relativeVelocity * p.relativeVelocity - 2.0 * normalAcceleration * std::max(separation, 0.0);
@@ -125,17 +124,22 @@ void SoftStepSolver::updateJacobians(const Constraint& c, Point& p) const {
   const SolverState& A = states_[c.a];
   const SolverState& B = states_[c.b];
   const Vec3 xA = sims_[c.a].position0 + A.deltaPosition, xB = sims_[c.b].position0 + B.deltaPosition;
-  const Vec3 point = 0.5 * (xA + A.orientation * p.localA + xB + B.orientation * p.localB);
+  const Vec3 onA = A.orientation * p.localA, onB = B.orientation * p.localB;
+  const Vec3 point = 0.5 * (xA + onA + xB + onB);
+  // The separation now, from the anchors carried by the bodies (no collision detection); the
+  // poses change only in integratePositions, after which this runs again.
+  p.separation = p.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
   p.anchorA = point - xA;
   p.anchorB = point - xB;
   const Mat3& iA = sims_[c.a].inverseInertiaNow;
   const Mat3& iB = sims_[c.b].inverseInertiaNow;
   const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
-  const Vec3 crossA = p.anchorA.cross(c.normal), crossB = p.anchorB.cross(c.normal);
-  p.angularA = iA * crossA;
-  p.angularB = iB * crossB;
+  p.crossA = p.anchorA.cross(c.normal);
+  p.crossB = p.anchorB.cross(c.normal);
+  p.angularA = iA * p.crossA;
+  p.angularB = iB * p.crossB;
   // n^T K n with K = (1/m) 1 + r*^T I^-1 r* summed over the pair (seed 000).
-  p.normalMass = 1.0 / (mA + mB + crossA.dot(p.angularA) + crossB.dot(p.angularB));
+  p.normalMass = 1.0 / (mA + mB + p.crossA.dot(p.angularA) + p.crossB.dot(p.angularB));
   const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
   for (int k = 0; k < 2; ++k) {
     const Vec3 tA = p.anchorA.cross(tangents[k]), tB = p.anchorB.cross(tangents[k]);
@@ -189,14 +193,11 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
     SolverState& B = states_[c.b];
     const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
     Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
-    const Vec3 dp = B.deltaPosition - A.deltaPosition;
     const Vec3& n = c.normal;
     // Non-penetration first, friction with the new normal impulses after (Box2D v3's order).
     for (std::size_t k = 0; k < c.pointCount; ++k) {
       Point& p = points_[c.firstPoint + k];
-      // The separation now, from the anchors carried by the bodies (no collision detection).
-      const Vec3 ds = dp + B.orientation * p.localB - A.orientation * p.localA;
-      const double s = p.baseSeparation + n.dot(ds);
+      const double s = p.separation;
       double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
       if (s > 0.0) {
         bias = s * inverseH;  // speculative: the gap may close within the substep, no further
@@ -205,7 +206,7 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
         massScale = c.softness.massScale;
         impulseScale = c.softness.impulseScale;
       }
-      const double vn = n.dot(vB - vA) + p.anchorB.cross(n).dot(wB) - p.anchorA.cross(n).dot(wA);
+      const double vn = n.dot(vB - vA) + p.crossB.dot(wB) - p.crossA.dot(wA);
       const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
       // Accumulated and kept repulsive (seed 001: f_i >= 0).
       const double total = std::max(p.normalImpulse + impulse, 0.0);
@@ -229,9 +230,9 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
       double candidate[2];
       for (int k = 0; k < 2; ++k) candidate[k] = p.tangentImpulse[k] - p.tangentMass[k] * tangents[k].dot(slip);
       const double limit = c.friction * p.normalImpulse;
-      const double length = std::hypot(candidate[0], candidate[1]);
-      if (length > limit) {
-        const double scale = length > 0.0 ? limit / length : 0.0;
+      const double squared = candidate[0] * candidate[0] + candidate[1] * candidate[1];
+      if (squared > limit * limit) {
+        const double scale = limit / std::sqrt(squared);
         candidate[0] *= scale;
         candidate[1] *= scale;
       }
@@ -299,16 +300,14 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
       // A manifold whose surfaces never met, or met without pushing, did not collide (a
       // warm-started speculative contact must not bounce early).
       if (!c.touched) continue;
-      const Vec3 dp = B.deltaPosition - A.deltaPosition;
       for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
         Point& p = points_[j];
         // Slower approaches are resting contact. Every point the step ends touching bounces,
         // not only those that pushed: in a Gauss-Seidel sweep the first point of a box landing
         // flat stops it alone, and bouncing that point alone would set the box spinning.
-        const double s = p.baseSeparation + n.dot(dp + B.orientation * p.localB - A.orientation * p.localA);
-        if (p.impactSpeed <= settings.restitutionThreshold || s > settings.contactSlop) continue;
-        const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.anchorB.cross(n).dot(B.angularVelocity) -
-                          p.anchorA.cross(n).dot(A.angularVelocity);
+        if (p.impactSpeed <= settings.restitutionThreshold || p.separation > settings.contactSlop) continue;
+        const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
+                          p.crossA.dot(A.angularVelocity);
         // Seed 000: u_rel,N^new = c_R u_rel,N at the touch.
         const double impulse = -p.normalMass * (vn - c.restitution * p.impactSpeed);
         const double total = std::max(p.normalImpulse + impulse, 0.0);
@@ -343,8 +342,8 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
       out.normalImpulse = p.totalNormalImpulse;
       out.frictionImpulse = p.totalFriction;
       out.approachVelocity = p.relativeVelocity;
-      out.normalVelocity = c.normal.dot(B.linearVelocity - A.linearVelocity) + p.anchorB.cross(c.normal).dot(B.angularVelocity) -
-                           p.anchorA.cross(c.normal).dot(A.angularVelocity);
+      out.normalVelocity = c.normal.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
+                           p.crossA.dot(A.angularVelocity);
       out.sticking = c.sticking && !c.slipping;
       solved_.push_back(out);
     }

@@ -72,9 +72,11 @@ class SoftStepSolver {
   struct Point {  // one manifold point
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // the point from each centre of mass, world [m]
     Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();    // the point as each body carries it, body frame [m]
+    Vec3 crossA = Vec3::Zero(), crossB = Vec3::Zero();      // r x n [m]
     Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
     std::array<Vec3, 2> frictionA{}, frictionB{};          // I^-1 (r x t_k)
     double baseSeparation = 0.0;     // s0 - n . (r_B - r_A) [m]
+    double separation = 0.0;         // s at the current poses [m]
     double normalMass = 0.0;         // 1 / (n^T K n) [kg]
     std::array<double, 2> tangentMass{};  // 1 / (t_k^T K t_k) [kg]
     double relativeVelocity = 0.0;   // u_rel,N before the step [m/s]
