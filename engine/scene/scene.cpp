@@ -85,7 +85,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "collisions", "ccd", "broad_phase", "contact_margin",
                                          "solver", "substeps", "contact_hertz", "contact_damping_ratio", "contact_push_speed",
                                          "velocity_iterations", "position_iterations", "restitution_threshold",
-                                         "contact_slop", "position_correction", "warm_starting", "response",
+                                         "contact_slop", "position_correction", "warm_starting", "response", "log_queries",
                                          "particle_integrator"});
     scene.settings.gravity = w.vec3("gravity", scene.settings.gravity);
     scene.settings.timeStep = w.positiveNumber("dt", scene.settings.timeStep);
@@ -130,6 +130,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     if (!(s.positionCorrection >= 0.0 && s.positionCorrection <= 1.0)) w.fail("position_correction", "expected a fraction in [0, 1]");
     s.warmStarting = w.boolean("warm_starting", s.warmStarting);
     s.respondToContacts = w.boolean("response", s.respondToContacts);
+    s.logQueries = w.boolean("log_queries", s.logQueries);
     const std::string integrator = w.string("integrator", integratorName(scene.settings.integrator));
     if (!parseIntegrator(integrator, scene.settings.integrator)) {
       std::string names;

@@ -164,7 +164,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     if (shapes[pair.a].sdf || shapes[pair.b].sdf) {
       const std::vector<ContactManifold> manifolds = collideSdf(a, shapes[pair.a], b, shapes[pair.b], margin);
       for (std::size_t k = 0; k < manifolds.size(); ++k) {
-        log_.record(summarize(QueryKind::Sdf, pair.a, pair.b, manifolds[k], 0.0, time));
+        if (settings_.logQueries) log_.record(summarize(QueryKind::Sdf, pair.a, pair.b, manifolds[k], 0.0, time));
         contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, static_cast<std::uint8_t>(k), manifolds[k]});
       }
       continue;
@@ -176,7 +176,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     }
     const ConvexContact c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr,
                                           boxB ? &*boxB : nullptr);
-    log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold,
+    if (settings_.logQueries) log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold,
                           c.distance, time));
     if (c.manifold.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold});
   }
@@ -184,7 +184,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       if (bodies[i].isStatic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
       const ContactManifold m = collidePlaneConvex(planes[p], bodies[i].worldVertices(), settings_.contactMargin + reach_[i]);
-      log_.record(summarize(QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
+      if (settings_.logQueries) log_.record(summarize(QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
       if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, 0, m});
     }
   }

@@ -48,7 +48,11 @@ struct Settings {
   // through a plane or a body (engine/world/continuous_collision.h).
   bool continuousCollision = true;
   double ccdMotionFraction = 0.25;  // [1]
-  std::size_t queryLogCapacity = 256;  // narrow-phase queries kept for dumping [records]
+  // Seed 004's debugging tip (after Ericson): keep the last queryLogCapacity narrow-phase queries
+  // for dumping (CollisionPipeline::queryLog). Off unless asked for: recording every query costs
+  // the narrow phase a summary and a copy per pair, for a log nobody reads in a normal run.
+  bool logQueries = false;
+  std::size_t queryLogCapacity = 256;  // [records]
 
   // Contact response. false: contacts are detected and reported but nothing acts on them, so
   // bodies pass through each other (the narrow phase on its own).

@@ -46,6 +46,7 @@ TEST(CollisionWorld, ABoxSinkingThroughTheGroundHasFourContactsOfTheKnownDepth) 
   for (const auto solver : {Settings::ContactSolverMethod::Pgs, Settings::ContactSolverMethod::SoftStep}) {
   Settings s = settings();
   s.solver = solver;
+  s.logQueries = true;
   const bool soft = solver == Settings::ContactSolverMethod::SoftStep;
   World world(s);
   world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0, -1.0, 0.0)));
@@ -65,6 +66,20 @@ TEST(CollisionWorld, ABoxSinkingThroughTheGroundHasFourContactsOfTheKnownDepth) 
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(c.manifold.points[k].depth, depth, 1e-12) << n;
   }
   EXPECT_GT(world.collision().queryLog().total(), 0u);
+  }
+}
+
+// The query log (seed 004's debugging buffer) records only when asked: a normal run pays nothing.
+TEST(CollisionWorld, QueriesAreLoggedOnlyWhenAskedFor) {
+  for (bool log : {false, true}) {
+    Settings s = settings();
+    s.logQueries = log;
+    World world(s);
+    world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.0, 0.49, 0.0)));
+    world.addPlane(Plane{Vec3::UnitY(), 0.0});
+    for (int n = 0; n < 4; ++n) world.step();
+    EXPECT_FALSE(world.contacts().empty());
+    EXPECT_EQ(world.collision().queryLog().total(), log ? 4u : 0u);
   }
 }
 
