@@ -149,21 +149,21 @@ def broadphase(results):
 def pile(results):
     rows = read_csv(path(results, "pile.csv"))
     index = by_keys(rows, "engine", "boxes", "sleep")
-    engines = [e for e in ("rbsim", "bullet-float", "bullet-double") if any(r["engine"] == e for r in rows)]
-    counts = sorted({int(r["boxes"]) for r in rows if r["engine"] == "rbsim"})
+    engines = [e for e in ("soft-step", "pgs", "bullet-float", "bullet-double") if any(r["engine"] == e for r in rows)]
+    counts = sorted({int(r["boxes"]) for r in rows if r["engine"] == "soft-step"})
     out_rows = []
     for n in counts:
         cells = [str(n)]
         for e in engines:
             r = index.get((e, str(n), "off"))
             cells.append(sig(float(r["ms_per_step"])) if r else "not run")
-        for e in engines[:2]:
+        for e in engines[:3]:
             r = index.get((e, str(n), "off"))
             cells.append("%s, %s mm, %s m/s" % (r["contact_points"], sig(1e3 * float(r["deepest_m"]), 2),
                                                  sig(float(r["fastest_m_per_s"]), 2)) if r else "not run")
         out_rows.append(cells)
     header = ["boxes"] + ["%s [ms/step]" % e for e in engines] + [
-        "%s at 10 s: points, deepest, fastest" % e for e in engines[:2]]
+        "%s at 10 s: points, deepest, fastest" % e for e in engines[:3]]
     out = table(header, out_rows)
     asleep = []
     for e in engines:
@@ -174,11 +174,11 @@ def pile(results):
     out += "\nSleep off above (every box simulated every step). With sleep on, %d boxes at 10 s: %s.\n" % (
         counts[0], "; ".join(asleep))
     stages = [r for r in read_csv(path(results, "pile_stages.csv"))
-              if r["engine"] == "rbsim" and r["boxes"] == str(counts[-1]) and r["sleep"] == "off"]
+              if r["engine"] == "soft-step" and r["boxes"] == str(counts[-1]) and r["sleep"] == "off"]
     if not stages:
-        raise MissingData("pile_stages.csv: no rbsim rows for %d boxes" % counts[-1])
+        raise MissingData("pile_stages.csv: no soft-step rows for %d boxes" % counts[-1])
     shares = sorted(stages, key=lambda r: -float(r["percent"]))
-    out += "rbsim's stages at %d boxes: %s.\n" % (
+    out += "rbsim's stages (soft step) at %d boxes: %s.\n" % (
         counts[-1], ", ".join("%s %s %%" % (r["stage"], sig(float(r["percent"]), 2)) for r in shares))
     return out
 

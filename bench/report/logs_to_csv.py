@@ -12,7 +12,7 @@ import sys
 
 NUMBER = r"([-+0-9.eE]+)"
 PILE_LINE = re.compile(
-    r"N = +(\d+), sleep (on|off) *: +" + NUMBER + r" ms/step \(median of last (\d+) of (\d+)\), +(\d+) contact points, "
+    r"^(?:(soft-step|pgs) +)?N = +(\d+), sleep (on|off) *: +" + NUMBER + r" ms/step \(median of last (\d+) of (\d+)\), +(\d+) contact points, "
     r"deepest " + NUMBER + r" m, fastest " + NUMBER + r" m/s \((at rest|moving)\), (\d+) awake")
 STAGE_LINE = re.compile(r"^ {4}(\S+) +" + NUMBER + r" %$")
 SOFT_LINE = re.compile(
@@ -45,9 +45,12 @@ def parse_pile(log_dir):
                 continue
             m = PILE_LINE.search(line)
             if m:
-                n, sleep, ms, _, _, points, deepest, fastest, rest, awake = m.groups()
-                current = (engine, n, sleep)
-                piles.append({"engine": engine, "boxes": n, "sleep": sleep, "ms_per_step": ms,
+                solver, n, sleep, ms, _, _, points, deepest, fastest, rest, awake = m.groups()
+                if engine == "rbsim" and not solver:
+                    fail("%s: a contact_pile line without its solver: %r" % (path, line))
+                label = solver if engine == "rbsim" else engine  # contact_pile runs soft-step and pgs
+                current = (label, n, sleep)
+                piles.append({"engine": label, "boxes": n, "sleep": sleep, "ms_per_step": ms,
                               "contact_points": points, "deepest_m": deepest, "fastest_m_per_s": fastest,
                               "at_rest": int(rest == "at rest"), "awake": awake})
                 continue

@@ -34,7 +34,7 @@ def main():
 
     rows = read_csv(os.path.join(results, "pile.csv"))
     index = by_keys(rows, "engine", "boxes", "sleep")
-    engines = ["rbsim", "bullet-float", "bullet-double"]
+    engines = ["soft-step", "pgs", "bullet-float", "bullet-double"]
     counts = sorted({int(r["boxes"]) for r in rows})
     write(data, "pile.dat", ["boxes"] + engines + [e + "-sleep" for e in engines],
           [[n] + [index[(e, str(n), s)]["ms_per_step"] if (e, str(n), s) in index else NAN

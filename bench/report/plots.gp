@@ -27,18 +27,20 @@ plot f using 1:2 with linespoints pt 7 title 'sweep and prune, coherent motion',
      f using 1:5 with linespoints pt 4 dt 2 title 'brute force, coherent', \
      f using 1:6 with linespoints pt 6 dt 2 title 'brute force, teleporting'
 
-# --- Box pile: rbsim against Bullet ----------------------------------------------------------------
+# --- Box pile: rbsim (soft step, PGS) against Bullet ----------------------------------------------------------------
 set output outdir.'/pile.png'
 set title "Box pile on a plane, dt = 1/60 s, 10 solver sweeps: median time per step of steps 300-600"
 set xlabel 'boxes N'
 set ylabel 'wall time per step [ms]'
 f = data.'/pile.dat'
-plot f using 1:2 with linespoints pt 7 lc 1 title 'rbsim, sleep off', \
-     f using 1:3 with linespoints pt 5 lc 2 title 'Bullet 3.24 float, sleep off', \
-     f using 1:4 with linespoints pt 9 lc 3 title 'Bullet 3.24 double, sleep off', \
-     f using 1:5 with linespoints pt 6 lc 1 dt 2 title 'rbsim, sleep on', \
-     f using 1:6 with linespoints pt 4 lc 2 dt 2 title 'Bullet float, sleep on', \
-     f using 1:7 with linespoints pt 8 lc 3 dt 2 title 'Bullet double, sleep on'
+plot f using 1:2 with linespoints pt 7 lc 1 title 'rbsim soft step, sleep off', \
+     f using 1:3 with linespoints pt 7 lc 4 title 'rbsim PGS, sleep off', \
+     f using 1:4 with linespoints pt 5 lc 2 title 'Bullet 3.24 float, sleep off', \
+     f using 1:5 with linespoints pt 9 lc 3 title 'Bullet 3.24 double, sleep off', \
+     f using 1:6 with linespoints pt 6 lc 1 dt 2 title 'rbsim soft step, sleep on', \
+     f using 1:7 with linespoints pt 6 lc 4 dt 2 title 'rbsim PGS, sleep on', \
+     f using 1:8 with linespoints pt 4 lc 2 dt 2 title 'Bullet float, sleep on', \
+     f using 1:9 with linespoints pt 8 lc 3 dt 2 title 'Bullet double, sleep on'
 
 # --- Particles: steps per second against the memory bound ----------------------------------------
 set output outdir.'/particles.png'
