@@ -63,8 +63,7 @@ class SoftStepSolver {
   struct BodySim {
     std::size_t body = 0;                    // World index
     double inverseMass = 0.0;                // [1/kg]
-    Mat3 inverseInertia = Mat3::Zero();      // R I_body^-1 R^T at the step's start
-    Mat3 inverseInertiaNow = Mat3::Zero();   // the same for the current orientation
+    Mat3 inverseInertiaNow = Mat3::Zero();   // R I_body^-1 R^T for the current orientation
     Vec3 position0 = Vec3::Zero();           // x at the step's start [m]
     Vec3 acceleration = Vec3::Zero();        // F / m (+ g) over the step [m/s^2]
     Vec3 torque = Vec3::Zero();              // tau about x [N m]

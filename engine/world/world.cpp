@@ -173,22 +173,6 @@ void World::addPoseEvent(const PoseEvent& event) {
   pendingEvents_.insert(at, event);
 }
 
-template <typename Fn>
-bool World::runStage(Stage stage, bool needed, Fn&& fn) {
-  StageStats& stats = stats_[static_cast<int>(stage)];
-  if (!needed && settings_.skipIdleStages) {
-    ++stats.skipped;
-    return false;
-  }
-  fn();
-  // One clock read per stage run, each stage's end starting the next one's time: with one body,
-  // two reads per stage took a third of the step.
-  const auto end = std::chrono::steady_clock::now();
-  stats.seconds += std::chrono::duration<double>(end - stageClock_).count();
-  stageClock_ = end;
-  ++stats.runs;
-  return true;
-}
 
 void World::step() {
   const double t = time();
@@ -234,47 +218,6 @@ void World::step() {
     if (planar_) planar_->step();  // skipIdleStages = false runs every stage, needed or not
   });
   ++stepCount_;
-}
-
-void World::stepSoft(bool withGravity, bool awake, bool collides) {
-  // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
-  // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
-  // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
-  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
-    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
-  });
-  runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
-  });
-  const bool sweeping = settings_.continuousCollision && collides && awake;
-  if (sweeping) collision_.rememberStart(bodies_);
-  softStep_.clearAdvanced();
-  // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
-  // are contacts between sleeping bodies, which receive nothing.
-  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
-    if (settings_.respondToContacts) solveContacts(withGravity);
-  });
-  runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_, &softStep_.advancedFlags()); });
-}
-
-void World::stepPgs(bool withGravity, bool awake, bool collides) {
-  // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
-  const bool sweeping = settings_.continuousCollision && collides && awake;
-  runStage(Stage::Integrate, awake, [&] {
-    if (sweeping) collision_.rememberStart(bodies_);
-    integrateBodies(withGravity);
-  });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
-  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
-    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
-  });
-  runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
-  });
-  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
-    if (settings_.respondToContacts) solveContacts(withGravity);
-  });
 }
 
 void World::applyPoseEvents() {
@@ -353,32 +296,6 @@ void World::integrateBodies(bool withGravity) {
       stepped[n++] = &body;
     }
     commit(n);
-  }
-}
-
-void World::solveContacts(bool withGravity) {
-  // A body at rest touched by an awake one takes part again (its island wakes layer by layer).
-  for (const Contact& contact : collision_.contacts()) {
-    if (contact.kind == Contact::Kind::BodyBody) {
-      RigidBody& a = bodies_[contact.a];
-      RigidBody& b = bodies_[contact.b];
-      if (a.awake() != b.awake()) {
-        a.wake();
-        b.wake();
-      }
-    }
-  }
-  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
-    contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
-    return;
-  }
-  softStep_.step(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_, withGravity);
-  checkFinite(softStep_.advancedBodies());
-}
-
-void World::checkFinite(const std::vector<std::size_t>& bodies) const {
-  for (std::size_t i : bodies) {
-    if (!isFinite(bodies_[i].state())) reportDivergence(bodies_[i], bodies_[i].state());
   }
 }
 

@@ -1,0 +1,112 @@
+// What the soft step does after its substeps (soft_step_solver.h): the restitution pass, the
+// points reported to the World, the impulses kept for the next step's warm start, and the new
+// state written back to the bodies.
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/soft_step_solver.h"
+
+namespace rbsim {
+
+namespace {
+
+// Gauss-Seidel sweeps of the restitution pass. One sweep (Box2D v3's) leaves a box landing flat
+// on four points with uneven bounces, each point's impulse disturbing the ones already done; a
+// few more converge them to one common rebound.
+constexpr int kRestitutionSweeps = 16;
+
+}  // namespace
+
+void SoftStepSolver::applyRestitution(const Settings& settings) {
+  // Box2D v3's b2ApplyRestitution, with the speed at the touch instead of the speed at the step's
+  // start: a ball dropped onto the ground bounces with the speed it reached, not with the speed
+  // it had up to a step earlier, so e = 1 neither gains nor loses the energy of that last gap.
+  for (int sweep = 0; sweep < kRestitutionSweeps; ++sweep) {
+    for (const Constraint& c : constraints_) {
+      if (c.restitution == 0.0) continue;
+      SolverState& A = states_[c.a];
+      SolverState& B = states_[c.b];
+      const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+      const Vec3& n = c.normal;
+      // A manifold whose surfaces never met, or met without pushing, did not collide (a
+      // warm-started speculative contact must not bounce early).
+      if (!c.touched) continue;
+      for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+        Point& p = points_[j];
+        // Slower approaches are resting contact. Every point the step ends touching bounces,
+        // not only those that pushed: in a Gauss-Seidel sweep the first point of a box landing
+        // flat stops it alone, and bouncing that point alone would set the box spinning.
+        if (p.impactSpeed <= settings.restitutionThreshold || p.separation > settings.contactSlop) continue;
+        const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
+                          p.crossA.dot(A.angularVelocity);
+        // Seed 000: u_rel,N^new = c_R u_rel,N at the touch.
+        const double impulse = -p.normalMass * (vn - c.restitution * p.impactSpeed);
+        const double total = std::max(p.normalImpulse + impulse, 0.0);
+        const double delta = total - p.normalImpulse;
+        p.normalImpulse = total;
+        p.totalNormalImpulse += delta;
+        if (c.a != 0) {
+          A.linearVelocity -= (mA * delta) * n;
+          A.angularVelocity -= delta * p.angularA;
+        }
+        if (c.b != 0) {
+          B.linearVelocity += (mB * delta) * n;
+          B.angularVelocity += delta * p.angularB;
+        }
+      }
+    }
+  }
+}
+
+void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts) {
+  for (const Constraint& c : constraints_) {
+    const ContactManifold& m = contacts[c.contact].manifold;
+    const SolverState& A = states_[c.a];
+    const SolverState& B = states_[c.b];
+    for (std::size_t j = 0; j < c.pointCount; ++j) {
+      const Point& p = points_[c.firstPoint + j];
+      SolvedContactPoint out;
+      out.contact = c.contact;
+      out.position = m.points[j].position;
+      out.normal = c.normal;
+      out.depth = m.points[j].depth;
+      out.normalImpulse = p.totalNormalImpulse;
+      out.frictionImpulse = p.totalFriction;
+      out.approachVelocity = p.relativeVelocity;
+      out.normalVelocity = c.normal.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
+                           p.crossA.dot(A.angularVelocity);
+      out.sticking = c.sticking && !c.slipping;
+      solved_.push_back(out);
+    }
+    Cached cache;
+    cache.key = c.key;
+    cache.count = static_cast<int>(c.pointCount);
+    for (std::size_t j = 0; j < c.pointCount; ++j) {
+      const Point& p = points_[c.firstPoint + j];
+      cache.localPoints[j] = p.localB;
+      cache.normalImpulses[j] = p.normalImpulse;
+      cache.frictionImpulses[j] = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+    }
+    cache.sticking = !c.slipping;
+    nextCache_.push_back(cache);
+  }
+  std::sort(nextCache_.begin(), nextCache_.end(), [](const Cached& a, const Cached& b) { return a.key < b.key; });
+  cache_.swap(nextCache_);
+  nextCache_.clear();
+
+  for (std::size_t i = 1; i < states_.size(); ++i) {
+    const SolverState& s = states_[i];
+    RigidBody& body = bodies[sims_[i].body];
+    rbsim::BodyState state = body.state();
+    state.position += s.deltaPosition;
+    state.orientation = s.orientation.normalized();
+    state.linearMomentum = body.mass() * s.linearVelocity;
+    const Mat3 R = state.orientation.toRotationMatrix();
+    state.angularMomentum = R * (body.inertiaBody() * (R.transpose() * s.angularVelocity));
+    body.setState(state);
+    body.clearAccumulators();
+    slotOfBody_[sims_[i].body] = 0;
+  }
+}
+
+}  // namespace rbsim

@@ -1,0 +1,87 @@
+// The contact stages of World::step: the two orders of the pipeline (soft step collides first and
+// lets the solver advance the bodies it finds in contact; PGS integrates first and answers the
+// contacts of the new poses) and the SolveContacts stage itself.
+#include <algorithm>
+#include <cmath>
+
+#include "world/world.h"
+
+namespace rbsim {
+
+namespace {
+
+bool isFinite(const BodyState& s) {
+  return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
+         s.angularMomentum.allFinite();
+}
+
+}  // namespace
+
+void World::stepSoft(bool withGravity, bool awake, bool collides) {
+  // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
+  // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
+  // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
+  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  });
+  runStage(Stage::NarrowPhase, collides && awake, [&] {
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+  });
+  const bool sweeping = settings_.continuousCollision && collides && awake;
+  if (sweeping) collision_.rememberStart(bodies_);
+  softStep_.clearAdvanced();
+  // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
+  // are contacts between sleeping bodies, which receive nothing.
+  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+    if (settings_.respondToContacts) solveContacts(withGravity);
+  });
+  runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_, &softStep_.advancedFlags()); });
+}
+
+void World::stepPgs(bool withGravity, bool awake, bool collides) {
+  // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
+  const bool sweeping = settings_.continuousCollision && collides && awake;
+  runStage(Stage::Integrate, awake, [&] {
+    if (sweeping) collision_.rememberStart(bodies_);
+    integrateBodies(withGravity);
+  });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
+  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  });
+  runStage(Stage::NarrowPhase, collides && awake, [&] {
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+  });
+  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+    if (settings_.respondToContacts) solveContacts(withGravity);
+  });
+}
+
+void World::solveContacts(bool withGravity) {
+  // A body at rest touched by an awake one takes part again (its island wakes layer by layer).
+  for (const Contact& contact : collision_.contacts()) {
+    if (contact.kind == Contact::Kind::BodyBody) {
+      RigidBody& a = bodies_[contact.a];
+      RigidBody& b = bodies_[contact.b];
+      if (a.awake() != b.awake()) {
+        a.wake();
+        b.wake();
+      }
+    }
+  }
+  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
+    contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
+    return;
+  }
+  softStep_.step(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_, withGravity);
+  checkFinite(softStep_.advancedBodies());
+}
+
+void World::checkFinite(const std::vector<std::size_t>& bodies) const {
+  for (std::size_t i : bodies) {
+    if (!isFinite(bodies_[i].state())) reportDivergence(bodies_[i], bodies_[i].state());
+  }
+}
+
+}  // namespace rbsim
