@@ -15,45 +15,15 @@
 #include <string>
 #include <vector>
 
+#include "bullet_world.h"
 #include "stack_layout.h"
 
 using namespace rbsim::bench;
 
 namespace {
 
-struct BulletWorld {
-  btDefaultCollisionConfiguration configuration;
-  btCollisionDispatcher dispatcher{&configuration};
-  btDbvtBroadphase broadphase;  // Bullet's default and recommended broad phase
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
-  btStaticPlaneShape groundShape{btVector3(0, 1, 0), 0};
-  btBoxShape boxShape{btVector3(0.5, 0.5, 0.5) * btScalar(kStackBoxSize)};
-  std::vector<std::unique_ptr<btDefaultMotionState>> motionStates;
-  std::vector<std::unique_ptr<btRigidBody>> bodies;
-
-  ~BulletWorld() {
-    for (auto& body : bodies) world.removeRigidBody(body.get());
-  }
-
-  btRigidBody* add(btCollisionShape* shape, btScalar mass, const btVector3& position) {
-    btVector3 inertia(0, 0, 0);
-    if (mass > 0) shape->calculateLocalInertia(mass, inertia);
-    btTransform transform;
-    transform.setIdentity();
-    transform.setOrigin(position);
-    motionStates.push_back(std::make_unique<btDefaultMotionState>(transform));
-    btRigidBody::btRigidBodyConstructionInfo info(mass, motionStates.back().get(), shape, inertia);
-    info.m_friction = btScalar(kStackFriction);
-    info.m_restitution = 0;
-    bodies.push_back(std::make_unique<btRigidBody>(info));
-    world.addRigidBody(bodies.back().get());
-    return bodies.back().get();
-  }
-};
-
 void run(const std::string& name, const std::vector<BoxCentre>& layout, bool allowSleep) {
-  BulletWorld bw;
+  BulletWorld bw(kStackBoxSize, kStackFriction);
   bw.world.setGravity(btVector3(0, btScalar(-9.81), 0));
   bw.add(&bw.groundShape, 0, btVector3(0, 0, 0));
   std::vector<btRigidBody*> boxes;

@@ -14,23 +14,6 @@ namespace rbsim::app {
 
 namespace {
 
-// "bodies[1].mass" and "bodies.1.mass" both give {bodies, 1, mass}, as the --set flag reads them
-// (engine/scene/override.cpp).
-std::vector<std::string> splitKey(const std::string& key) {
-  std::vector<std::string> parts;
-  std::string current;
-  for (char c : key) {
-    if (c == '.' || c == '[' || c == ']') {
-      if (!current.empty()) parts.push_back(current);
-      current.clear();
-    } else {
-      current += c;
-    }
-  }
-  if (!current.empty()) parts.push_back(current);
-  return parts;
-}
-
 // "pgs" for a string, the JSON text otherwise: how a value reads in a caption.
 std::string shown(const nlohmann::json& value) {
   return value.is_string() ? value.get<std::string>() : value.dump();
@@ -74,9 +57,9 @@ Vec3 defaultOffset(const Scene& scene) {
 // by every world's own value: refused rather than silently lost.
 void refuseOverridesOfTheKey(const std::vector<std::string>& overrides, const std::string& key,
                              const std::string& file) {
-  const std::vector<std::string> keyParts = splitKey(key);
+  const std::vector<std::string> keyParts = splitScenePath(key);
   for (const std::string& assignment : overrides) {
-    const std::vector<std::string> parts = splitKey(assignment.substr(0, assignment.find('=')));
+    const std::vector<std::string> parts = splitScenePath(assignment.substr(0, assignment.find('=')));
     if (parts.size() >= keyParts.size() && std::equal(keyParts.begin(), keyParts.end(), parts.begin())) {
       throw InputError(file, "--set " + assignment,
                        "sets " + key + ", which compare.key gives each world from compare.values; change "
@@ -91,7 +74,7 @@ Phase parseCompared(nlohmann::json document, const std::string& file, const std:
   document.erase("compare");  // the engine's scene parser knows nothing of it
   const JsonObject c(block, file, "compare", {"key", "values", "labels", "offset"});
   const std::string key = c.requiredString("key");
-  const std::vector<std::string> parts = splitKey(key);
+  const std::vector<std::string> parts = splitScenePath(key);
   if (parts.empty()) c.fail("key", "expected a scene key in --set form, such as world.solver or bodies.box.mass");
   const std::string expected = "; expected a key of world, bodies, planes, particles, soft_bodies or planar";
   if (parts.front() == "view") c.fail("key", "\"" + key + "\": every world is drawn with the one view" + expected);
@@ -188,14 +171,7 @@ Phase parsePhaseText(const std::string& text, const std::string& file, const std
 }
 
 Phase loadPhase(const std::string& path, const std::vector<std::string>& overrides) {
-  // The same checks and messages as the engine's loadScene.
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a folder; expected a scene file (JSON)");
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parsePhaseText(buffer.str(), path, std::filesystem::path(path).parent_path().string(), overrides);
+  return parsePhaseText(readSceneFile(path), path, std::filesystem::path(path).parent_path().string(), overrides);
 }
 
 std::uint64_t frameCount(const Phase& phase) {

@@ -10,8 +10,13 @@ namespace rbsim {
 
 namespace {
 
-// "bodies[1].shape.extents" and "bodies.1.shape.extents" both give {bodies, 1, shape, extents}.
-std::vector<std::string> splitPath(const std::string& path) {
+bool isIndex(const std::string& s) {
+  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+}  // namespace
+
+std::vector<std::string> splitScenePath(const std::string& path) {
   std::vector<std::string> parts;
   std::string current;
   for (char c : path) {
@@ -26,18 +31,12 @@ std::vector<std::string> splitPath(const std::string& path) {
   return parts;
 }
 
-bool isIndex(const std::string& s) {
-  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
-}
-
-}  // namespace
-
 void applyOverride(nlohmann::json& document, const std::string& assignment) {
   const std::size_t eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
     throw InputError("", "--set", "expected key=value (e.g. world.dt=0.001), got \"" + assignment + "\"");
   }
-  const std::vector<std::string> parts = splitPath(assignment.substr(0, eq));
+  const std::vector<std::string> parts = splitScenePath(assignment.substr(0, eq));
   if (parts.empty()) {
     throw InputError("", "--set", "expected a key before '=' (e.g. world.dt=0.001), got \"" + assignment + "\"");
   }

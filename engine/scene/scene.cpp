@@ -176,14 +176,18 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   return scene;
 }
 
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+std::string readSceneFile(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a folder; expected a scene file (JSON)");
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  return parseSceneText(buffer.str(), path, std::filesystem::path(path).parent_path().string(), overrides);
+  return buffer.str();
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  return parseSceneText(readSceneFile(path), path, std::filesystem::path(path).parent_path().string(), overrides);
 }
 
 Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,

@@ -87,6 +87,13 @@ Scene parseSceneText(const std::string& text, const std::string& file, const std
 // Parses an in-memory document; mesh paths are relative to `baseDir`.
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir);
 
+// "bodies[1].shape.extents" and "bodies.1.shape.extents" both give {bodies, 1, shape, extents}:
+// the parts of a --set path.
+std::vector<std::string> splitScenePath(const std::string& path);
+
+// The text of a scene file. Throws InputError naming it when it is a folder or cannot be read.
+std::string readSceneFile(const std::string& path);
+
 // Applies one "a.b[2].c=value" (or "a.b.2.c=value") assignment; the value is JSON if it parses
 // as JSON, otherwise a string. Bodies may be named: "bodies.box.mass=2".
 void applyOverride(nlohmann::json& document, const std::string& assignment);
