@@ -9,6 +9,7 @@
 #include "io/input_error.h"
 #include "run/runner.h"
 #include "scene/json_fields.h"
+#include "scene/strict_json.h"
 
 namespace rbsim::app {
 
@@ -152,11 +153,7 @@ Phase singleWorldPhase(Scene scene) {
 
 Phase parsePhaseText(const std::string& text, const std::string& file, const std::string& baseDir,
                      const std::vector<std::string>& overrides) {
-  nlohmann::json document = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (document.is_discarded()) {
-    parseSceneText(text, file, baseDir);  // throws the engine's message: line, column, what
-    throw InputError(file, "", "invalid JSON");
-  }
+  nlohmann::json document = parseStrictJson(text, file);  // syntax, duplicate keys, depth
   for (const std::string& assignment : overrides) {
     try {
       applyOverride(document, assignment);

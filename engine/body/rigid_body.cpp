@@ -32,7 +32,13 @@ RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), mass_(def.ma
   Mat3& axes = cold->inertia.principalAxes = eig.eigenvectors();
   if (axes.determinant() < 0.0) axes.col(2) *= -1.0;  // a rotation, not a reflection
   inputs_.inverseMass = 1.0 / mass_;
-  inputs_.inverseInertiaBody = inertia.inverse();
+  // Inverted in the principal frame, A diag(1/lambda) A^T, not by cofactors: the determinant
+  // lambda^3 under- or overflows for moments beyond about 1e-103 or 1e103 kg m^2 (a 1 m box of
+  // 1e-102 kg), while each 1/lambda stays exact wherever it is a finite number.
+  inputs_.inverseInertiaBody = axes * eig.eigenvalues().cwiseInverse().asDiagonal() * axes.transpose();
+  if (!inputs_.inverseInertiaBody.allFinite() || !std::isfinite(inputs_.inverseMass)) {
+    throw std::invalid_argument("body '" + name + "': the inverse of its mass or inertia overflows a double");
+  }
   inputs_.inertia = &cold->inertia;  // the block is never moved: copies of the body share it
   cold_ = std::move(cold);
   worldVertices_.resize(cold_->mesh->vertices.size());

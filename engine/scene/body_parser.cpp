@@ -1,7 +1,10 @@
 #include "scene/body_parser.h"
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
+
+#include <Eigen/Eigenvalues>
 
 #include "io/input_error.h"
 #include "io/obj_loader.h"
@@ -11,10 +14,14 @@
 #include "geometry/surface_samples.h"
 #include "mass/mass_model.h"
 #include "scene/fracture_parser.h"
+#include "scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 
 namespace {
+
+// Why a coordinate may not exceed kMaxCoordinate, for messages.
+constexpr const char* kFarFromOrigin = "beyond it a double cannot resolve the contact tolerances";
 
 // A mesh is treated as convex when no vertex lies outside a face plane by more than this
 // fraction of its size: rounding in an OBJ file's 6 digits, not a dent.
@@ -38,22 +45,29 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
   const std::string type = shape.requiredString("type");
   try {
     if (type == "box") {
+      shape.allowOnly({"type", "extents"}, "a \"box\" shape");
       const Vec3 extents = shape.positiveVec3("extents");
       def.boxHalfExtents = 0.5 * extents;
       return makeBox(extents);
     }
-    if (type == "sphere") return makeUvSphere(shape.positiveNumber("radius", 0.5), kRoundSegments, kRoundRings);
+    if (type == "sphere") {
+      shape.allowOnly({"type", "radius"}, "a \"sphere\" shape");
+      return makeUvSphere(shape.positiveNumber("radius", 0.5), kRoundSegments, kRoundRings);
+    }
     if (type == "torus") {
+      shape.allowOnly({"type", "major_radius", "minor_radius"}, "a \"torus\" shape");
       const double major = shape.positiveNumber("major_radius", 0.5), minor = shape.positiveNumber("minor_radius", 0.15);
       if (!(minor < major)) shape.fail("minor_radius", "expected less than major_radius");
       return makeTorus(major, minor, kRoundSegments, kRoundRings);
     }
     if (type == "bowl") {
+      shape.allowOnly({"type", "radius", "thickness"}, "a \"bowl\" shape");
       const double radius = shape.positiveNumber("radius", 1.0), thickness = shape.positiveNumber("thickness", 0.1);
       if (!(thickness < radius)) shape.fail("thickness", "expected less than radius");
       return makeBowl(radius, thickness, kRoundSegments, kRoundRings / 2);
     }
     if (type == "letter_u") {
+      shape.allowOnly({"type", "extents", "stroke"}, "a \"letter_u\" shape");
       const Vec3 extents = shape.positiveVec3("extents");  // width, height, depth
       const double stroke = shape.positiveNumber("stroke", 0.25 * extents.x());
       if (!(2.0 * stroke < extents.x() && stroke < extents.y())) {
@@ -65,6 +79,7 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
     shape.fail("type", e.what());
   }
   if (type == "mesh") {
+    shape.allowOnly({"type", "file", "scale"}, "a \"mesh\" shape");
     const std::string file = shape.requiredString("file");
     const std::filesystem::path full = std::filesystem::path(baseDir) / file;
     Mesh mesh;
@@ -116,6 +131,37 @@ double nonNegative(const JsonObject& o, const char* key, double fallback, const 
   return value;
 }
 
+// The step divides by the mass and the principal moments: each inverse must be a number, or the
+// body diverges at its first step with no field to blame. Reported against the key that set the
+// mass, with the size that the moments come from.
+void checkMassScale(const JsonObject& b, const BodyDef& def) {
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(def.inertiaBody, Eigen::EigenvaluesOnly);
+  const double least = eig.eigenvalues().minCoeff(), most = eig.eigenvalues().maxCoeff();
+  if (std::isfinite(1.0 / def.mass) && least > 0.0 && std::isfinite(1.0 / least) && std::isfinite(most)) return;
+  const Vec3 size = def.mesh->boundsMax() - def.mesh->boundsMin();
+  b.fail(b.has("density") ? "density" : "mass",
+         "a mass of " + formatNumber(def.mass) + " kg for a body of size " + formatNumber(size.x()) + " x " +
+             formatNumber(size.y()) + " x " + formatNumber(size.z()) + " m gives principal moments of inertia from " +
+             formatNumber(least) + " to " + formatNumber(most) + " kg m^2, whose inverses the step needs and a double "
+             "cannot hold; expected a mass (or density) nearer the body's size");
+}
+
+// Momentum m v, angular momentum I omega and the kinetic energy must be numbers at the start.
+void checkMomenta(const JsonObject& b, const BodyDef& def) {
+  const Mat3 R = def.orientation.toRotationMatrix();
+  const Mat3 inertiaWorld = R * def.inertiaBody * R.transpose();
+  const double energy = 0.5 * def.mass * def.velocity.squaredNorm() +
+                        0.5 * def.angularVelocity.dot(inertiaWorld * def.angularVelocity);
+  if (!(def.mass * def.velocity).allFinite() || !std::isfinite(energy)) {
+    b.fail("velocity", "the momentum m v or the kinetic energy of " + formatNumber(def.velocity.norm()) + " m/s at " +
+                           formatNumber(def.mass) + " kg overflows a double; expected a smaller speed or mass");
+  }
+  if (!(inertiaWorld * def.angularVelocity).allFinite()) {
+    b.fail("angular_velocity", "the angular momentum I omega of " + formatNumber(def.angularVelocity.norm()) +
+                                   " rad/s overflows a double; expected a smaller spin or inertia");
+  }
+}
+
 }  // namespace
 
 Material parseMaterial(const JsonObject& o) {
@@ -156,11 +202,18 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   } catch (const InputError& e) {
     throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
   }
+  checkMassScale(b, def);
   parseCollisionShape(b, def);
-  def.position = b.vec3("position", Vec3::Zero());
+  def.position = b.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
   def.orientation = b.optionalOrientation("orientation").value_or(Quat::Identity());
-  def.velocity = b.vec3("velocity", Vec3::Zero());
+  def.velocity = b.boundedVec3("velocity", Vec3::Zero(), kMaxSpeed, "m/s", "the speed of light");
   def.angularVelocity = b.vec3("angular_velocity", Vec3::Zero());
+  const double radius = 0.5 * (def.mesh->boundsMax() - def.mesh->boundsMin()).norm();
+  if (!(def.angularVelocity.stableNorm() * radius <= kMaxSpeed)) {
+    b.fail("angular_velocity", "its surface moves at |omega| r = " + formatNumber(def.angularVelocity.stableNorm()) +
+                                   " rad/s x " + formatNumber(radius) + " m, faster than light; expected a smaller spin");
+  }
+  checkMomenta(b, def);
   def.color = b.vec3("color", def.color);
   if (def.color.minCoeff() < 0.0 || def.color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
   def.isStatic = b.boolean("static", false);
@@ -194,9 +247,9 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     event.body = index;
     event.time = p.requiredNumber("time");
     if (event.time < 0.0) p.fail("time", "expected a time >= 0 s");
-    event.position = p.optionalVec3("position");
+    if (p.has("position")) event.position = p.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     event.orientation = p.optionalOrientation("orientation");
-    event.velocity = p.optionalVec3("velocity");
+    if (p.has("velocity")) event.velocity = p.boundedVec3("velocity", Vec3::Zero(), kMaxSpeed, "m/s", "the speed of light");
     event.angularVelocity = p.optionalVec3("angular_velocity");
     if (isStatic && (event.velocity || event.angularVelocity)) p.fail("velocity", "a static body cannot move");
     scene.poseEvents.push_back(event);
@@ -205,11 +258,19 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     if (isStatic) b.fail("springs", "a static body does not respond to forces");
     Spring spring;
     spring.body = index;
-    spring.anchor = s.vec3("anchor", Vec3::Zero());
+    spring.anchor = s.boundedVec3("anchor", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     spring.point = s.vec3("point", Vec3::Zero());
     spring.stiffness = s.positiveNumber("stiffness", 1.0);
     spring.restLength = nonNegative(s, "rest_length", 0.0, "m");
     spring.damping = nonNegative(s, "damping", 0.0, "N s/m");
+    // The force k (l - l0) + c v at the scene's own lengths must be a number: k = 1e308 with a
+    // rest length of 10 m asks for 1e309 N before the body has moved.
+    const BodyDef& body = scene.bodies[index];
+    const double reach = (spring.anchor - (body.position + body.orientation * spring.point)).norm() + spring.restLength;
+    if (!std::isfinite(reach) || !std::isfinite(spring.stiffness * reach)) {
+      s.fail("stiffness", "k times the spring's length (" + formatNumber(reach) + " m) overflows a double; "
+                          "expected a force k (l - l0) below about 1e307 N");
+    }
     scene.springs.push_back(spring);
   }
 }
@@ -221,7 +282,7 @@ void parsePlanes(const JsonObject& root, Scene& scene) {
     if (!(normal.stableNorm() > 0.0)) p.fail("normal", "expected a non-zero direction");
     Plane plane;
     plane.normal = normal.stableNormalized();  // a direction: its length carries no meaning
-    plane.offset = plane.normal.dot(p.vec3("point", Vec3::Zero()));
+    plane.offset = plane.normal.dot(p.boundedVec3("point", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin));
     scene.planes.push_back(plane);
     scene.planeMaterials.push_back(parseMaterial(p));
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 #include <Eigen/SVD>
@@ -13,13 +14,6 @@
 namespace rbsim {
 
 namespace {
-
-// Six significant digits in %g style: std::to_string would print 1e-7 as "0.000000".
-std::string formatNumber(double d) {
-  std::ostringstream out;
-  out << d;
-  return out.str();
-}
 
 const char* typeName(const nlohmann::json& v) {
   return v.is_number() ? "a number" : v.type_name();
@@ -48,6 +42,12 @@ Mat3 nearestRotation(const Mat3& M) {
 }
 
 }  // namespace
+
+std::string formatNumber(double d) {
+  std::ostringstream out;
+  out << d;
+  return out.str();
+}
 
 std::string nearestKey(const std::string& key, const std::vector<std::string>& known) {
   std::string best;
@@ -118,9 +118,22 @@ int JsonObject::positiveInt(const char* key, int fallback) const {
   if (!has(key)) return fallback;
   const nlohmann::json& v = value_.at(key);
   if (!v.is_number_integer()) fail(key, std::string("expected an integer, got ") + typeName(v));
-  const long long n = v.get<long long>();
-  if (n <= 0 || n > 1'000'000'000) fail(key, "expected a positive integer, got " + std::to_string(n));
-  return static_cast<int>(n);
+  // An unsigned JSON integer above 2^63 - 1 would read as a negative long long: compare it as
+  // the unsigned number it is.
+  const bool tooLarge = v.is_number_unsigned() ? v.get<std::uint64_t>() > kMaxCount : v.get<long long>() > kMaxCount;
+  if (tooLarge || (!v.is_number_unsigned() && v.get<long long>() <= 0)) {
+    fail(key, "expected a positive integer up to " + std::to_string(kMaxCount) + ", got " + v.dump());
+  }
+  return static_cast<int>(v.get<long long>());
+}
+
+void JsonObject::allowOnly(std::initializer_list<const char*> keys, const std::string& owner) const {
+  for (const auto& item : value_.items()) {
+    if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return item.key() == k; }) != keys.end()) continue;
+    std::string list;
+    for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+    fail(item.key().c_str(), "does not apply to " + owner + " (its keys: " + list + ")");
+  }
 }
 
 bool JsonObject::boolean(const char* key, bool fallback) const {
@@ -168,6 +181,16 @@ std::optional<Vec3> JsonObject::optionalVec3(const char* key) const {
   return vec3(key, Vec3::Zero());
 }
 
+Vec3 JsonObject::boundedVec3(const char* key, const Vec3& fallback, double limit, const char* unit,
+                              const char* what) const {
+  const Vec3 v = vec3(key, fallback);
+  if (!(v.stableNorm() <= limit)) {
+    fail(key, "its length " + formatNumber(v.stableNorm()) + " " + unit + " exceeds " + formatNumber(limit) + " " + unit +
+                  " (" + what + "); expected a smaller value");
+  }
+  return v;
+}
+
 Vec3 JsonObject::positiveVec3(const char* key) const {
   if (!has(key)) fail(key, "missing; an array of 3 positive numbers is required");
   const Vec3 v = vec3(key, Vec3::Zero());
@@ -187,8 +210,14 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
   if (o.has("quaternion")) {
     const std::vector<double> n = o.numbers("quaternion", 4);
     const Quat q(n[0], n[1], n[2], n[3]);
-    if (normalize && !(q.norm() > 0.0)) o.fail("quaternion", "the zero quaternion has no direction to normalise");
-    if (!normalize && std::abs(q.norm() - 1.0) > kRotationTolerance) {
+    if (normalize) {
+      // Scaled by its largest component first: the norm of [1e200, 0, 0, 0] overflows, its
+      // direction does not.
+      const double largest = q.coeffs().cwiseAbs().maxCoeff();
+      if (!(largest > 0.0)) o.fail("quaternion", "the zero quaternion has no direction to normalise");
+      return Quat(q.coeffs() / largest).normalized();
+    }
+    if (!(std::abs(q.norm() - 1.0) <= kRotationTolerance)) {
       o.fail("quaternion", "expected a unit quaternion [w, x, y, z], its norm is " + formatNumber(q.norm()) +
                                " (add \"normalize\": true to have it normalised)");
     }
@@ -206,8 +235,13 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
       }
     }
     if (!R.allFinite()) o.fail("matrix", "entries must be finite");
+    // Scaled by its largest entry before normalising: the polar factor does not change with a
+    // positive scale, and R^T R of entries near 1e200 would overflow.
+    if (normalize && R.cwiseAbs().maxCoeff() > 0.0) R /= R.cwiseAbs().maxCoeff();
     if (normalize && R.determinant() > 0.0) R = nearestRotation(R);
-    if (orthonormalityError(R) > kRotationTolerance || R.determinant() < 0.0) {
+    // Written as "not within": with entries near 1e200 R^T R overflows, the error is NaN and a
+    // plain "greater than" test would pass the matrix.
+    if (!(orthonormalityError(R) <= kRotationTolerance) || !(R.determinant() > 0.0)) {
       o.fail("matrix", "expected a rotation matrix (orthonormal, determinant +1); ||R^T R - I|| = " +
                            formatNumber(orthonormalityError(R)) + ", det = " + formatNumber(R.determinant()) +
                            (normalize ? " (no rotation is near a matrix of determinant <= 0)"

@@ -13,6 +13,9 @@
 
 namespace rbsim {
 
+// The largest count any integer key accepts; each key's own budget is usually lower.
+inline constexpr long long kMaxCount = 1'000'000'000;
+
 class JsonObject {
  public:
   // Throws InputError if `value` is not an object or has a key outside `allowed`.
@@ -29,12 +32,18 @@ class JsonObject {
   double requiredNumber(const char* key) const;
   double positiveNumber(const char* key, double fallback) const;  // > 0
   std::optional<double> optionalPositive(const char* key) const;
-  int positiveInt(const char* key, int fallback) const;
+  int positiveInt(const char* key, int fallback) const;  // in [1, kMaxCount]
+  // Keys that belong to another variant of this object (a sphere's "extents") are an error
+  // naming `owner`, e.g. "a \"sphere\" shape", and listing the keys that apply.
+  void allowOnly(std::initializer_list<const char*> keys, const std::string& owner) const;
   bool boolean(const char* key, bool fallback) const;
   std::string string(const char* key, const std::string& fallback) const;
   std::string requiredString(const char* key) const;
   Vec3 vec3(const char* key, const Vec3& fallback) const;
   std::optional<Vec3> optionalVec3(const char* key) const;
+  // A vector whose length may be at most `limit` (scene/input_ranges.h); `what` names the
+  // limit in the message, e.g. "the speed of light".
+  Vec3 boundedVec3(const char* key, const Vec3& fallback, double limit, const char* unit, const char* what) const;
   Vec3 positiveVec3(const char* key) const;  // required, every component > 0
   // Orientation: {"quaternion": [w,x,y,z]} | {"matrix": [[r11,r12,r13],...]} |
   // {"axis_angle_deg": [ax, ay, az, degrees]}; must be a rotation, never silently normalised:
@@ -53,6 +62,10 @@ class JsonObject {
   std::string file_;
   std::string path_;
 };
+
+// Six significant digits in %g style, for messages: std::to_string prints 1e-7 as "0.000000"
+// and 1e300 as 301 digits.
+std::string formatNumber(double d);
 
 // The known key nearest to `key` by edit distance, or "" when none is close.
 std::string nearestKey(const std::string& key, const std::vector<std::string>& known);

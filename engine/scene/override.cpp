@@ -5,6 +5,7 @@
 
 #include "io/input_error.h"
 #include "scene/scene.h"
+#include "scene/strict_json.h"
 
 namespace rbsim {
 
@@ -42,7 +43,15 @@ void applyOverride(nlohmann::json& document, const std::string& assignment) {
   }
   const std::string text = assignment.substr(eq + 1);
   nlohmann::json value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (value.is_discarded()) value = text;  // a bare word such as rk4 or cube is a string
+  if (value.is_discarded()) {
+    value = text;  // a bare word such as rk4 or cube is a string
+  } else {
+    try {
+      value = parseStrictJson(text, "");  // duplicate keys are refused in a value too
+    } catch (const InputError& e) {
+      throw InputError("", "--set", "in the value, " + e.field() + ": " + e.problem());
+    }
+  }
 
   nlohmann::json* node = &document;
   for (std::size_t i = 0; i < parts.size(); ++i) {

@@ -10,10 +10,12 @@
 #include "io/obj_loader.h"
 #include "mass/mass_model.h"
 #include "scene/body_parser.h"
+#include "scene/input_ranges.h"
 #include "scene/json_fields.h"
 #include "scene/particle_parser.h"
 #include "scene/planar_parser.h"
 #include "scene/soft_parser.h"
+#include "scene/strict_json.h"
 
 namespace rbsim {
 
@@ -21,17 +23,16 @@ namespace {
 
 // Beyond this a video shows nothing a person can see, and it is most likely a typo.
 constexpr int kMaxFramesPerSecond = 240;  // [1/s]
+// A scene is a page of JSON: 64 MiB holds hundreds of thousands of bodies' keys. Checked before
+// reading, so /dev/zero or a file of gigabytes ends in a message, not in std::bad_alloc.
+constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{64} << 20;  // [bytes]
+// A run's work is bounded as well as its step count: a 1000-box pile costs about 10 us per body
+// and step with soft step (REPORT.md section 5, 9.6 ms a step), so 1e10 body-steps is about a
+// day of computing, beyond what anyone waits for without meaning to.
+constexpr double kMaxBodySteps = 1e10;      // [bodies x steps]
+constexpr double kSecondsPerBodyStep = 1e-5;  // [s], the pile's measured cost, for the estimate
 // world.steps accepts at most 1e9 (json_fields' positiveInt); a duration may not ask for more.
 constexpr double kMaxSteps = 1e9;
-
-// Line and column of a byte offset, for JSON syntax errors.
-std::string lineAndColumn(const std::string& text, std::size_t byte) {
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
 
 void parseView(const JsonObject& root, Scene& scene) {
   if (!root.has("view")) return;
@@ -70,6 +71,18 @@ void parseView(const JsonObject& root, Scene& scene) {
   if (v.has("selected")) view.selected = scene_detail::findBody(scene.bodies, v, "selected");
 }
 
+void checkWorkBudget(const JsonObject& root, const Scene& scene) {
+  const double work = static_cast<double>(scene.bodies.size()) * static_cast<double>(scene.stepCount());
+  if (work <= kMaxBodySteps) return;
+  std::ostringstream problem;
+  problem << scene.bodies.size() << " bodies x " << scene.stepCount() << " steps = " << work
+          << " body-steps, about " << work * kSecondsPerBodyStep / 3600.0 << " hours at the "
+          << kSecondsPerBodyStep * 1e6 << " us a body-step a pile of boxes costs; the limit is " << kMaxBodySteps
+          << " (about a day): expected fewer steps or bodies";
+  const bool bySteps = root.has("world") && root.raw("world").contains("steps");
+  throw InputError(root.file(), bySteps ? "world.steps" : "world.duration", problem.str());
+}
+
 }  // namespace
 
 std::uint64_t Scene::stepCount() const {
@@ -87,7 +100,8 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
                                          "velocity_iterations", "position_iterations", "restitution_threshold",
                                          "contact_slop", "position_correction", "warm_starting", "response", "log_queries",
                                          "particle_integrator"});
-    scene.settings.gravity = w.vec3("gravity", scene.settings.gravity);
+    scene.settings.gravity =
+        w.boundedVec3("gravity", scene.settings.gravity, kMaxGravity, "m/s^2", "above a neutron star's surface gravity");
     scene.settings.timeStep = w.positiveNumber("dt", scene.settings.timeStep);
     if (scene.settings.timeStep > kMaxTimeStep || scene.settings.timeStep < kMinTimeStep) {
       std::ostringstream expected;
@@ -122,6 +136,12 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     s.contactPushSpeed = w.positiveNumber("contact_push_speed", s.contactPushSpeed);
     s.velocityIterations = w.positiveInt("velocity_iterations", s.velocityIterations);
     s.positionIterations = w.positiveInt("position_iterations", s.positionIterations);
+    for (const char* key : {"velocity_iterations", "position_iterations"}) {
+      if (w.positiveInt(key, 1) > kMaxSolverIterations) {
+        w.fail(key, "expected at most " + std::to_string(kMaxSolverIterations) + " sweeps a step (Box2D v2 uses 8, "
+                    "Bullet 10); each sweep visits every contact point");
+      }
+    }
     s.restitutionThreshold = w.number("restitution_threshold", s.restitutionThreshold);
     if (!(s.restitutionThreshold >= 0.0)) w.fail("restitution_threshold", "expected a speed >= 0 m/s");
     s.contactSlop = w.number("contact_slop", s.contactSlop);
@@ -151,6 +171,13 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
       w.fail("duration", expected.str());
     }
     if (w.has("steps")) scene.duration = w.positiveInt("steps", 1) * scene.settings.timeStep;
+    if (scene.stepCount() == 0) {
+      std::ostringstream expected;
+      expected << "a duration of " << scene.duration << " s is less than half a time step (dt = "
+               << scene.settings.timeStep << " s): it would run no step; expected at least " << scene.settings.timeStep
+               << " s";
+      w.fail("duration", expected.str());
+    }
   }
   const std::vector<JsonObject> bodies = root.objectArray("bodies", scene_detail::kBodyKeys);
   for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene);
@@ -168,6 +195,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
       throw InputError(file, "spawn", problem + " (spawned names are NAME_k)");
     }
   }
+  checkWorkBudget(root, scene);
   scene_detail::parsePlanes(root, scene);
   scene_detail::parseParticleSystems(root, scene);
   scene_detail::parseSoftBodies(root, scene);
@@ -178,12 +206,31 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
 
 std::string readSceneFile(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a folder; expected a scene file (JSON)");
-  std::ifstream in(path);
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (status.type() == std::filesystem::file_type::not_found) {
+    throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
+  }
+  if (std::filesystem::is_directory(status)) throw InputError(path, "", "is a folder; expected a scene file (JSON)");
+  // A device or a pipe (/dev/zero, /dev/stdin) has no size to check and may never end.
+  if (!std::filesystem::is_regular_file(status)) {
+    throw InputError(path, "", "is not a regular file (a device, pipe or socket); expected a scene file (JSON)");
+  }
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxSceneBytes) {
+    throw InputError(path, "", "is " + std::to_string(size) + " bytes; a scene file may be at most " +
+                                   std::to_string(kMaxSceneBytes) + " bytes (64 MiB)");
+  }
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  // Read one byte past the size: a file that grows while being read is caught as well.
+  std::string text(static_cast<std::size_t>(ec ? kMaxSceneBytes : size) + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw InputError(path, "", "cannot read the scene file (I/O error)");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > (ec ? kMaxSceneBytes : size)) {
+    throw InputError(path, "", "changed size while being read; expected a scene file that stays as it is");
+  }
+  return text;
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
@@ -192,21 +239,7 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
 
 Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,
                      const std::vector<std::string>& overrides) {
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(file, lineAndColumn(text, e.byte == 0 ? 0 : e.byte - 1),
-                     std::string("invalid JSON: ") + e.what());
-  } catch (const nlohmann::json::exception& e) {
-    // A number too large for a double (1e999) ends the parse with out_of_range and no position;
-    // the message quotes the number, which is found again in the text.
-    const std::string what = e.what();
-    const std::size_t open = what.find('\''), close = what.rfind('\'');
-    const std::size_t at = open < close ? text.find(what.substr(open + 1, close - open - 1)) : std::string::npos;
-    throw InputError(file, at == std::string::npos ? std::string() : lineAndColumn(text, at),
-                     "invalid JSON: " + what + " (numbers must be finite doubles)");
-  }
+  nlohmann::json document = parseStrictJson(text, file);
   for (const std::string& assignment : overrides) {
     try {
       applyOverride(document, assignment);

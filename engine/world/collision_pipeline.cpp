@@ -10,6 +10,7 @@
 #include "collision/narrowphase/convex_plane.h"
 #include "collision/narrowphase/sdf_contact.h"
 #include "world/continuous_collision.h"
+#include "world/simulation_error.h"
 
 namespace rbsim {
 
@@ -147,6 +148,13 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
                         dt * settings_.gravity.norm());
     }
     boxes_[i] = box.inflated(settings_.contactMargin + reach_[i]);
+    // A finite state can still have a box that is not (a vertex R p + x or a reach dt |v|
+    // overflows): that is the body diverging, reported as such rather than as a broad-phase fault.
+    if (!boxes_[i].min.allFinite() || !boxes_[i].max.allFinite()) {
+      throw SimulationError("body '" + bodies[i].name() + "': its bounding box stopped being finite (|x| = " +
+                            std::to_string(bodies[i].position().stableNorm()) + " m, |v| = " +
+                            std::to_string(bodies[i].velocity().stableNorm()) + " m/s)");
+    }
     broad_->move(proxies_[i], boxes_[i]);
   }
   broad_->update();

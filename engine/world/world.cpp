@@ -113,7 +113,8 @@ std::size_t World::addSpring(const Spring& spring) {
   if (spring.body >= bodies_.size()) throw std::invalid_argument("spring names no body");
   if (bodies_[spring.body].isStatic()) throw std::invalid_argument("spring on static body '" + bodies_[spring.body].name() + "'");
   if (!spring.anchor.allFinite() || !spring.point.allFinite() || !(spring.stiffness >= 0.0) || !(spring.restLength >= 0.0) ||
-      !(spring.damping >= 0.0) || !std::isfinite(spring.stiffness + spring.restLength + spring.damping)) {
+      !(spring.damping >= 0.0) || !std::isfinite(spring.stiffness) || !std::isfinite(spring.restLength) ||
+      !std::isfinite(spring.damping)) {
     throw std::invalid_argument("spring on body '" + bodies_[spring.body].name() + "': expected finite anchor and point, k, rest length and damping >= 0");
   }
   springs_.push_back(spring);
@@ -299,24 +300,6 @@ void World::integrateBodies(bool withGravity) {
   }
 }
 
-void World::reportDivergence(const RigidBody& body, const BodyState& next) const {
-  std::string quantities;
-  const auto add = [&quantities](bool finite, const char* name) {
-    if (!finite) quantities += (quantities.empty() ? "" : ", ") + std::string(name);
-  };
-  add(next.position.allFinite(), "position");
-  add(next.orientation.coeffs().allFinite(), "orientation");
-  add(next.linearMomentum.allFinite(), "linear momentum");
-  add(next.angularMomentum.allFinite(), "angular momentum");
-  std::ostringstream message;
-  message << "body '" << body.name() << "': " << quantities << " stopped being finite at step " << stepCount_
-          << " (t = " << time() << " s; integrator " << integratorName(settings_.integrator)
-          << ", dt = " << settings_.timeStep << " s). Before the step: |v| = " << body.velocity().stableNorm()
-          << " m/s, |omega| = " << body.angularVelocity().stableNorm() << " rad/s, |F| = " << body.force().stableNorm()
-          << " N, |tau| = " << body.torque().stableNorm() << " N m, m = " << body.mass() << " kg.";
-  throw SimulationError(message.str());
-}
-
 void World::updateSleep() {
   // Run with skipIdleStages = false, the stage must still not put anything to sleep.
   if (!settings_.allowSleep) return;
@@ -406,8 +389,10 @@ std::string checkSettings(const Settings& s) {
     problem << "ccd_motion_fraction: expected a finite fraction > 0";
   } else if (s.queryLogCapacity == 0) {
     problem << "query_log_capacity: expected at least one record";
-  } else if (s.velocityIterations < 1 || s.positionIterations < 0) {
-    problem << "velocity_iterations, position_iterations: expected >= 1 and >= 0 sweeps";
+  } else if (s.velocityIterations < 1 || s.positionIterations < 0 || s.velocityIterations > kMaxSolverIterations ||
+             s.positionIterations > kMaxSolverIterations) {
+    problem << "velocity_iterations, position_iterations: expected [1, " << kMaxSolverIterations << "] and [0, "
+            << kMaxSolverIterations << "] sweeps";
   } else if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
     problem << "substeps: expected an integer in [1, " << kMaxSubsteps << "]";
   } else if (!(s.contactHertz >= 0.0) || !std::isfinite(s.contactHertz)) {

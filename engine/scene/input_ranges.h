@@ -1,0 +1,16 @@
+#pragma once
+// The physical ranges a scene's lengths, speeds and accelerations must lie in. Each number in
+// them is finite, but finite is not enough: a speed of 1e300 m/s passes the parser and then
+// overflows a body's bounding box in its first step. Beyond these bounds no rigid-body scene is
+// meaningful, so the parser refuses them naming the field, rather than the step diverging.
+namespace rbsim {
+
+// Positions, anchors and points on planes [m]. The contact tolerances (5 mm slop, millimetre
+// margins) need positions resolved far below a millimetre; ulp(1e6 m) = 1.2e-10 m.
+inline constexpr double kMaxCoordinate = 1e6;  // [m]
+// No body moves faster than light: a larger speed is a typo or an attempt to overflow.
+inline constexpr double kMaxSpeed = 299'792'458.0;  // [m/s], c
+// Above the surface gravity of a neutron star (~2e12 m/s^2).
+inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
+
+}  // namespace rbsim
