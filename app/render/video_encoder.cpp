@@ -5,7 +5,6 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
 #include <pthread.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -42,9 +41,10 @@ VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height, 
     : output_(std::move(output)), width_(width), height_(height), fps_(fps), queue_(queueFrames) {
   const std::filesystem::path parent = output_.parent_path();
   ensureWritableDirectory(parent.empty() ? std::filesystem::path(".") : parent);
-  if (!std::ofstream(output_, std::ios::binary | std::ios::app)) {
-    throw RenderError("cannot write video file " + output_.string());
-  }
+  // Opened for appending, so an existing file is left alone until ffmpeg replaces it.
+  const int fd = ::open(output_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0666);
+  if (fd < 0) throw RenderError("cannot write video file " + output_.string() + ": " + std::strerror(errno));
+  ::close(fd);
   spawn();
   writer_ = std::thread([this] { writeLoop(); });
   stderrReader_ = std::thread([this] { drainStderr(); });

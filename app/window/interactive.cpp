@@ -136,7 +136,8 @@ class Session {
   void stepOnce() {
     stepUntil(world_->stepCount() + 1);
     // The next frame is the first one at or after this step.
-    while (stepOfFrame(frameIndex_, scene_.view.fps, scene_.settings.timeStep) < world_->stepCount()) ++frameIndex_;
+    frameIndex_ = std::max(frameIndex_,
+                           firstFrameShowing(world_->stepCount(), scene_.view.fps, scene_.settings.timeStep));
   }
 
   void restart() {
