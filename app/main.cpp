@@ -91,6 +91,7 @@ struct Flags {
       windowOptions.frames = parseFlagInteger("--window-frames", windowFrames, 1, kMaxWindowFrames,
                                               "a number of frames to show");
     }
+    refuseIgnoredFlags();
     auto add = [&](const std::string& key, const std::string& value, const std::string& flag) {
       if (value.empty()) return;
       run.overrides.push_back(key + "=" + value);
@@ -115,6 +116,32 @@ struct Flags {
     run.render = !noRender;
     if (run.videoPath.empty() && run.render) run.videoPath = defaultVideo;
     return run;
+  }
+
+  // A flag that the others make pointless would be ignored without a word: refused instead.
+  void refuseIgnoredFlags() const {
+    const std::pair<const char*, bool> imageFlags[] = {
+        {"--frames", !run.framesDir.empty()}, {"--video", !run.videoPath.empty()}, {"--png-level", !pngLevel.empty()}};
+    const std::pair<const char*, bool> runFlags[] = {{"--trace", !run.tracePath.empty()},
+                                                     {"--trace-every", !traceEvery.empty()},
+                                                     {"--no-render", noRender}};
+    for (const auto& [flag, given] : imageFlags) {
+      if (given && noRender) {
+        throw InputError("", std::string(flag) + " with --no-render", "contradictory: --no-render writes no images");
+      }
+      if (given && window) {
+        throw InputError("", std::string(flag) + " with --window",
+                         "not allowed: the window writes no files (its record button writes videos/window-*.mp4)");
+      }
+    }
+    for (const auto& [flag, given] : runFlags) {
+      if (given && window) {
+        throw InputError("", std::string(flag) + " with --window", "not allowed: --window shows the scene live and writes no trace or video");
+      }
+    }
+    if (!traceEvery.empty() && run.tracePath.empty()) {
+      throw InputError("", "--trace-every without --trace", "it only thins the trace; add --trace FILE.csv");
+    }
   }
 
   // The flag behind a scene error's field, as " (from --size 0x0)", or "" when no flag set it.

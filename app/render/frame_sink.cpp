@@ -23,14 +23,16 @@ FrameSink::FrameSink(SinkOptions options) : options_(std::move(options)) {
                       " at " + std::to_string(options_.fps) + " fps)");
   }
   options_.queueFrames = queueFramesWithin(options_.queueFrames, options_.width, options_.height);
-  if (options_.videoPath) {
-    video_ = std::make_unique<VideoEncoder>(*options_.videoPath, options_.width,
-                                            options_.height, options_.fps, options_.queueFrames);
-  }
+  // The PNG folder first: checking it is cheap, and a bad one then stops the run before ffmpeg
+  // has started (and created an empty video).
   if (options_.pngDir) {
     png_ = std::make_unique<PngSequenceWriter>(*options_.pngDir, options_.width, options_.height,
                                                options_.pngLevel, options_.pngThreads,
                                                options_.queueFrames);
+  }
+  if (options_.videoPath) {
+    video_ = std::make_unique<VideoEncoder>(*options_.videoPath, options_.width,
+                                            options_.height, options_.fps, options_.queueFrames);
   }
 }
 

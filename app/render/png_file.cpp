@@ -23,10 +23,18 @@ void writeData(png_structp png, png_bytep data, png_size_t size) {
 
 void flushData(png_structp) {}  // CheckedFile::close flushes and reports
 
+// libpng prints its errors on stderr by default; keep the words for our own message instead.
+void keepError(png_structp png, png_const_charp message) {
+  *static_cast<std::string*>(png_get_error_ptr(png)) = message;
+  png_longjmp(png, 1);
+}
+
+void ignoreWarning(png_structp, png_const_charp) {}
+
 // libpng reports errors by longjmp; keep every C++ object with a destructor outside the frame
 // that calls setjmp, so none is skipped. Returns false on any libpng error.
-bool writeRows(CheckedFile& file, int width, int height, png_bytep* rows, int zlibLevel) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+bool writeRows(CheckedFile& file, int width, int height, png_bytep* rows, int zlibLevel, std::string& pngError) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &pngError, keepError, ignoreWarning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
   if (info == nullptr || setjmp(png_jmpbuf(png))) {
@@ -60,11 +68,13 @@ void encodePngFile(const std::filesystem::path& path, int width, int height, con
   }
   CheckedFile file;
   const bool opened = file.open(path);
-  const bool written = opened && writeRows(file, width, height, rows.data(), zlibLevel);
+  std::string pngError;
+  const bool written = opened && writeRows(file, width, height, rows.data(), zlibLevel, pngError);
   const bool closed = opened && file.close();
   if (!written || !closed) {
     // A libpng failure that was not a write (out of memory) leaves no OS reason.
-    const std::string why = file.error().empty() ? "libpng could not encode the image" : file.error();
+    const std::string why = !file.error().empty() ? file.error()
+                            : "libpng: " + (pngError.empty() ? std::string("out of memory") : pngError);
     throw RenderError("could not write PNG " + path.string() + ": " + why);
   }
 }

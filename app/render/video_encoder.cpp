@@ -34,6 +34,12 @@ bool writeAll(int fd, const std::uint8_t* data, std::size_t size) {
   return true;
 }
 
+// ffmpeg's output without its closing line breaks, so the message ends where its words do.
+std::string trimmedEnd(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
+  return text;
+}
+
 }  // namespace
 
 VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height, int fps,
@@ -173,7 +179,7 @@ void VideoEncoder::finish() {
       // The exit status and ffmpeg's own words explain more than a broken pipe: they win.
       std::lock_guard<std::mutex> lock(errorMutex_);
       error_ = failure + " while writing " + output_.string() +
-               (stderrText_.empty() ? std::string() : ":\n" + stderrText_);
+               (stderrText_.empty() ? std::string() : ":\n" + trimmedEnd(stderrText_));
     }
   }
   const std::string message = error();
