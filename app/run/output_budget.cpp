@@ -54,4 +54,15 @@ void checkOutputBudget(const std::string& file, const std::string& what, std::ui
   }
 }
 
+void checkTraceBudget(const std::string& tracePath, double rows, const std::string& how) {
+  const double bytes = rows * kMinTraceBytesPerRow;
+  if (bytes <= kMaxTraceBytes) return;
+  char rowsText[32];
+  std::snprintf(rowsText, sizeof rowsText, "%.3g", rows);
+  throw InputError(tracePath, "--trace",
+                   std::string(rowsText) + " rows (" + how + ") need at least ~" + formatBytes(bytes) + " (~" +
+                       std::to_string(static_cast<int>(kMinTraceBytesPerRow)) + " bytes a row); the limit is " +
+                       formatBytes(kMaxTraceBytes) + ": trace every K-th step (--trace-every K) or run fewer steps");
+}
+
 }  // namespace rbsim::app

@@ -20,6 +20,12 @@ inline constexpr double kStoredPngBytesPerPixel = 4.0;  // [B/px]
 // end, so the estimate does not overstate and refuse a run that would fit.
 inline constexpr double kDeflatedPngBytesPerPixel = 0.49;  // [B/px]
 
+// Bytes of CSV one --trace may write: more than most disks have free.
+inline constexpr double kMaxTraceBytes = 100e9;  // [B]
+// A trace row is at least this long: step, time, name and 17 numbers, most of them "0" (a body at
+// rest at the origin; a moving one takes ~400). The low end, so the estimate never overstates.
+inline constexpr double kMinTraceBytesPerRow = 100.0;  // [B]
+
 // "3.2 GB", "870 MB", "12 kB": a byte count for messages.
 std::string formatBytes(double bytes);
 
@@ -29,5 +35,9 @@ std::string formatBytes(double bytes);
 // limit. `what` says where the frames come from ("5 s at view.fps 60").
 void checkOutputBudget(const std::string& file, const std::string& what, std::uint64_t frames, int width, int height,
                        int fps, const std::string& framesDir, int pngLevel);
+
+// Throws InputError(tracePath, "--trace", ...) when `rows` trace rows would pass kMaxTraceBytes;
+// `how` says where the rows come from ("1e9 steps x 2 bodies").
+void checkTraceBudget(const std::string& tracePath, double rows, const std::string& how);
 
 }  // namespace rbsim::app

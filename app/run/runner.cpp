@@ -106,6 +106,19 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     sink = std::make_unique<render::FrameSink>(sinkOptions);  // checks ffmpeg and folders first
     renderer = std::make_unique<render::OffscreenRenderer>(first.width, first.height);
   }
+  if (!options.tracePath.empty()) {
+    double rows = 0.0, bodies = 0.0;  // doubles: an estimate, and no product can wrap
+    for (const Phase& phase : phases) {
+      for (const PhaseWorld& world : phase.worlds) {
+        const double traced = std::floor(static_cast<double>(world.scene.stepCount()) / options.traceEvery) + 1.0;
+        rows += traced * static_cast<double>(world.scene.bodies.size());
+        bodies += static_cast<double>(world.scene.bodies.size());
+      }
+    }
+    std::ostringstream how;
+    how << totalSteps << " steps in all, " << bodies << " bodies, --trace-every " << options.traceEvery;
+    checkTraceBudget(options.tracePath, rows, how.str());
+  }
   std::optional<TraceWriter> trace;
   if (!options.tracePath.empty()) trace.emplace(options.tracePath);
 

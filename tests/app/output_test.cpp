@@ -239,6 +239,41 @@ TEST(OutputBudget, RefusesAbsurdRunsWithTheEstimateAndTheLimit) {
   }
 }
 
+TEST(OutputBudget, RefusesATraceOfAbsurdSize) {
+  EXPECT_NO_THROW(checkTraceBudget("t.csv", 1e9, "x"));  // 100 GB at 100 bytes a row: the limit
+  try {
+    checkTraceBudget("t.csv", 2e9, "2000000000 steps in all, 1 bodies, --trace-every 1");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "--trace");
+    EXPECT_NE(e.problem().find("2e+09 rows (2000000000 steps in all, 1 bodies, --trace-every 1) need at least ~200 GB"),
+              std::string::npos) << e.what();
+  }
+}
+
+// Without images the runner jumps from one frame where a world steps to the next instead of
+// visiting every frame; the trace (rows and their order across compared worlds of different dt)
+// must be the one a rendered run writes.
+TEST(NoRender, TracesTheSameRowsInTheSameOrderAsARenderedRun) {
+  const fs::path dir = freshDir("lockstep");
+  const std::string scene = std::string(RBSIM_BAD_DATA_DIR) + "/valid.json";
+  const std::vector<std::string> common = {
+      "run", scene, "--quiet", "--fps", "240", "--set", "world.gravity=[0,-9.8,0]",
+      "--set", "compare={\"key\":\"world.dt\",\"values\":[0.01,0.003,0.02]}"};
+  std::vector<std::string> rendered = common, simulated = common;
+  rendered.insert(rendered.end(), {"--size", "64x64", "--video", (dir / "c.mp4").string(), "--trace",
+                                   (dir / "rendered.csv").string()});
+  simulated.insert(simulated.end(), {"--no-render", "--trace", (dir / "simulated.csv").string()});
+  ASSERT_EQ(runRbsim(rendered).first, 0);
+  ASSERT_EQ(runRbsim(simulated).first, 0);
+  std::stringstream a, b;
+  a << std::ifstream(dir / "rendered.csv").rdbuf();
+  b << std::ifstream(dir / "simulated.csv").rdbuf();
+  EXPECT_EQ(parseCsv(a.str()).size(), 1u + 11 + 34 + 6);  // header, then steps 0..10, 0..33, 0..5
+  EXPECT_EQ(a.str(), b.str());
+  fs::remove_all(dir);
+}
+
 TEST(FrameSink, QueuesOfHugeImagesAreShortened) {
   EXPECT_EQ(render::queueFramesWithin(8, 1280, 720), 8u);
   EXPECT_EQ(render::queueFramesWithin(8, 8192, 8192), 1u);
