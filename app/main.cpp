@@ -34,6 +34,14 @@ constexpr std::uint64_t kMaxTraceEvery = 1'000'000'000;  // [steps]
 // --window-frames: 1e9 frames is 190 days at 60 fps; more is surely a typo.
 constexpr std::uint64_t kMaxWindowFrames = 1'000'000'000;  // [frames]
 
+// Whether two output paths name the same file (the same text, or e.g. "a/../b.csv" and "b.csv").
+bool samePath(const std::string& a, const std::string& b) {
+  std::error_code errorA, errorB;
+  const std::filesystem::path pathA = std::filesystem::weakly_canonical(a, errorA);
+  const std::filesystem::path pathB = std::filesystem::weakly_canonical(b, errorB);
+  return a == b || (!errorA && !errorB && pathA == pathB);
+}
+
 // Flags shared by `demo` and `run`. Those that change the scene become --set assignments, so a
 // flag and the scene key it stands for are checked by the same code.
 struct Flags {
@@ -115,6 +123,10 @@ struct Flags {
     }
     run.render = !noRender;
     if (run.videoPath.empty() && run.render) run.videoPath = defaultVideo;
+    if (!run.tracePath.empty() && !run.videoPath.empty() && samePath(run.tracePath, run.videoPath)) {
+      // Both would write the one file, each corrupting the other.
+      throw InputError("", "--trace " + run.tracePath, "is also the video file; give the trace and the video different names");
+    }
     return run;
   }
 
