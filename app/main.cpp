@@ -84,7 +84,8 @@ struct Flags {
     cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame");
   }
 
-  RunOptions finish(const std::string& defaultVideo) {
+  // `framesByDefault`: `demo all` writes PNG frames without --frames (so --png-level applies).
+  RunOptions finish(const std::string& defaultVideo, bool framesByDefault = false) {
     using rbsim::app::parseFlagInteger;
     if (!pngLevel.empty()) {
       run.pngLevel = static_cast<int>(parseFlagInteger(
@@ -99,7 +100,7 @@ struct Flags {
       windowOptions.frames = parseFlagInteger("--window-frames", windowFrames, 1, kMaxWindowFrames,
                                               "a number of frames to show");
     }
-    refuseIgnoredFlags();
+    refuseIgnoredFlags(framesByDefault);
     auto add = [&](const std::string& key, const std::string& value, const std::string& flag) {
       if (value.empty()) return;
       run.overrides.push_back(key + "=" + value);
@@ -131,7 +132,7 @@ struct Flags {
   }
 
   // A flag that the others make pointless would be ignored without a word: refused instead.
-  void refuseIgnoredFlags() const {
+  void refuseIgnoredFlags(bool framesByDefault) const {
     const std::pair<const char*, bool> imageFlags[] = {
         {"--frames", !run.framesDir.empty()}, {"--video", !run.videoPath.empty()}, {"--png-level", !pngLevel.empty()}};
     const std::pair<const char*, bool> runFlags[] = {{"--trace", !run.tracePath.empty()},
@@ -150,6 +151,9 @@ struct Flags {
       if (given && window) {
         throw InputError("", std::string(flag) + " with --window", "not allowed: --window shows the scene live and writes no trace or video");
       }
+    }
+    if (!pngLevel.empty() && run.framesDir.empty() && !framesByDefault) {
+      throw InputError("", "--png-level without --frames", "it sets the PNG frames' compression; add --frames DIR");
     }
     if (!traceEvery.empty() && run.tracePath.empty()) {
       throw InputError("", "--trace-every without --trace", "it only thins the trace; add --trace FILE.csv");
@@ -216,7 +220,7 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
     }
   }
   rbsim::app::ReelOptions reel;
-  const RunOptions run = flags.finish("");
+  const RunOptions run = flags.finish("", true);
   reel.overrides = run.overrides;
   reel.quiet = run.quiet;
   reel.pngLevel = run.pngLevel;
