@@ -66,6 +66,37 @@ void checkStepCounts(const Phase& phase) {
   }
 }
 
+namespace {
+
+// Before anything starts (ffmpeg creates its file at once): output_budget.h's limits on the
+// video's frames, the PNG folder and the trace. `frames` is 0 for a run without images.
+void checkRunBudgets(const std::vector<Phase>& phases, const Phase& longest, const RunOptions& options,
+                     std::uint64_t frames, std::uint64_t steps) {
+  const ViewDesc& view = phases.front().scene().view;
+  if (frames > 0) {
+    std::ostringstream what;
+    what << longest.scene().duration << " s";
+    if (phases.size() > 1) what << " (the longest of " << phases.size() << " phases)";
+    what << " at view.fps " << view.fps;
+    checkOutputBudget(longest.file, what.str(), frames, view.width, view.height, view.fps, options.framesDir,
+                      options.pngLevel);
+  }
+  if (options.tracePath.empty()) return;
+  double rows = 0.0, bodies = 0.0;  // doubles: an estimate, and no product can wrap
+  for (const Phase& phase : phases) {
+    for (const PhaseWorld& world : phase.worlds) {
+      const double traced = std::floor(static_cast<double>(world.scene.stepCount()) / options.traceEvery) + 1.0;
+      rows += traced * static_cast<double>(world.scene.bodies.size());
+      bodies += static_cast<double>(world.scene.bodies.size());
+    }
+  }
+  std::ostringstream how;
+  how << steps << " steps in all, " << bodies << " bodies, --trace-every " << options.traceEvery;
+  checkTraceBudget(options.tracePath, rows, how.str());
+}
+
+}  // namespace
+
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
                      const FrameObserver& observer) {
   RunSummary summary;
@@ -85,14 +116,10 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
   }
 
   const bool wantImages = options.render && (!options.framesDir.empty() || !options.videoPath.empty());
-  if (wantImages) {
-    const Scene& scene = longest->scene();
-    std::ostringstream what;
-    what << (phases.size() == 1 ? "" : std::to_string(phases.size()) + " phases, the longest ") << scene.duration
-         << " s at view.fps " << scene.view.fps;
-    checkOutputBudget(longest->file, what.str(), totalFrames, first.width, first.height, first.fps,
-                      options.framesDir, options.pngLevel);
-  }
+  checkRunBudgets(phases, *longest, options, wantImages ? totalFrames : 0, totalSteps);
+  // The trace first: opening it is cheap, and a bad path then fails before ffmpeg has started.
+  std::optional<TraceWriter> trace;
+  if (!options.tracePath.empty()) trace.emplace(options.tracePath);
   std::unique_ptr<render::OffscreenRenderer> renderer;
   std::unique_ptr<render::FrameSink> sink;
   if (wantImages) {
@@ -106,21 +133,6 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     sink = std::make_unique<render::FrameSink>(sinkOptions);  // checks ffmpeg and folders first
     renderer = std::make_unique<render::OffscreenRenderer>(first.width, first.height);
   }
-  if (!options.tracePath.empty()) {
-    double rows = 0.0, bodies = 0.0;  // doubles: an estimate, and no product can wrap
-    for (const Phase& phase : phases) {
-      for (const PhaseWorld& world : phase.worlds) {
-        const double traced = std::floor(static_cast<double>(world.scene.stepCount()) / options.traceEvery) + 1.0;
-        rows += traced * static_cast<double>(world.scene.bodies.size());
-        bodies += static_cast<double>(world.scene.bodies.size());
-      }
-    }
-    std::ostringstream how;
-    how << totalSteps << " steps in all, " << bodies << " bodies, --trace-every " << options.traceEvery;
-    checkTraceBudget(options.tracePath, rows, how.str());
-  }
-  std::optional<TraceWriter> trace;
-  if (!options.tracePath.empty()) trace.emplace(options.tracePath);
 
   // Progress counts what the run is waiting for: frames when it renders, steps otherwise.
   ProgressMeter meter(stderr, isTerminal(stderr), options.quiet);
