@@ -1,12 +1,16 @@
 // The rbsim command: numbered assignment demos, scenes from files, a listing. Exit codes:
 // 0 success, 2 bad input (file, field and expectation named), 1 internal error (DESIGN.md).
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "demos/demo.h"
+#include "flag_values.h"
 #include "integrate/integrator.h"
 #include "io/input_error.h"
 #include "particles/particle_def.h"
@@ -25,11 +29,28 @@ namespace {
 using rbsim::InputError;
 using rbsim::app::RunOptions;
 
+// --trace-every past the most steps a scene may have (world.steps) would trace step 0 alone.
+constexpr std::uint64_t kMaxTraceEvery = 1'000'000'000;  // [steps]
+// --window-frames: 1e9 frames is 190 days at 60 fps; more is surely a typo.
+constexpr std::uint64_t kMaxWindowFrames = 1'000'000'000;  // [frames]
+
+// Whether two output paths name the same file (the same text, or e.g. "a/../b.csv" and "b.csv").
+bool samePath(const std::string& a, const std::string& b) {
+  std::error_code errorA, errorB;
+  const std::filesystem::path pathA = std::filesystem::weakly_canonical(a, errorA);
+  const std::filesystem::path pathB = std::filesystem::weakly_canonical(b, errorB);
+  return a == b || (!errorA && !errorB && pathA == pathB);
+}
+
 // Flags shared by `demo` and `run`. Those that change the scene become --set assignments, so a
 // flag and the scene key it stands for are checked by the same code.
 struct Flags {
   RunOptions run;
   std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
+  std::string pngLevel, traceEvery, windowFrames;  // numbers, parsed by flag_values.h
+  // Scene key -> the flag that set it ("view.size" -> "--size 0x0"), so an error the scene reports
+  // about the key can say which flag it came from.
+  std::map<std::string, std::string> keyFlags;
   bool noRender = false, noOverlay = false, window = false;
   rbsim::app::WindowOptions windowOptions;
   std::vector<std::string> sets;
@@ -40,12 +61,11 @@ struct Flags {
                                   "NONEMPTY");
     cmd.add_option("--frames", run.framesDir, "write PNG frames into this folder")->check(nonEmpty);
     cmd.add_option("--video", run.videoPath, "write the MP4 here (default videos/<name>.mp4)")->check(nonEmpty);
-    cmd.add_option("--png-level", run.pngLevel,
+    cmd.add_option("--png-level", pngLevel,
                    "zlib level of the --frames PNGs, 0 (stored, fastest) to 9 (smallest); default 1, "
-                   "see app/render/png_file.h")
-        ->check(CLI::Range(rbsim::render::kMinPngLevel, rbsim::render::kMaxPngLevel));
+                   "see app/render/png_file.h");
     cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here")->check(nonEmpty);
-    cmd.add_option("--trace-every", run.traceEvery, "trace every K-th step")->check(CLI::Range(1, 1000000000));
+    cmd.add_option("--trace-every", traceEvery, "trace every K-th step, K from 1 to 1e9");
     cmd.add_option("--steps", steps, "number of steps per scene (world.steps)")->check(nonEmpty);
     cmd.add_option("--dt", dt, "time step in seconds (world.dt)")->check(nonEmpty);
     cmd.add_option("--fps", fps, "frames per simulated second (view.fps)")->check(nonEmpty);
@@ -60,35 +80,105 @@ struct Flags {
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
     cmd.add_flag("--quiet", run.quiet, "print nothing on success");
     cmd.add_flag("--window", window, "open an X11 window with controls instead of writing a video");
-    cmd.add_option("--window-frames", windowOptions.frames, "with --window: close after N frames (scripted runs)");
+    cmd.add_option("--window-frames", windowFrames, "with --window: close after N frames (scripted runs), N >= 1");
     cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame");
   }
 
-  RunOptions finish(const std::string& defaultVideo) {
-    auto add = [&](const std::string& key, const std::string& value) {
-      if (!value.empty()) run.overrides.push_back(key + "=" + value);
-    };
-    add("world.dt", dt);
-    add("world.steps", steps);
-    add("world.integrator", integrator.empty() ? "" : "\"" + integrator + "\"");
-    add("world.inertia", inertia.empty() ? "" : "\"" + inertia + "\"");
-    add("world.particle_integrator", particleIntegrator.empty() ? "" : "\"" + particleIntegrator + "\"");
-    add("view.fps", fps);
-    if (!size.empty()) {
-      const std::size_t x = size.find('x');
-      if (x == std::string::npos || x == 0 || x + 1 == size.size() ||
-          size.find_first_not_of("0123456789x") != std::string::npos) {
-        throw InputError("", "--size", "expected WIDTHxHEIGHT in pixels, e.g. 1280x720, got \"" + size + "\"");
-      }
-      add("view.size", "[" + size.substr(0, x) + "," + size.substr(x + 1) + "]");
+  // `framesByDefault`: `demo all` writes PNG frames without --frames (so --png-level applies).
+  RunOptions finish(const std::string& defaultVideo, bool framesByDefault = false) {
+    using rbsim::app::parseFlagInteger;
+    if (!pngLevel.empty()) {
+      run.pngLevel = static_cast<int>(parseFlagInteger(
+          "--png-level", pngLevel, rbsim::render::kMinPngLevel, rbsim::render::kMaxPngLevel,
+          "a zlib level (0: stored, fastest; 9: smallest)"));
     }
-    if (noOverlay) add("view.overlay", "false");
-    for (const std::string& s : sets) run.overrides.push_back(s);
+    if (!traceEvery.empty()) {
+      run.traceEvery = parseFlagInteger("--trace-every", traceEvery, 1, kMaxTraceEvery,
+                                        "a step interval (1: every step)");
+    }
+    if (!windowFrames.empty()) {
+      windowOptions.frames = parseFlagInteger("--window-frames", windowFrames, 1, kMaxWindowFrames,
+                                              "a number of frames to show");
+    }
+    refuseIgnoredFlags(framesByDefault);
+    auto add = [&](const std::string& key, const std::string& value, const std::string& flag) {
+      if (value.empty()) return;
+      run.overrides.push_back(key + "=" + value);
+      keyFlags[key] = flag;
+    };
+    add("world.dt", dt, "--dt " + dt);
+    add("world.steps", steps, "--steps " + steps);
+    add("world.integrator", integrator.empty() ? "" : "\"" + integrator + "\"", "--integrator " + integrator);
+    add("world.inertia", inertia.empty() ? "" : "\"" + inertia + "\"", "--inertia " + inertia);
+    add("world.particle_integrator", particleIntegrator.empty() ? "" : "\"" + particleIntegrator + "\"",
+        "--particle-integrator " + particleIntegrator);
+    add("view.fps", fps, "--fps " + fps);
+    if (!size.empty()) {
+      const auto [width, height] = rbsim::app::parseImageSize("--size", size);
+      add("view.size", "[" + std::to_string(width) + "," + std::to_string(height) + "]", "--size " + size);
+    }
+    if (noOverlay) add("view.overlay", "false", "--no-overlay");
+    for (const std::string& s : sets) {
+      run.overrides.push_back(s);
+      keyFlags.erase(s.substr(0, s.find('=')));  // a later --set of the key wins over the flag
+    }
     run.render = !noRender;
     if (run.videoPath.empty() && run.render) run.videoPath = defaultVideo;
+    if (!run.tracePath.empty() && !run.videoPath.empty() && samePath(run.tracePath, run.videoPath)) {
+      // Both would write the one file, each corrupting the other.
+      throw InputError("", "--trace " + run.tracePath, "is also the video file; give the trace and the video different names");
+    }
     return run;
   }
+
+  // A flag that the others make pointless would be ignored without a word: refused instead.
+  void refuseIgnoredFlags(bool framesByDefault) const {
+    const std::pair<const char*, bool> imageFlags[] = {
+        {"--frames", !run.framesDir.empty()}, {"--video", !run.videoPath.empty()}, {"--png-level", !pngLevel.empty()}};
+    const std::pair<const char*, bool> runFlags[] = {{"--trace", !run.tracePath.empty()},
+                                                     {"--trace-every", !traceEvery.empty()},
+                                                     {"--no-render", noRender}};
+    for (const auto& [flag, given] : imageFlags) {
+      if (given && noRender) {
+        throw InputError("", std::string(flag) + " with --no-render", "contradictory: --no-render writes no images");
+      }
+      if (given && window) {
+        throw InputError("", std::string(flag) + " with --window",
+                         "not allowed: the window writes no files (its record button writes videos/window-*.mp4)");
+      }
+    }
+    for (const auto& [flag, given] : runFlags) {
+      if (given && window) {
+        throw InputError("", std::string(flag) + " with --window", "not allowed: --window shows the scene live and writes no trace or video");
+      }
+    }
+    if (!pngLevel.empty() && run.framesDir.empty() && !framesByDefault) {
+      throw InputError("", "--png-level without --frames", "it sets the PNG frames' compression; add --frames DIR");
+    }
+    if (!traceEvery.empty() && run.tracePath.empty()) {
+      throw InputError("", "--trace-every without --trace", "it only thins the trace; add --trace FILE.csv");
+    }
+  }
+
+  // The flag behind a scene error's field, as " (from --size 0x0)", or "" when no flag set it.
+  std::string origin(const InputError& e) const {
+    const auto it = keyFlags.find(e.field());
+    return it == keyFlags.end() ? "" : " (from " + it->second + ")";
+  }
 };
+
+// Everything printed on stdout (the summary, `list`) is checked too: `rbsim run ... > /dev/full`
+// must not report success.
+int finishStdout(int code) {
+  errno = 0;
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    const int why = errno;
+    std::fprintf(stderr, "rbsim: error: standard output: cannot write the summary (%s)\n",
+                 why != 0 ? std::strerror(why) : "write error");
+    return 2;
+  }
+  return code;
+}
 
 int parseDemoNumber(const std::string& text) {
   std::size_t used = 0;
@@ -130,9 +220,10 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
     }
   }
   rbsim::app::ReelOptions reel;
-  const RunOptions run = flags.finish("");
+  const RunOptions run = flags.finish("", true);
   reel.overrides = run.overrides;
   reel.quiet = run.quiet;
+  reel.pngLevel = run.pngLevel;
   if (!run.framesDir.empty()) reel.framesBase = run.framesDir;
   const rbsim::app::ReelPlan plan = rbsim::app::planReel(rbsim::app::allDemos(), reel);
   if (!reel.quiet) {
@@ -143,7 +234,7 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
   }
   const rbsim::app::ReelResult result = rbsim::app::renderReel(plan, reel);
   rbsim::app::printReelSummary(result, reel);
-  return 0;
+  return finishStdout(0);
 }
 
 }  // namespace
@@ -153,14 +244,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string demoArgument;
-  int demoPhase = 0;  // 0: every phase
+  std::string demoPhase;  // empty: every phase
   Flags demoFlags;
   CLI::App* demo = app.add_subcommand("demo", "run numbered assignment demo N into videos/");
   demo->add_option("N", demoArgument, "demo number (see `rbsim list`), or `all`: every demo, and the reel "
                                       "videos/rbsim-demos.mp4")
       ->required();
-  demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4")
-      ->check(CLI::PositiveNumber);
+  demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4");
   demoFlags.attach(*demo);
 
   std::string scenePath;
@@ -179,7 +269,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (app.got_subcommand("list")) return listEverything();
+    if (app.got_subcommand("list")) return finishStdout(listEverything());
     std::vector<rbsim::app::Phase> phases;
     std::vector<std::string> files;
     std::string title;
@@ -194,13 +284,13 @@ int main(int argc, char** argv) {
       }
       std::vector<std::string> phases = chosen->scenes;
       std::string video = "videos/" + chosen->name + ".mp4";
-      if (demoPhase > 0) {
-        if (static_cast<std::size_t>(demoPhase) > phases.size()) {
-          throw InputError("", "--phase " + std::to_string(demoPhase),
-                           "demo " + std::to_string(demoNumber) + " has " + std::to_string(phases.size()) + " phases");
-        }
-        phases = {phases[static_cast<std::size_t>(demoPhase - 1)]};
-        video = "videos/" + chosen->name + "_" + std::to_string(demoPhase) + ".mp4";
+      if (demo->get_option("--phase")->count() > 0) {
+        const std::string count = std::to_string(phases.size());
+        const std::uint64_t phase = rbsim::app::parseFlagInteger(
+            "--phase " + demoPhase, demoPhase, 1, phases.size(),
+            "a phase number (demo " + std::to_string(demoNumber) + " has " + count + " phases)");
+        phases = {phases[phase - 1]};
+        video = "videos/" + chosen->name + "_" + std::to_string(phase) + ".mp4";
       }
       options = demoFlags.finish(video);
       for (const std::string& file : phases) files.push_back(rbsim::app::assetDir() + "/scenes/" + file);
@@ -209,20 +299,21 @@ int main(int argc, char** argv) {
       options = runFlags.finish("videos/" + std::filesystem::path(scenePath).stem().string() + ".mp4");
       files.push_back(scenePath);
     }
-    if (!flags.window && (flags.windowOptions.frames > 0 || !flags.windowOptions.screenshot.empty())) {
+    if (!flags.window && (!flags.windowFrames.empty() || !flags.windowOptions.screenshot.empty())) {
       throw InputError("", "--window-frames/--screenshot", "only with --window");
     }
     if (flags.window) {
       flags.windowOptions.quiet = options.quiet;
       rbsim::app::runWindow({files, options.overrides, title}, flags.windowOptions);
-      return 0;
+      return finishStdout(0);
     }
     for (const std::string& file : files) phases.push_back(rbsim::app::loadPhase(file, options.overrides));
     const rbsim::app::RunSummary summary = rbsim::app::runPhases(phases, options, title);
     rbsim::app::printSummary(summary, options);
-    return 0;
+    return finishStdout(0);
   } catch (const InputError& e) {
-    std::fprintf(stderr, "rbsim: error: %s\n", e.what());
+    // Only the chosen subcommand's flags are filled in, so at most one of these names a flag.
+    std::fprintf(stderr, "rbsim: error: %s%s%s\n", e.what(), demoFlags.origin(e).c_str(), runFlags.origin(e).c_str());
     return 2;
   } catch (const rbsim::SimulationError& e) {
     std::fprintf(stderr, "rbsim: error: the simulation diverged: %s\n", e.what());

@@ -1,5 +1,6 @@
 #include "frame_sink.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -9,20 +10,29 @@
 
 namespace rbsim::render {
 
+std::size_t queueFramesWithin(std::size_t wanted, int width, int height) {
+  const std::size_t frameBytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
+  const std::size_t fit = frameBytes > 0 ? kMaxQueuedBytesPerWriter / frameBytes : wanted;
+  return std::max<std::size_t>(1, std::min(wanted, fit));
+}
+
 FrameSink::FrameSink(SinkOptions options) : options_(std::move(options)) {
   if (options_.width <= 0 || options_.height <= 0 || options_.fps <= 0) {
     throw RenderError("frame output: width, height and fps must be positive (got " +
                       std::to_string(options_.width) + "x" + std::to_string(options_.height) +
                       " at " + std::to_string(options_.fps) + " fps)");
   }
-  if (options_.videoPath) {
-    video_ = std::make_unique<VideoEncoder>(*options_.videoPath, options_.width,
-                                            options_.height, options_.fps, options_.queueFrames);
-  }
+  options_.queueFrames = queueFramesWithin(options_.queueFrames, options_.width, options_.height);
+  // The PNG folder first: checking it is cheap, and a bad one then stops the run before ffmpeg
+  // has started (and created an empty video).
   if (options_.pngDir) {
     png_ = std::make_unique<PngSequenceWriter>(*options_.pngDir, options_.width, options_.height,
                                                options_.pngLevel, options_.pngThreads,
                                                options_.queueFrames);
+  }
+  if (options_.videoPath) {
+    video_ = std::make_unique<VideoEncoder>(*options_.videoPath, options_.width,
+                                            options_.height, options_.fps, options_.queueFrames);
   }
 }
 

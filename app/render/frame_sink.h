@@ -23,6 +23,15 @@ struct SinkOptions {
   std::size_t queueFrames = 8;  // per writer; 8 frames of 1280x720 RGBA is 30 MB
 };
 
+// Bytes of images one writer's queue may hold: 8 frames of 1920x1080 (66 MB). Larger images get
+// a shorter queue (at least one frame), so an 8192x8192 run (268 MB a frame) holds ~0.5 GB in its
+// two queues instead of 4.3 GB.
+inline constexpr std::size_t kMaxQueuedBytesPerWriter = std::size_t{8} * 1920 * 1080 * 4;  // [B]
+
+// How many frames of width x height RGBA one writer may queue: `wanted`, fewer if that would
+// pass kMaxQueuedBytesPerWriter, never fewer than 1.
+std::size_t queueFramesWithin(std::size_t wanted, int width, int height);
+
 class PngSequenceWriter;
 class VideoEncoder;
 

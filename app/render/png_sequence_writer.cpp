@@ -2,11 +2,11 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <system_error>
 
 #include <stdexcept>
 
+#include "checked_file.h"
 #include "png_file.h"
 #include "render_error.h"
 
@@ -14,17 +14,18 @@ namespace rbsim::render {
 
 void ensureWritableDirectory(const std::filesystem::path& dir) {
   std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    throw RenderError("cannot create output folder " + dir.string() + ": a file that is not a folder is in the way");
+  }
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {
     throw RenderError("cannot create output folder " + dir.string() +
                       (ec ? ": " + ec.message() : std::string(": a file is in the way")));
   }
   const std::filesystem::path probe = dir / ".rbsim_write_test";
-  {
-    std::ofstream out(probe, std::ios::binary);
-    if (!(out << 'x') || !out.flush()) {
-      throw RenderError("output folder " + dir.string() + " is not writable");
-    }
+  CheckedFile out;
+  if (!out.open(probe) || !out.write("x", 1) || !out.close()) {
+    throw RenderError("output folder " + dir.string() + " is not writable: " + out.error());
   }
   std::filesystem::remove(probe, ec);
 }

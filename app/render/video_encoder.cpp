@@ -5,7 +5,6 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
 #include <pthread.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -35,6 +34,12 @@ bool writeAll(int fd, const std::uint8_t* data, std::size_t size) {
   return true;
 }
 
+// ffmpeg's output without its closing line breaks, so the message ends where its words do.
+std::string trimmedEnd(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
+  return text;
+}
+
 }  // namespace
 
 VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height, int fps,
@@ -42,9 +47,10 @@ VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height, 
     : output_(std::move(output)), width_(width), height_(height), fps_(fps), queue_(queueFrames) {
   const std::filesystem::path parent = output_.parent_path();
   ensureWritableDirectory(parent.empty() ? std::filesystem::path(".") : parent);
-  if (!std::ofstream(output_, std::ios::binary | std::ios::app)) {
-    throw RenderError("cannot write video file " + output_.string());
-  }
+  // Opened for appending, so an existing file is left alone until ffmpeg replaces it.
+  const int fd = ::open(output_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0666);
+  if (fd < 0) throw RenderError("cannot write video file " + output_.string() + ": " + std::strerror(errno));
+  ::close(fd);
   spawn();
   writer_ = std::thread([this] { writeLoop(); });
   stderrReader_ = std::thread([this] { drainStderr(); });
@@ -173,7 +179,7 @@ void VideoEncoder::finish() {
       // The exit status and ffmpeg's own words explain more than a broken pipe: they win.
       std::lock_guard<std::mutex> lock(errorMutex_);
       error_ = failure + " while writing " + output_.string() +
-               (stderrText_.empty() ? std::string() : ":\n" + stderrText_);
+               (stderrText_.empty() ? std::string() : ":\n" + trimmedEnd(stderrText_));
     }
   }
   const std::string message = error();

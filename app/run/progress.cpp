@@ -33,9 +33,11 @@ std::string progressLine(const ProgressState& state) {
   const double eta = left == 0 ? 0.0 : rate > 0.0 ? static_cast<double>(left) / rate : -1.0;
   const double percent = state.total > 0 ? 100.0 * static_cast<double>(state.done) / static_cast<double>(state.total) : 100.0;
   char buffer[256];
-  std::snprintf(buffer, sizeof buffer, "demo %zu/%zu %s  frames %llu/%llu (%.1f%%)  %.1f fps  elapsed %s  ETA %s",
-                state.item, state.items, state.name.c_str(), static_cast<unsigned long long>(state.done),
-                static_cast<unsigned long long>(state.total), percent, rate, formatClock(state.elapsedSeconds).c_str(),
+  const std::string rateUnit = state.unit == "frames" ? "fps" : state.unit + "/s";
+  std::snprintf(buffer, sizeof buffer, "%s %zu/%zu %s  %s %llu/%llu (%.1f%%)  %.1f %s  elapsed %s  ETA %s",
+                state.kind.c_str(), state.item, state.items, state.name.c_str(), state.unit.c_str(),
+                static_cast<unsigned long long>(state.done),
+                static_cast<unsigned long long>(state.total), percent, rate, rateUnit.c_str(), formatClock(state.elapsedSeconds).c_str(),
                 formatClock(eta).c_str());
   return buffer;
 }
@@ -66,6 +68,7 @@ void ProgressMeter::finish() {
   std::fprintf(out_, "\n");
   std::fflush(out_);
   lastWidth_ = 0;
+  wrote_ = false;
 }
 
 bool isTerminal(std::FILE* stream) { return ::isatty(::fileno(stream)) == 1; }

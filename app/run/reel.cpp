@@ -11,6 +11,7 @@
 #include "render/frame_sink.h"
 #include "render/png_sequence_writer.h"
 #include "render/title_card.h"
+#include "run/output_budget.h"
 #include "run/progress.h"
 #include "run/runner.h"
 
@@ -114,11 +115,18 @@ ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options) {
     ReelDemo entry{demo, {}, 0};
     for (const std::string& file : demo.scenes) {
       entry.phases.push_back(loadPhase(assetDir() + "/scenes/" + file, overrides));
-      entry.frames += frameCount(entry.phases.back());
+      checkStepCounts(entry.phases.back());
+      entry.frames += frameCount(entry.phases.back());  // each at most kHugeCount: no wrap
     }
     plan.totalFrames += plan.cardFrames + entry.frames;
     plan.demos.push_back(std::move(entry));
   }
+  std::uint64_t demoFrames = 0;  // the PNGs: every demo's frames, without the cards
+  for (const ReelDemo& d : plan.demos) demoFrames += d.frames;
+  checkOutputBudget("", "`demo all`, every demo and its title card, at view.fps " + std::to_string(options.fps),
+                    plan.totalFrames, options.width, options.height, options.fps, "", options.pngLevel);
+  checkOutputBudget("", "", demoFrames, options.width, options.height, options.fps, options.framesBase.string(),
+                    options.pngLevel);
   return plan;
 }
 
@@ -167,6 +175,7 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
     RunOptions run;
     run.framesDir = (options.framesBase / d.demo.name).string();
     run.videoPath = (options.videoDir / (d.demo.name + ".mp4")).string();
+    run.pngLevel = options.pngLevel;
     run.quiet = true;
     const RunSummary summary =
         runPhases(d.phases, run, "Demo " + std::to_string(d.demo.number) + ": " + d.demo.name,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "demos/demo.h"
+#include "render/png_file.h"
 #include "run/phase.h"
 
 namespace rbsim::app {
@@ -21,6 +22,7 @@ struct ReelOptions {
   std::filesystem::path framesBase = "build/frames";  // demo <name>'s PNGs go to framesBase/<name>/
   std::filesystem::path videoDir = "videos";          // <name>.mp4 and the reel go here
   std::string reelFile = "rbsim-demos.mp4";
+  int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames (--png-level)
   bool quiet = false;  // no progress and no summary
 };
 
@@ -36,7 +38,8 @@ struct ReelPlan {
   std::uint64_t totalFrames = 0;  // of the reel: opening card, then each demo's card and frames
 };
 
-// Loads every demo's scenes (bad input fails here, before anything renders) and counts frames.
+// Loads every demo's scenes (bad input fails here, before anything renders), counts frames and
+// checks them against output_budget.h's limits.
 ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options);
 
 struct VideoReport {

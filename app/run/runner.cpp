@@ -5,12 +5,16 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <filesystem>
 #include <optional>
+#include <sstream>
 
 #include "io/input_error.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
 #include "run/compare_view.h"
+#include "run/output_budget.h"
+#include "run/progress.h"
 #include "run/trace_writer.h"
 
 namespace rbsim::app {
@@ -26,32 +30,96 @@ double secondsSince(Clock::time_point start) {
 }  // namespace
 
 std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt) {
-  return static_cast<std::uint64_t>(std::llround(static_cast<double>(frame) / (fps * dt)));
+  // std::round rounds halves away from zero, as llround did; the saturation keeps the cast defined.
+  const double step = std::round(static_cast<double>(frame) / (fps * dt));
+  return step >= static_cast<double>(kHugeCount) ? kHugeCount : static_cast<std::uint64_t>(step);
+}
+
+std::uint64_t firstFrameShowing(std::uint64_t step, double fps, double dt) {
+  if (step == 0) return 0;
+  // round(k / r) >= step  <=>  k >= (step - 1/2) r; the estimate is off by rounding only, so the
+  // two loops below move it a frame or two at most.
+  const double estimate = std::ceil((static_cast<double>(step) - 0.5) * fps * dt);
+  if (!(estimate < static_cast<double>(kHugeCount))) return kHugeCount;
+  std::uint64_t frame = estimate > 0.0 ? static_cast<std::uint64_t>(estimate) : 0;
+  while (frame > 0 && stepOfFrame(frame - 1, fps, dt) >= step) --frame;
+  while (frame < kHugeCount && stepOfFrame(frame, fps, dt) < step) ++frame;
+  return frame;
 }
 
 std::uint64_t frameCount(std::uint64_t steps, double fps, double dt) {
-  std::uint64_t frames = 0;
-  while (stepOfFrame(frames, fps, dt) <= steps) ++frames;
-  return frames;
+  return steps >= kHugeCount ? kHugeCount : firstFrameShowing(steps + 1, fps, dt);
 }
 
 std::uint64_t frameCount(const Scene& scene) {
   return frameCount(scene.stepCount(), scene.view.fps, scene.settings.timeStep);
 }
 
+void checkStepCounts(const Phase& phase) {
+  for (const PhaseWorld& world : phase.worlds) {
+    const Scene& scene = world.scene;
+    if (scene.stepCount() > 0) continue;
+    std::ostringstream problem;
+    problem << "a duration of " << scene.duration << " s at dt = " << scene.settings.timeStep
+            << " s is 0 steps; expected at least one step (a duration of at least dt / 2)";
+    throw InputError(phase.file, "world.duration", problem.str());
+  }
+}
+
+namespace {
+
+// Before anything starts (ffmpeg creates its file at once): output_budget.h's limits on the
+// video's frames, the PNG folder and the trace. `frames` is 0 for a run without images.
+void checkRunBudgets(const std::vector<Phase>& phases, const Phase& longest, const RunOptions& options,
+                     std::uint64_t frames, std::uint64_t steps) {
+  const ViewDesc& view = phases.front().scene().view;
+  if (frames > 0) {
+    std::ostringstream what;
+    what << longest.scene().duration << " s";
+    if (phases.size() > 1) what << " (the longest of " << phases.size() << " phases)";
+    what << " at view.fps " << view.fps;
+    checkOutputBudget(longest.file, what.str(), frames, view.width, view.height, view.fps, options.framesDir,
+                      options.pngLevel);
+  }
+  if (options.tracePath.empty()) return;
+  double rows = 0.0, bodies = 0.0;  // doubles: an estimate, and no product can wrap
+  for (const Phase& phase : phases) {
+    for (const PhaseWorld& world : phase.worlds) {
+      const double traced = std::floor(static_cast<double>(world.scene.stepCount()) / options.traceEvery) + 1.0;
+      rows += traced * static_cast<double>(world.scene.bodies.size());
+      bodies += static_cast<double>(world.scene.bodies.size());
+    }
+  }
+  std::ostringstream how;
+  how << steps << " steps in all, " << bodies << " bodies, --trace-every " << options.traceEvery;
+  checkTraceBudget(options.tracePath, rows, how.str());
+}
+
+}  // namespace
+
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
                      const FrameObserver& observer) {
   RunSummary summary;
   const auto wallStart = Clock::now();
   const ViewDesc& first = phases.front().scene().view;
+  std::uint64_t totalFrames = 0, totalSteps = 0;
+  const Phase* longest = &phases.front();
   for (const Phase& phase : phases) {
     const ViewDesc& view = phase.scene().view;
     if (view.width != first.width || view.height != first.height || view.fps != first.fps) {
       throw InputError(phase.file, "view", "every phase of one video needs the same size and fps as the first");
     }
+    checkStepCounts(phase);
+    totalFrames += frameCount(phase);  // each at most kHugeCount: the sum of a few cannot wrap
+    for (const PhaseWorld& world : phase.worlds) totalSteps += world.scene.stepCount();
+    if (frameCount(phase) > frameCount(*longest)) longest = &phase;
   }
 
   const bool wantImages = options.render && (!options.framesDir.empty() || !options.videoPath.empty());
+  checkRunBudgets(phases, *longest, options, wantImages ? totalFrames : 0, totalSteps);
+  // The trace first: opening it is cheap, and a bad path then fails before ffmpeg has started.
+  std::optional<TraceWriter> trace;
+  if (!options.tracePath.empty()) trace.emplace(options.tracePath);
   std::unique_ptr<render::OffscreenRenderer> renderer;
   std::unique_ptr<render::FrameSink> sink;
   if (wantImages) {
@@ -65,11 +133,24 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     sink = std::make_unique<render::FrameSink>(sinkOptions);  // checks ffmpeg and folders first
     renderer = std::make_unique<render::OffscreenRenderer>(first.width, first.height);
   }
-  std::optional<TraceWriter> trace;
-  if (!options.tracePath.empty()) trace.emplace(options.tracePath);
+
+  // Progress counts what the run is waiting for: frames when it renders, steps otherwise.
+  ProgressMeter meter(stderr, isTerminal(stderr), options.quiet);
+  ProgressState progress;
+  progress.items = phases.size();
+  progress.kind = "phase";
+  progress.unit = renderer ? "frames" : "steps";
+  progress.total = renderer ? totalFrames : totalSteps;
+  const auto report = [&] {
+    progress.done = renderer ? summary.frames : summary.steps;
+    progress.elapsedSeconds = secondsSince(wallStart);
+    meter.update(progress);
+  };
 
   std::uint64_t stepBase = 0;  // the trace's step column: the steps of the phases before this one
   for (const Phase& phase : phases) {
+    ++progress.item;
+    progress.name = std::filesystem::path(phase.file).stem().string();
     std::vector<World> worlds;
     worlds.reserve(phase.worlds.size());
     for (const PhaseWorld& w : phase.worlds) worlds.push_back(buildWorld(w.scene));
@@ -86,17 +167,29 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
         summary.simulateSeconds += secondsSince(start);
         ++summary.steps;
         traceRow(k);
+        if (!renderer) report();
       }
     };
     for (std::size_t k = 0; k < worlds.size(); ++k) traceRow(k);
     const double fps = phase.scene().view.fps;
     const std::uint64_t frames = frameCount(phase);
-    for (std::uint64_t f = 0; f < frames; ++f) {
+    for (std::uint64_t f = 0; f < frames;) {
       for (std::size_t k = 0; k < worlds.size(); ++k) {
         const Scene& scene = phase.worlds[k].scene;
         advance(k, std::min(stepOfFrame(f, fps, scene.settings.timeStep), scene.stepCount()));
       }
-      if (!renderer) continue;
+      if (!renderer) {
+        // Without images only the steps matter: jump to the next frame at which some world moves
+        // on (the same steps in the same order as when rendering, without visiting every frame).
+        std::uint64_t next = frames;
+        for (std::size_t k = 0; k < worlds.size(); ++k) {
+          const Scene& scene = phase.worlds[k].scene;
+          if (worlds[k].stepCount() >= scene.stepCount()) continue;
+          next = std::min(next, firstFrameShowing(worlds[k].stepCount() + 1, fps, scene.settings.timeStep));
+        }
+        f = std::max(f + 1, next);
+        continue;
+      }
       auto start = Clock::now();
       const render::FrameData frame = buildPhaseFrame(worlds, phase, title);
       summary.buildSeconds += secondsSince(start);
@@ -106,14 +199,17 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
       summary.submitSeconds += secondsSince(start);
       if (observer) observer(pixels);
       ++summary.frames;
+      ++f;
+      report();
     }
-    std::uint64_t longest = 0;
+    std::uint64_t longestSteps = 0;
     for (std::size_t k = 0; k < worlds.size(); ++k) {
       advance(k, phase.worlds[k].scene.stepCount());  // past the last frame, as the trace expects
-      longest = std::max(longest, phase.worlds[k].scene.stepCount());
+      longestSteps = std::max(longestSteps, phase.worlds[k].scene.stepCount());
     }
-    stepBase += longest;
+    stepBase += longestSteps;
   }
+  if (trace) trace->close();
   if (sink) {
     const auto start = Clock::now();
     sink->finish();
@@ -125,6 +221,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     summary.renderSeconds = 1e-3 * drawn.renderMs * static_cast<double>(drawn.frames);
     summary.readbackSeconds = 1e-3 * drawn.readbackMs * static_cast<double>(drawn.frames);
   }
+  meter.finish();
   summary.wallSeconds = secondsSince(wallStart);
   return summary;
 }

@@ -28,13 +28,25 @@ struct RunSummary {
 
 // Frame k of a scene shows the state at the step nearest to k / fps. When dt does not divide
 // 1/fps the frames' times jitter by at most dt/2 but never drift; none is dropped, and a step is
-// shown twice only when dt > 1/fps.
+// shown twice only when dt > 1/fps. Saturates at kHugeCount instead of overflowing.
 std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt);
 
+// Counts past this are "too many" (no run gets near it); it is exact in a double, so frame and
+// step arithmetic never overflows a 64-bit integer on the way to a budget check.
+inline constexpr std::uint64_t kHugeCount = std::uint64_t{1} << 62;
+
+// The first frame whose step (stepOfFrame) is `step` or later, computed directly: counting frame
+// by frame would take ~1e11 iterations for 1e9 steps shown at 240 fps with a large dt.
+std::uint64_t firstFrameShowing(std::uint64_t step, double fps, double dt);
+
 // How many frames runPhases renders for a scene of `steps` steps: every k with
-// stepOfFrame(k) <= steps (frame 0 is the initial state).
+// stepOfFrame(k) <= steps (frame 0 is the initial state), so at least 1.
 std::uint64_t frameCount(std::uint64_t steps, double fps, double dt);
 std::uint64_t frameCount(const Scene& scene);
+
+// Throws InputError naming world.duration if a world of the phase would run 0 steps (a duration
+// under dt / 2): it would show one still frame and say nothing.
+void checkStepCounts(const Phase& phase);
 
 // Called with every rendered image (top-down RGBA8) after it went to the run's own outputs:
 // `rbsim demo all` copies it into the reel and counts it for the progress line.
@@ -46,7 +58,9 @@ using FrameObserver = std::function<void(const std::vector<std::uint8_t>& rgbaTo
 // k each one is stepped to its own step nearest k / fps (so worlds of different dt stay at the
 // same time) and all are drawn into the frame; the phase lasts as long as its longest world.
 // The trace has every world's rows; a compared world's bodies are named "K/NAME" for world K.
-// RunSummary::steps counts the steps of every world.
+// RunSummary::steps counts the steps of every world. Before anything runs, a phase of 0 steps and
+// a video past output_budget.h's limits are refused (InputError); a run prints progress on stderr
+// unless options.quiet. Every output is checked: a failed write throws naming the file.
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
                      const FrameObserver& observer = {});
 

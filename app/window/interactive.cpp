@@ -15,6 +15,7 @@
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
 #include "render/png_sequence_writer.h"
+#include "render/render_error.h"
 #include "run/frame_builder.h"
 #include "run/phase.h"
 #include "run/runner.h"
@@ -57,6 +58,12 @@ class Session {
   }
 
   void run() {
+    // A screenshot that cannot be written fails now, not after the whole scripted session.
+    const std::filesystem::path shot(options_.screenshot);
+    if (shot.has_parent_path()) render::ensureWritableDirectory(shot.parent_path());
+    if (!shot.empty() && std::filesystem::is_directory(shot)) {
+      throw render::RenderError("cannot write the screenshot " + shot.string() + ": it is a folder");
+    }
     X11Window window(scene_.view.width, scene_.view.height, "rbsim: " + title());
     render::OffscreenRenderer renderer(scene_.view.width, scene_.view.height);
     WindowInput input;
@@ -136,7 +143,8 @@ class Session {
   void stepOnce() {
     stepUntil(world_->stepCount() + 1);
     // The next frame is the first one at or after this step.
-    while (stepOfFrame(frameIndex_, scene_.view.fps, scene_.settings.timeStep) < world_->stepCount()) ++frameIndex_;
+    frameIndex_ = std::max(frameIndex_,
+                           firstFrameShowing(world_->stepCount(), scene_.view.fps, scene_.settings.timeStep));
   }
 
   void restart() {

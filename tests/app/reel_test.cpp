@@ -40,6 +40,15 @@ TEST(ProgressLine, EtaIsTheFramesLeftAtTheMeanRateSoFar) {
   EXPECT_NE(progressLine({6, 6, "soft", 1000, 1000, 80.0}).find("ETA 0:00"), std::string::npos);
 }
 
+TEST(ProgressLine, ARunWithoutImagesCountsStepsPerPhase) {
+  ProgressState state{2, 3, "contact_solvers", 500, 2000, 5.0};
+  state.kind = "phase";
+  state.unit = "steps";
+  const std::string line = progressLine(state);
+  EXPECT_NE(line.find("phase 2/3 contact_solvers  steps 500/2000 (25.0%)  100.0 steps/s"), std::string::npos) << line;
+  EXPECT_NE(line.find("ETA 0:15"), std::string::npos) << line;
+}
+
 // Frame k shows the step nearest k/fps: its time is off by at most dt/2 and never drifts, and a
 // scene has a frame for every 1/fps of its duration, also when dt does not divide 1/fps.
 TEST(FrameTiming, FramesKeepTimeWithinHalfAStepAtSixtyFps) {

@@ -125,6 +125,30 @@ TEST(FrameSink, UnwritableFolderIsAnErrorNamingThePath) {
   }
 }
 
+TEST(FrameSink, AVideoPathThatIsAFolderNamesItAndTheReason) {
+  TempDir dir;
+  try {
+    FrameSink sink(SinkOptions{std::nullopt, dir.path(), 30, kWidth, kHeight});
+    FAIL() << "expected RenderError";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write video file " + dir.path().string() + ": Is a directory"),
+              std::string::npos) << e.what();
+  }
+}
+
+TEST(FrameSink, AFramesFolderThatIsAFileIsRefusedBeforeFfmpegStarts) {
+  TempDir dir;
+  const auto blocker = dir.path() / "a_file";
+  std::ofstream(blocker) << "not a folder";
+  try {
+    FrameSink sink(SinkOptions{blocker, dir.path() / "out.mp4", 30, kWidth, kHeight});
+    FAIL() << "expected RenderError";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("a file that is not a folder is in the way"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.mp4"));  // the PNG folder is checked first
+}
+
 TEST(FrameSink, FfmpegFailureIsReportedByFinish) {
   if (!onPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
   TempDir dir;

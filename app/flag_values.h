@@ -1,0 +1,21 @@
+#pragma once
+// Numbers given as command-line flags, parsed by rbsim itself rather than by CLI11, whose
+// messages ("not in range 0.000000 to 1797693...") name no unit and wrap or reject overflowing
+// input without saying so. Each error names the flag, what it expects in words, and the text given.
+#include <cstdint>
+#include <string>
+#include <utility>
+
+namespace rbsim::app {
+
+// Reads `text` as a decimal integer in [min, max]. Throws InputError("", flag, "expected
+// <expected>; got <text>, not in range MIN to MAX") for anything else: negative, past 64 bits
+// (both said in parentheses), out of range, or "not a whole number" (a word, a fraction).
+std::uint64_t parseFlagInteger(const std::string& flag, const std::string& text, std::uint64_t min,
+                               std::uint64_t max, const std::string& expected);
+
+// Reads "WIDTHxHEIGHT" (decimal digits only); throws InputError naming `flag` otherwise or when a
+// side does not fit 64 bits. The range of each side is the scene's (view.size) to check.
+std::pair<std::uint64_t, std::uint64_t> parseImageSize(const std::string& flag, const std::string& text);
+
+}  // namespace rbsim::app
