@@ -22,11 +22,14 @@ constexpr int kMaxSubsteps = 1000;                // [1]
 // count due in a step must also stay a number a size_t holds.
 constexpr double kMaxEmitterRate = 1e9;  // [particles/s]
 // Particle work per World step over all systems: particle updates (each particle once per substep
-// and once more per attractor, body and plane it is tested against), spring evaluations, and
-// neighbour tests of a flock (every boid against every other: capacity^2 per substep, since any
-// may come within `radius`). At 1 to 5 ns each, the limit is ~0.1 s of computing per step, about
-// 4 minutes per simulated 10 s at 240 steps/s.
-constexpr double kMaxParticleWorkPerStep = 2e7;  // [updates, spring evaluations or pair tests per step]
+// and once more per attractor, body and plane it is tested against) and spring evaluations. At 1
+// to 5 ns each, the limit is ~0.1 s of computing per step, about 4 minutes per simulated 10 s at
+// 240 steps/s.
+constexpr double kMaxParticleWorkPerStep = 2e7;  // [updates or spring evaluations per step]
+// Flock neighbour tests per World step over all systems: every boid against every other that can
+// be alive at once (any may come within `radius`). A test is a distance and a compare, ~1 ns: the
+// limit is ~0.4 s per step; a flock of 1e5 (1e10 tests) would take minutes per step.
+constexpr double kMaxFlockTestsPerStep = 4e8;  // [pair tests per step]
 // Birth sizes are stored as float (for the renderer).
 constexpr double kMaxFloatSize = 3.4e38;  // [m], just under FLT_MAX
 
@@ -294,22 +297,37 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
   return d;
 }
 
-// The work of one World step of the system, in the units of kMaxParticleWorkPerStep, and what
-// dominates it, in words.
-double workPerStep(const ParticleSystemDef& d, const Scene& scene, std::string& what) {
+// The most particles of the system alive at once: its capacity, or fewer when its emitters cannot
+// fill it (bursts, plus rate times the lifetime or the emitting window, whichever is shorter).
+double mostAlive(const ParticleSystemDef& d) {
+  double alive = d.cloth.enabled ? static_cast<double>(d.cloth.nu) * d.cloth.nv : 0.0;
+  for (const EmitterDef& e : d.emitters) {
+    const double stream = e.rate > 0.0 ? e.rate * std::min(e.lifetimeMax, e.end - e.start) + 1.0 : 0.0;
+    alive += static_cast<double>(e.burst) + stream;
+  }
+  return std::min(static_cast<double>(d.capacity), alive);  // an immortal stream gives infinity: the capacity
+}
+
+// The work of one World step of the system: updates and spring evaluations, and flock neighbour
+// tests apart; what they are, in words.
+void workPerStep(const ParticleSystemDef& d, const Scene& scene, double& work, double& pairs, std::string& what) {
   const double n = static_cast<double>(d.capacity), substeps = d.substeps;
   double tests = 1.0 + static_cast<double>(d.attractors.size());
   if (d.collision.bodies) tests += static_cast<double>(scene.bodies.size());
   if (d.collision.planes) tests += static_cast<double>(scene.planes.size());
   const double updates = n * tests * substeps;
   const double springs = d.cloth.enabled ? 6.0 * d.cloth.nu * d.cloth.nv * substeps : 0.0;
-  const double pairs = d.flock.enabled ? n * n * substeps : 0.0;
+  const double alive = mostAlive(d);
+  pairs = d.flock.enabled ? alive * alive * substeps : 0.0;
   std::ostringstream out;
   out << "capacity " << d.capacity << " x " << d.substeps << " substeps: " << shortNumber(updates) << " particle updates";
   if (d.cloth.enabled) out << ", " << shortNumber(springs) << " spring evaluations";
-  if (d.flock.enabled) out << ", " << shortNumber(pairs) << " flock neighbour tests (every boid against every other)";
+  if (d.flock.enabled) {
+    out << ", and " << shortNumber(pairs) << " flock neighbour tests (" << shortNumber(alive)
+        << " boids alive at most, each against every other)";
+  }
   what = out.str();
-  return updates + springs + pairs;
+  work = updates + springs;
 }
 
 }  // namespace
@@ -318,19 +336,25 @@ void parseParticleSystems(const JsonObject& root, Scene& scene) {
   const std::vector<JsonObject> systems = root.objectArray(
       "particles", {"name", "seed", "capacity", "integrator", "substeps", "gravity_scale", "drag_linear", "drag_quadratic",
                     "wind", "attractors", "flock", "collision", "cloth", "emitters", "look"});
-  double work = 0.0;  // per World step, over the systems so far
+  double work = 0.0, pairs = 0.0;  // per World step, over the systems so far
   for (std::size_t i = 0; i < systems.size(); ++i) {
     const JsonObject& p = systems[i];
     ParticleSystemDef def = parseSystem(p, i, scene);
     const std::string problem = checkParticleSystemDef(def, scene.bodies.size());
     if (!problem.empty()) throw InputError(scene.file, p.path(), problem);
     std::string what;
-    work += workPerStep(def, scene, what);
-    if (work > kMaxParticleWorkPerStep) {
-      p.fail(def.flock.enabled ? "flock" : def.cloth.enabled ? "cloth" : "capacity",
-             what + " per World step (" + shortNumber(work) + " with the systems before); the limit is " +
-                 shortNumber(kMaxParticleWorkPerStep) + " per step: use a smaller capacity, fewer substeps" +
-                 (def.flock.enabled ? " or a smaller flock" : ""));
+    double systemWork = 0.0, systemPairs = 0.0;
+    workPerStep(def, scene, systemWork, systemPairs, what);
+    work += systemWork;
+    pairs += systemPairs;
+    if (work > kMaxParticleWorkPerStep || pairs > kMaxFlockTestsPerStep) {
+      const bool flock = pairs > kMaxFlockTestsPerStep;
+      std::ostringstream problem;
+      problem << what << " per World step; with the systems before it, " << shortNumber(flock ? pairs : work)
+              << (flock ? " neighbour tests" : " updates") << " per step, and the limit is "
+              << shortNumber(flock ? kMaxFlockTestsPerStep : kMaxParticleWorkPerStep)
+              << " per step: use a smaller capacity, fewer substeps" << (flock ? " or a smaller flock" : "");
+      p.fail(flock ? "flock" : def.cloth.enabled ? "cloth" : "capacity", problem.str());
     }
     scene.particleSystems.push_back(std::move(def));
     scene.particleLooks.push_back(p.has("look") ? parseLook(p.object("look", {"blend", "color_end", "alpha_start", "alpha_end",

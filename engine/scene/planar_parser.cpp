@@ -4,6 +4,7 @@
 // "restitution", "friction_static", "friction_kinetic", "color"}]}
 #include "scene/planar_parser.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -129,6 +130,11 @@ void parsePlanar(const JsonObject& root, Scene& scene) {
     }
     PlanarBody& body = *made;
     body.state().position = vec2(b, "position", Vec2::Zero());
+    double reach = 0.0;  // the farthest corner from the centroid [m]
+    for (const Vec2& corner : body.polygon()) reach = std::max(reach, corner.stableNorm());
+    if (!std::isfinite(body.state().position.cwiseAbs().maxCoeff() + reach)) {
+      b.fail("position", "the corners' world positions (position + " + shortNumber(reach) + " m) overflow; expected finite sums");
+    }
     body.state().angle = kDegreesToRadians * b.number("angle_deg", 0.0);
     const Vec2 velocity = vec2(b, "velocity", Vec2::Zero());
     body.state().linearMomentum = body.mass() * velocity;
