@@ -19,6 +19,10 @@ std::string checkFracturePattern(const FracturePattern& pattern, const BodyDef& 
   if (pattern.pieces.size() < 2) return "a body breaks into at least 2 pieces";
   const MassProperties whole = polyhedralMassProperties(*body.mesh, 1.0);
   const double size = (body.mesh->boundsMax() - body.mesh->boundsMin()).norm();
+  // The comparisons below are written to fail on NaN: a volume that overflows must not pass them.
+  if (!(whole.volume > 0.0) || !std::isfinite(whole.volume) || !std::isfinite(size)) {
+    return "the body's volume (" + std::to_string(whole.volume) + " m^3) is not finite and positive";
+  }
   double volume = 0.0;
   Vec3 moment = Vec3::Zero();
   for (std::size_t k = 0; k < pattern.pieces.size(); ++k) {
@@ -31,14 +35,14 @@ std::string checkFracturePattern(const FracturePattern& pattern, const BodyDef& 
     volume += p.volume;
     moment += p.volume * p.centerOfMass;
   }
-  if (std::abs(volume - whole.volume) > kFractureFitTolerance * whole.volume) {
+  if (!(std::abs(volume - whole.volume) <= kFractureFitTolerance * whole.volume)) {
     return "the pieces' volumes sum to " + std::to_string(volume) + " m^3, the body's is " + std::to_string(whole.volume);
   }
-  if ((moment / volume - whole.centerOfMass).norm() > kFractureFitTolerance * size) {
+  if (!((moment / volume - whole.centerOfMass).norm() <= kFractureFitTolerance * size)) {
     return "the pieces' centre of mass is not the body's";
   }
   const Mat3 exact = whole.inertia * (body.mass / whole.volume);
-  if ((exact - body.inertiaBody).norm() > kFractureFitTolerance * exact.norm()) {
+  if (!((exact - body.inertiaBody).norm() <= kFractureFitTolerance * exact.norm())) {
     return "the body's inertia is not the exact inertia of its mesh (use inertia \"exact\"), so the "
            "pieces could not keep its angular momentum";
   }

@@ -34,6 +34,13 @@ std::vector<FacePlane> facePlanes(const Mesh& mesh) {
 
 bool hasVolume(const Mesh& piece) { return !piece.triangles.empty(); }
 
+// The most pieces n planes can cut a convex body into: 1 + n + C(n, 2) + C(n, 3) (planes in
+// general position; the cake numbers).
+unsigned long long maxPiecesOf(std::size_t planes) {
+  const unsigned long long n = planes;
+  return 1 + n + n * (n - 1) / 2 + n * (n - 1) * (n - 2) / 6;
+}
+
 }  // namespace
 
 bool isConvex(const Mesh& mesh, double tolerance) {
@@ -45,7 +52,7 @@ bool isConvex(const Mesh& mesh, double tolerance) {
   return true;
 }
 
-std::vector<Mesh> cutByPlanes(const Mesh& convex, const std::vector<CutPlane>& planes) {
+std::vector<Mesh> cutByPlanes(const Mesh& convex, const std::vector<CutPlane>& planes, std::size_t maxPieces) {
   const double tolerance = clipTolerance(convex);
   std::vector<Mesh> pieces{convex};
   for (std::size_t k = 0; k < planes.size(); ++k) {
@@ -59,6 +66,12 @@ std::vector<Mesh> cutByPlanes(const Mesh& convex, const std::vector<CutPlane>& p
       Mesh above = clipConvexMesh(piece, -plane.normal, -plane.offset, tolerance);
       if (hasVolume(below)) next.push_back(std::move(below));
       if (hasVolume(above)) next.push_back(std::move(above));
+      if (next.size() > maxPieces) {
+        throw std::length_error("plane " + std::to_string(k) + " brings the body to at least " + std::to_string(next.size()) +
+                                " pieces ("  + std::to_string(planes.size()) +
+                                " planes can make up to " + std::to_string(maxPiecesOf(planes.size())) +
+                                "); the limit is " + std::to_string(maxPieces) + " pieces");
+      }
     }
     pieces = std::move(next);
   }

@@ -3,6 +3,7 @@
 // into the Voronoi cells of random sites, which gives the irregular shards of shattered glass or
 // stone. Every piece is closed and convex, and together they fill the body exactly.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "geometry/mesh.h"
@@ -16,8 +17,11 @@ struct CutPlane {
 };
 
 // Every piece the planes cut the convex mesh into (each plane splits every piece it crosses).
-// Throws std::invalid_argument for a plane whose normal is not unit or finite.
-std::vector<Mesh> cutByPlanes(const Mesh& convex, const std::vector<CutPlane>& planes);
+// Throws std::invalid_argument for a plane whose normal is not unit or finite, and
+// std::length_error, naming the plane and the count, as soon as the pieces would exceed
+// `maxPieces` (n planes can make ~n^3 / 6 pieces).
+std::vector<Mesh> cutByPlanes(const Mesh& convex, const std::vector<CutPlane>& planes,
+                              std::size_t maxPieces = std::numeric_limits<std::size_t>::max());
 
 // The Voronoi cell of each site clipped to the convex mesh: the points nearer that site than any
 // other, cut out by the bisecting planes of the site pairs. Sites whose cell misses the mesh give

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace rbsim {
 
@@ -31,13 +33,28 @@ Vec3 sampleCone(const Vec3& axis, double spread, UniformRandom& random) {
 
 Emitter::Emitter(const EmitterDef& def, const std::vector<RigidBody>& bodies) : def_(def) {
   if (def_.shape != EmitterShape::MeshSurface) return;
-  const RigidBody& body = bodies.at(def_.body);
-  double total = 0.0;
-  for (const Triangle& t : body.mesh().triangles) {
-    const Vec3& a = body.bodyVertex(t[0]);
-    total += 0.5 * (body.bodyVertex(t[1]) - a).cross(body.bodyVertex(t[2]) - a).norm();
-    cumulativeArea_.push_back(total);
+  mesh_ = bodies.at(def_.body).sharedMesh();
+  cumulativeArea_ = cumulativeTriangleAreas(*mesh_);
+  if (cumulativeArea_.empty() || !(cumulativeArea_.back() > 0.0) || !std::isfinite(cumulativeArea_.back())) {
+    throw std::invalid_argument("mesh emitter: the surface of body '" + bodies[def_.body].name() +
+                                "' has no finite, positive area to emit from");
   }
+}
+
+std::vector<double> cumulativeTriangleAreas(const Mesh& mesh) {
+  std::vector<double> cumulative;
+  cumulative.reserve(mesh.triangles.size());
+  double total = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    total += 0.5 * (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+    cumulative.push_back(total);
+  }
+  return cumulative;
+}
+
+bool Emitter::bodyIntact(const std::vector<RigidBody>& bodies) const {
+  return def_.shape != EmitterShape::MeshSurface || (def_.body < bodies.size() && bodies[def_.body].sharedMesh() == mesh_);
 }
 
 void Emitter::samplePlace(UniformRandom& random, const std::vector<RigidBody>& bodies, Vec3& position, Vec3& axis,
@@ -68,11 +85,13 @@ void Emitter::samplePlace(UniformRandom& random, const std::vector<RigidBody>& b
       const double pick = random.next() * cumulativeArea_.back();
       const std::size_t k = static_cast<std::size_t>(
           std::upper_bound(cumulativeArea_.begin(), cumulativeArea_.end(), pick) - cumulativeArea_.begin());
-      const Triangle& t = body.mesh().triangles[std::min(k, cumulativeArea_.size() - 1)];
+      // The emitter's own mesh (emit() checked that the body still has it), never the body's
+      // storage: a piece's mesh has other triangles.
+      const Triangle& t = mesh_->triangles[std::min(k, cumulativeArea_.size() - 1)];
       const double s = std::sqrt(random.next()), w = random.next();
-      const Vec3& a = body.bodyVertex(t[0]);
-      const Vec3& b = body.bodyVertex(t[1]);
-      const Vec3& c = body.bodyVertex(t[2]);
+      const Vec3& a = mesh_->vertices[t[0]];
+      const Vec3& b = mesh_->vertices[t[1]];
+      const Vec3& c = mesh_->vertices[t[2]];
       const Vec3 local = (1.0 - s) * a + s * (1.0 - w) * b + s * w * c;
       position = body.bodyToWorld(local);
       axis = (body.rotation() * (b - a).cross(c - a)).normalized();  // outward (counter-clockwise)
@@ -104,7 +123,7 @@ void Emitter::spawn(std::size_t i, ParticleStore& store, UniformRandom& random,
 
 std::size_t Emitter::emit(double t, double dt, ParticleStore& store, UniformRandom& random,
                           const std::vector<RigidBody>& bodies) {
-  if (t + dt <= def_.start || t >= def_.end) return 0;
+  if (t + dt <= def_.start || t >= def_.end || !bodyIntact(bodies)) return 0;
   std::size_t due = 0;
   if (!burstDone_) {
     due += def_.burst;

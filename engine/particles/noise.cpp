@@ -21,13 +21,21 @@ double latticeValue(std::int64_t x, std::int64_t y, std::int64_t z, std::uint64_
   return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0;  // [-1, 1)
 }
 
+// The lattice index of a floored coordinate. Past 2^62 cells (or for a NaN or infinite sample
+// point, which the system's divergence check reports) the cast to int64 would be undefined: the
+// lattice repeats with that period instead (fmod is exact), and a non-finite point reads cell 0.
+std::int64_t latticeIndex(double floored) {
+  constexpr double kPeriod = 0x1.0p62;  // [cells]
+  return std::isfinite(floored) ? static_cast<std::int64_t>(std::fmod(floored, kPeriod)) : 0;
+}
+
 double fade(double t) { return t * t * t * (t * (6.0 * t - 15.0) + 10.0); }
 
 }  // namespace
 
 double valueNoise(const Vec3& p, std::uint64_t seed) {
   const double fx = std::floor(p.x()), fy = std::floor(p.y()), fz = std::floor(p.z());
-  const auto x = static_cast<std::int64_t>(fx), y = static_cast<std::int64_t>(fy), z = static_cast<std::int64_t>(fz);
+  const std::int64_t x = latticeIndex(fx), y = latticeIndex(fy), z = latticeIndex(fz);
   const double u = fade(p.x() - fx), v = fade(p.y() - fy), w = fade(p.z() - fz);
   double corner[2][2][2];
   for (int i = 0; i < 2; ++i)

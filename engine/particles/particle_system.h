@@ -25,8 +25,8 @@ class ParticleSystem {
 
   // Advances by dt from time t: emitters add what is due, then def().substeps steps of dt /
   // substeps each apply forces, integrate, collide and age the particles; the expired die.
-  // Every kDivergenceCheckInterval steps, throws SimulationError naming the system, a particle
-  // and the integrator if a particle has left the finite numbers.
+  // In the step a velocity stops being finite, and every kDivergenceCheckInterval steps for speeds
+  // beyond 1e154 m/s, throws SimulationError naming the system, a particle and the integrator.
   void step(double t, double dt, const Vec3& gravity, const std::vector<RigidBody>& bodies,
             const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes);
 
@@ -42,7 +42,8 @@ class ParticleSystem {
   std::uint64_t hashState(std::uint64_t hash) const;
 
  private:
-  void substep(double t, double h, const Vec3& gravity, const std::vector<RigidBody>& bodies,
+  // False when a velocity stopped being finite (checkFinite then finds and names the particle).
+  bool substep(double t, double h, const Vec3& gravity, const std::vector<RigidBody>& bodies,
                const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes);
   // A pass of its own over the velocities, made every few steps: the same test inside the step's
   // pass cost 17 % of a step (bench/particle_bench), this one costs 24 B per particle every

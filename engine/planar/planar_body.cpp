@@ -1,11 +1,23 @@
 #include "planar/planar_body.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/LU>
 
 namespace rbsim {
+
+namespace {
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+}  // namespace
 
 PlanarBody::PlanarBody(std::string name, std::vector<Vec2> polygon, double mass, const Material& material)
     : name_(std::move(name)), polygon_(std::move(polygon)), mass_(mass), material_(material) {
@@ -24,13 +36,20 @@ PlanarBody::PlanarBody(std::string name, std::vector<Vec2> polygon, double mass,
     centroid += c * (p + q);
     second += c * (p.dot(p) + p.dot(q) + q.dot(q)) / 12.0;
   }
-  if (!(area > 0.0)) {
-    throw std::invalid_argument("planar body '" + name_ + "': expected counter-clockwise corners enclosing a positive area");
+  if (!(area > 0.0) || !std::isfinite(area)) {
+    throw std::invalid_argument("planar body '" + name_ + "': expected counter-clockwise corners enclosing a finite, positive "
+                                "area; the area is " + number(area) + " m^2 (corners so large or so close that it overflows or underflows)");
   }
   centroid /= 6.0 * area;
+  if (!centroid.allFinite()) throw std::invalid_argument("planar body '" + name_ + "': the centroid overflows (corners too far out)");
   for (Vec2& p : polygon_) p -= centroid;
   // Parallel axis theorem to the centroid, scaled from unit density to the mass.
   inertia_ = mass_ / area * (second - area * centroid.squaredNorm());
+  if (!(inertia_ > 0.0) || !std::isfinite(inertia_) || !std::isfinite(1.0 / inertia_)) {
+    throw std::invalid_argument("planar body '" + name_ + "': the inertia m J / A = " + number(inertia_) +
+                                " kg m^2 (mass " + number(mass_) + " kg, area " + number(area) +
+                                " m^2) is not a finite, positive number with a finite inverse");
+  }
 }
 
 double PlanarBody::kineticEnergy() const {

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <tuple>
+
+#include "world/simulation_error.h"
 
 namespace rbsim {
 
@@ -238,10 +242,25 @@ void PlanarWorld::step() {
     solve();
   }
   for (PlanarBody& b : bodies_) {
+    const Vec2 velocity = b.velocity();
+    const double spin = b.angularVelocity();
     b.step(dt, Vec2::Zero());
     const PlanarState& s = b.state();
-    if (!s.position.allFinite() || !std::isfinite(s.angle) || !s.linearMomentum.allFinite() || !std::isfinite(s.angularMomentum)) {
-      throw std::domain_error("planar body '" + b.name() + "' left finite values");
+    std::string lost;
+    const auto add = [&lost](bool finite, const char* what) {
+      if (!finite) lost += (lost.empty() ? "" : ", ") + std::string(what);
+    };
+    add(s.position.allFinite(), "position");
+    add(std::isfinite(s.angle), "angle");
+    add(s.linearMomentum.allFinite(), "linear momentum");
+    add(std::isfinite(s.angularMomentum), "angular momentum");
+    if (!lost.empty()) {
+      std::ostringstream message;
+      message << "planar body '" << b.name() << "': " << lost << " stopped being finite at step " << steps_
+              << " (t = " << time() << " s, dt = " << dt << " s). Before the step: |v| = " << velocity.stableNorm()
+              << " m/s, omega = " << spin << " rad/s, m = " << b.mass() << " kg, I = " << b.inertia()
+              << " kg m^2. Likely a velocity, mass or contact impulse beyond what the semi-implicit step can carry.";
+      throw SimulationError(message.str());
     }
   }
   ++steps_;

@@ -48,7 +48,7 @@ class PlanarWorld {
   std::size_t addBody(const PlanarBody& body);
   void addLine(const PlanarLine& line);  // throws unless the normal is unit
 
-  void step();  // throws std::domain_error when a state stops being finite
+  void step();  // throws SimulationError naming the body when its state stops being finite
 
   std::vector<PlanarBody>& bodies() { return bodies_; }
   const std::vector<PlanarBody>& bodies() const { return bodies_; }

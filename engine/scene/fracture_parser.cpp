@@ -1,5 +1,7 @@
 #include "scene/fracture_parser.h"
 
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -7,6 +9,19 @@
 #include "fracture/pieces.h"
 
 namespace rbsim::scene_detail {
+
+namespace {
+
+// A normalised normal is unit within rounding; cutByPlanes accepts this much.
+constexpr double kUnitTolerance = 1e-9;  // [1]
+
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;  // 6 significant digits
+  return out.str();
+}
+
+}  // namespace
 
 std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, const BodyDef& def) {
   const JsonObject f = body.object("fracture", {"threshold", "pieces", "seed", "planes"});
@@ -20,16 +35,35 @@ std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, con
   std::vector<Mesh> pieces;
   if (f.has("planes")) {
     if (f.has("pieces") || f.has("seed")) f.fail("planes", "give either \"planes\" or \"pieces\" (and \"seed\"), not both");
+    const std::vector<JsonObject> planeBlocks = f.objectArray("planes", {"normal", "point"});
+    // Every plane that cuts adds at least one piece, so more planes than pieces allowed cannot all cut.
+    if (planeBlocks.size() > static_cast<std::size_t>(kMaxFracturePieces - 1)) {
+      f.fail("planes", "expected at most " + std::to_string(kMaxFracturePieces - 1) + " planes (each plane that cuts adds a "
+                       "piece; the limit is " + std::to_string(kMaxFracturePieces) + " pieces), got " +
+                       std::to_string(planeBlocks.size()));
+    }
     std::vector<CutPlane> planes;
-    for (const JsonObject& p : f.objectArray("planes", {"normal", "point"})) {
+    for (const JsonObject& p : planeBlocks) {
       const Vec3 normal = p.vec3("normal", Vec3::UnitY());
+      // stableNorm: components near 1e308 (or 1e-320) have a length that norm() overflows (or loses).
       if (!(normal.stableNorm() > 0.0)) p.fail("normal", "expected a non-zero direction");
       CutPlane plane;
       plane.normal = normal.stableNormalized();
-      plane.offset = plane.normal.dot(p.vec3("point", Vec3::Zero()));
+      if (!plane.normal.allFinite() || std::abs(plane.normal.norm() - 1.0) > kUnitTolerance) {
+        p.fail("normal", "cannot be made a unit direction (its length is " + shortNumber(normal.stableNorm()) + ")");
+      }
+      const Vec3 point = p.vec3("point", Vec3::Zero());
+      plane.offset = plane.normal.dot(point);
+      if (!std::isfinite(plane.offset)) {
+        p.fail("point", "the plane's offset n . p overflows (" + shortNumber(plane.offset) + " m); expected a finite point");
+      }
       planes.push_back(plane);
     }
-    pieces = cutByPlanes(mesh, planes);
+    try {
+      pieces = cutByPlanes(mesh, planes, static_cast<std::size_t>(kMaxFracturePieces));
+    } catch (const std::length_error& e) {  // the pieces' budget
+      f.fail("planes", e.what());
+    }
     if (pieces.size() < 2) f.fail("planes", "the planes miss the body: expected at least 2 pieces");
   } else {
     const int count = f.positiveInt("pieces", 8);

@@ -2,11 +2,13 @@
 // JSON path in the message; checkParticleSystemDef backs it up when the World is built.
 #include "scene/particle_parser.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
 #include "io/input_error.h"
+#include "particles/emitter.h"
 #include "scene/body_parser.h"
 
 namespace rbsim::scene_detail {
@@ -16,6 +18,20 @@ namespace {
 // More than this in one system is almost certainly a typo (1e6 particles take ~100 MB).
 constexpr int kMaxParticleCapacity = 10'000'000;  // [particles]
 constexpr int kMaxSubsteps = 1000;                // [1]
+// An emitter faster than this fills the largest store (kMaxParticleCapacity) within 10 ms; the
+// count due in a step must also stay a number a size_t holds.
+constexpr double kMaxEmitterRate = 1e9;  // [particles/s]
+// Particle work per World step over all systems: particle updates (each particle once per substep
+// and once more per attractor, body and plane it is tested against) and spring evaluations. At 1
+// to 5 ns each, the limit is ~0.1 s of computing per step, about 4 minutes per simulated 10 s at
+// 240 steps/s.
+constexpr double kMaxParticleWorkPerStep = 2e7;  // [updates or spring evaluations per step]
+// Flock neighbour tests per World step over all systems: every boid against every other that can
+// be alive at once (any may come within `radius`). A test is a distance and a compare, ~1 ns: the
+// limit is ~0.4 s per step; a flock of 1e5 (1e10 tests) would take minutes per step.
+constexpr double kMaxFlockTestsPerStep = 4e8;  // [pair tests per step]
+// Birth sizes are stored as float (for the renderer).
+constexpr double kMaxFloatSize = 3.4e38;  // [m], just under FLT_MAX
 
 std::string shortNumber(double value) {
   std::ostringstream out;
@@ -64,6 +80,29 @@ Vec3 color(const JsonObject& o, const char* key, const Vec3& fallback) {
   return c;
 }
 
+// What the emitter derives from its numbers, checked here against the field it came from.
+void checkEmitterDerived(const JsonObject& e, const EmitterDef& d, const Scene& scene) {
+  if (d.rate > kMaxEmitterRate) {
+    e.fail("rate", "expected at most " + shortNumber(kMaxEmitterRate) + " particles/s, got " + shortNumber(d.rate));
+  }
+  const double reach = d.shape == EmitterShape::Disc ? d.radius : d.shape == EmitterShape::Box ? d.halfExtents.maxCoeff() : 0.0;
+  if (!std::isfinite(d.position.cwiseAbs().maxCoeff() + reach)) {
+    e.fail(d.shape == EmitterShape::Disc ? "radius" : "half_extents",
+           "the birth points (position +- the emitter's size) overflow; expected finite sums");
+  }
+  if (!std::isfinite(1.0 / d.massMin)) {
+    e.fail("mass", "1 / the lowest mass (" + shortNumber(d.massMin) + " kg) overflows; expected a mass whose inverse is finite");
+  }
+  if (d.sizeMax > kMaxFloatSize) e.fail("size", "expected sizes at most " + shortNumber(kMaxFloatSize) + " m (stored as float)");
+  if (d.shape == EmitterShape::MeshSurface) {
+    const std::vector<double> areas = cumulativeTriangleAreas(*scene.bodies[d.body].mesh);
+    const double area = areas.empty() ? 0.0 : areas.back();
+    if (!(area > 0.0) || !std::isfinite(area)) {
+      e.fail("body", "the body's surface area is " + shortNumber(area) + " m^2; expected a finite area > 0 to emit from");
+    }
+  }
+}
+
 EmitterDef parseEmitter(const JsonObject& e, const Scene& scene) {
   EmitterDef d;
   const std::string type = e.requiredString("type");
@@ -106,6 +145,7 @@ EmitterDef parseEmitter(const JsonObject& e, const Scene& scene) {
   range(e, "size", d.sizeMin, d.sizeMax, false, "m");
   d.color = color(e, "color", d.color);
   d.colorJitter = atLeast(e, "color_jitter", d.colorJitter, 0.0, "(fraction)");
+  checkEmitterDerived(e, d, scene);
   return d;
 }
 
@@ -114,7 +154,9 @@ void parseCloth(const JsonObject& c, ClothDef& cloth) {
   cloth.origin = c.vec3("origin", cloth.origin);
   cloth.edgeU = c.vec3("edge_u", cloth.edgeU);
   cloth.edgeV = c.vec3("edge_v", cloth.edgeV);
-  if (!(cloth.edgeU.cross(cloth.edgeV).norm() > 0.0)) c.fail("edge_v", "expected an edge neither zero nor parallel to \"edge_u\"");
+  if (!(cloth.edgeU.cross(cloth.edgeV).stableNorm() > 0.0)) {
+    c.fail("edge_v", "expected an edge neither zero nor parallel to \"edge_u\" (nor so short that |edge_u x edge_v| underflows to 0)");
+  }
   if (c.has("resolution")) {
     const nlohmann::json& r = c.raw("resolution");
     if (!r.is_array() || r.size() != 2 || !r[0].is_number_integer() || !r[1].is_number_integer() || r[0].get<long long>() < 2 ||
@@ -129,6 +171,22 @@ void parseCloth(const JsonObject& c, ClothDef& cloth) {
   cloth.bendStiffness = atLeast(c, "bend_stiffness", cloth.bendStiffness, 0.0, "N/m");
   cloth.damping = atLeast(c, "damping", cloth.damping, 0.0, "N s/m");
   cloth.color = color(c, "color", cloth.color);
+  const double area = cloth.edgeU.cross(cloth.edgeV).stableNorm();
+  if (!std::isfinite(area) || !(cloth.origin + cloth.edgeU + cloth.edgeV).allFinite() ||
+      !(cloth.origin.cwiseAbs() + cloth.edgeU.cwiseAbs() + cloth.edgeV.cwiseAbs()).allFinite()) {
+    c.fail("edge_u", "the cloth's corners or its area |edge_u x edge_v| (" + shortNumber(area) +
+                         " m^2) overflow; expected finite values");
+  }
+  const double nodeMass = cloth.mass / (static_cast<double>(cloth.nu) * cloth.nv);
+  if (!(nodeMass > 0.0) || !std::isfinite(1.0 / nodeMass)) {
+    c.fail("mass", "a node's mass mass / (nu nv) = " + shortNumber(nodeMass) + " kg; expected one whose inverse is finite");
+  }
+  const double stiffest = std::max(cloth.stiffness, cloth.bendStiffness);
+  if (!std::isfinite(stiffest / nodeMass) || !std::isfinite(cloth.damping / nodeMass)) {
+    c.fail(cloth.stiffness >= cloth.bendStiffness ? "stiffness" : "bend_stiffness",
+           "k / m for a node of " + shortNumber(nodeMass) + " kg (k = " + shortNumber(stiffest) + " N/m, damping " +
+               shortNumber(cloth.damping) + " N s/m) overflows; expected finite spring rates");
+  }
   if (c.has("pinned")) {
     const nlohmann::json& p = c.raw("pinned");
     const auto bad = [&] { c.fail("pinned", "expected [[i, j], ...], nodes inside the [nu, nv] grid"); };
@@ -170,6 +228,10 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
   d.substeps = p.positiveInt("substeps", d.substeps);
   if (d.substeps > kMaxSubsteps) p.fail("substeps", "expected at most " + std::to_string(kMaxSubsteps));
   d.gravityScale = p.number("gravity_scale", d.gravityScale);
+  if (!std::isfinite(d.gravityScale * scene.settings.gravity.stableNorm())) {
+    p.fail("gravity_scale", "gravity_scale x |world.gravity| = " + shortNumber(d.gravityScale) + " x " +
+                                shortNumber(scene.settings.gravity.stableNorm()) + " m/s^2 overflows; expected a finite product");
+  }
   d.dragLinear = atLeast(p, "drag_linear", d.dragLinear, 0.0, "N s/m");
   d.dragQuadratic = atLeast(p, "drag_quadratic", d.dragQuadratic, 0.0, "N s^2/m^2");
   if (p.has("wind")) {
@@ -178,12 +240,23 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
     d.wind.turbulence = atLeast(w, "turbulence", d.wind.turbulence, 0.0, "m/s");
     d.wind.scale = w.positiveNumber("scale", d.wind.scale);
     d.wind.frequency = atLeast(w, "frequency", d.wind.frequency, 0.0, "1/s");
+    if (!std::isfinite(d.wind.velocity.cwiseAbs().maxCoeff() + d.wind.turbulence)) {
+      w.fail("turbulence", "the wind's speed, velocity + turbulence, overflows; expected a finite sum");
+    }
+    if (!std::isfinite(1.0 / d.wind.scale)) {
+      w.fail("scale", "1 / scale overflows (scale " + shortNumber(d.wind.scale) + " m); expected a gust size whose inverse is finite");
+    }
   }
   for (const JsonObject& a : p.objectArray("attractors", {"position", "strength", "softening"})) {
     AttractorDef attractor;
     attractor.position = a.vec3("position", attractor.position);
     attractor.strength = a.number("strength", attractor.strength);
     attractor.softening = a.positiveNumber("softening", attractor.softening);
+    // The force's largest magnitude, at |a - x| = softening / sqrt(2), is ~0.385 strength / softening^2.
+    const double peak = std::abs(attractor.strength) / (attractor.softening * attractor.softening);
+    if (!std::isfinite(peak)) {
+      a.fail("softening", "strength / softening^2 = " + shortNumber(peak) + " N overflows; expected a finite peak force");
+    }
     d.attractors.push_back(attractor);
   }
   if (p.has("flock")) {
@@ -224,17 +297,65 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
   return d;
 }
 
+// The most particles of the system alive at once: its capacity, or fewer when its emitters cannot
+// fill it (bursts, plus rate times the lifetime or the emitting window, whichever is shorter).
+double mostAlive(const ParticleSystemDef& d) {
+  double alive = d.cloth.enabled ? static_cast<double>(d.cloth.nu) * d.cloth.nv : 0.0;
+  for (const EmitterDef& e : d.emitters) {
+    const double stream = e.rate > 0.0 ? e.rate * std::min(e.lifetimeMax, e.end - e.start) + 1.0 : 0.0;
+    alive += static_cast<double>(e.burst) + stream;
+  }
+  return std::min(static_cast<double>(d.capacity), alive);  // an immortal stream gives infinity: the capacity
+}
+
+// The work of one World step of the system: updates and spring evaluations, and flock neighbour
+// tests apart; what they are, in words.
+void workPerStep(const ParticleSystemDef& d, const Scene& scene, double& work, double& pairs, std::string& what) {
+  const double n = static_cast<double>(d.capacity), substeps = d.substeps;
+  double tests = 1.0 + static_cast<double>(d.attractors.size());
+  if (d.collision.bodies) tests += static_cast<double>(scene.bodies.size());
+  if (d.collision.planes) tests += static_cast<double>(scene.planes.size());
+  const double updates = n * tests * substeps;
+  const double springs = d.cloth.enabled ? 6.0 * d.cloth.nu * d.cloth.nv * substeps : 0.0;
+  const double alive = mostAlive(d);
+  pairs = d.flock.enabled ? alive * alive * substeps : 0.0;
+  std::ostringstream out;
+  out << "capacity " << d.capacity << " x " << d.substeps << " substeps: " << shortNumber(updates) << " particle updates";
+  if (d.cloth.enabled) out << ", " << shortNumber(springs) << " spring evaluations";
+  if (d.flock.enabled) {
+    out << ", and " << shortNumber(pairs) << " flock neighbour tests (" << shortNumber(alive)
+        << " boids alive at most, each against every other)";
+  }
+  what = out.str();
+  work = updates + springs;
+}
+
 }  // namespace
 
 void parseParticleSystems(const JsonObject& root, Scene& scene) {
   const std::vector<JsonObject> systems = root.objectArray(
       "particles", {"name", "seed", "capacity", "integrator", "substeps", "gravity_scale", "drag_linear", "drag_quadratic",
                     "wind", "attractors", "flock", "collision", "cloth", "emitters", "look"});
+  double work = 0.0, pairs = 0.0;  // per World step, over the systems so far
   for (std::size_t i = 0; i < systems.size(); ++i) {
     const JsonObject& p = systems[i];
     ParticleSystemDef def = parseSystem(p, i, scene);
     const std::string problem = checkParticleSystemDef(def, scene.bodies.size());
     if (!problem.empty()) throw InputError(scene.file, p.path(), problem);
+    std::string what;
+    double systemWork = 0.0, systemPairs = 0.0;
+    workPerStep(def, scene, systemWork, systemPairs, what);
+    work += systemWork;
+    pairs += systemPairs;
+    if (work > kMaxParticleWorkPerStep || pairs > kMaxFlockTestsPerStep) {
+      const bool flock = pairs > kMaxFlockTestsPerStep;
+      std::ostringstream problem;
+      problem << what << " per World step; with the systems before it, " << shortNumber(flock ? pairs : work)
+              << (flock ? " neighbour tests" : " updates") << " per step, and the limit is "
+              << shortNumber(flock ? kMaxFlockTestsPerStep : kMaxParticleWorkPerStep)
+              << " per step: use a smaller capacity, fewer substeps" << (flock ? " or a smaller flock" : "");
+      p.fail(flock ? "flock" : def.cloth.enabled ? "cloth" : "capacity", problem.str());
+    }
     scene.particleSystems.push_back(std::move(def));
     scene.particleLooks.push_back(p.has("look") ? parseLook(p.object("look", {"blend", "color_end", "alpha_start", "alpha_end",
                                                                               "size_end_scale"}))

@@ -2,6 +2,8 @@
 // drawn from a seeded generator so that a scene file describes a reproducible crowd.
 #include <cmath>
 #include <cstdint>
+#include <sstream>
+#include <string>
 
 #include "math/uniform_random.h"
 #include "scene/body_parser.h"
@@ -12,6 +14,15 @@ namespace {
 
 // More bodies than this in one block is almost certainly a typo for a smaller number.
 constexpr int kMaxSpawnCount = 100000;
+// Vertices of all spawned bodies together: each body keeps its world-frame vertices (24 B each)
+// and its collision shape, so this is ~0.5 GB of per-body geometry; the template's mesh is shared.
+constexpr double kMaxSpawnedVertices = 2e7;  // [vertices]
+
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;  // 6 significant digits
+  return out.str();
+}
 
 // [lo, hi] with 0 <= lo <= hi.
 std::pair<double, double> range(const JsonObject& o, const char* key, const char* unit) {
@@ -27,6 +38,7 @@ std::pair<double, double> range(const JsonObject& o, const char* key, const char
 }  // namespace
 
 void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene) {
+  double spawnedVertices = 0.0;  // over every block so far
   for (const JsonObject& s : root.objectArray("spawn", {"count", "seed", "name", "body", "region", "speed",
                                                         "angular_speed", "random_orientation"})) {
     const int count = s.positiveInt("count", 1);
@@ -36,6 +48,12 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     const JsonObject region = s.object("region", {"min", "max"});
     const Vec3 lo = region.vec3("min", Vec3::Zero()), hi = region.vec3("max", Vec3::Zero());
     if ((hi.array() < lo.array()).any()) region.fail("max", "expected every component >= min's");
+    // Positions are drawn as min + (max - min) u: the extent itself must be a finite number.
+    const Vec3 extent = hi - lo;
+    if (!extent.allFinite()) {
+      region.fail("max", "the region's extent max - min overflows (" + shortNumber(extent.maxCoeff()) +
+                             " m); expected a finite size along every axis");
+    }
     const auto [speedLo, speedHi] = range(s, "speed", "m/s");
     const auto [spinLo, spinHi] = range(s, "angular_speed", "rad/s");
     const bool randomOrientation = s.boolean("random_orientation", true);
@@ -47,6 +65,22 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     parseBody(body, baseDir, scene);
     parseScripts(body, first, scene);
     const BodyDef prototype = scene.bodies[first];
+    spawnedVertices += static_cast<double>(count) * static_cast<double>(prototype.mesh->vertices.size());
+    if (spawnedVertices > kMaxSpawnedVertices) {
+      s.fail("count", std::to_string(count) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
+                          " vertices bring the spawned bodies to " + shortNumber(spawnedVertices) +
+                          " vertices (each body keeps its own world-frame copy); the limit is " +
+                          shortNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
+    }
+    // The largest momenta a draw can give: m v and I omega must stay finite numbers.
+    if (!std::isfinite(prototype.mass * speedHi)) {
+      s.fail("speed", "the momentum m v = " + shortNumber(prototype.mass) + " kg x " + shortNumber(speedHi) +
+                          " m/s overflows; expected a finite product");
+    }
+    if (!std::isfinite(prototype.inertiaBody.stableNorm() * spinHi)) {
+      s.fail("angular_speed", "the angular momentum I omega = " + shortNumber(prototype.inertiaBody.stableNorm()) + " kg m^2 x " +
+                                  shortNumber(spinHi) + " rad/s overflows; expected a finite product");
+    }
     const std::string inertia = scene.inertiaMethods[first];
     const std::size_t springsOfPrototype = scene.springs.size();
     scene.bodies.pop_back();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/SVD>
 
@@ -56,8 +57,13 @@ LameParameters lameParameters(double youngsModulus, double poissonRatio) {
   if (!(youngsModulus > 0.0) || !std::isfinite(youngsModulus) || !(poissonRatio > -1.0) || !(poissonRatio < 0.5)) {
     throw std::invalid_argument("expected Young's modulus > 0 and Poisson's ratio in (-1, 0.5)");
   }
-  return {youngsModulus / (2.0 * (1.0 + poissonRatio)),
-          poissonRatio * youngsModulus / ((1.0 + poissonRatio) * (1.0 - 2.0 * poissonRatio))};
+  const LameParameters lame{youngsModulus / (2.0 * (1.0 + poissonRatio)),
+                            poissonRatio * youngsModulus / ((1.0 + poissonRatio) * (1.0 - 2.0 * poissonRatio))};
+  if (!std::isfinite(lame.lambda) || !std::isfinite(lame.mu) || !std::isfinite(lame.lambda + 2.0 * lame.mu)) {
+    throw std::invalid_argument("Lame's constants of E = " + std::to_string(youngsModulus) + " Pa and nu = " +
+                                std::to_string(poissonRatio) + " overflow (lambda + 2 mu must be finite)");
+  }
+  return lame;
 }
 
 Mat3 polarRotation(const Mat3& F) {

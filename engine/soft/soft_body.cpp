@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace rbsim {
 
@@ -206,12 +208,17 @@ void SoftBody::step(double dt, const Vec3& gravity, const std::vector<Plane>& pl
   }
   collidePlanes(planes, planeMaterials);
   for (std::size_t i = 0; i < x_.size(); ++i) {
-    if (!x_[i].allFinite() || !v_[i].allFinite()) {
-      throw std::domain_error("soft body '" + name_ + "' node " + std::to_string(i) + " left finite values (" +
-                              softIntegratorName(integrator_) + ", dt " + std::to_string(dt) + " s; the explicit step is stable below " +
-                              std::to_string(stableTimeStep()) + " s)");
-    }
+    if (!x_[i].allFinite() || !v_[i].allFinite()) throwNonFinite("node " + std::to_string(i) + "'s position or velocity", dt);
   }
+}
+
+void SoftBody::throwNonFinite(const std::string& what, double dt) const {
+  std::ostringstream message;
+  message << "soft body '" << name_ << "': " << what << " stopped being finite (" << softIntegratorName(integrator_)
+          << ", dt = " << dt << " s; the explicit step is stable below " << stableTimeStep() << " s, lambda = "
+          << elasticity_.lame.lambda << " Pa, mu = " << elasticity_.lame.mu
+          << " Pa). Likely a step past the stability limit, an element crushed flat, or moduli too large for the mesh.";
+  throw std::domain_error(message.str());
 }
 
 }  // namespace rbsim

@@ -53,8 +53,8 @@ class SoftBody {
   explicit SoftBody(const SoftBodyDef& def);  // throws std::invalid_argument on a bad definition
 
   // One step of dt [s] under gravity, then the nodes are kept out of the planes. Throws
-  // std::domain_error when a node's state stops being finite or an element inverts under a
-  // model that cannot (neo-Hookean).
+  // std::domain_error when a node's state or the internal forces stop being finite, or an element
+  // inverts under a model that cannot (neo-Hookean).
   void step(double dt, const Vec3& gravity, const std::vector<Plane>& planes, const std::vector<Material>& planeMaterials);
 
   // Internal forces (elastic and damping) on every node [N], for the current state.
@@ -93,6 +93,8 @@ class SoftBody {
   void stepSymplectic(double dt, const Vec3& gravity);
   void stepBackwardEuler(double dt, const Vec3& gravity);
   void collidePlanes(const std::vector<Plane>& planes, const std::vector<Material>& planeMaterials);
+  // Throws std::domain_error naming the body, `what` stopped being finite, and the likely cause.
+  [[noreturn]] void throwNonFinite(const std::string& what, double dt) const;
 
   std::string name_;
   TetMesh mesh_;

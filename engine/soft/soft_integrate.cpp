@@ -1,5 +1,7 @@
 // The two time integrators of soft bodies (engine/soft/soft_body.h).
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "soft/soft_body.h"
 
@@ -18,6 +20,9 @@ double dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
 void SoftBody::stepSymplectic(double dt, const Vec3& gravity) {
   // Semi-implicit Euler: the new velocity moves the nodes, as for rigid bodies.
   internalForces(f_);
+  for (const Vec3& f : f_) {
+    if (!f.allFinite()) throwNonFinite("the internal forces (elastic and damping)", dt);
+  }
   for (std::size_t i = 0; i < x_.size(); ++i) {
     if (pinned_[i]) continue;
     v_[i] += dt * (f_[i] / m_[i] + gravity);
@@ -56,10 +61,13 @@ void SoftBody::stepBackwardEuler(double dt, const Vec3& gravity) {
   p_ = precond;
   double rz = dot(r_, precond);
   const double rhsNorm = std::sqrt(dot(r_, r_));
+  // A NaN right-hand side would end CG at once with dv = 0: the body would hang still, silently.
+  if (!std::isfinite(rhsNorm)) throwNonFinite("the internal forces (elastic and damping)", dt);
   lastIterations_ = 0;
   for (int k = 0; k < kConjugateGradientMaxIterations && std::sqrt(dot(r_, r_)) > kConjugateGradientTolerance * rhsNorm; ++k) {
     apply(p_, q_);
     const double curvature = dot(p_, q_);
+    if (std::isnan(curvature) || std::isinf(curvature)) throwNonFinite("the implicit step's force differentials", dt);
     if (!(curvature > 0.0)) break;  // the linearised system is not positive definite here
     const double alpha = rz / curvature;
     for (std::size_t i = 0; i < n; ++i) {

@@ -3,8 +3,10 @@
 #include <memory>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "particle_test_util.h"
+#include "scene/scene.h"
 
 namespace rbsim {
 namespace {
@@ -74,6 +76,37 @@ TEST(ParticleWorld, ABadDefinitionIsRefusedNamingTheField) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("emitters[0].body"), std::string::npos) << e.what();
   }
+}
+
+// A wall that a falling block shatters (planes cut it in four), smoking from its surface: the
+// emitter kept the wall's mesh, and the pieces that take over the wall's index have other
+// triangles. Sampling them through the old area table read past their storage (SIGSEGV).
+constexpr const char* kSmokingWall = R"({
+  "world": {"dt": 0.005, "gravity": [0, -9.81, 0], "inertia": "exact"},
+  "planes": [{"normal": [0, 1, 0]}],
+  "bodies": [
+    {"name": "wall", "shape": {"type": "box", "extents": [2, 1, 0.2]}, "mass": 40, "position": [0, 0.5, 0],
+     "fracture": {"threshold": 5, "planes": [{"normal": [1, 0, 0], "point": [0, 0, 0]},
+                                             {"normal": [0, 1, 0], "point": [0, 0, 0]}]}},
+    {"name": "block", "shape": {"type": "box", "extents": [0.4, 0.4, 0.4]}, "mass": 30, "position": [0, 1.6, 0],
+     "velocity": [0, -8, 0]}],
+  "particles": [{"name": "smoke", "capacity": 4000,
+                 "emitters": [{"type": "mesh", "body": "wall", "rate": 20000, "lifetime": 0.5}]}]
+})";
+
+TEST(ParticleWorld, AMeshEmitterStopsWhenItsBodyBreaks) {
+  const Scene scene = parseScene(nlohmann::json::parse(kSmokingWall), "wall.json", ".");
+  World world = buildWorld(scene);
+  std::uint64_t emittedAtBreak = 0;
+  for (int s = 0; s < 200 && world.fractureEvents().empty(); ++s) world.step();
+  ASSERT_EQ(world.fractureEvents().size(), 1u) << "the block must break the wall";
+  emittedAtBreak = world.particleSystems()[0].emitted();
+  EXPECT_GT(emittedAtBreak, 0u) << "the intact wall smoked";
+  EXPECT_NE(world.bodies()[0].mesh().triangles.size(), scene.bodies[0].mesh->triangles.size());
+  for (int s = 0; s < 100; ++s) world.step();  // the pieces fall and tumble
+  EXPECT_EQ(world.particleSystems()[0].emitted(), emittedAtBreak)
+      << "the wall's surface is gone: its emitter emits nothing from the pieces";
+  EXPECT_EQ(world.particleSystems()[0].lost(), 0u);
 }
 
 }  // namespace
