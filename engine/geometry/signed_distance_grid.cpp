@@ -63,7 +63,7 @@ void bandRange(const Mesh& mesh, const Triangle& t, const GridShape& shape, doub
 
 std::string megabytes(double bytes) {
   std::ostringstream out;
-  out << std::setprecision(2) << bytes / 1e6 << " MB";
+  out << std::fixed << std::setprecision(0) << bytes / 1e6 << " MB";
   return out.str();
 }
 

@@ -18,8 +18,8 @@ inline constexpr int kMinSdfResolution = 4;
 inline constexpr int kMaxSdfResolution = 1024;
 // Budget of one grid, counted before anything is allocated: building holds ~kSdfBytesPerPoint per
 // point (distances, labels, marks, the flood fill's regions and stack, the marching heap).
-inline constexpr double kSdfBytesPerPoint = 40.0;      // [bytes / point], measured peak
-inline constexpr double kMaxSdfGridPoints = 1.6e7;     // [points]: ~640 MB and ~20 s to build
+inline constexpr double kSdfBytesPerPoint = 40.0;      // [bytes / point], peak ~30 measured at 9e6
+inline constexpr double kMaxSdfGridPoints = 1.6e7;     // [points]: ~640 MB and ~10 s processor time
 // Budget of marking the exact band: each triangle visits the grid points of its box grown by the
 // band; a mesh of many long triangles crossing the whole grid would visit points x triangles.
 inline constexpr double kMaxSdfBandVisits = 1e9;       // [point visits], ~1 s

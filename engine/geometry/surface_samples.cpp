@@ -36,8 +36,9 @@ std::string surfaceSampleBudgetProblem(const Mesh& mesh, double spacing) {
   }
   std::ostringstream problem;
   problem << std::setprecision(3) << "spacing " << spacing << " m on mesh '" << mesh.name << "' (area " << area
-          << " m^2) needs up to " << estimate << " surface samples (~" << estimate * sizeof(Vec3) / 1e6
-          << " MB); the limit is " << kMaxSurfaceSamples << " samples";
+          << " m^2) needs up to " << estimate << " surface samples (~" << std::fixed << std::setprecision(0)
+          << estimate * sizeof(Vec3) / 1e6 << " MB); the limit is " << std::defaultfloat << std::setprecision(3)
+          << kMaxSurfaceSamples << " samples";
   return problem.str();
 }
 

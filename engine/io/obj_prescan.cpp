@@ -60,6 +60,8 @@ struct Scan {
   std::size_t counts[3] = {0, 0, 0};          // v, vt, vn lines so far
   long long greatest[3] = {0, 0, 0};          // largest positive index of each kind
   std::size_t greatestLine[3] = {0, 0, 0};    // where it was used
+  std::size_t greatestFace[3] = {0, 0, 0};    // in which face (counting 'f' lines from 1)
+  std::size_t faces = 0;
   std::size_t triangles = 0;
 
   [[noreturn]] void fail(const std::string& problem) const {
@@ -110,6 +112,7 @@ struct Scan {
       if (index > greatest[kind]) {
         greatest[kind] = index;
         greatestLine[kind] = line;
+        greatestFace[kind] = faces;
       }
     }
   }
@@ -123,6 +126,7 @@ struct Scan {
       fail("a face of " + std::to_string(fields.size()) + " corners; faces of at most " +
            std::to_string(kMaxObjFaceCorners) + " corners are supported (the OBJ reader keeps the count in 8 bits)");
     }
+    ++faces;
     for (std::size_t k = 0; k < fields.size(); ++k) corner(fields[k], k + 1);
     triangles += fields.size() - 2;
   }
@@ -185,8 +189,9 @@ ObjCounts prescanObj(const std::string& text, const std::string& path) {
   for (int kind = 0; kind < 3; ++kind) {
     if (static_cast<std::size_t>(scan.greatest[kind]) > scan.counts[kind]) {
       throw InputError(path, "line " + std::to_string(scan.greatestLine[kind]),
-                       kNames[kind] + std::string(" index ") + std::to_string(scan.greatest[kind]) +
-                           " out of range (the file has " + std::to_string(scan.counts[kind]) + ")");
+                       "face " + std::to_string(scan.greatestFace[kind]) + ": " + kNames[kind] +
+                           " index out of range: " + std::to_string(scan.greatest[kind]) + ", but the file has " +
+                           std::to_string(scan.counts[kind]));
     }
   }
   ObjCounts counts{scan.counts[0], scan.triangles};

@@ -163,8 +163,8 @@ TEST(ParseObj, FaceIndicesMustBeIntegersInRange) {
   expectProblem(parseError(v + "f 1 2 0\n"), "line 4", {"vertex index '0'", "counts from 1"});
   expectProblem(parseError(v + "f 1 2 99999999999\n"), "line 4", {"'99999999999' is not a non-zero integer"});
   expectProblem(parseError(v + "f 1 2 -4\n"), "line 4", {"index -4 counts back past the first", "only 3"});
-  expectProblem(parseError(v + "f 1 2 9\n"), "line 4", {"vertex index 9 out of range (the file has 3)"});
-  expectProblem(parseError(v + "f 1/1 2/1 3/1\n"), "line 4", {"texture coordinate index 1 out of range (the file has 0)"});
+  expectProblem(parseError(v + "f 1 2 9\n"), "line 4", {"face 1: vertex index out of range: 9, but the file has 3"});
+  expectProblem(parseError(v + "f 1/1 2/1 3/1\n"), "line 4", {"texture coordinate index out of range: 1, but the file has 0"});
   expectProblem(parseError(v + "f 1//x 2//1 3//1\n"), "line 4", {"normal index 'x'"});
   expectProblem(parseError(v + "f 1/2/3/4 2 3\n"), "line 4", {"expected v, v/vt, v//vn or v/vt/vn"});
   expectProblem(parseError(v + "f 1 2\n"), "line 4", {"fewer than 3 vertices"});
