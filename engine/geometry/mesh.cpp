@@ -1,5 +1,7 @@
 #include "geometry/mesh.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <utility>
@@ -89,6 +91,131 @@ MeshCheck checkMesh(const Mesh& mesh) {
 
 void translateMesh(Mesh& mesh, const Vec3& offset) {
   for (Vec3& p : mesh.vertices) p -= offset;
+}
+
+}  // namespace rbsim
+
+namespace rbsim {
+
+namespace {
+
+struct FacePlane {
+  Vec3 normal;    // unit, outward
+  double offset;  // normal . p on the plane [m]
+};
+
+// Every vertex against every plane, stopping at the first outside: the definition itself, for
+// meshes the fast test does not apply to (open ones) and for vertices no triangle uses.
+bool allInside(const Mesh& mesh, const std::vector<FacePlane>& planes, const std::vector<std::uint32_t>& vertices,
+               double tolerance) {
+  if (double(planes.size()) * double(vertices.size()) > kMaxConvexityWork) return false;
+  for (const FacePlane& plane : planes) {
+    for (std::uint32_t v : vertices) {
+      if (plane.normal.dot(mesh.vertices[v]) - plane.offset > tolerance) return false;
+    }
+  }
+  return true;
+}
+
+// The solid angle [sr] triangle abc subtends at the origin (Van Oosterom and Strackee 1983), signed
+// by its winding: positive when the origin is behind the triangle.
+double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double numerator = a.dot(b.cross(c));
+  const double denominator = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+}  // namespace
+
+bool isConvexSurface(const Mesh& mesh, double tolerance) {
+  for (const Triangle& t : mesh.triangles) {
+    for (std::uint32_t v : t) {
+      if (v >= mesh.vertices.size()) return false;  // no mesh at all (checkMesh says why)
+    }
+  }
+  std::vector<FacePlane> planes;
+  planes.reserve(mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    const Vec3 n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
+    const double length = n.norm();
+    if (length > 0.0) planes.push_back({n / length, n.dot(a) / length});
+  }
+  const MeshCheck check = checkMesh(mesh);
+  std::vector<std::uint32_t> unused;
+  std::vector<std::uint32_t> degree(mesh.vertices.size() + 1, 0);
+  for (const Triangle& t : mesh.triangles) {
+    for (std::uint32_t v : t) ++degree[v];
+  }
+  for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (degree[v] == 0) unused.push_back(v);
+  }
+  if (!check.closed || !check.consistentlyOriented || check.degenerateTriangles > 0) {
+    std::vector<std::uint32_t> all(mesh.vertices.size());
+    for (std::uint32_t v = 0; v < all.size(); ++v) all[v] = v;
+    return allInside(mesh, planes, all, tolerance);
+  }
+  if (!allInside(mesh, planes, unused, tolerance)) return false;
+
+  // The centroid of the solid (about the box centre, for precision) and the winding around it.
+  const Vec3 reference = 0.5 * (mesh.boundsMin() + mesh.boundsMax());
+  double sixVolume = 0.0;
+  Vec3 weighted = Vec3::Zero();
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]] - reference, b = mesh.vertices[t[1]] - reference,
+               c = mesh.vertices[t[2]] - reference;
+    const double six = a.dot(b.cross(c));
+    sixVolume += six;
+    weighted += six * (a + b + c) / 4.0;
+  }
+  if (!(sixVolume > 0.0)) return false;
+  const Vec3 centroid = reference + weighted / sixVolume;
+  double winding = 0.0;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (!(planes[f].normal.dot(centroid) - planes[f].offset < 0.0)) return false;
+    const Triangle& t = mesh.triangles[f];
+    winding += solidAngle(mesh.vertices[t[0]] - centroid, mesh.vertices[t[1]] - centroid,
+                          mesh.vertices[t[2]] - centroid);
+  }
+  constexpr double kFullSphere = 4.0 * 3.14159265358979323846;  // [sr]
+  if (std::abs(winding - kFullSphere) > 0.5 * kFullSphere) return false;  // wound 0 or 2+ times
+
+  // Vertex graph: on a closed, consistently wound mesh each neighbour w of v follows v in exactly
+  // one triangle, so one entry per corner lists every edge once per end.
+  std::vector<std::uint32_t> first(mesh.vertices.size() + 1, 0);
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) first[v + 1] = first[v] + degree[v];
+  std::vector<std::uint32_t> neighbours(first.back());
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  for (const Triangle& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) neighbours[fill[t[k]]++] = t[(k + 1) % 3];
+  }
+  double budget = kConvexityWorkPerTriangle * double(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const FacePlane& plane = planes[f];
+    const auto height = [&](std::uint32_t v) { return plane.normal.dot(mesh.vertices[v]) - plane.offset; };
+    // Steepest ascent from each corner (their neighbours include the far corners of the three
+    // adjacent triangles); each step must rise, so it cannot cycle.
+    for (std::uint32_t at : mesh.triangles[f]) {
+      double atHeight = height(at);
+      for (bool rose = true; rose;) {
+        if (atHeight > tolerance) return false;
+        rose = false;
+        const std::uint32_t from = at;
+        for (std::uint32_t k = first[from]; k < first[from + 1]; ++k) {
+          const double h = height(neighbours[k]);
+          if (h > atHeight) {
+            at = neighbours[k];
+            atHeight = h;
+            rose = true;
+          }
+        }
+        budget -= first[from + 1] - first[from];
+        if (budget < 0.0) return false;
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace rbsim

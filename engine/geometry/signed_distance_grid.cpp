@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <ctime>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -49,20 +51,69 @@ void validate(const Mesh& mesh, const SdfGridOptions& options) {
   }
 }
 
+// The grid points of triangle t's box grown by `radius`, as index ranges [first, last] per axis.
+void bandRange(const Mesh& mesh, const Triangle& t, const GridShape& shape, double radius, Vec3i& first, Vec3i& last) {
+  Aabb box;
+  for (std::uint32_t v : t) box.grow(mesh.vertices[v]);
+  const Vec3 lo = (box.min.array() - radius - shape.origin.array()) / shape.cellSize;
+  const Vec3 hi = (box.max.array() + radius - shape.origin.array()) / shape.cellSize;
+  first = lo.array().ceil().cast<int>().max(0);
+  last = hi.array().floor().cast<int>().min((shape.dims - Vec3i::Ones()).array());
+}
+
+std::string megabytes(double bytes) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(0) << bytes / 1e6 << " MB";
+  return out.str();
+}
+
+}  // namespace
+
 // Padded bounding box (seed 000 "Constructing Signed Distance Functions"), centred on the mesh.
-GridShape layOut(const Mesh& mesh, const SdfGridOptions& options) {
+GridShape sdfGridShape(const Mesh& mesh, const SdfGridOptions& options) {
   const Vec3 lo = mesh.boundsMin(), hi = mesh.boundsMax();
   GridShape shape;
   shape.cellSize = (hi - lo).maxCoeff() / options.resolution;
   for (int axis = 0; axis < 3; ++axis) {
-    const int cells = static_cast<int>(std::ceil((hi[axis] - lo[axis]) / shape.cellSize - 1e-9));
-    shape.dims[axis] = std::max(cells, 1) + 2 * options.paddingCells + 1;
+    // In [1, resolution] before the cast, whatever the box (a flat or non-finite one gives NaN).
+    double cells = std::ceil((hi[axis] - lo[axis]) / shape.cellSize - 1e-9);
+    if (!(cells >= 1.0)) cells = 1.0;
+    cells = std::min(cells, double(options.resolution));
+    shape.dims[axis] = static_cast<int>(cells) + 2 * options.paddingCells + 1;
   }
   shape.origin = 0.5 * (lo + hi) - 0.5 * shape.cellSize * (shape.dims - Vec3i::Ones()).cast<double>();
   return shape;
 }
 
-}  // namespace
+double sdfBandVisits(const Mesh& mesh, const GridShape& shape, const SdfGridOptions& options) {
+  double visits = 0.0;
+  Vec3i first, last;
+  for (const Triangle& t : mesh.triangles) {
+    bandRange(mesh, t, shape, options.exactBandCells * shape.cellSize, first, last);
+    if ((last.array() >= first.array()).all()) visits += (last - first + Vec3i::Ones()).cast<double>().prod();
+  }
+  return visits;
+}
+
+std::string sdfBudgetProblem(const Mesh& mesh, const SdfGridOptions& options) {
+  const GridShape shape = sdfGridShape(mesh, options);
+  const double points = shape.dims.cast<double>().prod();
+  std::ostringstream problem;
+  problem << std::setprecision(3) << "resolution " << options.resolution << " lays a " << shape.dims.x() << " x "
+          << shape.dims.y() << " x " << shape.dims.z() << " grid over mesh '" << mesh.name << "' (";
+  if (points > kMaxSdfGridPoints) {
+    problem << points << " points, ~" << megabytes(points * kSdfBytesPerPoint) << " to build); the limit is "
+            << kMaxSdfGridPoints << " points (~" << megabytes(kMaxSdfGridPoints * kSdfBytesPerPoint) << ")";
+    return problem.str();
+  }
+  const double visits = sdfBandVisits(mesh, shape, options);
+  if (visits > kMaxSdfBandVisits) {
+    problem << points << " points) whose exact band needs " << visits << " point visits by its "
+            << mesh.triangles.size() << " triangles; the limit is " << kMaxSdfBandVisits << " visits";
+    return problem.str();
+  }
+  return "";
+}
 
 SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOptions& options) {
   // Processor time (the build is single-threaded): on a shared machine wall time would also count
@@ -70,9 +121,11 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
   const auto since = [](std::clock_t t) { return double(std::clock() - t) / CLOCKS_PER_SEC; };
   const std::clock_t start = std::clock();
   validate(mesh, options);
+  const std::string overBudget = sdfBudgetProblem(mesh, options);
+  if (!overBudget.empty()) throw std::invalid_argument("SignedDistanceGrid: " + overBudget);
   SignedDistanceGrid grid;
   GridShape& shape = grid.shape_;
-  shape = layOut(mesh, options);
+  shape = sdfGridShape(mesh, options);
   const double h = shape.cellSize;
   const std::size_t n = shape.pointCount();
   std::clock_t phase = std::clock();
@@ -82,13 +135,9 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
   // inside some triangle's box grown by the radius (the others cannot meet a triangle).
   const double radius = options.exactBandCells * h;
   std::vector<bool> candidate(n, false);
+  Vec3i first, last;
   for (const Triangle& t : mesh.triangles) {
-    Aabb box;
-    for (std::uint32_t v : t) box.grow(mesh.vertices[v]);
-    const Vec3 lo = (box.min.array() - radius - shape.origin.array()) / h;
-    const Vec3 hi = (box.max.array() + radius - shape.origin.array()) / h;
-    const Vec3i first = lo.array().ceil().cast<int>().max(0);
-    const Vec3i last = hi.array().floor().cast<int>().min((shape.dims - Vec3i::Ones()).array());
+    bandRange(mesh, t, shape, radius, first, last);
     for (int k = first.z(); k <= last.z(); ++k) {
       for (int j = first.y(); j <= last.y(); ++j) {
         for (int i = first.x(); i <= last.x(); ++i) candidate[shape.index(i, j, k)] = true;

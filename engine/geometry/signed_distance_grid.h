@@ -3,6 +3,7 @@
 // Functions"): signed distances phi [m] at the points of a grid laid over a padded bounding box of
 // a closed triangle mesh, trilinearly interpolated between them; phi < 0 inside, > 0 outside.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "geometry/grid_shape.h"
@@ -11,9 +12,17 @@
 
 namespace rbsim {
 
-// Bounds of the options (a grid of kMaxSdfResolution^3 points is already 8 GB of doubles).
+// Bounds of the resolution option; a grid also has to fit kMaxSdfGridPoints, which for a mesh as
+// wide as it is long allows a resolution of about 240 only (1024 fits a slender mesh: a rod).
 inline constexpr int kMinSdfResolution = 4;
 inline constexpr int kMaxSdfResolution = 1024;
+// Budget of one grid, counted before anything is allocated: building holds ~kSdfBytesPerPoint per
+// point (distances, labels, marks, the flood fill's regions and stack, the marching heap).
+inline constexpr double kSdfBytesPerPoint = 40.0;      // [bytes / point], peak ~30 measured at 9e6
+inline constexpr double kMaxSdfGridPoints = 1.6e7;     // [points]: ~640 MB and ~10 s processor time
+// Budget of marking the exact band: each triangle visits the grid points of its box grown by the
+// band; a mesh of many long triangles crossing the whole grid would visit points x triangles.
+inline constexpr double kMaxSdfBandVisits = 1e9;       // [point visits], ~1 s
 
 struct SdfGridOptions {
   int resolution = 32;     // cells along the longest side of the mesh's bounding box [1], >= 4
@@ -21,6 +30,14 @@ struct SdfGridOptions {
   int exactBandCells = 2;  // points within this many cells of the surface get exact distances
                            // [1], >= 1 (the sign pass needs every point within one cell exact)
 };
+
+// The grid build() lays over the mesh (padded bounding box, cells of longest side / resolution),
+// and the point visits of its exact band. Options must be in range (build() checks them).
+GridShape sdfGridShape(const Mesh& mesh, const SdfGridOptions& options);
+double sdfBandVisits(const Mesh& mesh, const GridShape& shape, const SdfGridOptions& options);
+// "resolution 1024 lays a 1031 x 1031 x 1031 grid over mesh 'm' (1.1e+09 points, ~44 GB); the limit
+// is 1.6e+07 points (~640 MB)", or empty when both budgets hold.
+std::string sdfBudgetProblem(const Mesh& mesh, const SdfGridOptions& options);
 
 class SignedDistanceGrid {
  public:
@@ -36,7 +53,8 @@ class SignedDistanceGrid {
   };
 
   // Throws std::invalid_argument (naming the mesh and what is wrong) for an open, inconsistently
-  // oriented, inside-out or degenerate mesh, non-finite vertices, or options out of range.
+  // oriented, inside-out or degenerate mesh, non-finite vertices, options out of range, or a grid
+  // over budget (sdfBudgetProblem).
   static SignedDistanceGrid build(const Mesh& mesh, const SdfGridOptions& options = {});
   // A grid of given values (x fastest, as GridShape::index), e.g. one read back from a file.
   // Throws std::invalid_argument when the counts disagree, an axis has fewer than 2 points, the

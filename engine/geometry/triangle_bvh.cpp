@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "collision/narrowphase/distance.h"
 
@@ -34,7 +36,33 @@ bool segmentMeetsBox(const Vec3& a, const Vec3& b, const Aabb& box) {
   return true;
 }
 
+// Whether segment pq passes through the interior of triangle abc, both ends clearly on either
+// side of its plane and the meeting point clearly inside (margin kSelfCrossingTolerance).
+bool edgePierces(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c, Vec3& point) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double n2 = n.squaredNorm();
+  if (!(n2 > 0.0)) return false;
+  const double dp = n.dot(p - a), dq = n.dot(q - a);
+  const double side = kSelfCrossingTolerance * std::sqrt(n2) * (q - p).norm();
+  if (!((dp > side && dq < -side) || (dp < -side && dq > side))) return false;
+  const Vec3 x = p + (dp / (dp - dq)) * (q - p);
+  // Barycentric coordinates of x from the sub-triangles' areas, each clearly positive.
+  const double u = n.dot((c - b).cross(x - b)) / n2, v = n.dot((a - c).cross(x - c)) / n2;
+  const double w = 1.0 - u - v;
+  if (!(u >= -kSelfCrossingTolerance && v >= -kSelfCrossingTolerance && w >= -kSelfCrossingTolerance)) return false;
+  point = x;
+  return true;
+}
+
 }  // namespace
+
+bool trianglesCross(const Vec3 (&t)[3], const Vec3 (&u)[3], Vec3& point) {
+  for (int e = 0; e < 3; ++e) {
+    if (edgePierces(t[e], t[(e + 1) % 3], u[0], u[1], u[2], point)) return true;
+    if (edgePierces(u[e], u[(e + 1) % 3], t[0], t[1], t[2], point)) return true;
+  }
+  return false;
+}
 
 bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
                             const Vec3& c, double& t) {
@@ -195,6 +223,67 @@ SegmentCrossings TriangleBvh::crossings(const Vec3& a, const Vec3& b) const {
         tLast = s;
         out.lastTriangle = t;
       }
+    }
+  }
+  return out;
+}
+
+void TriangleBvh::crossLeaves(const Node& a, const Node& b, bool same, double maxPairTests,
+                              SelfCrossing& out) const {
+  for (std::uint32_t i = a.first; i < a.first + a.count && !out.found && !out.exhausted; ++i) {
+    const std::uint32_t ti = order_[i];
+    const Triangle& x = triangles_[ti];
+    const Vec3 tx[3] = {vertices_[x[0]], vertices_[x[1]], vertices_[x[2]]};
+    for (std::uint32_t j = same ? i + 1 : b.first; j < b.first + b.count; ++j) {
+      const std::uint32_t tj = order_[j];
+      const Triangle& y = triangles_[tj];
+      int shared = 0;
+      for (std::uint32_t v : x) shared += (v == y[0]) + (v == y[1]) + (v == y[2]);
+      if (shared >= 2) continue;  // neighbours across an edge
+      if (++out.pairTests > maxPairTests) {
+        out.exhausted = true;
+        return;
+      }
+      const Vec3 ty[3] = {vertices_[y[0]], vertices_[y[1]], vertices_[y[2]]};
+      if (trianglesCross(tx, ty, out.point)) {
+        out.found = true;
+        out.first = std::min(ti, tj);
+        out.second = std::max(ti, tj);
+        return;
+      }
+    }
+  }
+}
+
+SelfCrossing TriangleBvh::selfCrossing(double maxPairTests) const {
+  // Simultaneous descent of the tree against itself: a node with itself splits into its children
+  // with themselves and with each other; two nodes whose boxes overlap split the larger one.
+  SelfCrossing out;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
+  while (!stack.empty() && !out.found && !out.exhausted) {
+    const auto [ia, ib] = stack.back();
+    stack.pop_back();
+    const Node& a = nodes_[ia];
+    const Node& b = nodes_[ib];
+    if (ia == ib) {
+      if (a.count > 0) {
+        crossLeaves(a, a, true, maxPairTests, out);
+      } else {
+        stack.push_back({a.first, a.first + 1});
+        stack.push_back({a.first + 1, a.first + 1});
+        stack.push_back({a.first, a.first});
+      }
+      continue;
+    }
+    if (!a.box.overlaps(b.box)) continue;
+    if (a.count > 0 && b.count > 0) {
+      crossLeaves(a, b, false, maxPairTests, out);
+    } else if (b.count > 0 || (a.count == 0 && a.box.extents().squaredNorm() >= b.box.extents().squaredNorm())) {
+      stack.push_back({a.first + 1, ib});
+      stack.push_back({a.first, ib});
+    } else {
+      stack.push_back({ia, b.first + 1});
+      stack.push_back({ia, b.first});
     }
   }
   return out;

@@ -42,6 +42,25 @@ struct SegmentCrossings {
 bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
                             const Vec3& c, double& t);
 
+// Margin of the self-crossing test [1], relative to the triangles' sizes: an edge must pass
+// through the other triangle's plane and interior by more than this, so surfaces that only touch
+// (a vertex on a face, to rounding) are not taken for crossing.
+inline constexpr double kSelfCrossingTolerance = 1e-9;
+
+// Two triangles of a mesh that share no edge and pierce each other.
+struct SelfCrossing {
+  bool found = false;
+  bool exhausted = false;      // the pair budget ran out first: nothing is known
+  std::uint32_t first = 0;     // index into Mesh::triangles
+  std::uint32_t second = 0;
+  Vec3 point = Vec3::Zero();   // where an edge of one passes through the other [m]
+  double pairTests = 0.0;      // triangle pairs tested [1]
+};
+
+// Whether an edge of either triangle passes through the other's interior (beyond the margin).
+// Triangles sharing an edge never cross; sharing one corner they can (a fold through it).
+bool trianglesCross(const Vec3 (&t)[3], const Vec3 (&u)[3], Vec3& point);
+
 class TriangleBvh {
  public:
   // Copies the mesh's vertices and triangles. Indices must be valid (checkMesh); the mesh needs
@@ -53,6 +72,9 @@ class TriangleBvh {
   // The closest surface point of the whole mesh.
   SurfacePoint nearest(const Vec3& p) const;
   SegmentCrossings crossings(const Vec3& a, const Vec3& b) const;
+  // The first pair of triangles (by a deterministic traversal) that cross each other and share no
+  // edge, testing only pairs whose boxes overlap and at most `maxPairTests` of them.
+  SelfCrossing selfCrossing(double maxPairTests) const;
 
   std::size_t triangleCount() const { return triangles_.size(); }
   std::size_t nodeCount() const { return nodes_.size(); }
@@ -68,6 +90,8 @@ class TriangleBvh {
                  const std::vector<Vec3>& centroids);
   // Closest point with distance^2 below best2, updating best and best2.
   void closest(const Vec3& p, double& best2, SurfacePoint& best) const;
+  // Tests every pair of leaf a's and leaf b's triangles (a == b: each pair once).
+  void crossLeaves(const Node& a, const Node& b, bool same, double maxPairTests, SelfCrossing& out) const;
 
   std::vector<Vec3> vertices_;
   std::vector<Triangle> triangles_;

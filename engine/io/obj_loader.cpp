@@ -1,14 +1,14 @@
 #include "io/obj_loader.h"
 
+#include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <tiny_obj_loader.h>
 
 #include "geometry/polygon_triangulation.h"
 #include "io/input_error.h"
+#include "io/obj_prescan.h"
+#include "io/read_file.h"
 
 namespace rbsim {
 
@@ -22,18 +22,11 @@ std::string faceField(const tinyobj::shape_t& shape, std::size_t face) {
 }  // namespace
 
 Mesh loadObj(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError(path, "mesh", "is a folder; expected an OBJ file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "mesh", "cannot open the file (missing or unreadable)");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseObj(text.str(), path);
+  return parseObj(readTextFile(path, kMaxObjFileBytes, "mesh", "an OBJ file"), path);
 }
 
 Mesh parseObj(const std::string& text, const std::string& path) {
+  const ObjCounts counts = prescanObj(text, path);
   tinyobj::ObjReaderConfig config;
   // Polygons are triangulated below: tinyobjloader's own triangulation of faces with five or more
   // corners reads coordinates through indices it has not checked.
@@ -55,6 +48,7 @@ Mesh parseObj(const std::string& text, const std::string& path) {
   mesh.name = path;
   const std::size_t vertexCount = attrib.vertices.size() / 3;
   mesh.vertices.reserve(vertexCount);
+  mesh.triangles.reserve(counts.triangles);
   for (std::size_t i = 0; i < vertexCount; ++i) {
     const Vec3 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
     if (!p.allFinite()) {
@@ -67,9 +61,9 @@ Mesh parseObj(const std::string& text, const std::string& path) {
     std::size_t next = 0;  // first index of the current face in shape.mesh.indices
     for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
       const std::size_t count = shape.mesh.num_face_vertices[f];
-      if (count > kMaxPolygonCorners) {
-        throw InputError(path, faceField(shape, f), "has " + std::to_string(count) +
-                         " corners; faces of at most " + std::to_string(kMaxPolygonCorners) + " are supported");
+      if (count < 3 || count > std::min(kMaxObjFaceCorners, kMaxPolygonCorners)) {  // prescanObj refused these
+        throw InputError(path, faceField(shape, f), "has " + std::to_string(count) + " corners; expected 3 to " +
+                         std::to_string(std::min(kMaxObjFaceCorners, kMaxPolygonCorners)));
       }
       corners.clear();
       for (std::size_t k = 0; k < count; ++k) {

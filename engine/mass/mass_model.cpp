@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "geometry/triangle_bvh.h"
 #include "io/input_error.h"
 
 namespace rbsim {
@@ -16,6 +17,10 @@ namespace {
 constexpr double kMinVolumeFraction = 1e-12;
 // Relative rounding allowed in I_max <= I_mid + I_min (exact for a flat plate).
 constexpr double kTriangleInequalitySlack = 1e-9;
+// Budget of the self-crossing check, in triangle pairs whose boxes overlap: a valid closed mesh
+// needs ~50 per triangle (measured on spheres and tori), so this covers the largest mesh the loader
+// accepts (kMaxMeshTriangles); only a mesh folded over itself many times needs more.
+constexpr double kSelfCrossingPairTestsPerTriangle = 256.0;  // [pairs / triangle]
 
 void requirePositiveFinite(double value, const char* field, const char* unit) {
   if (!std::isfinite(value) || value <= 0.0) {
@@ -58,6 +63,27 @@ void requirePhysical(const MassProperties& props, const Mesh& mesh) {
   }
 }
 
+// Where a closed surface passes through itself the divergence theorem counts the overlap twice
+// (or cancels it): the volume, the centre of mass and the inertia are then no solid's.
+void requireNoSelfCrossing(const Mesh& mesh) {
+  const double budget = kSelfCrossingPairTestsPerTriangle * double(mesh.triangles.size());
+  const SelfCrossing crossing = TriangleBvh(mesh).selfCrossing(budget);
+  std::ostringstream problem;
+  if (crossing.found) {
+    const Vec3& p = crossing.point;
+    problem << "mesh '" << mesh.name << "': the surface crosses itself (triangles " << crossing.first << " and "
+            << crossing.second << " meet near (" << p.x() << ", " << p.y() << ", " << p.z()
+            << ") m): its volume is not defined";
+  } else if (crossing.exhausted) {
+    problem << "mesh '" << mesh.name << "': checking that the surface does not cross itself needs more than "
+            << budget << " triangle pair tests (the boxes of its " << mesh.triangles.size()
+            << " triangles overlap heavily); the limit is " << kSelfCrossingPairTestsPerTriangle << " per triangle";
+  } else {
+    return;
+  }
+  throw InputError("", "shape", problem.str());
+}
+
 // Exact integrals are only meaningful for a closed surface wound outward; say which test fails.
 MassProperties exactProperties(const Mesh& mesh, double density) {
   const MeshCheck check = checkMesh(mesh);
@@ -66,6 +92,7 @@ MassProperties exactProperties(const Mesh& mesh, double density) {
                      "surface (" + check.problem + "); exact inertia needs one — use \"inertia\": "
                      "\"cube\" and a \"mass\" to approximate it");
   }
+  requireNoSelfCrossing(mesh);
   const MassProperties props = polyhedralMassProperties(mesh, density);
   requireFinite(props, mesh);
   if (props.volume < 0.0) {

@@ -81,6 +81,14 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
   if (type == "mesh") {
     shape.allowOnly({"type", "file", "scale"}, "a \"mesh\" shape");
     const std::string file = shape.requiredString("file");
+    // The name is handed to the C library, which would stop at a NUL ("a.obj\u0000x" opens a.obj)
+    // and takes other control bytes literally: neither belongs in a file name written in JSON.
+    for (const char c : file) {
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+        shape.fail("file", "contains a control character (byte " + std::to_string(static_cast<int>(c)) +
+                               "); expected a plain file name");
+      }
+    }
     const std::filesystem::path full = std::filesystem::path(baseDir) / file;
     Mesh mesh;
     try {
@@ -104,7 +112,7 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def) {
     // An open mesh (accepted with the cube inertia) has no inside to grid: it stays convex.
     const MeshCheck check = checkMesh(mesh);
     const bool solid = check.closed && check.consistentlyOriented && check.degenerateTriangles == 0;
-    if (!solid || isConvex(mesh, kConvexTolerance * (mesh.boundsMax() - mesh.boundsMin()).norm())) return;
+    if (!solid || isConvexSurface(mesh, kConvexTolerance * (mesh.boundsMax() - mesh.boundsMin()).norm())) return;
   }
   const JsonObject o = b.has("sdf") ? b.object("sdf", {"resolution", "sample_spacing"}) : b;
   SdfGridOptions options;
@@ -113,6 +121,16 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def) {
     o.fail("resolution", "expected " + std::to_string(kMinSdfResolution) + " to " + std::to_string(kMaxSdfResolution) +
                              " cells along the longest side");
   }
+  // Budgets first, against the fields that set them (build() and surfaceSamples() check again);
+  // a grid the scene did not ask for is the shape's.
+  const auto overBudget = [&](const char* key, const std::string& problem) {
+    if (b.has("sdf") && o.has(key)) o.fail(key, problem);
+    b.fail("shape", "its signed distance grid: " + problem);
+  };
+  const std::string gridTooBig = sdfBudgetProblem(mesh, options);
+  if (!gridTooBig.empty()) overBudget("resolution", gridTooBig + "; use a lower resolution");
+  const double spacingGiven = b.has("sdf") && o.has("sample_spacing") ? o.number("sample_spacing", 0.0) : 0.0;
+  if (spacingGiven < 0.0) o.fail("sample_spacing", "expected a spacing >= 0 m (0: the vertices only)");
   try {
     def.sdf = std::make_shared<const SignedDistanceGrid>(SignedDistanceGrid::build(mesh, options));
   } catch (const std::invalid_argument& e) {
@@ -120,8 +138,11 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def) {
   }
   // By default the samples are as dense as the grid: finer would test points the grid cannot
   // tell apart, coarser would let an edge sink between samples.
-  const double spacing = b.has("sdf") && o.has("sample_spacing") ? o.number("sample_spacing", 0.0) : def.sdf->cellSize();
-  if (spacing < 0.0) o.fail("sample_spacing", "expected a spacing >= 0 m (0: the vertices only)");
+  const double spacing = b.has("sdf") && o.has("sample_spacing") ? spacingGiven : def.sdf->cellSize();
+  const std::string samplesTooMany = surfaceSampleBudgetProblem(mesh, spacing);
+  if (!samplesTooMany.empty()) {
+    overBudget(o.has("sample_spacing") ? "sample_spacing" : "resolution", samplesTooMany + "; use a larger sample_spacing");
+  }
   def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(surfaceSamples(mesh, spacing));
 }
 

@@ -1,9 +1,12 @@
-// Fuzz target: the OBJ loader on arbitrary text, then both inertia methods on the mesh it gives
-// and a few steps of the body dropped on a plane. Only InputError (and, once running,
+// Fuzz target: the OBJ loader on arbitrary text (its line pre-scan, then tinyobjloader), the
+// convexity test and the grid and sample budgets, then both inertia methods (with the
+// self-crossing check) on the mesh it gives and a few steps of the body dropped on a plane. Only InputError (and, once running,
 // SimulationError) may come out; anything else, a crash or a sanitizer report is a bug.
 #include <cstdint>
 #include <string>
 
+#include "geometry/signed_distance_grid.h"
+#include "geometry/surface_samples.h"
 #include "io/input_error.h"
 #include "io/obj_loader.h"
 #include "mass/mass_model.h"
@@ -40,6 +43,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     mesh = rbsim::parseObj(text, "fuzz.obj");
   } catch (const rbsim::InputError&) {
     return 0;
+  }
+  // The scene loader's next steps for a closed mesh: the convexity test, the grid's and the
+  // samples' budgets (a tiny spacing from a tiny mesh is fine; these only count).
+  if (mesh.vertices.size() > 0) {
+    const rbsim::Vec3 box = mesh.boundsMax() - mesh.boundsMin();
+    rbsim::isConvexSurface(mesh, 1e-6 * box.norm());
+    if (box.allFinite() && box.maxCoeff() > 0.0) {
+      rbsim::sdfBudgetProblem(mesh, {rbsim::kMaxSdfResolution, 3, 2});
+      rbsim::surfaceSampleBudgetProblem(mesh, box.maxCoeff() / rbsim::kMaxSdfResolution);
+    }
   }
   for (const rbsim::InertiaMethod method : {rbsim::InertiaMethod::Exact, rbsim::InertiaMethod::Cube}) {
     try {

@@ -13,6 +13,7 @@
 
 #include "geometry/implicit_surface.h"
 #include "geometry/shapes.h"
+#include "geometry/surface_samples.h"
 
 namespace rbsim {
 namespace {
@@ -234,6 +235,35 @@ TEST(SignedDistanceGrid, BadMeshesAndOptionsThrow) {
   expectBuildThrows(makeBox(Vec3::Ones()), {3, 3, 2}, "resolution");
   expectBuildThrows(makeBox(Vec3::Ones()), {16, 0, 2}, "paddingCells");
   expectBuildThrows(makeBox(Vec3::Ones()), {16, 3, 0}, "exactBandCells");
+}
+
+
+TEST(SignedDistanceGrid, GridsOverBudgetAreRefusedBeforeAllocating) {
+  const Mesh cube = makeBox(Vec3::Ones());
+  EXPECT_EQ(sdfBudgetProblem(cube, {32, 3, 2}), "");
+  const std::string problem = sdfBudgetProblem(cube, {1024, 3, 2});
+  EXPECT_NE(problem.find("resolution 1024 lays a 1031 x 1031 x 1031 grid over mesh 'box' (1.1e+09 points"),
+            std::string::npos) << problem;
+  EXPECT_NE(problem.find("the limit is 1.6e+07 points"), std::string::npos) << problem;
+  expectBuildThrows(cube, {1024, 3, 2}, "the limit is 1.6e+07 points");
+  // The documented maximum resolution fits a slender mesh.
+  EXPECT_EQ(sdfBudgetProblem(makeBox(Vec3(1.0, 0.01, 0.01)), {1024, 3, 2}), "");
+  // The largest a cube-like mesh gets is about 240.
+  EXPECT_EQ(sdfBudgetProblem(cube, {240, 3, 2}), "");
+  EXPECT_NE(sdfBudgetProblem(cube, {260, 3, 2}), "");
+}
+
+TEST(SurfaceSamples, TooManySamplesAreRefusedBeforeAnyIsMade) {
+  const Mesh cube = makeBox(Vec3::Ones());
+  EXPECT_EQ(surfaceSampleBudgetProblem(cube, 0.01), "");
+  EXPECT_NEAR(surfaceSampleEstimate(cube, 0.01), double(surfaceSamples(cube, 0.01).size()), 0.05 * 1.2e5)
+      << "an upper bound: edges are counted once per triangle";
+  const std::string problem = surfaceSampleBudgetProblem(cube, 1e-4);
+  EXPECT_NE(problem.find("spacing 0.0001 m on mesh 'box' (area 6 m^2) needs up to 1.2e+09 surface samples"), std::string::npos) << problem;
+  EXPECT_NE(problem.find("the limit is 4e+06 samples"), std::string::npos) << problem;
+  EXPECT_THROW(surfaceSamples(cube, 1e-300), std::invalid_argument);
+  // A tiny spacing on a tiny mesh is a small count: fine.
+  EXPECT_EQ(surfaceSampleBudgetProblem(makeBox(Vec3::Constant(1e-6)), 1e-8), "");
 }
 
 }  // namespace

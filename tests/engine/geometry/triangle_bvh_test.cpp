@@ -128,5 +128,35 @@ TEST(SegmentCrossesTriangle, CountsEdgesAndVerticesAndRejectsParallelAndShortSeg
   EXPECT_FALSE(segmentCrossesTriangle(Vec3(-1, 0.2, 0), Vec3(1, 0.2, 0), a, b, c, t)) << "in plane";
 }
 
+
+TEST(SelfCrossing, FindsTwoInterpenetratingBoxesAndNothingInAValidMesh) {
+  EXPECT_FALSE(TriangleBvh(makeTorus(1.0, 0.3, 48, 24)).selfCrossing(1e7).found);
+  EXPECT_FALSE(TriangleBvh(makeBox(Vec3::Ones())).selfCrossing(1e7).found);
+  Mesh two = makeBox(Vec3::Ones());
+  const auto shift = static_cast<std::uint32_t>(two.vertices.size());
+  for (const Vec3& p : makeBox(Vec3::Ones()).vertices) two.vertices.push_back(p + Vec3(0.5, 0.25, 0.125));
+  for (Triangle t : makeBox(Vec3::Ones()).triangles) two.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  const SelfCrossing crossing = TriangleBvh(two).selfCrossing(1e7);
+  ASSERT_TRUE(crossing.found);
+  EXPECT_LT(crossing.first, 12u);
+  EXPECT_GE(crossing.second, 12u);
+  EXPECT_TRUE((crossing.point.array() >= -0.5 - 1e-12).all() && (crossing.point.array() <= 0.5 + 1e-12).all());
+  const SelfCrossing tooFew = TriangleBvh(two).selfCrossing(1.0);
+  EXPECT_TRUE(tooFew.exhausted);
+  EXPECT_FALSE(tooFew.found);
+}
+
+TEST(SelfCrossing, TouchingIsNotCrossingButAFoldThroughASharedCornerIs) {
+  const Vec3 t[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  Vec3 point;
+  const Vec3 touching[3] = {{0.2, 0.2, 0}, {0.2, 0.2, 1}, {1, 1, 1}};  // a corner on t
+  EXPECT_FALSE(trianglesCross(t, touching, point));
+  const Vec3 piercing[3] = {{0.2, 0.2, -1}, {0.2, 0.2, 1}, {1, 1, 1}};
+  ASSERT_TRUE(trianglesCross(t, piercing, point));
+  EXPECT_TRUE(point.isApprox(Vec3(0.2, 0.2, 0)));
+  const Vec3 fold[3] = {{0, 0, 0}, {0.5, 0.1, 1}, {0.1, 0.5, -1}};  // shares corner 0, cuts through t
+  EXPECT_TRUE(trianglesCross(t, fold, point));
+}
+
 }  // namespace
 }  // namespace rbsim

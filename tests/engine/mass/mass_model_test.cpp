@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -121,6 +122,25 @@ TEST(BuildMassModel, FlatMeshIsRejected) {
   const InputError e = modelError(flat, 1.0, std::nullopt, InertiaMethod::Cube);
   EXPECT_EQ(e.field(), "shape");
   EXPECT_NE(e.problem().find("flat"), std::string::npos) << e.what();
+}
+
+
+TEST(BuildMassModel, ASurfaceCrossingItselfHasNoVolume) {
+  Mesh two = makeBox(Vec3::Ones());
+  two.name = "two.obj";
+  const auto shift = static_cast<std::uint32_t>(two.vertices.size());
+  for (const Vec3& p : makeBox(Vec3::Ones()).vertices) two.vertices.push_back(p + Vec3(0.5, 0.5, 0.5));
+  for (Triangle t : makeBox(Vec3::Ones()).triangles) two.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  for (const auto& [mass, density, method] :
+       {std::tuple<std::optional<double>, std::optional<double>, InertiaMethod>{1.0, std::nullopt, InertiaMethod::Exact},
+        {std::nullopt, 1.0, InertiaMethod::Cube}}) {
+    const InputError e = modelError(two, mass, density, method);
+    EXPECT_EQ(e.field(), "shape");
+    EXPECT_NE(e.problem().find("mesh 'two.obj': the surface crosses itself (triangles "), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find("its volume is not defined"), std::string::npos) << e.what();
+  }
+  // The cube approximation with a mass needs no volume: it still works.
+  EXPECT_DOUBLE_EQ(buildMassModel(two, 2.0, std::nullopt, InertiaMethod::Cube).mass, 2.0);
 }
 
 }  // namespace
