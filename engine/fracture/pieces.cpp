@@ -43,15 +43,6 @@ unsigned long long maxPiecesOf(std::size_t planes) {
 
 }  // namespace
 
-bool isConvex(const Mesh& mesh, double tolerance) {
-  for (const FacePlane& plane : facePlanes(mesh)) {
-    for (const Vec3& p : mesh.vertices) {
-      if (plane.normal.dot(p) - plane.offset > tolerance) return false;
-    }
-  }
-  return true;
-}
-
 std::vector<Mesh> cutByPlanes(const Mesh& convex, const std::vector<CutPlane>& planes, std::size_t maxPieces) {
   const double tolerance = clipTolerance(convex);
   std::vector<Mesh> pieces{convex};

@@ -32,7 +32,4 @@ std::vector<Mesh> voronoiPieces(const Mesh& convex, const std::vector<Vec3>& sit
 // its face planes), reproducible from the seed. Throws std::invalid_argument for count < 2.
 std::vector<Vec3> sitesInside(const Mesh& convex, int count, std::uint64_t seed);
 
-// A mesh is convex when no vertex lies outside any face plane by more than `tolerance` [m].
-bool isConvex(const Mesh& mesh, double tolerance);
-
 }  // namespace rbsim

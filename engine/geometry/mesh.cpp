@@ -117,6 +117,12 @@ bool allInside(const Mesh& mesh, const std::vector<FacePlane>& planes, const std
   return true;
 }
 
+std::vector<std::uint32_t> everyVertex(const Mesh& mesh) {
+  std::vector<std::uint32_t> all(mesh.vertices.size());
+  for (std::uint32_t v = 0; v < all.size(); ++v) all[v] = v;
+  return all;
+}
+
 // The solid angle [sr] triangle abc subtends at the origin (Van Oosterom and Strackee 1983), signed
 // by its winding: positive when the origin is behind the triangle.
 double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -152,9 +158,7 @@ bool isConvexSurface(const Mesh& mesh, double tolerance) {
     if (degree[v] == 0) unused.push_back(v);
   }
   if (!check.closed || !check.consistentlyOriented || check.degenerateTriangles > 0) {
-    std::vector<std::uint32_t> all(mesh.vertices.size());
-    for (std::uint32_t v = 0; v < all.size(); ++v) all[v] = v;
-    return allInside(mesh, planes, all, tolerance);
+    return allInside(mesh, planes, everyVertex(mesh), tolerance);
   }
   if (!allInside(mesh, planes, unused, tolerance)) return false;
 
@@ -211,7 +215,9 @@ bool isConvexSurface(const Mesh& mesh, double tolerance) {
           }
         }
         budget -= first[from + 1] - first[from];
-        if (budget < 0.0) return false;
+        // Out of walking budget (fans of many coplanar triangles, as clipping leaves): no witness
+        // either way, so the plain test decides, itself bounded by kMaxConvexityWork.
+        if (budget < 0.0) return allInside(mesh, planes, everyVertex(mesh), tolerance);
       }
     }
   }

@@ -49,9 +49,9 @@ MeshCheck checkMesh(const Mesh& mesh);
 // face a walk over the vertex graph climbing the face's plane distance (a convex mesh's faces are
 // already at the top) must not rise above the tolerance, which also catches dents too gentle for
 // any single edge to show. Vertices no triangle uses, and every vertex of any other mesh, are
-// tested against every plane. Answers false (not convex) when the walks exceed
-// kConvexityWorkPerTriangle or the plane tests kMaxConvexityWork: that only costs a convex body a
-// signed distance grid.
+// tested against every plane, as is every vertex when the walks exceed kConvexityWorkPerTriangle.
+// Answers false (not convex) when that plain test would exceed kMaxConvexityWork: that only costs
+// a convex body a signed distance grid.
 bool isConvexSurface(const Mesh& mesh, double tolerance);
 // Plane distance evaluations isConvexSurface may spend: per triangle on the walks (a convex mesh
 // needs ~3 x 6, its corners' neighbours), and in all on the brute-force test of the rest.

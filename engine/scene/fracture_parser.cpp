@@ -7,6 +7,7 @@
 
 #include "fracture/convex_clip.h"
 #include "fracture/pieces.h"
+#include "geometry/mesh.h"
 
 namespace rbsim::scene_detail {
 
@@ -29,7 +30,7 @@ std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, con
   auto pattern = std::make_shared<FracturePattern>();
   pattern->impulseThreshold = f.positiveNumber("threshold", 1.0);
   const Mesh& mesh = *def.mesh;
-  if (!isConvex(mesh, clipTolerance(mesh) * 1e3)) {
+  if (!isConvexSurface(mesh, clipTolerance(mesh) * 1e3)) {
     body.fail("fracture", "only a convex body can be cut into pieces; \"" + mesh.name + "\" is not convex");
   }
   std::vector<Mesh> pieces;

@@ -118,11 +118,12 @@ int JsonObject::positiveInt(const char* key, int fallback) const {
   if (!has(key)) return fallback;
   const nlohmann::json& v = value_.at(key);
   if (!v.is_number_integer()) fail(key, std::string("expected an integer, got ") + typeName(v));
-  // An unsigned JSON integer above 2^63 - 1 would read as a negative long long: compare it as
-  // the unsigned number it is.
-  const bool tooLarge = v.is_number_unsigned() ? v.get<std::uint64_t>() > kMaxCount : v.get<long long>() > kMaxCount;
-  if (tooLarge || (!v.is_number_unsigned() && v.get<long long>() <= 0)) {
-    fail(key, "expected a positive integer up to " + std::to_string(kMaxCount) + ", got " + v.dump());
+  // nlohmann-json keeps every integer >= 0 as unsigned, and one above 2^63 - 1 would read as a
+  // negative long long: compare each as the number it is.
+  const bool positive = v.is_number_unsigned() ? v.get<std::uint64_t>() > 0 : v.get<long long>() > 0;
+  const bool tooLarge = v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(kMaxCount);
+  if (!positive || tooLarge) {
+    fail(key, "expected a positive integer, got " + v.dump() + (tooLarge ? " (the limit is " + std::to_string(kMaxCount) + ")" : ""));
   }
   return static_cast<int>(v.get<long long>());
 }

@@ -8,6 +8,7 @@
 
 #include "io/input_error.h"
 #include "io/obj_loader.h"
+#include "io/read_file.h"
 #include "mass/mass_model.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
@@ -24,7 +25,7 @@ namespace {
 // Beyond this a video shows nothing a person can see, and it is most likely a typo.
 constexpr int kMaxFramesPerSecond = 240;  // [1/s]
 // A scene is a page of JSON: 64 MiB holds hundreds of thousands of bodies' keys. Checked before
-// reading, so /dev/zero or a file of gigabytes ends in a message, not in std::bad_alloc.
+// reading (io/read_file.h), so /dev/zero or a file of gigabytes ends in a message, not in bad_alloc.
 constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{64} << 20;  // [bytes]
 // A run's work is bounded as well as its step count: a 1000-box pile costs about 10 us per body
 // and step with soft step (REPORT.md section 5, 9.6 ms a step), so 1e10 body-steps is about a
@@ -205,32 +206,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
 }
 
 std::string readSceneFile(const std::string& path) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (status.type() == std::filesystem::file_type::not_found) {
-    throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
-  }
-  if (std::filesystem::is_directory(status)) throw InputError(path, "", "is a folder; expected a scene file (JSON)");
-  // A device or a pipe (/dev/zero, /dev/stdin) has no size to check and may never end.
-  if (!std::filesystem::is_regular_file(status)) {
-    throw InputError(path, "", "is not a regular file (a device, pipe or socket); expected a scene file (JSON)");
-  }
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxSceneBytes) {
-    throw InputError(path, "", "is " + std::to_string(size) + " bytes; a scene file may be at most " +
-                                   std::to_string(kMaxSceneBytes) + " bytes (64 MiB)");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open the scene file (missing or unreadable)");
-  // Read one byte past the size: a file that grows while being read is caught as well.
-  std::string text(static_cast<std::size_t>(ec ? kMaxSceneBytes : size) + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (in.bad()) throw InputError(path, "", "cannot read the scene file (I/O error)");
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > (ec ? kMaxSceneBytes : size)) {
-    throw InputError(path, "", "changed size while being read; expected a scene file that stays as it is");
-  }
-  return text;
+  return readTextFile(path, kMaxSceneBytes, "", "a scene file (JSON)");
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "fracture/pieces.h"
+#include "geometry/mesh.h"
 #include "mass/mass_properties.h"
 #include "math/uniform_random.h"
 
@@ -20,7 +21,7 @@ void expectSolid(const Mesh& piece) {
   EXPECT_TRUE(check.consistentlyOriented) << check.problem;
   EXPECT_EQ(check.degenerateTriangles, 0u);
   EXPECT_GT(polyhedralMassProperties(piece, 1.0).volume, 0.0);
-  EXPECT_TRUE(isConvex(piece, 1e-9));  // [m]: face normals of small triangles carry rounding
+  EXPECT_TRUE(isConvexSurface(piece, 1e-9));  // [m]: face normals of small triangles carry rounding
 }
 
 // Volumes, first moments and inertias about the whole body's centre of mass sum to the body's.

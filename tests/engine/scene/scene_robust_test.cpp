@@ -16,8 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-json parseText(const std::string& text) { return json::parse(text); }
-
 // The InputError of parsing `doc`, or a failure when it parses.
 InputError parseError(const json& doc) {
   try {

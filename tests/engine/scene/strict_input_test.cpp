@@ -188,7 +188,7 @@ TEST(StrictFiles, SceneLargerThanTheLimitIsRefusedBeforeReading) {
     ADD_FAILURE() << "a 4 GiB scene was read";
   } catch (const InputError& e) {
     EXPECT_TRUE(has(e.problem(), "4294967296 bytes")) << e.what();
-    EXPECT_TRUE(has(e.problem(), "at most")) << e.what();
+    EXPECT_TRUE(has(e.problem(), "the limit for a scene file (JSON) is 67108864 bytes")) << e.what();
   }
   std::filesystem::remove(path);
 }
