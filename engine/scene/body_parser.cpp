@@ -1,5 +1,6 @@
 #include "scene/body_parser.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -152,10 +153,16 @@ double nonNegative(const JsonObject& o, const char* key, double fallback, const 
   return value;
 }
 
-// The step divides by the mass and the principal moments: each inverse must be a number, or the
+// The body's size is bounded like a coordinate. The step divides by the mass and the principal moments: each inverse must be a number, or the
 // body diverges at its first step with no field to blame. Reported against the key that set the
 // mass, with the size that the moments come from.
 void checkMassScale(const JsonObject& b, const BodyDef& def) {
+  double reach = 0.0;
+  for (const Vec3& p : def.mesh->vertices) reach = std::max(reach, p.stableNorm());
+  if (!(reach <= kMaxCoordinate)) {
+    b.fail("shape", "the body reaches " + formatNumber(reach) + " m from its centre of mass; expected at most " +
+                        formatNumber(kMaxCoordinate) + " m (" + kFarFromOrigin + ")");
+  }
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(def.inertiaBody, Eigen::EigenvaluesOnly);
   const double least = eig.eigenvalues().minCoeff(), most = eig.eigenvalues().maxCoeff();
   if (std::isfinite(1.0 / def.mass) && least > 0.0 && std::isfinite(1.0 / least) && std::isfinite(most)) return;

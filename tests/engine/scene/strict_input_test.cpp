@@ -148,6 +148,9 @@ TEST(StrictRanges, CoordinatesSpeedsAndGravityHavePhysicalBounds) {
   const InputError spin = errorOf(sceneWith("", R"({"shape": {"type": "box", "extents": [1, 1, 1]}, "mass": 1, "angular_velocity": [0, 1e9, 0]})"));
   EXPECT_EQ(spin.field(), "bodies[0].angular_velocity");
   EXPECT_TRUE(has(spin.problem(), "faster than light")) << spin.what();
+  const InputError size = errorOf(sceneWith("", R"({"shape": {"type": "box", "extents": [4e6, 1, 1]}, "mass": 1})"));
+  EXPECT_EQ(size.field(), "bodies[0].shape");
+  EXPECT_TRUE(has(size.problem(), "reaches 2e+06 m")) << size.what();
   const InputError gravity = errorOf(sceneWith(R"(, "gravity": [0, -1e300, 0])"));
   EXPECT_EQ(gravity.field(), "world.gravity");
   const InputError pose = errorOf(sceneWith("", R"({"shape": {"type": "box", "extents": [1, 1, 1]}, "mass": 1,
