@@ -208,7 +208,9 @@ def classify(returncode, stderr, timed_out):
     return None, error
 
 
-def run_one(args, mirror, index, item):
+def run_one(args, mirror, index, item, deadline):
+    if deadline is not None and time.monotonic() > deadline:
+        return None  # out of time: not run, not counted
     source, document, path, value = item
     key = path_text(path)
     folder = mirror.folder(os.path.dirname(os.path.abspath(source)))
@@ -235,7 +237,7 @@ def run_one(args, mirror, index, item):
         os.unlink(variant)
     return {
         "file": os.path.relpath(source, REPO), "key": key, "value": value_text(value),
-        "exit": process.returncode, "failure": failure, "detail": detail.strip()[-400:],
+        "exit": process.returncode, "failure": failure, "detail": detail.strip()[:600],
         "seconds": round(seconds, 2), "command": command, "variant": variant,
     }
 
@@ -244,6 +246,9 @@ def root_cause(result):
     """Failures with the same class and the same message (numbers and paths blanked) share a cause."""
     message = re.sub(r"\S*\.absurd_\d+_", "", result["detail"])
     message = re.sub(r"-?\d[\d.e+\-]*", "N", message)
+    message = re.sub(r"'[^']*'", "'X'", message)  # body and system names
+    if result["failure"].startswith("exit 2 diverged"):
+        message = message.split(" (")[0]  # what stopped being finite, not the state dump after it
     if result["failure"].startswith(("signal", "hang")):
         # A crash or a hang says little on stderr: the key that caused it tells causes apart.
         message += " [key %s]" % re.sub(r"\[\d+\]", "", result["key"])
@@ -259,6 +264,7 @@ def main():
     parser.add_argument("--keys-regex", help="only keys whose path (e.g. bodies[0].mass) matches")
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--timeout", type=float, default=20.0, help="seconds per run before it counts as a hang")
+    parser.add_argument("--max-seconds", type=float, help="start no run after this many seconds (the report covers the runs done)")
     parser.add_argument("--memory-mb", type=int, default=4096, help="address-space limit per run")
     parser.add_argument("--out", default="absurd_report.md", help="report file (default: %(default)s)")
     parser.add_argument("--every-element", action="store_true",
@@ -277,18 +283,21 @@ def main():
     for source in {item[0] for item in picked}:
         mirror.folder(os.path.dirname(os.path.abspath(source)))  # created before the threads start
     started = time.monotonic()
+    deadline = started + args.max_seconds if args.max_seconds else None
     results = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = [pool.submit(run_one, args, mirror, i, item) for i, item in enumerate(picked)]
+        futures = [pool.submit(run_one, args, mirror, i, item, deadline) for i, item in enumerate(picked)]
         for future in concurrent.futures.as_completed(futures):
             result = future.result()
+            if result is None:
+                continue
             results.append(result)
             if len(results) % 250 == 0:
                 print("... %d of %d runs, %d failed" % (len(results), len(picked),
                                                        sum(1 for r in results if r["failure"])), flush=True)
             if result["failure"]:
                 print("FAIL %-32s %s = %s: %s: %s" % (result["failure"], result["file"], result["key"],
-                                                     result["value"], result["detail"][-200:]), flush=True)
+                                                     result["value"], result["detail"][:240]), flush=True)
     wall = time.monotonic() - started
     results.sort(key=lambda r: (r["file"], r["key"], r["value"]))
     failures = [r for r in results if r["failure"]]
@@ -306,6 +315,8 @@ def main():
     causes = collections.OrderedDict()
     for r in failures:
         causes.setdefault(root_cause(r), []).append(r)
+    if len(results) < len(picked):
+        print("\n--max-seconds %g reached: %d of %d variants not run" % (args.max_seconds, len(picked) - len(results), len(picked)))
     print("\n%d runs in %.0f s, %d failures in %d classes, %d distinct causes" %
           (len(results), wall, len(failures), len(by_class), len(causes)))
     for name, count in by_class.most_common():
@@ -320,7 +331,7 @@ def main():
             f.write("## %s (%d runs)\n\n%s\n\n" % (name, len(group), first["detail"] or "(no stderr)"))
             for r in group[:12]:
                 f.write("- %s: `%s` = %s -> exit %s, %.1f s: %s\n" % (r["file"], r["key"], r["value"], r["exit"],
-                                                                   r["seconds"], r["detail"][-200:]))
+                                                                   r["seconds"], r["detail"][:240]))
             if len(group) > 12:
                 f.write("- ... and %d more\n" % (len(group) - 12))
             f.write("\n")
