@@ -11,7 +11,9 @@ The steps override keeps runs short; it is left out when the swept key is itself
 a duration, since those are what must be refused quickly with an estimate. A run FAILS when it is
 killed by a signal (crash), exits with a code other than 0 or 2, outlives --timeout (a hang), or
 exits 2 without "rbsim: error: FILE: FIELD: problem" naming a field (a divergence while running
-is reported as its own class, since it names no field). Prints a summary table, writes the
+is reported as its own class, since it names no field; --allow-diverged passes it). Keys that
+differ only in the index of an array of objects (bodies[0..39].mass) are swept once, on the first
+element, unless --every-element is given. Prints a summary table, writes the
 failures (file, key path, value, exit or signal, last stderr line) to --out and exits 1 when any
 run failed.
 
@@ -233,6 +235,8 @@ def run_one(args, mirror, index, item, deadline):
     seconds = time.monotonic() - started
     stderr = err.decode("utf-8", "replace")
     failure, detail = classify(process.returncode, stderr, timed_out)
+    if failure and failure.startswith("exit 2 diverged") and args.allow_diverged:
+        failure = None
     if failure is None:
         os.unlink(variant)
     return {
@@ -267,6 +271,8 @@ def main():
     parser.add_argument("--max-seconds", type=float, help="start no run after this many seconds (the report covers the runs done)")
     parser.add_argument("--memory-mb", type=int, default=4096, help="address-space limit per run")
     parser.add_argument("--out", default="absurd_report.md", help="report file (default: %(default)s)")
+    parser.add_argument("--allow-diverged", action="store_true",
+                        help="count exit 2 'the simulation diverged' as a pass (by default it fails: it names no field)")
     parser.add_argument("--every-element", action="store_true",
                         help="sweep every element of arrays of objects (bodies[0..n]), not the first of each key")
     parser.add_argument("--keep", help="copy the failing variants into this folder")
