@@ -95,7 +95,7 @@ run() {  # target
   rm -rf "$kept/$target" && mv "$merged" "$kept/$target"
   local files size
   files=$(find "$kept/$target" -type f | wc -l)
-  size=$(du -sk "$kept/$target" | cut -f1)
+  size=$(( $(du -sb "$kept/$target" | cut -f1) / 1024 ))
   summary+=("$target: ${runs:-?} executions in ${seconds} s, $artifacts artifacts; kept corpus $files files, ${size} KB")
 }
 
