@@ -1,19 +1,32 @@
 #!/usr/bin/env bash
-# Fuzzes the scene loader and the OBJ loader with libFuzzer for a bounded time each.
+# Fuzzes the scene loader, the OBJ loader and the --set override parser with libFuzzer for a
+# bounded time each, then minimises what was found into the corpus kept in the repository.
 #
-#   bash tests/fuzz/run_fuzz.sh [SECONDS_PER_TARGET]     (default 60)
+#   bash tests/fuzz/run_fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (default 60; scene obj set)
 #
 # Builds build-fuzz/ with clang, -fsanitize=fuzzer plus AddressSanitizer and UBSan (RBSIM_FUZZ,
-# RBSIM_SANITIZE), then runs scene_fuzzer and obj_fuzzer on the seed corpus (tests/fuzz/corpus/,
-# plus the demo scenes and meshes and tests/data/bad/). New interesting inputs go to
-# build-fuzz/corpus/, never into the repository; a crash is written to build-fuzz/crashes/ and ends
-# the script with a failure. A crash becomes a regression case: copy it into tests/data/bad/
-# (a case in cases.json if rbsim can show it, or tests/fuzz/corpus/ otherwise, which ctest
-# replays in every build), then fix it. Prints each target's executions and crashes at the end.
+# RBSIM_SANITIZE), then runs each <target>_fuzzer on its corpus tests/fuzz/corpus/<target>/ plus
+# the seeds (the demo scenes and meshes and tests/data/bad/). New inputs go to
+# build-fuzz/corpus/<target>/; after the run they are merged (libFuzzer -merge=1: only inputs that
+# add coverage, smallest first) with the kept corpus into a fresh tests/fuzz/corpus/<target>/, so
+# the repository keeps a minimal corpus that ctest replays in every build. Inputs are at most
+# MAX_LEN bytes, so the kept corpus stays small (a few hundred KB per target).
+#
+# A crash, a timeout (an input running over 10 s) or an out-of-memory is written to
+# build-fuzz/crashes/ (never into the repository) and makes the script fail; with
+# RBSIM_FUZZ_KEEP_GOING=1 the fuzzer runs in fork mode and carries on past them for the whole time
+# (a campaign), collecting every artifact. A crash becomes a regression case: copy it into
+# tests/data/bad/ (a case in cases.json if rbsim can show it, or tests/fuzz/corpus/ otherwise),
+# then fix it. Prints each target's executions and artifacts at the end.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj set)
 build=build-fuzz
+max_len=4096          # [bytes] longest generated input: keeps the kept corpus files small
+kept=tests/fuzz/corpus
 
 if ! command -v clang++ > /dev/null; then
   echo "run_fuzz.sh: installing clang (libFuzzer ships with it)" >&2
@@ -27,33 +40,65 @@ mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" \
   -DRBSIM_SANITIZE=ON -DRBSIM_FUZZ=ON -DRBSIM_BUILD_BENCH=OFF > "$build/configure.log"
-cmake --build "$build" -j2 --target scene_fuzzer obj_fuzzer
+cmake --build "$build" -j2 --target "${targets[@]/%/_fuzzer}"
 
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 mkdir -p "$build/crashes"
+keep_going=()
+if [ "${RBSIM_FUZZ_KEEP_GOING:-0}" = 1 ]; then
+  keep_going=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+fi
 summary=()
 status=0
-run() {  # target, dictionary, seed folders...
-  local target=$1 dict=$2
-  shift 2
-  mkdir -p "$build/corpus/$target"
-  local log="$build/$target.log"
+
+seeds() {  # the read-only seed folders of a target
+  case $1 in
+    scene) echo assets/scenes tests/data/bad ;;
+    obj) echo assets/meshes tests/data/bad ;;
+    set) echo ;;  # the assignments need the base-scene byte: only tests/fuzz/corpus/set
+  esac
+}
+
+run() {  # target
+  local target=$1 fuzzer="$build/tests/fuzz/$1_fuzzer"
+  local log="$build/$target.log" work="$build/corpus/$target"
+  mkdir -p "$work" "$kept/$target"
+  local before
+  before=$(ls "$build/crashes" | grep -c "^$target-" || true)
   echo "+ $target for ${seconds} s (log: $log)"
-  if "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-      -dict="$dict" -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 \
-      "$build/corpus/$target" "$@" > "$log" 2>&1; then
-    crashes=0
-  else
-    crashes=$(ls "$build/crashes" | grep -c "^$target-" || true)
+  # shellcheck disable=SC2046
+  if ! nice -n 19 "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=$max_len \
+      -dict="tests/fuzz/$target.dict" -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 \
+      "${keep_going[@]}" "$work" "$kept/$target" $(seeds "$target") > "$log" 2>&1; then
     status=1
     grep -m5 -E "ERROR|runtime error|==ABORTING|terminate called" "$log" || true
   fi
+  local artifacts=$(( $(ls "$build/crashes" | grep -c "^$target-" || true) - before ))
+  [ "$artifacts" -eq 0 ] || status=1
   local runs
-  runs=$(grep -m1 -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo "?")
-  summary+=("$target: $runs executions in ${seconds} s, $crashes crashes")
+  runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1 || true)
+  # Fork mode prints no final stats: its last progress line "#N ..." counts the executions.
+  [ -n "$runs" ] || runs=$(grep -oE '^#[0-9]+' "$log" | tail -1 | tr -d '#' || true)
+
+  # Minimise: a fresh folder takes the inputs of the kept and the new corpus that add coverage.
+  local merged="$build/merged/$target"
+  rm -rf "$merged" && mkdir -p "$merged"
+  nice -n 19 "$fuzzer" -merge=1 -max_len=$max_len -timeout=10 -rss_limit_mb=2048 \
+    -artifact_prefix="$build/crashes/merge-$target-" "$merged" "$kept/$target" "$work" > "$build/$target.merge.log" 2>&1 || {
+    echo "run_fuzz.sh: merging the $target corpus failed (see $build/$target.merge.log); kept corpus unchanged" >&2
+    status=1
+    summary+=("$target: ${runs:-?} executions in ${seconds} s, $artifacts artifacts, merge failed")
+    return
+  }
+  find "$merged" -type f -size +${max_len}c -delete
+  rm -rf "$kept/$target" && mv "$merged" "$kept/$target"
+  local files size
+  files=$(find "$kept/$target" -type f | wc -l)
+  size=$(( $(du -sb "$kept/$target" | cut -f1) / 1024 ))
+  summary+=("$target: ${runs:-?} executions in ${seconds} s, $artifacts artifacts; kept corpus $files files, ${size} KB")
 }
-run scene_fuzzer tests/fuzz/scene.dict tests/fuzz/corpus/scene assets/scenes tests/data/bad
-run obj_fuzzer tests/fuzz/obj.dict tests/fuzz/corpus/obj assets/meshes tests/data/bad
+
+for target in "${targets[@]}"; do run "$target"; done
 printf '%s\n' "${summary[@]}"
 exit $status
