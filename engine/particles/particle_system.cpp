@@ -131,8 +131,15 @@ void ParticleSystem::checkFinite(double t, double dt) const {
   message << "particle system '" << def_.name << "': particle " << i << " left the finite numbers (or 1e154 m/s) within "
           << kDivergenceCheckInterval << " steps before t = " << t + dt << " s (integrator "
           << particleIntegratorName(def_.integrator) << ", substep h = " << dt / def_.substeps
-          << " s). Explicit Euler gains energy on springs; semi-implicit Euler needs omega h < 2 for the stiffest "
-          << "spring: choose semi-implicit-euler, more substeps or softer springs.";
+          << " s).";
+  // Springs are the usual cause with cloth; without them only the forces can drive a particle out.
+  if (def_.cloth.enabled) {
+    message << " Explicit Euler gains energy on springs; semi-implicit Euler needs omega h < 2 for the stiffest "
+            << "spring: choose semi-implicit-euler, more substeps or softer springs.";
+  } else {
+    message << " Check its forces against the particle mass: wind, drag, gravity_scale, attractors and the "
+            << "emitters' speeds.";
+  }
   throw SimulationError(message.str());
 }
 

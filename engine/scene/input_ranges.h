@@ -10,6 +10,12 @@ namespace rbsim {
 inline constexpr double kMaxCoordinate = 1e6;  // [m]
 // No body moves faster than light: a larger speed is a typo or an attempt to overflow.
 inline constexpr double kMaxSpeed = 299'792'458.0;  // [m/s], c
+// Masses and principal moments of inertia [kg, kg m^2], and their inverses, at most this: the
+// solver multiplies a mass by an inverse mass (a pair's effective mass against one body's), so
+// each within 1e+-150 keeps every such product inside a double's 1e+-308.
+inline constexpr double kMaxMassScale = 1e150;
+// Stiffer than any solid: ten times diamond's 1.2e12 Pa (steel is 2e11 Pa).
+inline constexpr double kMaxYoungsModulus = 1e13;  // [Pa]
 // Above the surface gravity of a neutron star (~2e12 m/s^2).
 inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
 

@@ -10,6 +10,7 @@
 #include "io/input_error.h"
 #include "particles/emitter.h"
 #include "scene/body_parser.h"
+#include "scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 
@@ -117,11 +118,11 @@ EmitterDef parseEmitter(const JsonObject& e, const Scene& scene) {
   } else if (e.has("body")) {
     e.fail("body", "only a \"mesh\" emitter has a body");
   }
-  d.position = e.vec3("position", d.position);
+  d.position = e.boundedVec3("position", d.position, kMaxCoordinate, "m", "the farthest a scene reaches");
   d.direction = unitDirection(e, "direction", d.direction);
   d.radius = atLeast(e, "radius", d.radius, 0.0, "m");
   if (e.has("half_extents")) {
-    d.halfExtents = e.vec3("half_extents", d.halfExtents);
+    d.halfExtents = e.boundedVec3("half_extents", d.halfExtents, kMaxCoordinate, "m", "the farthest a scene reaches");
     if (!(d.halfExtents.array() >= 0.0).all()) e.fail("half_extents", "expected every component >= 0 m");
   }
   d.rate = atLeast(e, "rate", d.rate, 0.0, "particles/s");
@@ -140,6 +141,7 @@ EmitterDef parseEmitter(const JsonObject& e, const Scene& scene) {
   d.spreadDegrees = e.number("spread_deg", d.spreadDegrees);
   if (!(d.spreadDegrees >= 0.0 && d.spreadDegrees <= 180.0)) e.fail("spread_deg", "expected an angle in [0, 180] degrees");
   range(e, "speed", d.speedMin, d.speedMax, false, "m/s");
+  if (d.speedMax > kMaxSpeed) e.fail("speed", "expected speeds below the speed of light, 299792458 m/s");
   range(e, "lifetime", d.lifetimeMin, d.lifetimeMax, true, "s");
   range(e, "mass", d.massMin, d.massMax, true, "kg");
   range(e, "size", d.sizeMin, d.sizeMax, false, "m");
@@ -151,9 +153,9 @@ EmitterDef parseEmitter(const JsonObject& e, const Scene& scene) {
 
 void parseCloth(const JsonObject& c, ClothDef& cloth) {
   cloth.enabled = true;
-  cloth.origin = c.vec3("origin", cloth.origin);
-  cloth.edgeU = c.vec3("edge_u", cloth.edgeU);
-  cloth.edgeV = c.vec3("edge_v", cloth.edgeV);
+  cloth.origin = c.boundedVec3("origin", cloth.origin, kMaxCoordinate, "m", "the farthest a scene reaches");
+  cloth.edgeU = c.boundedVec3("edge_u", cloth.edgeU, kMaxCoordinate, "m", "the farthest a scene reaches");
+  cloth.edgeV = c.boundedVec3("edge_v", cloth.edgeV, kMaxCoordinate, "m", "the farthest a scene reaches");
   if (!(cloth.edgeU.cross(cloth.edgeV).stableNorm() > 0.0)) {
     c.fail("edge_v", "expected an edge neither zero nor parallel to \"edge_u\" (nor so short that |edge_u x edge_v| underflows to 0)");
   }
@@ -236,7 +238,7 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
   d.dragQuadratic = atLeast(p, "drag_quadratic", d.dragQuadratic, 0.0, "N s^2/m^2");
   if (p.has("wind")) {
     const JsonObject w = p.object("wind", {"velocity", "turbulence", "scale", "frequency"});
-    d.wind.velocity = w.vec3("velocity", d.wind.velocity);
+    d.wind.velocity = w.boundedVec3("velocity", d.wind.velocity, kMaxSpeed, "m/s", "the speed of light");
     d.wind.turbulence = atLeast(w, "turbulence", d.wind.turbulence, 0.0, "m/s");
     d.wind.scale = w.positiveNumber("scale", d.wind.scale);
     d.wind.frequency = atLeast(w, "frequency", d.wind.frequency, 0.0, "1/s");
@@ -249,7 +251,7 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
   }
   for (const JsonObject& a : p.objectArray("attractors", {"position", "strength", "softening"})) {
     AttractorDef attractor;
-    attractor.position = a.vec3("position", attractor.position);
+    attractor.position = a.boundedVec3("position", attractor.position, kMaxCoordinate, "m", "the farthest a scene reaches");
     attractor.strength = a.number("strength", attractor.strength);
     attractor.softening = a.positiveNumber("softening", attractor.softening);
     // The force's largest magnitude, at |a - x| = softening / sqrt(2), is ~0.385 strength / softening^2.

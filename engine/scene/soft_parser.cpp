@@ -9,6 +9,7 @@
 #include <string>
 
 #include "scene/body_parser.h"
+#include "scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 
@@ -148,10 +149,14 @@ void parseSoftBodies(const JsonObject& root, Scene& scene) {
                               shortNumber(kMaxSoftElementEvaluationsPerStep) + " per step: use fewer cells");
     }
     def.mesh = makeTetBox(extents, cells[0], cells[1], cells[2]);
-    def.position = s.vec3("position", def.position);
-    def.velocity = s.vec3("velocity", def.velocity);
+    if (!(extents.maxCoeff() <= kMaxCoordinate)) shape.fail("extents", "expected each at most 1e6 m, the farthest a scene reaches");
+    def.position = s.boundedVec3("position", def.position, kMaxCoordinate, "m", "the farthest a scene reaches");
+    def.velocity = s.boundedVec3("velocity", def.velocity, kMaxSpeed, "m/s", "the speed of light");
     def.density = s.positiveNumber("density", def.density);
     def.youngsModulus = s.positiveNumber("youngs_modulus", def.youngsModulus);
+    if (def.youngsModulus > kMaxYoungsModulus) {
+      s.fail("youngs_modulus", "expected at most 1e13 Pa (ten times diamond's 1.2e12 Pa; steel is 2e11 Pa)");
+    }
     def.poissonRatio = s.number("poisson_ratio", def.poissonRatio);
     if (!(def.poissonRatio > -1.0 && def.poissonRatio < 0.5)) s.fail("poisson_ratio", "expected a value in (-1, 0.5)");
     const std::string model = s.string("model", constitutiveModelName(def.model));

@@ -7,6 +7,7 @@
 
 #include "math/uniform_random.h"
 #include "scene/body_parser.h"
+#include "scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 
@@ -46,7 +47,8 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
     const std::string prefix = s.string("name", "spawn");
     const JsonObject region = s.object("region", {"min", "max"});
-    const Vec3 lo = region.vec3("min", Vec3::Zero()), hi = region.vec3("max", Vec3::Zero());
+    const Vec3 lo = region.boundedVec3("min", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start"),
+               hi = region.boundedVec3("max", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start");
     if ((hi.array() < lo.array()).any()) region.fail("max", "expected every component >= min's");
     // Positions are drawn as min + (max - min) u: the extent itself must be a finite number.
     const Vec3 extent = hi - lo;
@@ -55,6 +57,7 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
                              " m); expected a finite size along every axis");
     }
     const auto [speedLo, speedHi] = range(s, "speed", "m/s");
+    if (speedHi > kMaxSpeed) s.fail("speed", "expected speeds below the speed of light, 299792458 m/s");
     const auto [spinLo, spinHi] = range(s, "angular_speed", "rad/s");
     const bool randomOrientation = s.boolean("random_orientation", true);
 
@@ -76,6 +79,11 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     if (!std::isfinite(prototype.mass * speedHi)) {
       s.fail("speed", "the momentum m v = " + shortNumber(prototype.mass) + " kg x " + shortNumber(speedHi) +
                           " m/s overflows; expected a finite product");
+    }
+    const double radius = 0.5 * (prototype.mesh->boundsMax() - prototype.mesh->boundsMin()).norm();
+    if (!(spinHi * radius <= kMaxSpeed)) {
+      s.fail("angular_speed", "a body's surface would move at |omega| r = " + shortNumber(spinHi) + " rad/s x " +
+                                  shortNumber(radius) + " m, faster than light; expected a smaller spin");
     }
     if (!std::isfinite(prototype.inertiaBody.stableNorm() * spinHi)) {
       s.fail("angular_speed", "the angular momentum I omega = " + shortNumber(prototype.inertiaBody.stableNorm()) + " kg m^2 x " +

@@ -1,6 +1,7 @@
 #include "world/collision_pipeline.h"
 
 #include <algorithm>
+#include <sstream>
 #include <stdexcept>
 
 #include "collision/broadphase/brute_force.h"
@@ -151,9 +152,10 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
     // A finite state can still have a box that is not (a vertex R p + x or a reach dt |v|
     // overflows): that is the body diverging, reported as such rather than as a broad-phase fault.
     if (!boxes_[i].min.allFinite() || !boxes_[i].max.allFinite()) {
-      throw SimulationError("body '" + bodies[i].name() + "': its bounding box stopped being finite (|x| = " +
-                            std::to_string(bodies[i].position().stableNorm()) + " m, |v| = " +
-                            std::to_string(bodies[i].velocity().stableNorm()) + " m/s)");
+      std::ostringstream message;
+      message << "body '" << bodies[i].name() << "': its bounding box stopped being finite (|x| = "
+              << bodies[i].position().stableNorm() << " m, |v| = " << bodies[i].velocity().stableNorm() << " m/s)";
+      throw SimulationError(message.str());
     }
     broad_->move(proxies_[i], boxes_[i]);
   }

@@ -210,7 +210,9 @@ void World::step() {
       try {
         soft.step(settings_.timeStep, settings_.gravity, planes_, planeMaterials_);
       } catch (const std::domain_error& e) {  // non-finite nodes, or an inverted neo-Hookean element
-        throw SimulationError("step " + std::to_string(stepCount_) + ": " + e.what());
+        const std::string what = e.what();
+        const std::string who = what.find(soft.name()) == std::string::npos ? "soft body '" + soft.name() + "': " : "";
+        throw SimulationError("step " + std::to_string(stepCount_) + ": " + who + what);
       }
       if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, bodyShapes_, bodyMaterials_, soft.material());
     }
