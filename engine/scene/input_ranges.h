@@ -8,6 +8,9 @@ namespace rbsim {
 // Positions, anchors and points on planes [m]. The contact tolerances (5 mm slop, millimetre
 // margins) need positions resolved far below a millimetre; ulp(1e6 m) = 1.2e-10 m.
 inline constexpr double kMaxCoordinate = 1e6;  // [m]
+// Contact tolerances (world.contact_margin, contact_slop): a tolerance, not a reach. Past a metre
+// every body near another is a contact pair each step, and the narrow phase runs on all n^2/2.
+inline constexpr double kMaxContactTolerance = 1.0;  // [m]
 // No body moves faster than light: a larger speed is a typo or an attempt to overflow.
 inline constexpr double kMaxSpeed = 299'792'458.0;  // [m/s], c
 // Masses and principal moments of inertia [kg, kg m^2], and their inverses, at most this: the

@@ -120,7 +120,9 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
       w.fail("broad_phase", "expected \"sap\" or \"brute-force\", got \"" + broad + "\"");
     }
     scene.settings.contactMargin = w.number("contact_margin", scene.settings.contactMargin);
-    if (!(scene.settings.contactMargin >= 0.0)) w.fail("contact_margin", "expected a distance >= 0 m");
+    if (!(scene.settings.contactMargin >= 0.0 && scene.settings.contactMargin <= kMaxContactTolerance)) {
+      w.fail("contact_margin", "expected a distance in [0, 1] m (a tolerance: past a metre every nearby pair is in contact)");
+    }
     Settings& s = scene.settings;
     const std::string solver = w.string("solver", "soft-step");
     if (solver == "pgs") {
@@ -146,7 +148,9 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     s.restitutionThreshold = w.number("restitution_threshold", s.restitutionThreshold);
     if (!(s.restitutionThreshold >= 0.0)) w.fail("restitution_threshold", "expected a speed >= 0 m/s");
     s.contactSlop = w.number("contact_slop", s.contactSlop);
-    if (!(s.contactSlop >= 0.0)) w.fail("contact_slop", "expected a distance >= 0 m");
+    if (!(s.contactSlop >= 0.0 && s.contactSlop <= kMaxContactTolerance)) {
+      w.fail("contact_slop", "expected a distance in [0, 1] m (a tolerance, not a reach)");
+    }
     s.positionCorrection = w.number("position_correction", s.positionCorrection);
     if (!(s.positionCorrection >= 0.0 && s.positionCorrection <= 1.0)) w.fail("position_correction", "expected a fraction in [0, 1]");
     s.warmStarting = w.boolean("warm_starting", s.warmStarting);
