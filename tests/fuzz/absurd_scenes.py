@@ -179,7 +179,9 @@ class Mirror:
 
 def limit_memory(limit_bytes):
     def apply():
-        resource.setrlimit(resource.RLIMIT_AS, (limit_bytes, limit_bytes))
+        # 0: no address-space limit (AddressSanitizer reserves terabytes of shadow address space).
+        if limit_bytes > 0:
+            resource.setrlimit(resource.RLIMIT_AS, (limit_bytes, limit_bytes))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
     return apply
 
@@ -269,7 +271,7 @@ def main():
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--timeout", type=float, default=20.0, help="seconds per run before it counts as a hang")
     parser.add_argument("--max-seconds", type=float, help="start no run after this many seconds (the report covers the runs done)")
-    parser.add_argument("--memory-mb", type=int, default=4096, help="address-space limit per run")
+    parser.add_argument("--memory-mb", type=int, default=4096, help="address-space limit per run (0: none, for sanitizer builds)")
     parser.add_argument("--out", default="absurd_report.md", help="report file (default: %(default)s)")
     parser.add_argument("--allow-diverged", action="store_true",
                         help="count exit 2 'the simulation diverged' as a pass (by default it fails: it names no field)")
