@@ -14,6 +14,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "shell_command.h"
 #include <nlohmann/json.hpp>
 
 namespace {
@@ -61,26 +63,15 @@ std::vector<BadCase> loadCases() {
   return cases;
 }
 
-std::string shellQuote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 // Runs rbsim with the arguments and extra environment; returns (exit code, stdout + stderr).
 std::pair<int, std::string> runRbsim(const std::vector<std::string>& args,
                                      const std::map<std::string, std::string>& env = {}) {
   std::string command;
-  for (const auto& [key, value] : env) command += key + "=" + shellQuote(value) + " ";
-  command += shellQuote(RBSIM_BINARY);
-  for (const std::string& a : args) command += " " + shellQuote(a);
+  for (const auto& [key, value] : env) command += key + "=" + rbsim::test::shellQuote(value) + " ";
+  command += rbsim::test::shellQuote(RBSIM_BINARY);
+  for (const std::string& a : args) command += " " + rbsim::test::shellQuote(a);
   command += " --quiet 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  return rbsim::test::runCommand(command);
 }
 
 class BadInput : public ::testing::TestWithParam<BadCase> {};

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "shell_command.h"
+
 #include "flag_values.h"
 #include "io/input_error.h"
 #include "render/checked_file.h"
@@ -29,23 +31,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string shellQuote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 // Runs the real rbsim; returns (exit code, stdout + stderr).
 std::pair<int, std::string> runRbsim(const std::vector<std::string>& args, const std::string& redirect = "2>&1") {
-  std::string command = shellQuote(RBSIM_BINARY);
-  for (const std::string& a : args) command += " " + shellQuote(a);
+  std::string command = test::shellQuote(RBSIM_BINARY);
+  for (const std::string& a : args) command += " " + test::shellQuote(a);
   command += " " + redirect;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  return test::runCommand(command);
 }
 
 // A tiny RFC 4180 reader: records of fields, quoted fields may hold commas, "" and line breaks.

@@ -4,29 +4,10 @@
 #include <cstdint>
 #include <string>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
-#include "world/simulation_error.h"
-
-namespace {
-
-// Stepping is what finds NaN and overflow in the engine, but a fuzzed scene of many bodies would
-// spend the time budget on one input: small worlds only, a few steps each.
-constexpr std::size_t kMaxSteppedBodies = 16;
-constexpr int kSteps = 8;
-
-}  // namespace
+#include "step_scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
-  try {
-    // Mesh paths resolve against the demo scenes' folder, so "../meshes/t_handle.obj" loads.
-    const rbsim::Scene scene = rbsim::parseSceneText(text, "fuzz.json", RBSIM_FUZZ_SCENE_DIR);
-    if (scene.bodies.size() > kMaxSteppedBodies) return 0;
-    rbsim::World world = rbsim::buildWorld(scene);
-    for (int i = 0; i < kSteps; ++i) world.step();
-  } catch (const rbsim::InputError&) {
-  } catch (const rbsim::SimulationError&) {
-  }
+  // Mesh paths resolve against the demo scenes' folder, so "../meshes/t_handle.obj" loads.
+  rbsim::fuzz::parseAndStep(std::string(reinterpret_cast<const char*>(data), size), RBSIM_FUZZ_SCENE_DIR);
   return 0;
 }

@@ -10,15 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
-#include "world/simulation_error.h"
+#include "step_scene.h"
 
 namespace {
 
-// As in scene_fuzzer.cpp: stepping finds NaN and overflow, but only small worlds, a few steps.
-constexpr std::size_t kMaxSteppedBodies = 16;
-constexpr int kSteps = 8;
 // The app takes any number of --set flags; beyond a handful they only overwrite each other.
 constexpr std::size_t kMaxAssignments = 8;
 
@@ -63,13 +58,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     overrides.push_back(text.substr(from, end - from));
     from = end + 1;
   }
-  try {
-    const rbsim::Scene scene = rbsim::parseSceneText(base.text, "fuzz.json", base.dir, overrides);
-    if (scene.bodies.size() > kMaxSteppedBodies) return 0;
-    rbsim::World world = rbsim::buildWorld(scene);
-    for (int i = 0; i < kSteps; ++i) world.step();
-  } catch (const rbsim::InputError&) {
-  } catch (const rbsim::SimulationError&) {
-  }
+  rbsim::fuzz::parseAndStep(base.text, base.dir, overrides);
   return 0;
 }
