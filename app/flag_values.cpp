@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 
 namespace rbsim::app {
 

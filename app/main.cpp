@@ -11,9 +11,9 @@
 
 #include "demos/demo.h"
 #include "flag_values.h"
-#include "integrate/integrator.h"
-#include "io/input_error.h"
-#include "particles/particle_def.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/particles/particle_def.h"
 #include "paths.h"
 #include "render/render_error.h"
 #include "window/interactive.h"
@@ -21,8 +21,8 @@
 #include "run/progress.h"
 #include "run/reel.h"
 #include "run/runner.h"
-#include "scene/scene.h"
-#include "world/simulation_error.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace {
 

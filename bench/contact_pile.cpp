@@ -10,10 +10,10 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/mesh.h"
+#include "rbsim/geometry/mesh.h"
 #include "pile_layout.h"
-#include "mass/mass_properties.h"
-#include "world/world.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/world/world.h"
 
 using namespace rbsim;
 using namespace rbsim::bench;

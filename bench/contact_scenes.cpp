@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "geometry/mesh.h"
-#include "mass/mass_properties.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/mass/mass_properties.h"
 #include "stack_layout.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 using namespace rbsim;
 using namespace rbsim::bench;

@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "math/uniform_random.h"
+#include "rbsim/math/uniform_random.h"
 #include "render/offscreen_renderer.h"
 #include "run/particle_view.h"
 #include "memory_bound.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace {
 

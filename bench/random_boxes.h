@@ -6,8 +6,8 @@
 #include <memory>
 #include <random>
 
-#include "mass/mass_properties.h"
-#include "world/world.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::bench {
 

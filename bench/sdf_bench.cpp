@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "geometry/implicit_surface.h"
-#include "geometry/shapes.h"
-#include "geometry/signed_distance_grid.h"
+#include "rbsim/geometry/implicit_surface.h"
+#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/signed_distance_grid.h"
 
 namespace {
 

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "geometry/shapes.h"
-#include "geometry/signed_distance_grid.h"
-#include "geometry/surface_samples.h"
-#include "mass/mass_model.h"
-#include "world/world.h"
+#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/signed_distance_grid.h"
+#include "rbsim/geometry/surface_samples.h"
+#include "rbsim/mass/mass_model.h"
+#include "rbsim/world/world.h"
 
 using namespace rbsim;
 

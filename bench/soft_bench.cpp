@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "soft/soft_body.h"
+#include "rbsim/soft/soft_body.h"
 
 using namespace rbsim;
 

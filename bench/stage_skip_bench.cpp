@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "random_boxes.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <memory>
 
-#include "mass/mass_model.h"
-#include "world/world.h"
+#include "rbsim/mass/mass_model.h"
+#include "rbsim/world/world.h"
 
 namespace {
 

@@ -18,7 +18,7 @@
 
 #include "random_boxes.h"
 #include "memory_bound.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace {
 

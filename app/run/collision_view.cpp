@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "collision/broadphase/brute_force.h"
-#include "collision/narrowphase/convex_convex.h"
+#include "rbsim/collision/broadphase/brute_force.h"
+#include "rbsim/collision/narrowphase/convex_convex.h"
 #include "render/debug_shapes.h"
 #include "run/format.h"
 #include "run/to_glm.h"

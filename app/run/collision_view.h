@@ -4,8 +4,8 @@
 // nearest neighbour, ghosts where continuous collision stopped a body, and overlay rows with
 // the pair counts of sweep and prune against brute force and their timings.
 #include "render/frame_data.h"
-#include "scene/scene.h"
-#include "world/world.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

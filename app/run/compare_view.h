@@ -7,7 +7,7 @@
 
 #include "render/frame_data.h"
 #include "run/phase.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

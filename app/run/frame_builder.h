@@ -5,8 +5,8 @@
 #include <string>
 
 #include "render/frame_data.h"
-#include "scene/scene.h"
-#include "world/world.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

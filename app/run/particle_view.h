@@ -3,8 +3,8 @@
 // opacity and size following each particle's age as the scene's ParticleLook says), a shaded
 // surface per cloth, and a line per system in the overlay.
 #include "render/frame_data.h"
-#include "scene/scene.h"
-#include "world/world.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

@@ -6,10 +6,10 @@
 #include <limits>
 #include <sstream>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 #include "run/runner.h"
-#include "scene/json_fields.h"
-#include "scene/strict_json.h"
+#include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/strict_json.h"
 
 namespace rbsim::app {
 

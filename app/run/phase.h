@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "math/types.h"
-#include "scene/scene.h"
+#include "rbsim/math/types.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim::app {
 

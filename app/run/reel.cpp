@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 #include "paths.h"
 #include "render/frame_sink.h"
 #include "render/png_sequence_writer.h"

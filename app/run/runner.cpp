@@ -9,7 +9,7 @@
 #include <optional>
 #include <sstream>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
 #include "run/compare_view.h"

@@ -8,7 +8,7 @@
 
 #include "run/phase.h"
 #include "run/run_options.h"
-#include "scene/scene.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim::app {
 

@@ -3,8 +3,8 @@
 // them, smooth shaded; the overlay shows the constitutive model, the integrator, the stable
 // explicit step and the energies (issue 10).
 #include "render/frame_data.h"
-#include "scene/scene.h"
-#include "world/world.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

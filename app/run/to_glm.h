@@ -2,7 +2,7 @@
 // Engine doubles to the renderer's floats: the one conversion every frame builder uses.
 #include <glm/glm.hpp>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim::app {
 

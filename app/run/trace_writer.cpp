@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 
 namespace rbsim::app {
 

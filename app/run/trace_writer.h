@@ -7,7 +7,7 @@
 #include <string>
 
 #include "render/checked_file.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

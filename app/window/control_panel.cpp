@@ -7,8 +7,8 @@
 
 #include <imgui.h>
 
-#include "integrate/integrator.h"
-#include "mass/mass_properties.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/mass/mass_properties.h"
 
 namespace rbsim::app {
 

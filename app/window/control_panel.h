@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
-#include "world/world.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

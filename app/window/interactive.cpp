@@ -10,7 +10,7 @@
 #include <thread>
 #include <utility>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 #include "render/debug_shapes.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
@@ -20,12 +20,12 @@
 #include "run/phase.h"
 #include "run/runner.h"
 #include "run/to_glm.h"
-#include "scene/scene.h"
+#include "rbsim/scene/scene.h"
 #include "window/control_panel.h"
 #include "window/orbit_camera.h"
 #include "window/picking.h"
 #include "window/x11_window.h"
-#include "world/simulation_error.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace rbsim::app {
 

@@ -4,9 +4,9 @@
 #include <cstddef>
 #include <optional>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 #include "render/frame_data.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 

@@ -14,7 +14,7 @@
 
 #include "accuracy/cases.h"
 #include "accuracy/measure.h"
-#include "integrate/integrator.h"
+#include "rbsim/integrate/integrator.h"
 
 namespace {
 

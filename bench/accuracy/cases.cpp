@@ -4,9 +4,9 @@
 #include <memory>
 #include <stdexcept>
 
-#include "geometry/mesh.h"
-#include "mass/mass_properties.h"
-#include "math/rotation.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/math/rotation.h"
 #include "reference/torque_free.h"
 
 namespace rbsim::accuracy {

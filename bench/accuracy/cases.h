@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "body/body_def.h"
-#include "math/types.h"
+#include "rbsim/body/body_def.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim::accuracy {
 

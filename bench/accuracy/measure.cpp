@@ -6,9 +6,9 @@
 #include <limits>
 #include <vector>
 
-#include "math/rotation.h"
-#include "world/simulation_error.h"
-#include "world/world.h"
+#include "rbsim/math/rotation.h"
+#include "rbsim/world/simulation_error.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::accuracy {
 

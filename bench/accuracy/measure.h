@@ -4,7 +4,7 @@
 #include <string>
 
 #include "accuracy/cases.h"
-#include "integrate/integrator.h"
+#include "rbsim/integrate/integrator.h"
 
 namespace rbsim::accuracy {
 

@@ -2,7 +2,7 @@
 // Exact solutions of torque-free rigid-body rotation, for checking integrators.
 // Body axes are principal axes; R(t) is the body-to-world rotation (w_world = R w_body) and all
 // angular velocities are body-frame unless named otherwise.
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim::reference {
 

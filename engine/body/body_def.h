@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/material.h"
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/dynamics/material.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

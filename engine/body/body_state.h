@@ -2,7 +2,7 @@
 // The state vector Y(t) of seed 004 "Rigid body representation" / seed 000 "state vector":
 // position, orientation, linear and angular momentum. Kept apart from the constants and the
 // geometry (Box2D's b2BodyState) so integrators read and write only this.
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

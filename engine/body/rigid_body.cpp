@@ -1,11 +1,11 @@
-#include "body/rigid_body.h"
+#include "rbsim/body/rigid_body.h"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim {
 

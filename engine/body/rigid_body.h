@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "body/body_def.h"
-#include "body/body_state.h"
-#include "geometry/mesh.h"
-#include "integrate/integrator.h"
+#include "rbsim/body/body_def.h"
+#include "rbsim/body/body_state.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/integrate/integrator.h"
 
 namespace rbsim {
 

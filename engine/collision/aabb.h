@@ -4,7 +4,7 @@
 #include <limits>
 #include <vector>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

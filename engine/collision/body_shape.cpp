@@ -1,4 +1,4 @@
-#include "collision/body_shape.h"
+#include "rbsim/collision/body_shape.h"
 
 #include <algorithm>
 #include <array>

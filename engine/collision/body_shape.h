@@ -5,10 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include "body/body_def.h"
-#include "geometry/mesh.h"
-#include "geometry/signed_distance_grid.h"
-#include "math/types.h"
+#include "rbsim/body/body_def.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/geometry/signed_distance_grid.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

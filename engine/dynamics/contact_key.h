@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "math/types.h"
-#include "world/collision_pipeline.h"
+#include "rbsim/math/types.h"
+#include "rbsim/world/collision_pipeline.h"
 
 namespace rbsim {
 

@@ -1,11 +1,11 @@
-#include "dynamics/contact_solver.h"
+#include "rbsim/dynamics/contact_solver.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "dynamics/contact_key.h"
-#include "dynamics/impulse.h"
-#include "integrate/integrator.h"
+#include "rbsim/dynamics/contact_key.h"
+#include "rbsim/dynamics/impulse.h"
+#include "rbsim/integrate/integrator.h"
 
 namespace rbsim {
 

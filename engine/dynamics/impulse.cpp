@@ -1,6 +1,6 @@
-#include "dynamics/impulse.h"
+#include "rbsim/dynamics/impulse.h"
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim {
 

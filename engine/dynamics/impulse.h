@@ -6,8 +6,8 @@
 
 #include <Eigen/Core>
 
-#include "dynamics/material.h"
-#include "math/types.h"
+#include "rbsim/dynamics/material.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

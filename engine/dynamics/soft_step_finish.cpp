@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "dynamics/soft_step_solver.h"
+#include "rbsim/dynamics/soft_step_solver.h"
 
 namespace rbsim {
 

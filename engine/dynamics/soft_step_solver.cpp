@@ -1,10 +1,10 @@
-#include "dynamics/soft_step_solver.h"
+#include "rbsim/dynamics/soft_step_solver.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "dynamics/contact_key.h"
-#include "integrate/integrator.h"
+#include "rbsim/dynamics/contact_key.h"
+#include "rbsim/integrate/integrator.h"
 
 namespace rbsim {
 

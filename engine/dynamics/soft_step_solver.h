@@ -21,12 +21,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "dynamics/material.h"
-#include "dynamics/softness.h"
-#include "dynamics/solved_contact_point.h"
-#include "world/collision_pipeline.h"
-#include "world/settings.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/dynamics/material.h"
+#include "rbsim/dynamics/softness.h"
+#include "rbsim/dynamics/solved_contact_point.h"
+#include "rbsim/world/collision_pipeline.h"
+#include "rbsim/world/settings.h"
 
 namespace rbsim {
 

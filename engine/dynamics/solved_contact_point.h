@@ -2,7 +2,7 @@
 // One contact point after a contact solver ran, as both solvers report it (World::contactPoints).
 #include <cstddef>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

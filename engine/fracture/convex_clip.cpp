@@ -1,4 +1,4 @@
-#include "fracture/convex_clip.h"
+#include "rbsim/fracture/convex_clip.h"
 
 #include <cmath>
 #include <cstdint>

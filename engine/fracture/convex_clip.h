@@ -3,8 +3,8 @@
 // Voronoi cells (seed 000 "Fracture": "the mass and inertia tensor of each new piece can be
 // computed based on the geometry", so every piece must be a closed, outward-wound mesh that
 // polyhedralMassProperties accepts).
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

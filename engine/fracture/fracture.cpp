@@ -1,8 +1,8 @@
-#include "fracture/fracture.h"
+#include "rbsim/fracture/fracture.h"
 
 #include <cmath>
 
-#include "mass/mass_properties.h"
+#include "rbsim/mass/mass_properties.h"
 
 namespace rbsim {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "body/body_def.h"
-#include "body/rigid_body.h"
-#include "geometry/mesh.h"
+#include "rbsim/body/body_def.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/geometry/mesh.h"
 
 namespace rbsim {
 

@@ -1,11 +1,11 @@
-#include "fracture/pieces.h"
+#include "rbsim/fracture/pieces.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "fracture/convex_clip.h"
-#include "math/uniform_random.h"
+#include "rbsim/fracture/convex_clip.h"
+#include "rbsim/math/uniform_random.h"
 
 namespace rbsim {
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <vector>
 
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "geometry/fast_marching.h"
+#include "rbsim/geometry/fast_marching.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/grid_shape.h"
+#include "rbsim/geometry/grid_shape.h"
 
 namespace rbsim {
 

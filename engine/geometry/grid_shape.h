@@ -2,7 +2,7 @@
 // The lattice of a signed distance grid: points origin + h (i, j, k), stored x fastest.
 #include <cstddef>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "geometry/implicit_surface.h"
+#include "rbsim/geometry/implicit_surface.h"
 
 #include <algorithm>
 

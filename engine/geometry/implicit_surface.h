@@ -3,7 +3,7 @@
 // outside, 0 on the surface, in body space, centred on the body origin. The sphere and the box are
 // exact signed distances (|grad phi| = 1 wherever the gradient exists); the ellipsoid's seed
 // function is not a distance, so EllipsoidSurface uses a documented first-order approximation.
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "geometry/mesh.h"
+#include "rbsim/geometry/mesh.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "geometry/polygon_triangulation.h"
+#include "rbsim/geometry/polygon_triangulation.h"
 
 #include <algorithm>
 #include <array>

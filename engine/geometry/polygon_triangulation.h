@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/mesh.h"
+#include "rbsim/geometry/mesh.h"
 
 namespace rbsim {
 

@@ -1,10 +1,10 @@
-#include "geometry/shapes.h"
+#include "rbsim/geometry/shapes.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "geometry/polygon_triangulation.h"
+#include "rbsim/geometry/polygon_triangulation.h"
 
 namespace rbsim {
 

@@ -4,8 +4,8 @@
 // std::invalid_argument naming it.
 #include <vector>
 
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

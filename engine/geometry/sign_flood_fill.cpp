@@ -1,4 +1,4 @@
-#include "geometry/sign_flood_fill.h"
+#include "rbsim/geometry/sign_flood_fill.h"
 
 #include <cstdint>
 

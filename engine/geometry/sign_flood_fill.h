@@ -4,8 +4,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "geometry/grid_shape.h"
-#include "geometry/triangle_bvh.h"
+#include "rbsim/geometry/grid_shape.h"
+#include "rbsim/geometry/triangle_bvh.h"
 
 namespace rbsim {
 

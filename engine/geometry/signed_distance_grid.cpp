@@ -1,4 +1,4 @@
-#include "geometry/signed_distance_grid.h"
+#include "rbsim/geometry/signed_distance_grid.h"
 
 #include <algorithm>
 #include <ctime>
@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "geometry/fast_marching.h"
-#include "geometry/sign_flood_fill.h"
-#include "geometry/triangle_bvh.h"
+#include "rbsim/geometry/fast_marching.h"
+#include "rbsim/geometry/sign_flood_fill.h"
+#include "rbsim/geometry/triangle_bvh.h"
 
 namespace rbsim {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "geometry/grid_shape.h"
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/geometry/grid_shape.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "geometry/surface_samples.h"
+#include "rbsim/geometry/surface_samples.h"
 
 #include <algorithm>
 #include <cmath>

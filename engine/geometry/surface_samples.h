@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

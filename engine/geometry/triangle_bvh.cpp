@@ -1,4 +1,4 @@
-#include "geometry/triangle_bvh.h"
+#include "rbsim/geometry/triangle_bvh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/distance.h"
 
 namespace rbsim {
 

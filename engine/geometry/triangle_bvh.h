@@ -10,9 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "collision/aabb.h"
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/collision/aabb.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,9 +1,9 @@
-#include "integrate/integrator.h"
+#include "rbsim/integrate/integrator.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "body/body_state.h"
-#include "math/types.h"
+#include "rbsim/body/body_state.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,14 +1,14 @@
-#include "io/obj_loader.h"
+#include "rbsim/io/obj_loader.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <tiny_obj_loader.h>
 
-#include "geometry/polygon_triangulation.h"
-#include "io/input_error.h"
-#include "io/obj_prescan.h"
-#include "io/read_file.h"
+#include "rbsim/geometry/polygon_triangulation.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/io/obj_prescan.h"
+#include "rbsim/io/read_file.h"
 
 namespace rbsim {
 

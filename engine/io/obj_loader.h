@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "geometry/mesh.h"
+#include "rbsim/geometry/mesh.h"
 
 namespace rbsim {
 

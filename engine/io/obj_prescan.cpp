@@ -1,12 +1,12 @@
-#include "io/obj_prescan.h"
+#include "rbsim/io/obj_prescan.h"
 
 #include <climits>
 #include <cstdio>
 #include <vector>
 
-#include "geometry/mesh.h"
-#include "io/input_error.h"
-#include "io/obj_loader.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/io/obj_loader.h"
 
 namespace rbsim {
 

@@ -1,10 +1,10 @@
-#include "io/read_file.h"
+#include "rbsim/io/read_file.h"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "mass/mass_model.h"
+#include "rbsim/mass/mass_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "geometry/triangle_bvh.h"
-#include "io/input_error.h"
+#include "rbsim/geometry/triangle_bvh.h"
+#include "rbsim/io/input_error.h"
 
 namespace rbsim {
 

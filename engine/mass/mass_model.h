@@ -4,8 +4,8 @@
 #include <memory>
 #include <optional>
 
-#include "geometry/mesh.h"
-#include "mass/mass_properties.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/mass/mass_properties.h"
 
 namespace rbsim {
 

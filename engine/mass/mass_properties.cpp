@@ -1,4 +1,4 @@
-#include "mass/mass_properties.h"
+#include "rbsim/mass/mass_properties.h"
 
 namespace rbsim {
 

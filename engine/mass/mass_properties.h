@@ -2,8 +2,8 @@
 // Mass, centre of mass and inertia tensor about the centre of mass, in body axes.
 #include <string>
 
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

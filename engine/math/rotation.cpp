@@ -1,4 +1,4 @@
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 
 #include <cmath>
 

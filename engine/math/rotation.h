@@ -1,6 +1,6 @@
 #pragma once
 // Rotation helpers shared by the integrators, the scene loader and the tests.
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

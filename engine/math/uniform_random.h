@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <random>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "particles/cloth.h"
+#include "rbsim/particles/cloth.h"
 
 namespace rbsim {
 

@@ -5,10 +5,10 @@
 // mass-spring model", Graphics Interface 1995), and two triangles per grid cell for drawing.
 #include <vector>
 
-#include "geometry/mesh.h"
-#include "particles/particle_def.h"
-#include "particles/particle_forces.h"
-#include "particles/particle_store.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/particles/particle_def.h"
+#include "rbsim/particles/particle_forces.h"
+#include "rbsim/particles/particle_store.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "particles/emitter.h"
+#include "rbsim/particles/emitter.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,10 +6,10 @@
 #include <memory>
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "math/uniform_random.h"
-#include "particles/particle_def.h"
-#include "particles/particle_store.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/math/uniform_random.h"
+#include "rbsim/particles/particle_def.h"
+#include "rbsim/particles/particle_store.h"
 
 namespace rbsim {
 

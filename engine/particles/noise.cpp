@@ -1,4 +1,4 @@
-#include "particles/noise.h"
+#include "rbsim/particles/noise.h"
 
 #include <cmath>
 

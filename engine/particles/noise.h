@@ -6,7 +6,7 @@
 // the seed: runs are reproducible.
 #include <cstdint>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "particles/particle_collision.h"
+#include "rbsim/particles/particle_collision.h"
 
 namespace rbsim {
 

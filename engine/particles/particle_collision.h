@@ -8,11 +8,11 @@
 #include <algorithm>
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "collision/body_shape.h"
-#include "collision/contact.h"
-#include "geometry/mesh.h"
-#include "particles/particle_def.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/particles/particle_def.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "particles/particle_def.h"
+#include "rbsim/particles/particle_def.h"
 
 #include <cmath>
 #include <string>

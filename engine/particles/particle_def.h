@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

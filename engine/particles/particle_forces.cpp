@@ -1,8 +1,8 @@
-#include "particles/particle_forces.h"
+#include "rbsim/particles/particle_forces.h"
 
 #include <cmath>
 
-#include "particles/noise.h"
+#include "rbsim/particles/noise.h"
 
 namespace rbsim {
 

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "math/types.h"
-#include "particles/particle_def.h"
-#include "particles/particle_store.h"
+#include "rbsim/math/types.h"
+#include "rbsim/particles/particle_def.h"
+#include "rbsim/particles/particle_store.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "particles/particle_store.h"
+#include "rbsim/particles/particle_store.h"
 
 namespace rbsim {
 

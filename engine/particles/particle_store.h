@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

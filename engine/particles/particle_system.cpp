@@ -1,4 +1,4 @@
-#include "particles/particle_system.h"
+#include "rbsim/particles/particle_system.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "particles/cloth.h"
-#include "world/simulation_error.h"
+#include "rbsim/particles/cloth.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace rbsim {
 

@@ -6,14 +6,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "collision/contact.h"
-#include "math/uniform_random.h"
-#include "particles/emitter.h"
-#include "particles/particle_collision.h"
-#include "particles/particle_def.h"
-#include "particles/particle_forces.h"
-#include "particles/particle_store.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/math/uniform_random.h"
+#include "rbsim/particles/emitter.h"
+#include "rbsim/particles/particle_collision.h"
+#include "rbsim/particles/particle_def.h"
+#include "rbsim/particles/particle_forces.h"
+#include "rbsim/particles/particle_store.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "planar/planar_body.h"
+#include "rbsim/planar/planar_body.h"
 
 #include <cmath>
 #include <sstream>

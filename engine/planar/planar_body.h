@@ -10,8 +10,8 @@
 
 #include <Eigen/Core>
 
-#include "dynamics/impulse.h"
-#include "dynamics/material.h"
+#include "rbsim/dynamics/impulse.h"
+#include "rbsim/dynamics/material.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "planar/planar_world.h"
+#include "rbsim/planar/planar_world.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <string>
 #include <tuple>
 
-#include "world/simulation_error.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace rbsim {
 

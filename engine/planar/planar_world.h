@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "planar/planar_body.h"
+#include "rbsim/planar/planar_body.h"
 
 namespace rbsim {
 

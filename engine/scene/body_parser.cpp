@@ -1,4 +1,4 @@
-#include "scene/body_parser.h"
+#include "rbsim/scene/body_parser.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,15 +7,15 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "io/input_error.h"
-#include "io/obj_loader.h"
-#include "fracture/pieces.h"
-#include "geometry/shapes.h"
-#include "geometry/signed_distance_grid.h"
-#include "geometry/surface_samples.h"
-#include "mass/mass_model.h"
-#include "scene/fracture_parser.h"
-#include "scene/input_ranges.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/io/obj_loader.h"
+#include "rbsim/fracture/pieces.h"
+#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/signed_distance_grid.h"
+#include "rbsim/geometry/surface_samples.h"
+#include "rbsim/mass/mass_model.h"
+#include "rbsim/scene/fracture_parser.h"
+#include "rbsim/scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 

@@ -3,8 +3,8 @@
 // of planes, and of spawn blocks that create many bodies from one template. Internal to scene/.
 #include <string>
 
-#include "scene/json_fields.h"
-#include "scene/scene.h"
+#include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim::scene_detail {
 

@@ -1,13 +1,13 @@
-#include "scene/fracture_parser.h"
+#include "rbsim/scene/fracture_parser.h"
 
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
-#include "fracture/convex_clip.h"
-#include "fracture/pieces.h"
-#include "geometry/mesh.h"
+#include "rbsim/fracture/convex_clip.h"
+#include "rbsim/fracture/pieces.h"
+#include "rbsim/geometry/mesh.h"
 
 namespace rbsim::scene_detail {
 

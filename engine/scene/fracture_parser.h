@@ -2,9 +2,9 @@
 // Scene-file parsing of a body's "fracture" block (seed 000 "Fracture"). Internal to scene/.
 #include <memory>
 
-#include "body/body_def.h"
-#include "fracture/fracture.h"
-#include "scene/json_fields.h"
+#include "rbsim/body/body_def.h"
+#include "rbsim/fracture/fracture.h"
+#include "rbsim/scene/json_fields.h"
 
 namespace rbsim::scene_detail {
 

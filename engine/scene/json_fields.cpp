@@ -1,4 +1,4 @@
-#include "scene/json_fields.h"
+#include "rbsim/scene/json_fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 
 #include <Eigen/SVD>
 
-#include "body/rigid_body.h"
-#include "io/input_error.h"
-#include "math/rotation.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim {
 

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
-#include "scene/strict_json.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/scene/strict_json.h"
 
 namespace rbsim {
 

@@ -1,16 +1,16 @@
 // "particles": [{...}, ...]: one particle system per block. Every value is checked here with the
 // JSON path in the message; checkParticleSystemDef backs it up when the World is built.
-#include "scene/particle_parser.h"
+#include "rbsim/scene/particle_parser.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
-#include "io/input_error.h"
-#include "particles/emitter.h"
-#include "scene/body_parser.h"
-#include "scene/input_ranges.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/particles/emitter.h"
+#include "rbsim/scene/body_parser.h"
+#include "rbsim/scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Scene-file parsing of "particles" blocks into ParticleSystemDef and ParticleLook (keys in
 // README.md, "Scene format"). Internal to scene/; bodies and planes must be parsed first.
-#include "scene/json_fields.h"
-#include "scene/scene.h"
+#include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim::scene_detail {
 

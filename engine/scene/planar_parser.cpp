@@ -2,7 +2,7 @@
 // "shape": {"type": "box", "extents": [w, h]} or {"type": "polygon", "corners": [[x, y], ...]},
 // "mass", "position": [x, y], "angle_deg", "velocity": [vx, vy], "angular_velocity",
 // "restitution", "friction_static", "friction_kinetic", "color"}]}
-#include "scene/planar_parser.h"
+#include "rbsim/scene/planar_parser.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/body_parser.h"
+#include "rbsim/scene/body_parser.h"
 
 namespace rbsim::scene_detail {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Scene-file parsing of the "planar" block: a 2D world of polygons (engine/planar) in the xy
 // plane. Internal to scene/.
-#include "scene/json_fields.h"
-#include "scene/scene.h"
+#include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim::scene_detail {
 

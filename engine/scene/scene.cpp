@@ -1,4 +1,4 @@
-#include "scene/scene.h"
+#include "rbsim/scene/scene.h"
 
 #include <cmath>
 #include <filesystem>
@@ -6,17 +6,17 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "io/input_error.h"
-#include "io/obj_loader.h"
-#include "io/read_file.h"
-#include "mass/mass_model.h"
-#include "scene/body_parser.h"
-#include "scene/input_ranges.h"
-#include "scene/json_fields.h"
-#include "scene/particle_parser.h"
-#include "scene/planar_parser.h"
-#include "scene/soft_parser.h"
-#include "scene/strict_json.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/io/obj_loader.h"
+#include "rbsim/io/read_file.h"
+#include "rbsim/mass/mass_model.h"
+#include "rbsim/scene/body_parser.h"
+#include "rbsim/scene/input_ranges.h"
+#include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/particle_parser.h"
+#include "rbsim/scene/planar_parser.h"
+#include "rbsim/scene/soft_parser.h"
+#include "rbsim/scene/strict_json.h"
 
 namespace rbsim {
 

@@ -7,15 +7,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "body/body_def.h"
-#include "collision/contact.h"
-#include "particles/particle_def.h"
-#include "planar/planar_world.h"
-#include "soft/soft_body.h"
-#include "world/scripts.h"
-#include "world/spring.h"
-#include "world/settings.h"
-#include "world/world.h"
+#include "rbsim/body/body_def.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/particles/particle_def.h"
+#include "rbsim/planar/planar_world.h"
+#include "rbsim/soft/soft_body.h"
+#include "rbsim/world/scripts.h"
+#include "rbsim/world/spring.h"
+#include "rbsim/world/settings.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 

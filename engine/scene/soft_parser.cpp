@@ -1,6 +1,6 @@
 // "soft_bodies": [{...}, ...]: FEM soft bodies (engine/soft). A block of tetrahedra is generated
 // from "shape": {"type": "box", "extents": [x, y, z], "cells": [nx, ny, nz]}.
-#include "scene/soft_parser.h"
+#include "rbsim/scene/soft_parser.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/body_parser.h"
-#include "scene/input_ranges.h"
+#include "rbsim/scene/body_parser.h"
+#include "rbsim/scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Scene-file parsing of "soft_bodies" blocks into SoftBodyDef (keys in README.md, "Scene
 // format"). Internal to scene/.
-#include "scene/json_fields.h"
-#include "scene/scene.h"
+#include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim::scene_detail {
 

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <string>
 
-#include "math/uniform_random.h"
-#include "scene/body_parser.h"
-#include "scene/input_ranges.h"
+#include "rbsim/math/uniform_random.h"
+#include "rbsim/scene/body_parser.h"
+#include "rbsim/scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 

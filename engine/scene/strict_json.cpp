@@ -1,9 +1,9 @@
-#include "scene/strict_json.h"
+#include "rbsim/scene/strict_json.h"
 
 #include <unordered_set>
 #include <vector>
 
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "soft/constitutive.h"
+#include "rbsim/soft/constitutive.h"
 
 #include <cmath>
 #include <limits>

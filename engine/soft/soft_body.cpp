@@ -1,4 +1,4 @@
-#include "soft/soft_body.h"
+#include "rbsim/soft/soft_body.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "collision/contact.h"
-#include "dynamics/material.h"
-#include "soft/constitutive.h"
-#include "soft/tet_mesh.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/dynamics/material.h"
+#include "rbsim/soft/constitutive.h"
+#include "rbsim/soft/tet_mesh.h"
 
 namespace rbsim {
 

@@ -1,8 +1,8 @@
-#include "soft/soft_contact.h"
+#include "rbsim/soft/soft_contact.h"
 
 #include <cmath>
 
-#include "dynamics/impulse.h"
+#include "rbsim/dynamics/impulse.h"
 
 namespace rbsim {
 

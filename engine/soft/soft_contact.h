@@ -5,10 +5,10 @@
 // friction up to mu j_n. The body receives -j at the node, so momentum is exchanged exactly.
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "dynamics/material.h"
-#include "collision/body_shape.h"
-#include "soft/soft_body.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/dynamics/material.h"
+#include "rbsim/collision/body_shape.h"
+#include "rbsim/soft/soft_body.h"
 
 namespace rbsim {
 

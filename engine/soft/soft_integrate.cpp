@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "soft/soft_body.h"
+#include "rbsim/soft/soft_body.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "soft/tet_mesh.h"
+#include "rbsim/soft/tet_mesh.h"
 
 #include <algorithm>
 #include <map>

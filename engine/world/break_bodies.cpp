@@ -3,7 +3,7 @@
 // takes the body's index, so every index held elsewhere stays valid; the others are appended.
 #include <string>
 
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 

@@ -1,17 +1,17 @@
-#include "world/collision_pipeline.h"
+#include "rbsim/world/collision_pipeline.h"
 
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
-#include "collision/broadphase/brute_force.h"
-#include "collision/broadphase/sweep_and_prune.h"
-#include "collision/narrowphase/box_box.h"
-#include "collision/narrowphase/convex_convex.h"
-#include "collision/narrowphase/convex_plane.h"
-#include "collision/narrowphase/sdf_contact.h"
-#include "world/continuous_collision.h"
-#include "world/simulation_error.h"
+#include "rbsim/collision/broadphase/brute_force.h"
+#include "rbsim/collision/broadphase/sweep_and_prune.h"
+#include "rbsim/collision/narrowphase/box_box.h"
+#include "rbsim/collision/narrowphase/convex_convex.h"
+#include "rbsim/collision/narrowphase/convex_plane.h"
+#include "rbsim/collision/narrowphase/sdf_contact.h"
+#include "rbsim/world/continuous_collision.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace rbsim {
 

@@ -7,12 +7,12 @@
 #include <memory>
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "collision/body_shape.h"
-#include "collision/broadphase/broad_phase.h"
-#include "collision/contact.h"
-#include "collision/narrowphase/query_log.h"
-#include "world/settings.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/broadphase/broad_phase.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/collision/narrowphase/query_log.h"
+#include "rbsim/world/settings.h"
 
 namespace rbsim {
 

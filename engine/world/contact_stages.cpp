@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 

@@ -1,9 +1,9 @@
-#include "world/continuous_collision.h"
+#include "rbsim/world/continuous_collision.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "collision/narrowphase/convex_convex.h"
+#include "rbsim/collision/narrowphase/convex_convex.h"
 
 namespace rbsim {
 

@@ -10,9 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "body/body_state.h"
-#include "collision/contact.h"
-#include "math/types.h"
+#include "rbsim/body/body_state.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -4,9 +4,9 @@
 #include <sstream>
 #include <string>
 
-#include "integrate/integrator.h"
-#include "world/simulation_error.h"
-#include "world/world.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/world/simulation_error.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 

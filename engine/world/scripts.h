@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <optional>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

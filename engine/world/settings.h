@@ -3,9 +3,9 @@
 // PhysicsSettings). Scenes and `--set world.KEY=VALUE` override them.
 #include <string>
 
-#include "integrate/integrator.h"
-#include "mass/mass_properties.h"
-#include "math/types.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -3,7 +3,7 @@
 // spring forces F = -k (|d| - rest) d/|d| - c v_rel along d). Accumulated each step with gravity.
 #include <cstddef>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "integrate/integrator.h"
-#include "soft/soft_contact.h"
-#include "world/islands.h"
-#include "world/simulation_error.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/soft/soft_contact.h"
+#include "rbsim/world/islands.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace rbsim {
 

@@ -7,21 +7,21 @@
 #include <optional>
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "collision/body_shape.h"
-#include "collision/contact.h"
-#include "dynamics/contact_solver.h"
-#include "dynamics/material.h"
-#include "dynamics/soft_step_solver.h"
-#include "fracture/fracture.h"
-#include "particles/particle_collision.h"
-#include "particles/particle_system.h"
-#include "planar/planar_world.h"
-#include "soft/soft_body.h"
-#include "world/collision_pipeline.h"
-#include "world/scripts.h"
-#include "world/spring.h"
-#include "world/settings.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/dynamics/contact_solver.h"
+#include "rbsim/dynamics/material.h"
+#include "rbsim/dynamics/soft_step_solver.h"
+#include "rbsim/fracture/fracture.h"
+#include "rbsim/particles/particle_collision.h"
+#include "rbsim/particles/particle_system.h"
+#include "rbsim/planar/planar_world.h"
+#include "rbsim/soft/soft_body.h"
+#include "rbsim/world/collision_pipeline.h"
+#include "rbsim/world/scripts.h"
+#include "rbsim/world/spring.h"
+#include "rbsim/world/settings.h"
 
 namespace rbsim {
 

@@ -10,13 +10,13 @@
 #include <gtest/gtest.h>
 
 #include "demos/demo.h"
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 #include "paths.h"
 #include "run/compare_view.h"
 #include "run/phase.h"
 #include "run/runner.h"
-#include "scene/scene.h"
-#include "world/world.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::app {
 namespace {

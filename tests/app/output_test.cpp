@@ -17,7 +17,7 @@
 #include "shell_command.h"
 
 #include "flag_values.h"
-#include "io/input_error.h"
+#include "rbsim/io/input_error.h"
 #include "render/checked_file.h"
 #include "render/frame_sink.h"
 #include "render/png_file.h"

@@ -8,8 +8,8 @@
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
-#include "geometry/mesh.h"
-#include "mass/mass_properties.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/mass/mass_properties.h"
 #include "render/projection.h"
 #include "window/orbit_camera.h"
 

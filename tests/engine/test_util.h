@@ -9,12 +9,12 @@
 
 #include <gtest/gtest.h>
 
-#include "body/body_def.h"
-#include "geometry/mesh.h"
-#include "integrate/integrator.h"
-#include "mass/mass_properties.h"
-#include "math/types.h"
-#include "world/world.h"
+#include "rbsim/body/body_def.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/math/types.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 // Test names and messages show "expmap", not the enum's bytes.

@@ -5,13 +5,13 @@
 #include <cstdint>
 #include <string>
 
-#include "geometry/signed_distance_grid.h"
-#include "geometry/surface_samples.h"
-#include "io/input_error.h"
-#include "io/obj_loader.h"
-#include "mass/mass_model.h"
-#include "world/simulation_error.h"
-#include "world/world.h"
+#include "rbsim/geometry/signed_distance_grid.h"
+#include "rbsim/geometry/surface_samples.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/io/obj_loader.h"
+#include "rbsim/mass/mass_model.h"
+#include "rbsim/world/simulation_error.h"
+#include "rbsim/world/world.h"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
-#include "world/simulation_error.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace rbsim::fuzz {
 

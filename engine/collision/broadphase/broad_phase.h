@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "collision/aabb.h"
+#include "rbsim/collision/aabb.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "collision/broadphase/brute_force.h"
+#include "rbsim/collision/broadphase/brute_force.h"
 
 namespace rbsim {
 

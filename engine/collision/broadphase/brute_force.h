@@ -5,8 +5,8 @@
 // "Tips for debugging a collision detection system").
 #include <vector>
 
-#include "collision/broadphase/broad_phase.h"
-#include "collision/broadphase/proxy_ids.h"
+#include "rbsim/collision/broadphase/broad_phase.h"
+#include "rbsim/collision/broadphase/proxy_ids.h"
 
 namespace rbsim {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "collision/broadphase/broad_phase.h"
+#include "rbsim/collision/broadphase/broad_phase.h"
 
 namespace rbsim {
 

@@ -1,11 +1,11 @@
-#include "collision/broadphase/sweep_and_prune.h"
+#include "rbsim/collision/broadphase/sweep_and_prune.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "collision/broadphase/slab_mask.h"
+#include "rbsim/collision/broadphase/slab_mask.h"
 
 namespace rbsim {
 namespace {

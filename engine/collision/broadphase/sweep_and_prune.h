@@ -35,8 +35,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "collision/broadphase/broad_phase.h"
-#include "collision/broadphase/proxy_ids.h"
+#include "rbsim/collision/broadphase/broad_phase.h"
+#include "rbsim/collision/broadphase/proxy_ids.h"
 
 namespace rbsim {
 

@@ -1,13 +1,13 @@
-#include "collision/narrowphase/box_box.h"
+#include "rbsim/collision/narrowphase/box_box.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
-#include "collision/narrowphase/distance.h"
-#include "collision/narrowphase/manifold_reduction.h"
-#include "collision/narrowphase/polygon_clip.h"
+#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/manifold_reduction.h"
+#include "rbsim/collision/narrowphase/polygon_clip.h"
 
 namespace rbsim {
 

@@ -6,9 +6,9 @@
 // reference face kept; for an edge axis, one point from the closest points of the two edges.
 #include <optional>
 
-#include "collision/contact.h"
-#include "geometry/mesh.h"
-#include "math/types.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

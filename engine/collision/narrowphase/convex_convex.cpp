@@ -1,14 +1,14 @@
-#include "collision/narrowphase/convex_convex.h"
+#include "rbsim/collision/narrowphase/convex_convex.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "collision/narrowphase/distance.h"
-#include "collision/narrowphase/epa.h"
-#include "collision/narrowphase/gjk.h"
-#include "collision/narrowphase/manifold_reduction.h"
-#include "collision/narrowphase/polygon_clip.h"
+#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/epa.h"
+#include "rbsim/collision/narrowphase/gjk.h"
+#include "rbsim/collision/narrowphase/manifold_reduction.h"
+#include "rbsim/collision/narrowphase/polygon_clip.h"
 
 namespace rbsim {
 

@@ -7,9 +7,9 @@
 // box_box.h instead. Also the plain GJK distance, for demos and continuous collision detection.
 #include <vector>
 
-#include "collision/contact.h"
-#include "collision/narrowphase/box_box.h"
-#include "math/types.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/collision/narrowphase/box_box.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

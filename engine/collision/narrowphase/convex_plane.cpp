@@ -1,8 +1,8 @@
-#include "collision/narrowphase/convex_plane.h"
+#include "rbsim/collision/narrowphase/convex_plane.h"
 
 #include <algorithm>
 
-#include "collision/narrowphase/manifold_reduction.h"
+#include "rbsim/collision/narrowphase/manifold_reduction.h"
 
 namespace rbsim {
 

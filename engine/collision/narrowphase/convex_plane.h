@@ -9,8 +9,8 @@
 // vertex's projection onto the plane.
 #include <vector>
 
-#include "collision/contact.h"
-#include "math/types.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

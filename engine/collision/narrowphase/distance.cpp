@@ -1,4 +1,4 @@
-#include "collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/distance.h"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 // Voronoi regions (Ericson, Real-Time Collision Detection §5.1.5); segment-segment is §5.1.9.
 #include <array>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

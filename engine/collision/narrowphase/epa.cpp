@@ -1,4 +1,4 @@
-#include "collision/narrowphase/epa.h"
+#include "rbsim/collision/narrowphase/epa.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-#include "collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/distance.h"
 
 namespace rbsim {
 

@@ -6,8 +6,8 @@
 // hulls).
 #include <vector>
 
-#include "collision/narrowphase/gjk.h"
-#include "math/types.h"
+#include "rbsim/collision/narrowphase/gjk.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

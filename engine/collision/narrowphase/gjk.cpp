@@ -1,10 +1,10 @@
-#include "collision/narrowphase/gjk.h"
+#include "rbsim/collision/narrowphase/gjk.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/distance.h"
 
 namespace rbsim {
 

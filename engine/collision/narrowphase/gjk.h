@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,4 +1,4 @@
-#include "collision/narrowphase/manifold_reduction.h"
+#include "rbsim/collision/narrowphase/manifold_reduction.h"
 
 #include <cmath>
 #include <cstddef>

@@ -5,8 +5,8 @@
 // most area to that triangle. Areas and distances are measured in the contact plane.
 #include <vector>
 
-#include "collision/contact.h"
-#include "math/types.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

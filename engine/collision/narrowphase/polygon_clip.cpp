@@ -1,4 +1,4 @@
-#include "collision/narrowphase/polygon_clip.h"
+#include "rbsim/collision/narrowphase/polygon_clip.h"
 
 #include <algorithm>
 #include <numeric>

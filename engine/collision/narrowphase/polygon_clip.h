@@ -4,7 +4,7 @@
 // seen along a direction (Andrew's monotone chain, 1979), both in 3D.
 #include <vector>
 
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

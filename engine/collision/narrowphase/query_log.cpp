@@ -1,4 +1,4 @@
-#include "collision/narrowphase/query_log.h"
+#include "rbsim/collision/narrowphase/query_log.h"
 
 #include <algorithm>
 #include <ios>

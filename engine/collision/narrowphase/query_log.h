@@ -8,8 +8,8 @@
 #include <ostream>
 #include <vector>
 
-#include "collision/contact.h"
-#include "math/types.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

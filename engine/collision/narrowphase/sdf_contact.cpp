@@ -1,9 +1,9 @@
-#include "collision/narrowphase/sdf_contact.h"
+#include "rbsim/collision/narrowphase/sdf_contact.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "collision/narrowphase/manifold_reduction.h"
+#include "rbsim/collision/narrowphase/manifold_reduction.h"
 
 namespace rbsim {
 

@@ -7,9 +7,9 @@
 // the floor and the wall), so they are grouped by normal into several manifolds.
 #include <vector>
 
-#include "body/rigid_body.h"
-#include "collision/body_shape.h"
-#include "collision/contact.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/contact.h"
 
 namespace rbsim {
 

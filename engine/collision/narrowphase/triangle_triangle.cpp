@@ -1,11 +1,11 @@
-#include "collision/narrowphase/triangle_triangle.h"
+#include "rbsim/collision/narrowphase/triangle_triangle.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
 
-#include "collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/distance.h"
 
 namespace rbsim {
 

@@ -3,7 +3,7 @@
 // (seed 004 "Triangle intersection"): reject by each triangle's plane, then overlap the two
 // intervals the triangles cut from the line where the planes meet; coplanar triangles by 2D edge
 // and containment tests.
-#include "math/types.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 

@@ -1,13 +1,13 @@
 // body/rigid_body: manual x and R (seed 004 "TO DO: change x and R and redraw"), the derived
 // quantities, and the force/torque accumulators (seed 004 "Force and torque").
-#include "body/rigid_body.h"
+#include "rbsim/body/rigid_body.h"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -1,6 +1,6 @@
 // Collisions through the whole pipeline (integrate, detect, solve): momentum conservation,
 // restitution, energy, and seed 001's three conditions on the solved impulses.
-#include "dynamics/contact_solver.h"
+#include "rbsim/dynamics/contact_solver.h"
 
 #include <cmath>
 #include <random>

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::test {
 

@@ -1,10 +1,10 @@
 // Seed 000's collision impulse and friction, seed 002's K matrices, on cases solved by hand.
-#include "dynamics/impulse.h"
+#include "rbsim/dynamics/impulse.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -1,14 +1,14 @@
 // Cutting convex meshes (engine/fracture/convex_clip.h, pieces.h): every piece is a closed,
 // outward-wound solid, and the pieces fill the body exactly: their volumes, first moments and
 // (by parallel axes) inertias sum to the body's.
-#include "fracture/convex_clip.h"
+#include "rbsim/fracture/convex_clip.h"
 
 #include <gtest/gtest.h>
 
-#include "fracture/pieces.h"
-#include "geometry/mesh.h"
-#include "mass/mass_properties.h"
-#include "math/uniform_random.h"
+#include "rbsim/fracture/pieces.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/math/uniform_random.h"
 
 namespace rbsim {
 namespace {

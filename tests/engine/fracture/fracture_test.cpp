@@ -1,12 +1,12 @@
 // Seed 000 "Fracture": pieces with v_i = v + omega x r_i and omega_i = omega keep the body's
 // linear and angular momentum (and its kinetic energy: the motion is still rigid) to rounding.
-#include "fracture/fracture.h"
+#include "rbsim/fracture/fracture.h"
 
 #include <gtest/gtest.h>
 
-#include "fracture/pieces.h"
-#include "mass/mass_model.h"
-#include "math/rotation.h"
+#include "rbsim/fracture/pieces.h"
+#include "rbsim/mass/mass_model.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim {
 namespace {

@@ -1,13 +1,13 @@
 // geometry/mesh: the seed's box vertex list, the topology checks that guard exact inertia, and the
 // convexity test that decides whether a closed mesh needs a signed distance grid.
-#include "geometry/mesh.h"
+#include "rbsim/geometry/mesh.h"
 
 #include <chrono>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "geometry/shapes.h"
+#include "rbsim/geometry/shapes.h"
 #include "test_util.h"
 
 namespace rbsim {

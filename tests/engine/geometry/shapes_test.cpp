@@ -1,6 +1,6 @@
 // geometry/shapes and geometry/surface_samples: every generator gives a closed, consistently and
 // outwardly oriented mesh of the right volume; surface samples cover the surface.
-#include "geometry/shapes.h"
+#include "rbsim/geometry/shapes.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "geometry/surface_samples.h"
+#include "rbsim/geometry/surface_samples.h"
 
 namespace rbsim {
 namespace {

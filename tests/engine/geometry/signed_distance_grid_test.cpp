@@ -1,7 +1,7 @@
 // geometry/signed_distance_grid: grid phi of sphere and box meshes against their analytic signed
 // distances, |grad phi| ~ 1, the sign at every grid point of a torus and of a hollow sphere,
 // exact trilinear interpolation of linear fields, determinism, and bad input.
-#include "geometry/signed_distance_grid.h"
+#include "rbsim/geometry/signed_distance_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <random>
 #include <stdexcept>
 
-#include "geometry/implicit_surface.h"
-#include "geometry/shapes.h"
-#include "geometry/surface_samples.h"
+#include "rbsim/geometry/implicit_surface.h"
+#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/surface_samples.h"
 
 namespace rbsim {
 namespace {

@@ -1,6 +1,6 @@
 // geometry/triangle_bvh: closest points on a triangle against brute-force minimisation, and the
 // hierarchy's nearest, within-radius and segment answers against testing every triangle.
-#include "geometry/triangle_bvh.h"
+#include "rbsim/geometry/triangle_bvh.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <random>
 #include <set>
 
-#include "collision/narrowphase/distance.h"
-#include "geometry/shapes.h"
+#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/shapes.h"
 
 namespace rbsim {
 namespace {

@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "integrate/integrator.h"
-#include "math/rotation.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -12,16 +12,16 @@
 //                 step maps R's columns to Rot(atan h) R's columns scaled by sqrt(1 + h^2), 1 and
 //                 sqrt(1 + h^2); Gram-Schmidt removes positive column scales exactly, so the
 //                 step turns by exactly atan(h) = h - h^3/3 + ... per step.
-#include "integrate/integrator.h"
+#include "rbsim/integrate/integrator.h"
 
 #include <cmath>
 #include <functional>
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -1,5 +1,5 @@
 // io/obj_loader: the hand-written OBJ files in tests/engine/data and the loader's input errors.
-#include "io/obj_loader.h"
+#include "rbsim/io/obj_loader.h"
 
 #include <filesystem>
 #include <fstream>
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
-#include "mass/mass_properties.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/mass/mass_properties.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -1,6 +1,6 @@
 // mass/mass_model: from a shape and a mass or density to the re-centred mesh and I_body, and the
 // input errors a scene can trigger.
-#include "mass/mass_model.h"
+#include "rbsim/mass/mass_model.h"
 
 #include <cmath>
 #include <limits>
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
-#include "io/obj_loader.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/io/obj_loader.h"
 #include "test_util.h"
 
 namespace rbsim {

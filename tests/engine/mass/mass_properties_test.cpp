@@ -1,12 +1,12 @@
 // mass/mass_properties: the polyhedral integrals against closed forms, and the seed's cube proxy.
-#include "mass/mass_properties.h"
+#include "rbsim/mass/mass_properties.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "io/obj_loader.h"
-#include "math/rotation.h"
+#include "rbsim/io/obj_loader.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
 
 namespace rbsim {

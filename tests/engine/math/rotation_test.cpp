@@ -1,6 +1,6 @@
 // math/rotation: star matrix, axis-angle constructions, the seed's drift correction and the two
 // error measures the other suites rely on.
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 
 #include <cmath>
 #include <random>

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "math/uniform_random.h"
-#include "world/simulation_error.h"
+#include "rbsim/math/uniform_random.h"
+#include "rbsim/world/simulation_error.h"
 #include "particle_test_util.h"
 
 namespace rbsim {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "particle_test_util.h"
-#include "particles/particle_collision.h"
+#include "rbsim/particles/particle_collision.h"
 
 namespace rbsim {
 namespace {

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim {
 namespace {

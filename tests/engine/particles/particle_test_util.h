@@ -3,8 +3,8 @@
 // them, collisions and sleeping as each test needs.
 #include <cstddef>
 
-#include "particles/particle_def.h"
-#include "world/world.h"
+#include "rbsim/particles/particle_def.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim::test {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "particle_test_util.h"
-#include "scene/scene.h"
+#include "rbsim/scene/scene.h"
 
 namespace rbsim {
 namespace {

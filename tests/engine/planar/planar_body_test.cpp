@@ -1,7 +1,7 @@
 // planar/planar_body: seed 002's 2D rigid bodies against the 3D engine constrained to the xy
 // plane: the same inertia (I = I_33), the same motion under a force at a point, and the same
 // collision impulse with restitution and friction.
-#include "planar/planar_body.h"
+#include "rbsim/planar/planar_body.h"
 
 #include <cmath>
 #include <memory>
@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "dynamics/impulse.h"
-#include "geometry/mesh.h"
-#include "mass/mass_properties.h"
-#include "world/world.h"
+#include "rbsim/dynamics/impulse.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

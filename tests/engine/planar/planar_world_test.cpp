@@ -1,7 +1,7 @@
 // planar/planar_world: 2D boxes on the ground: a dropped box comes to rest on its face without
 // sinking, a stack of five stands, a bouncing box never rises above its last apex, and a box
 // sliding on the ground stops at v0^2 / (2 mu_k g).
-#include "planar/planar_world.h"
+#include "rbsim/planar/planar_world.h"
 
 #include <cmath>
 

@@ -9,12 +9,12 @@
 
 #include <gtest/gtest.h>
 
-#include "integrate/integrator.h"
-#include "mass/mass_properties.h"
-#include "math/rotation.h"
+#include "rbsim/integrate/integrator.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/math/rotation.h"
 #include "reference/torque_free.h"
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mass/mass_properties.h"
+#include "rbsim/mass/mass_properties.h"
 #include "reference/euler_rk4.h"
 #include "reference/torque_free.h"
 #include "test_util.h"

@@ -4,8 +4,8 @@
 // Classical Mechanics §5.5), coupled with the kinematics dR/dt = R [w_body]x.
 #include <cmath>
 
-#include "math/rotation.h"
-#include "math/types.h"
+#include "rbsim/math/rotation.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim::test {
 

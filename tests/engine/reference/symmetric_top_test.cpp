@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "reference/euler_rk4.h"
 #include "reference/torque_free.h"
 #include "test_util.h"

@@ -12,7 +12,7 @@
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "reference/euler_rk4.h"
 #include "test_util.h"
 

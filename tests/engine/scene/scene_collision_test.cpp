@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
-#include "world/simulation_error.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/simulation_error.h"
 
 namespace rbsim {
 namespace {

@@ -1,6 +1,6 @@
 // scene/: parseScene on documents built in the test, loadScene on files written to a temporary
 // directory, and --set overrides. Every error must name the JSON path (or line and column).
-#include "scene/scene.h"
+#include "rbsim/scene/scene.h"
 
 #include <cmath>
 #include <filesystem>
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
-#include "math/rotation.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/input_error.h"
-#include "scene/scene.h"
-#include "scene/strict_json.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene.h"
+#include "rbsim/scene/strict_json.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -1,13 +1,13 @@
 // soft/constitutive: the seed's Lame constants, every model's stress as the gradient of its
 // energy, rest and rotation invariance, and the differential used by backward Euler.
-#include "soft/constitutive.h"
+#include "rbsim/soft/constitutive.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim {
 namespace {

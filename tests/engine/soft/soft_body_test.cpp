@@ -3,14 +3,14 @@
 // rigid motion, a bar stretching by F L / (E A) and contracting by nu, bounded energy of an
 // undamped oscillation, the explicit step's stability limit, momentum kept in free flight, and
 // a block resting on the ground.
-#include "soft/soft_body.h"
+#include "rbsim/soft/soft_body.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "geometry/mesh.h"
-#include "mass/mass_properties.h"
-#include "world/world.h"
+#include "rbsim/geometry/mesh.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -11,12 +11,12 @@
 
 #include <gtest/gtest.h>
 
-#include "mass/mass_properties.h"
-#include "particles/particle_def.h"
-#include "particles/particle_system.h"
+#include "rbsim/mass/mass_properties.h"
+#include "rbsim/particles/particle_def.h"
+#include "rbsim/particles/particle_system.h"
 #include "stress/stress_length.h"
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -19,9 +19,9 @@
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -44,11 +44,11 @@
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "stress/stress_length.h"
 #include "test_util.h"
-#include "world/simulation_error.h"
-#include "world/world.h"
+#include "rbsim/world/simulation_error.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -2,9 +2,9 @@
 // pieces within the step, the system's momentum unchanged; hit gently, it stays whole.
 #include <gtest/gtest.h>
 
-#include "fracture/pieces.h"
+#include "rbsim/fracture/pieces.h"
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "test_util.h"
-#include "world/continuous_collision.h"
-#include "world/world.h"
+#include "rbsim/world/continuous_collision.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

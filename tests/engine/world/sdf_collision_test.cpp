@@ -3,12 +3,12 @@
 // narrow phase gets wrong, and conservation in a collision of two non-convex bodies.
 #include <gtest/gtest.h>
 
-#include "geometry/shapes.h"
-#include "geometry/signed_distance_grid.h"
-#include "geometry/surface_samples.h"
-#include "mass/mass_model.h"
+#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/signed_distance_grid.h"
+#include "rbsim/geometry/surface_samples.h"
+#include "rbsim/mass/mass_model.h"
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

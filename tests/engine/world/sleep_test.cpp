@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "test_util.h"
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 namespace {

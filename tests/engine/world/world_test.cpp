@@ -1,6 +1,6 @@
 // world/world: the step pipeline's stages, pose events, scripted forces, determinism and the
 // time-step guard.
-#include "world/world.h"
+#include "rbsim/world/world.h"
 
 #include <cmath>
 #include <limits>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "math/rotation.h"
+#include "rbsim/math/rotation.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -1,6 +1,6 @@
 // collision/narrowphase/distance: seed 004's point-point, point-edge and point-face distances and
 // segment-segment closest points, on hand-made cases and against independent references.
-#include "collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/distance.h"
 
 #include <cmath>
 #include <random>

@@ -5,8 +5,8 @@
 #include <random>
 #include <vector>
 
-#include "collision/narrowphase/box_box.h"
-#include "math/types.h"
+#include "rbsim/collision/narrowphase/box_box.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim::test {
 

@@ -1,6 +1,6 @@
 // collision/narrowphase/query_log: the ring buffer keeps the last N queries, oldest first, and
 // dumps them as CSV with a header.
-#include "collision/narrowphase/query_log.h"
+#include "rbsim/collision/narrowphase/query_log.h"
 
 #include <algorithm>
 #include <sstream>

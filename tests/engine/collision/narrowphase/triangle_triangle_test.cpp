@@ -1,13 +1,13 @@
 // collision/narrowphase/triangle_triangle: Moller's test (seed 004 "Triangle intersection") on
 // hand-made cases, and against an independent edge-through-triangle check on random triangles.
-#include "collision/narrowphase/triangle_triangle.h"
+#include "rbsim/collision/narrowphase/triangle_triangle.h"
 
 #include <array>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "collision/narrowphase/distance.h"
+#include "rbsim/collision/narrowphase/distance.h"
 #include "test_util.h"
 
 namespace rbsim {
