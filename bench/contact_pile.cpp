@@ -43,7 +43,7 @@ void runPile(int count, bool allowSleep, Settings::ContactSolverMethod solver) {
     def.mesh = mesh;
     def.mass = kPileBoxMass;
     def.inertiaBody = cuboidInertia(kPileBoxMass, extents);
-    def.boxHalfExtents = 0.5 * extents;
+    def.shape = Shape::box(0.5 * extents);
     def.material = material;
     const PileCentre c = pileBoxCentre(i, count);
     def.position = Vec3(c.x, c.y, c.z);

@@ -67,7 +67,7 @@ Result run(const SceneCase& scene, Settings::ContactSolverMethod solver, Integra
     def.mesh = mesh;
     def.mass = kStackBoxMass;
     def.inertiaBody = cuboidInertia(kStackBoxMass, extents);
-    def.boxHalfExtents = 0.5 * extents;
+    def.shape = Shape::box(0.5 * extents);
     def.material = material;
     def.position = Vec3(scene.boxes[i].x, scene.boxes[i].y, scene.boxes[i].z);
     world.addBody(def);

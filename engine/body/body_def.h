@@ -9,6 +9,7 @@
 #include "rbsim/dynamics/material.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/math/types.h"
+#include "rbsim/shapes/shape.h"
 
 namespace rbsim {
 
@@ -29,9 +30,10 @@ struct BodyDef {
   // A static body never moves: it is not integrated, forces do not act on it, and it behaves as
   // if its mass were infinite. Its mass and inertia are kept for display only.
   bool isStatic = false;
-  // Set when the shape is a box primitive: its half extents [m] in body axes, which lets the
-  // narrow phase use the box-box separating-axis test instead of GJK on the vertex list.
-  std::optional<Vec3> boxHalfExtents;
+  // The collision shape (shapes/shape.h), in the body frame of `mesh`. Unset: the mesh decides,
+  // as shapeOfMesh does (a box's eight corners make a box, a body with a grid is a mesh, any
+  // other mesh its convex hull), so a body built in C++ collides as the same body read from JSON.
+  std::optional<Shape> shape;
   // Set for a body that breaks into these pieces when a contact impulse exceeds the pattern's
   // threshold (seed 000 "Fracture"; World stage BreakBodies).
   std::shared_ptr<const FracturePattern> fracture;

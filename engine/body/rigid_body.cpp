@@ -14,9 +14,9 @@ RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), mass_(def.ma
   cold->name = def.name;
   cold->mesh = def.mesh;
   cold->color = def.color;
-  cold->boxHalfExtents = def.boxHalfExtents;
   const std::string& name = cold->name;
   if (!cold->mesh) throw std::invalid_argument("body '" + name + "': no mesh");
+  cold->shape = def.shape ? *def.shape : shapeOfMesh(*cold->mesh, def.sdf != nullptr);
   if (!(mass_ > 0.0) || !std::isfinite(mass_)) {
     throw std::invalid_argument("body '" + name + "': mass must be a positive finite number");
   }

@@ -32,7 +32,7 @@ class alignas(64) RigidBody {
   const Mat3& inverseInertiaBody() const { return inputs_.inverseInertiaBody; }
   const Vec3& color() const { return cold_->color; }
   bool isStatic() const { return isStatic_; }  // never moves, never awake (BodyDef::isStatic)
-  const std::optional<Vec3>& boxHalfExtents() const { return cold_->boxHalfExtents; }
+  const Shape& shape() const { return cold_->shape; }  // collision shape, body frame
 
   // State Y(t).
   const BodyState& state() const { return state_; }
@@ -112,7 +112,7 @@ class alignas(64) RigidBody {
     std::string name;
     std::shared_ptr<const Mesh> mesh;
     Vec3 color = Vec3::Ones();
-    std::optional<Vec3> boxHalfExtents;
+    Shape shape;
     BodyInertia inertia;  // what implicit-gyro and dlm read besides StepInputs' own fields
   };
 

@@ -85,9 +85,21 @@ FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local) {
   return out;
 }
 
-BodyShape bodyShapeOf(const BodyDef& def) { return BodyShape{convexShapeOf(*def.mesh), def.sdf, def.surfaceSamples}; }
+BodyShape bodyShapeOf(const BodyDef& def) {
+  BodyShape out{convexShapeOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt};
+  // A sphere's or capsule's display mesh is inscribed in it: the exact surface answers instead.
+  if (def.shape && def.shape->isRound()) {
+    out.round = *def.shape;
+    out.convex.boundingRadius = def.shape->boundingRadius();
+  }
+  return out;
+}
 
 SurfaceQuery querySurface(const BodyShape& shape, const Vec3& local) {
+  if (shape.round) {
+    const auto [distance, normal] = shape.round->roundDistance(local);
+    return {distance, normal};
+  }
   if (shape.sdf) {
     // Seed 000 "Collision Detection": phi at the object-space point, grad phi / |grad phi| as the
     // normal. Where the gradient vanishes (the medial axis of a flat-bottomed interpolant), the

@@ -3,6 +3,7 @@
 // Particles, soft-body nodes and the surface samples of other bodies ask it (seed 000 "Rigid Body
 // Modeling": "check the surface of one body against the interior volume of another").
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "rbsim/body/body_def.h"
@@ -36,6 +37,7 @@ struct BodyShape {
   ConvexShape convex;                                // face planes; boundingRadius bounds the body
   std::shared_ptr<const SignedDistanceGrid> sdf;     // null: the face planes are the solid
   std::shared_ptr<const std::vector<Vec3>> samples;  // body frame; null: the mesh's vertices
+  std::optional<Shape> round;                        // set for a sphere or capsule: its exact surface
 };
 BodyShape bodyShapeOf(const BodyDef& def);
 

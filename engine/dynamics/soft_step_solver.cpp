@@ -49,7 +49,7 @@ const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {
   return it != cache_.end() && it->key == key ? &*it : nullptr;
 }
 
-void SoftStepSolver::prepare(const Contact& contact, std::size_t index,
+void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
                              const Material& material, const Settings& settings) {
   const bool plane = contact.kind == Contact::Kind::PlaneBody;
   const ContactManifold& m = contact.manifold;
@@ -83,10 +83,19 @@ void SoftStepSolver::prepare(const Contact& contact, std::size_t index,
   for (int i = 0; i < m.count; ++i) {
     Point p;
     const Vec3& position = m.points[i].position;
-    // The ground's slot never moves, so its anchors are their own body-frame coordinates.
-    p.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - xA));
-    p.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - xB));
     const double separation = -m.points[i].depth;
+    // A round side's surface point lies r - depth / 2 from its core along the normal
+    // (collision/narrowphase/shape_pairs.h puts the point midway between the surfaces).
+    const auto roundOffset = [&](int slot) {
+      if (slot == 0) return 0.0;
+      const Shape& shape = bodies[sims_[slot].body].shape();
+      return shape.isRound() ? shape.radius + 0.5 * separation : 0.0;
+    };
+    p.roundA = roundOffset(c.a) * n;
+    p.roundB = -roundOffset(c.b) * n;
+    // The ground's slot never moves, so its anchors are their own body-frame coordinates.
+    p.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - p.roundA - xA));
+    p.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - p.roundB - xB));
     p.baseSeparation = separation - n.dot((position - xB) - (position - xA));
     updateJacobians(c, p);
     p.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + p.crossB.dot(stateB.angularVelocity) -
@@ -118,8 +127,15 @@ void SoftStepSolver::updateJacobians(const Constraint& c, Point& p) const {
   const SolverState& A = states_[c.a];
   const SolverState& B = states_[c.b];
   const Vec3 xA = sims_[c.a].position0 + A.deltaPosition, xB = sims_[c.b].position0 + B.deltaPosition;
-  const Vec3 onA = A.orientation * p.localA, onB = B.orientation * p.localB;
-  const Vec3 point = 0.5 * (xA + onA + xB + onB);
+  const Vec3 onA = A.orientation * p.localA + p.roundA, onB = B.orientation * p.localB + p.roundB;
+  // A round body against the ground (a plane or a static body, which never moves) takes the
+  // impulse where it carries the point: the ground's copy stays where the step began, and
+  // halfway to it would put the force behind a ball rolling on, a torque that is not there.
+  // (Other shapes keep the midpoint, whose lag of half a step's slide the box suites are
+  // measured with.)
+  Vec3 point = 0.5 * (xA + onA + xB + onB);
+  if (c.a == 0 && !p.roundB.isZero(0.0)) point = xB + onB;
+  if (c.b == 0 && !p.roundA.isZero(0.0)) point = xA + onA;
   // The separation now, from the anchors carried by the bodies (no collision detection); the
   // poses change only in integratePositions, after which this runs again.
   p.separation = p.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
@@ -312,7 +328,7 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     const int b = slotOfBody_[contact.b], a = plane ? 0 : slotOfBody_[contact.a];
     if (a == 0 && b == 0) continue;  // asleep, or static against static
     const Material material = combine(bodyMaterials[contact.b], plane ? planeMaterials[contact.a] : bodyMaterials[contact.a]);
-    prepare(contact, i, material, settings);
+    prepare(bodies, contact, i, material, settings);
   }
 
   const double inverseH = 1.0 / h;

@@ -70,7 +70,13 @@ class SoftStepSolver {
   };
   struct Point {  // one manifold point
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // the point from each centre of mass, world [m]
-    Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();    // the point as each body carries it, body frame [m]
+    // The point as each body carries it, body frame [m]; for a sphere or capsule, the point of
+    // its core (centre or axis) under the contact, and the surface point is roundA / roundB
+    // beyond it in world frame: turning a ball about its centre does not move its surface, so
+    // its contact point must not turn with it (a rotated anchor lifts a rolling ball off the
+    // ground within a substep, and friction then brakes it).
+    Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();
+    Vec3 roundA = Vec3::Zero(), roundB = Vec3::Zero();  // world [m]; zero for other shapes
     Vec3 crossA = Vec3::Zero(), crossB = Vec3::Zero();      // r x n [m]
     Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
     std::array<Vec3, 2> frictionA{}, frictionB{};          // I^-1 (r x t_k)
@@ -108,7 +114,8 @@ class SoftStepSolver {
   };
 
   int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
-  void prepare(const Contact& contact, std::size_t index, const Material& material, const Settings& settings);
+  void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
+               const Settings& settings);
   const Cached* cached(std::uint64_t key) const;
   void updateJacobians(const Constraint& c, Point& p) const;
   void updateJacobians();

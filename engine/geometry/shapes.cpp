@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "rbsim/geometry/polygon_triangulation.h"
 
@@ -94,6 +95,45 @@ Mesh makeUvSphere(double radius, int segments, int rings) {
   }
   const std::uint32_t top = static_cast<std::uint32_t>(m.vertices.size());
   m.vertices.emplace_back(0.0, radius, 0.0);
+  for (int s = 0; s < segments; ++s) {
+    m.triangles.push_back({top, previous + static_cast<std::uint32_t>((s + 1) % segments), previous + s});
+  }
+  return m;
+}
+
+Mesh makeCapsule(double radius, double length, int segments, int rings) {
+  require(radius > 0.0, "makeCapsule", "radius is " + std::to_string(radius) + ", expected > 0");
+  require(length >= 0.0, "makeCapsule", "length is " + std::to_string(length) + ", expected >= 0");
+  require(segments >= 3, "makeCapsule", "segments is " + std::to_string(segments) + ", expected >= 3");
+  require(rings >= 2 && rings % 2 == 0, "makeCapsule", "rings is " + std::to_string(rings) + ", expected even, >= 2");
+  Mesh m;
+  m.name = "capsule";
+  const double half = 0.5 * length;
+  const std::uint32_t bottom = 0;
+  m.vertices.emplace_back(0.0, -radius - half, 0.0);
+  std::uint32_t previous = bottom;
+  // The sphere's rings, the lower half moved down by half the length and the upper half up; the
+  // equator ring is laid twice, once at each cap's rim, with the cylinder's band between them.
+  for (int r = 1; r < rings; ++r) {
+    std::vector<double> shifts{r < rings / 2 ? -half : half};
+    if (r == rings / 2 && half > 0.0) shifts = {-half, half};
+    for (const double shift : shifts) {
+      const std::uint32_t row = static_cast<std::uint32_t>(m.vertices.size());
+      for (int s = 0; s < segments; ++s) {
+        m.vertices.push_back(fromBottomPole(radius, kPi * r / rings, 2.0 * kPi * s / segments) + Vec3(0.0, shift, 0.0));
+      }
+      if (r == 1 && row == 1) {
+        for (int s = 0; s < segments; ++s) {
+          m.triangles.push_back({bottom, row + s, row + static_cast<std::uint32_t>((s + 1) % segments)});
+        }
+      } else {
+        bandBetween(m, previous, row, segments, false);
+      }
+      previous = row;
+    }
+  }
+  const std::uint32_t top = static_cast<std::uint32_t>(m.vertices.size());
+  m.vertices.emplace_back(0.0, radius + half, 0.0);
   for (int s = 0; s < segments; ++s) {
     m.triangles.push_back({top, previous + static_cast<std::uint32_t>((s + 1) % segments), previous + s});
   }

@@ -15,6 +15,11 @@ using Vec2 = Eigen::Vector2d;
 // to pole; vertices on the sphere of `radius` [m], so the mesh is inscribed in it.
 Mesh makeUvSphere(double radius, int segments, int rings);
 
+// Capsule along the y axis: a cylinder of `radius` [m] and `length` [m] (>= 0) capped by two
+// hemispheres, tessellated as makeUvSphere with `rings` even (the equator laid at both rims);
+// vertices on the exact capsule, so the mesh is inscribed in it.
+Mesh makeCapsule(double radius, double length, int segments, int rings);
+
 // Torus around the y axis: tube centre circle of `majorRadius` [m] in the xz plane, tube radius
 // `minorRadius` [m] < majorRadius; vertices on the exact torus.
 Mesh makeTorus(double majorRadius, double minorRadius, int majorSegments, int minorSegments);

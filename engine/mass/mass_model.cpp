@@ -115,7 +115,7 @@ MassProperties exactProperties(const Mesh& mesh, double density) {
 }  // namespace
 
 MassModel buildMassModel(Mesh mesh, std::optional<double> mass, std::optional<double> density,
-                         InertiaMethod method) {
+                         InertiaMethod method, const Shape* shape) {
   if (mass.has_value() == density.has_value()) {
     throw InputError("", "mass", "give exactly one of \"mass\" [kg] or \"density\" [kg/m^3]");
   }
@@ -130,7 +130,13 @@ MassModel buildMassModel(Mesh mesh, std::optional<double> mass, std::optional<do
   }
 
   MassProperties props;
-  if (method == InertiaMethod::Exact) {
+  const bool closedForm = shape != nullptr && (shape->isRound() || shape->type == ShapeType::Box);
+  if (method == InertiaMethod::Exact && closedForm) {
+    props.volume = roundOrBoxVolume(*shape);
+    props.mass = mass ? *mass : *density * props.volume;
+    props.inertia = roundOrBoxInertia(*shape, props.mass);
+    requireFinite(props, mesh);
+  } else if (method == InertiaMethod::Exact) {
     props = exactProperties(mesh, density.value_or(1.0));
     if (mass) {  // scale unit-density integrals to the requested mass
       props.inertia *= *mass / props.mass;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "rbsim/body/shape_body.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/io/obj_loader.h"
 #include "rbsim/fracture/pieces.h"
@@ -35,25 +36,33 @@ Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
   o.fail(key, "expected \"body\" or \"world\", got \"" + name + "\"");
 }
 
-// Tessellation of the generated round shapes: fine enough that a sphere's inscribed mesh loses
-// under 1 % of its volume, coarse enough that rendering and surface sampling stay cheap.
-constexpr int kRoundSegments = 48;  // around the axis [1]
-constexpr int kRoundRings = 24;     // from pole to pole (half as many for a bowl) [1]
+// Round shapes are tessellated as body/shape_body.h's display meshes (a bowl with half the rings).
+constexpr int kRoundSegments = kDisplaySegments;  // around the axis [1]
+constexpr int kRoundRings = kDisplayRings;        // from pole to pole [1]
 
 Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def) {
   const JsonObject shape = body.object("shape", {"type", "extents", "file", "scale", "radius", "major_radius",
-                                                  "minor_radius", "thickness", "stroke"});
+                                                  "minor_radius", "thickness", "stroke", "length"});
   const std::string type = shape.requiredString("type");
   try {
     if (type == "box") {
       shape.allowOnly({"type", "extents"}, "a \"box\" shape");
       const Vec3 extents = shape.positiveVec3("extents");
-      def.boxHalfExtents = 0.5 * extents;
+      def.shape = Shape::box(0.5 * extents);
       return makeBox(extents);
     }
     if (type == "sphere") {
       shape.allowOnly({"type", "radius"}, "a \"sphere\" shape");
-      return makeUvSphere(shape.positiveNumber("radius", 0.5), kRoundSegments, kRoundRings);
+      const double radius = shape.positiveNumber("radius", 0.5);
+      def.shape = Shape::sphere(radius);
+      return makeUvSphere(radius, kRoundSegments, kRoundRings);
+    }
+    if (type == "capsule") {
+      shape.allowOnly({"type", "radius", "length"}, "a \"capsule\" shape");
+      const double radius = shape.positiveNumber("radius", 0.25), length = shape.number("length", 1.0);
+      if (!(length >= 0.0)) shape.fail("length", "expected the distance between the caps' centres, >= 0 m");
+      def.shape = Shape::capsule(radius, 0.5 * length);
+      return makeCapsule(radius, length, kRoundSegments, kRoundRings);
     }
     if (type == "torus") {
       shape.allowOnly({"type", "major_radius", "minor_radius"}, "a \"torus\" shape");
@@ -101,7 +110,7 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
     for (Vec3& p : mesh.vertices) p *= scale;
     return mesh;
   }
-  shape.fail("type", "expected \"box\", \"sphere\", \"torus\", \"bowl\", \"letter_u\" or \"mesh\", got \"" + type + "\"");
+  shape.fail("type", "expected \"box\", \"sphere\", \"capsule\", \"torus\", \"bowl\", \"letter_u\" or \"mesh\", got \"" + type + "\"");
 }
 
 // A body of any shape gets a signed distance grid (seed 000 "Constructing Signed Distance
@@ -209,7 +218,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   if (b.has("density")) b.positiveNumber("density", 1.0);
   try {
     const MassModel model = buildMassModel(std::move(mesh), b.optionalPositive("mass"),
-                                           b.optionalPositive("density"), method);
+                                           b.optionalPositive("density"), method, def.shape ? &*def.shape : nullptr);
     def.mesh = model.mesh;
     def.mass = model.mass;
     def.inertiaBody = model.inertiaBody;

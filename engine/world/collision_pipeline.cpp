@@ -10,6 +10,7 @@
 #include "rbsim/collision/narrowphase/convex_convex.h"
 #include "rbsim/collision/narrowphase/convex_plane.h"
 #include "rbsim/collision/narrowphase/sdf_contact.h"
+#include "rbsim/collision/narrowphase/shape_pairs.h"
 #include "rbsim/world/continuous_collision.h"
 #include "rbsim/world/simulation_error.h"
 
@@ -30,6 +31,16 @@ bool aabbNearPlane(const Aabb& box, const Plane& plane, double margin) {
   return plane.signedDistance(lowest) <= margin;
 }
 
+// The body's bounding box where it is: a round shape's exact one (its display mesh is inscribed
+// in it), the vertices' for the others, whose shape is the hull of those vertices.
+Aabb boundsOf(const RigidBody& body) {
+  if (!body.shape().isRound()) return Aabb::of(body.worldVertices());
+  const auto [lo, hi] = body.shape().worldBounds(body.rotation(), body.position());
+  return {lo, hi};
+}
+
+PosedShape posed(const RigidBody& body) { return {&body.shape(), body.rotation(), body.position()}; }
+
 SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) {
   return SweptBody{&body.mesh().vertices, start, body.state(), radius};
 }
@@ -46,9 +57,13 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body) {
     radius = std::max(radius, p.norm());
     local.grow(p);
   }
+  if (body.shape().isRound()) {
+    radius = body.shape().boundingRadius();
+    local = {-Vec3::Constant(body.shape().radius), Vec3::Constant(body.shape().radius)};
+  }
   radius_[index] = radius;
   thickness_[index] = local.extents().minCoeff();
-  boxes_[index] = Aabb::of(body.worldVertices()).inflated(settings_.contactMargin);
+  boxes_[index] = boundsOf(body).inflated(settings_.contactMargin);
 }
 
 void CollisionPipeline::addBody(const RigidBody& body, bool hasGrid) {
@@ -141,7 +156,7 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
 void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!bodies[i].awake()) continue;
-    Aabb box = Aabb::of(bodies[i].worldVertices());
+    Aabb box = boundsOf(bodies[i]);
     if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
     if (settings_.solver == Settings::ContactSolverMethod::SoftStep) {
       const double dt = settings_.timeStep;
@@ -179,10 +194,16 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       }
       continue;
     }
+    if (a.shape().isRound() || b.shape().isRound()) {
+      const ContactManifold m = collideRoundPair(posed(a), posed(b), margin);
+      if (settings_.logQueries) log_.record(summarize(QueryKind::Round, pair.a, pair.b, m, 0.0, time));
+      if (m.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, 0, m});
+      continue;
+    }
     std::optional<OrientedBox> boxA, boxB;
-    if (a.boxHalfExtents() && b.boxHalfExtents()) {
-      boxA = OrientedBox{a.position(), a.rotation(), *a.boxHalfExtents()};
-      boxB = OrientedBox{b.position(), b.rotation(), *b.boxHalfExtents()};
+    if (a.shape().type == ShapeType::Box && b.shape().type == ShapeType::Box) {
+      boxA = OrientedBox{a.position(), a.rotation(), a.shape().halfExtents};
+      boxB = OrientedBox{b.position(), b.rotation(), b.shape().halfExtents};
     }
     const ConvexContact c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr,
                                           boxB ? &*boxB : nullptr);
@@ -193,8 +214,11 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   for (std::size_t p = 0; p < planes.size(); ++p) {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       if (bodies[i].isStatic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
-      const ContactManifold m = collidePlaneConvex(planes[p], bodies[i].worldVertices(), settings_.contactMargin + reach_[i]);
-      if (settings_.logQueries) log_.record(summarize(QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
+      const double margin = settings_.contactMargin + reach_[i];
+      const bool round = bodies[i].shape().isRound();
+      const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
+                                      : collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin);
+      if (settings_.logQueries) log_.record(summarize(round ? QueryKind::PlaneRound : QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
       if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, 0, m});
     }
   }

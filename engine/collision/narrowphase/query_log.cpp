@@ -15,6 +15,8 @@ const char* queryKindName(QueryKind kind) {
     case QueryKind::Distance: return "distance";
     case QueryKind::TriangleTriangle: return "triangle-triangle";
     case QueryKind::Sdf: return "surface-points-vs-sdf";
+    case QueryKind::PlaneRound: return "plane-round";
+    case QueryKind::Round: return "round-pair";
   }
   return "unknown";
 }

@@ -13,7 +13,7 @@
 
 namespace rbsim {
 
-enum class QueryKind : std::uint8_t { PlaneConvex, ConvexConvex, BoxBox, Distance, TriangleTriangle, Sdf };
+enum class QueryKind : std::uint8_t { PlaneConvex, ConvexConvex, BoxBox, Distance, TriangleTriangle, Sdf, PlaneRound, Round };
 
 const char* queryKindName(QueryKind kind);
 

@@ -39,7 +39,7 @@ inline BodyDef boxWith(const Vec3& extents, double mass, const Vec3& position, c
   BodyDef def = boxDef(extents, mass, name);
   def.position = position;
   def.material = material;
-  def.boxHalfExtents = 0.5 * extents;
+  def.shape = Shape::box(0.5 * extents);
   return def;
 }
 

@@ -57,8 +57,9 @@ TEST(SceneStatic, AStaticBodyHasBoxExtentsAndCannotMove) {
   wall["static"] = true;
   const Scene scene = parse({{"bodies", {wall}}});
   ASSERT_TRUE(scene.bodies[0].isStatic);
-  ASSERT_TRUE(scene.bodies[0].boxHalfExtents.has_value());
-  EXPECT_TRUE(allNear(*scene.bodies[0].boxHalfExtents, Vec3(0.5, 1.0, 1.5), 0.0));
+  ASSERT_TRUE(scene.bodies[0].shape.has_value());
+  ASSERT_EQ(scene.bodies[0].shape->type, ShapeType::Box);
+  EXPECT_TRUE(allNear(scene.bodies[0].shape->halfExtents, Vec3(0.5, 1.0, 1.5), 0.0));
 
   World world = buildWorld(scene);
   for (int i = 0; i < 100; ++i) world.step();

@@ -116,7 +116,7 @@ TEST(LongRun, HundredBoxPileStaysFiniteLosesEnergyAndKeepsFlatMemory) {
   for (int i = 0; i < 100; ++i) {
     BodyDef def = test::boxDef(extents, 1.0, "box" + std::to_string(i));
     def.mesh = mesh;
-    def.boxHalfExtents = 0.5 * extents;
+    def.shape = Shape::box(0.5 * extents);
     const int layer = i / 10, cell = i % 10;
     const double shift = (layer % 2) * 0.5;  // odd layers land on edges and tumble
     def.position = Vec3((cell % 4) * 1.5 + shift, 1.0 + layer * 1.5, (cell / 4) * 1.5 + shift);

@@ -32,7 +32,7 @@ Settings settings(const Vec3& gravity = Vec3::Zero()) {
 
 BodyDef box(const Vec3& extents, const Vec3& position, const Vec3& velocity = Vec3::Zero()) {
   BodyDef def = boxDef(extents, 1.0);
-  def.boxHalfExtents = 0.5 * extents;
+  def.shape = Shape::box(0.5 * extents);
   def.position = position;
   def.velocity = velocity;
   return def;
