@@ -14,8 +14,50 @@ namespace {
 // on four points with uneven bounces, each point's impulse disturbing the ones already done; a
 // few more converge them to one common rebound.
 constexpr int kRestitutionSweeps = 16;
+// Sweeps of the collision pass: each passes a hit at least one pair further down a chain, so a
+// row of this many touching balls is the longest that hands it on within one step.
+constexpr int kCollisionSweeps = 32;
 
 }  // namespace
+
+void SoftStepSolver::collide(const Settings& settings) {
+  // Seed 000 "Collision": u_rel,N^new = -c_R u_rel,N, one point at a time, each with the
+  // velocities the points before it left, and swept until nothing approaches (Guendelman,
+  // Bridson, Fedkiw 2003, "Nonconvex rigid bodies with stacking", collision processing before
+  // contact processing): a ball hitting a row of touching balls hands its momentum on pair by
+  // pair, as Newton's cradle does, where one simultaneous solve would move the row together.
+  // Only pairs touching at one point: a patch (a box landing flat) bounces in applyRestitution,
+  // whose sweeps share the rebound among its points instead of tipping it at the first one.
+  const double dt = settings.timeStep;
+  for (int sweep = 0; sweep < kCollisionSweeps; ++sweep) {
+    bool collided = false;
+    for (const Constraint& c : constraints_) {
+      if (c.pointCount != 1 || c.restitution == 0.0) continue;
+      Point& p = points_[c.firstPoint];
+      SolverState& A = states_[c.a];
+      SolverState& B = states_[c.b];
+      const Vec3& n = c.normal;
+      const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
+                        p.crossA.dot(A.angularVelocity);
+      // Slower approaches are resting contact; a gap the approach does not close within the step
+      // is left for a later step.
+      if (-vn <= settings.restitutionThreshold || p.separation + vn * dt > settings.contactSlop) continue;
+      const double impulse = -(1.0 + c.restitution) * vn * p.normalMass;
+      p.totalNormalImpulse += impulse;
+      p.impactSpeed = 0.0;  // it has bounced: applyRestitution must not bounce it again
+      if (c.a != 0) {
+        A.linearVelocity -= (sims_[c.a].inverseMass * impulse) * n;
+        A.angularVelocity -= impulse * p.angularA;
+      }
+      if (c.b != 0) {
+        B.linearVelocity += (sims_[c.b].inverseMass * impulse) * n;
+        B.angularVelocity += impulse * p.angularB;
+      }
+      collided = true;
+    }
+    if (!collided) return;
+  }
+}
 
 void SoftStepSolver::applyRestitution(const Settings& settings) {
   // Box2D v3's b2ApplyRestitution, with the speed at the touch instead of the speed at the step's

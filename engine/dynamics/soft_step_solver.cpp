@@ -331,6 +331,7 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     prepare(bodies, contact, i, material, settings);
   }
 
+  collide(settings);
   const double inverseH = 1.0 / h;
   for (int substep = 0; substep < settings.substeps; ++substep) {
     integrateVelocities(h);

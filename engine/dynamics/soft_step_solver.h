@@ -123,6 +123,7 @@ class SoftStepSolver {
   void warmStart();
   void solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
   void integratePositions(const std::vector<RigidBody>& bodies, double h);
+  void collide(const Settings& settings);  // single-point collisions, before the substeps
   void applyRestitution(const Settings& settings);
   void finish(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts);
 

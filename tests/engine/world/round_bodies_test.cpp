@@ -113,6 +113,41 @@ TEST_P(RoundBodies, ACapsuleRestsAcrossABox) {
   EXPECT_LT(b.velocity().norm() + b.angularVelocity().norm(), 1e-3);
 }
 
+// Newton's cradle without strings: five balls in a row, touching, no gravity, restitution 1 and
+// no friction; the first arrives at 1 m/s. The seed's law u_N' = -c_R u_N (the restitution
+// threshold off, world.restitution_threshold = 0) applied contact by contact down the line hands
+// the whole momentum on: the last ball leaves at 1 m/s and the others stay, within the solver's
+// tolerance (5 % of the speed).
+TEST_P(RoundBodies, NewtonsCradlePassesAnElasticHitDownTheLine) {
+  if (GetParam().solver == Solver::Pgs) {
+    GTEST_SKIP() << "PGS solves the row's contacts together: the five leave at 0.42 m/s and less (REPORT)";
+  }
+  Settings s = settings();
+  s.gravity = Vec3::Zero();
+  s.restitutionThreshold = 0.0;
+  World w(s);
+  constexpr double r = 0.1, speed = 1.0;
+  Material elastic;
+  elastic.restitution = 1.0;
+  elastic.staticFriction = elastic.kineticFriction = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    BodyDef ball = shapeBodyDef(Shape::sphere(r), 1.0, "ball" + std::to_string(i));
+    // The first ball starts a step's travel and a bit away, so the hit happens within the run.
+    ball.position = Vec3(i == 0 ? -2.0 * r - 0.05 : 2.0 * r * i, 0.0, 0.0);
+    ball.velocity = Vec3(i == 0 ? speed : 0.0, 0.0, 0.0);
+    ball.material = elastic;
+    w.addBody(ball);
+  }
+  for (int i = 0; i < steps(0.5); ++i) w.step();
+  const auto& b = w.bodies();
+  EXPECT_NEAR(b[4].velocity().x(), speed, 0.05 * speed);
+  for (int i = 0; i < 4; ++i) EXPECT_LT(b[i].velocity().norm(), 0.05 * speed) << i;
+  double momentum = 0.0, energy = 0.0;
+  for (const RigidBody& ball : b) momentum += ball.state().linearMomentum.x(), energy += ball.kineticEnergy();
+  EXPECT_NEAR(momentum, speed, 1e-9);          // the solver's impulses are equal and opposite
+  EXPECT_NEAR(energy, 0.5 * speed * speed, 0.05 * 0.5 * speed * speed);
+}
+
 INSTANTIATE_TEST_SUITE_P(DtAndSolver, RoundBodies,
                          testing::Values(Case{1.0 / 60.0, Solver::SoftStep}, Case{1.0 / 240.0, Solver::SoftStep},
                                          Case{1.0 / 60.0, Solver::Pgs}, Case{1.0 / 240.0, Solver::Pgs}),
