@@ -16,9 +16,18 @@ namespace rbsim {
 struct FracturePattern;     // fracture/fracture.h
 class SignedDistanceGrid;   // geometry/signed_distance_grid.h
 
+// Where the body frame sits in the coordinates of the file the body came from (seed 000's
+// diagonalisation, mass/mass_model.h): p_file = axes p_body + centre.
+struct FileFrame {
+  Mat3 axes = Mat3::Identity();  // the principal axes, columns in file coordinates (a rotation)
+  Vec3 centre = Vec3::Zero();    // the centre of mass in file coordinates [m]
+  std::shared_ptr<const Mesh> mesh;  // the file's vertices as given; null: axes p_body + centre
+};
+
 struct BodyDef {
   std::string name = "body";
   std::shared_ptr<const Mesh> mesh;        // body space: the origin is the centre of mass
+  FileFrame fileFrame;                     // the body frame in the file's coordinates
   double mass = 1.0;                       // [kg], > 0
   Mat3 inertiaBody = Mat3::Identity();     // [kg m^2] about the centre of mass, body axes
   Vec3 position = Vec3::Zero();            // x: world position of the centre of mass [m]

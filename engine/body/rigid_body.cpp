@@ -13,6 +13,10 @@ RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), mass_(def.ma
   auto cold = std::make_shared<ColdConstants>();
   cold->name = def.name;
   cold->mesh = def.mesh;
+  cold->fileFrame = def.fileFrame;
+  if (def.fileFrame.mesh && def.fileFrame.mesh->vertices.size() != def.mesh->vertices.size()) {
+    throw std::invalid_argument("body '" + def.name + "': its file mesh and its mesh differ in vertex count");
+  }
   cold->color = def.color;
   const std::string& name = cold->name;
   if (!cold->mesh) throw std::invalid_argument("body '" + name + "': no mesh");

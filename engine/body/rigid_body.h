@@ -63,6 +63,13 @@ class alignas(64) RigidBody {
   // once worldVertex() or worldVertices() has been called again: read through them.
   std::size_t vertexCount() const { return worldVertices_.size(); }
   const Vec3& bodyVertex(std::size_t i) const { return cold_->mesh->vertices[i]; }
+  // The same vertex in the coordinates of the file (or program) the body came from, exactly as
+  // given there, and where the body frame sits in them (seed 000's diagonalisation).
+  Vec3 fileVertex(std::size_t i) const {
+    const FileFrame& f = cold_->fileFrame;
+    return f.mesh ? f.mesh->vertices[i] : Vec3(f.axes * cold_->mesh->vertices[i] + f.centre);
+  }
+  const FileFrame& fileFrame() const { return cold_->fileFrame; }
   const Vec3& worldVertex(std::size_t i) const { return worldVertices()[i]; }
   const std::vector<Vec3>& worldVertices() const {
     if (worldVerticesStale_) updateWorldVertices();
@@ -113,6 +120,7 @@ class alignas(64) RigidBody {
     std::shared_ptr<const Mesh> mesh;
     Vec3 color = Vec3::Ones();
     Shape shape;
+    FileFrame fileFrame;
     BodyInertia inertia;  // what implicit-gyro and dlm read besides StepInputs' own fields
   };
 

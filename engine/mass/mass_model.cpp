@@ -148,12 +148,22 @@ MassModel buildMassModel(Mesh mesh, std::optional<double> mass, std::optional<do
   }
   requirePhysical(props, mesh);
 
-  translateMesh(mesh, props.centerOfMass);
   MassModel model;
-  model.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  model.fileMesh = std::make_shared<const Mesh>(mesh);
+  translateMesh(mesh, props.centerOfMass);
   model.mass = props.mass;
   model.inertiaBody = props.inertia;
   model.centerOffset = props.centerOfMass;
+  const Mat3 offDiagonal = props.inertia - Mat3(props.inertia.diagonal().asDiagonal());
+  if (offDiagonal.cwiseAbs().maxCoeff() > kDiagonalInertiaTolerance * props.inertia.trace()) {
+    const Eigen::SelfAdjointEigenSolver<Mat3> eig(props.inertia);
+    Mat3 axes = eig.eigenvectors();
+    if (axes.determinant() < 0.0) axes.col(2) *= -1.0;  // a rotation, not a reflection
+    for (Vec3& p : mesh.vertices) p = axes.transpose() * p;
+    model.principalAxes = axes;
+    model.inertiaBody = eig.eigenvalues().asDiagonal();
+  }
+  model.mesh = std::make_shared<const Mesh>(std::move(mesh));
   return model;
 }
 

@@ -10,12 +10,23 @@
 
 namespace rbsim {
 
+// Seed 000 "Rigid Body Modeling": "rotating the object space rest state by U^-1 gives a diagonal
+// inertia tensor". The body frame is the principal frame: its origin the centre of mass, its axes
+// the principal axes, so I_body is diagonal. A mesh whose inertia is already diagonal in its own
+// axes (a box, a sphere, anything symmetric about them) keeps them: the body frame is then the
+// file's, moved to the centre of mass.
 struct MassModel {
-  std::shared_ptr<const Mesh> mesh;  // re-centred: body origin = centre of mass
+  std::shared_ptr<const Mesh> mesh;  // in the body (principal) frame
   double mass = 0.0;                 // [kg]
-  Mat3 inertiaBody = Mat3::Zero();   // [kg m^2]
+  Mat3 inertiaBody = Mat3::Zero();   // [kg m^2], diagonal
   Vec3 centerOffset = Vec3::Zero();  // centre of mass in the original mesh coordinates [m]
+  // The principal axes in the original mesh's axes (a rotation): p_file = axes p_body + centerOffset.
+  Mat3 principalAxes = Mat3::Identity();
+  std::shared_ptr<const Mesh> fileMesh;  // the mesh as given, vertex for vertex
 };
+
+// Off-diagonal inertia below this fraction of the trace is rounding, and the axes are kept.
+inline constexpr double kDiagonalInertiaTolerance = 1e-12;  // [1]
 
 // Exactly one of mass [kg] or density [kg/m^3] is given. Exact inertia needs a closed,
 // outward-wound, non-degenerate mesh; a density always needs one (for the volume), since the

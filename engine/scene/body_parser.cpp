@@ -187,6 +187,11 @@ void checkMassScale(const JsonObject& b, const BodyDef& def) {
 
 }  // namespace
 
+Quat toBodyOrientation(const BodyDef& def, const Quat& fileOrientation) {
+  if (def.fileFrame.axes == Mat3::Identity()) return fileOrientation;  // exactly as typed
+  return (fileOrientation * Quat(def.fileFrame.axes)).normalized();
+}
+
 Material parseMaterial(const JsonObject& o) {
   Material m;
   m.restitution = o.number("restitution", m.restitution);
@@ -222,13 +227,15 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
     def.mesh = model.mesh;
     def.mass = model.mass;
     def.inertiaBody = model.inertiaBody;
+    def.fileFrame = {model.principalAxes, model.centerOffset, model.fileMesh};
   } catch (const InputError& e) {
     throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
   }
   checkMassScale(b, def);
   parseCollisionShape(b, def);
   def.position = b.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
-  def.orientation = b.optionalOrientation("orientation").value_or(Quat::Identity());
+  // The file gives the orientation of the file's axes; the body's are its principal axes.
+  def.orientation = toBodyOrientation(def, b.optionalOrientation("orientation").value_or(Quat::Identity()));
   def.velocity = b.boundedVec3("velocity", Vec3::Zero(), kMaxSpeed, "m/s", "the speed of light");
   def.angularVelocity = b.vec3("angular_velocity", Vec3::Zero());
   const double radius = 0.5 * (def.mesh->boundsMax() - def.mesh->boundsMin()).norm();
@@ -258,6 +265,10 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     force.point = f.vec3("point", Vec3::Zero());
     force.forceFrame = parseFrame(f, "force_frame", Frame::World);
     force.pointFrame = parseFrame(f, "point_frame", Frame::Body);
+    // Body-frame vectors are written in the file's axes (about the centre of mass).
+    const Mat3& axes = scene.bodies[index].fileFrame.axes;
+    if (force.forceFrame == Frame::Body) force.force = axes.transpose() * force.force;
+    if (force.pointFrame == Frame::Body) force.point = axes.transpose() * force.point;
     force.start = f.number("start", 0.0);
     force.end = f.number("end", scene.duration);
     if (force.start < 0.0) f.fail("start", "expected a time >= 0 s");
@@ -271,6 +282,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     if (event.time < 0.0) p.fail("time", "expected a time >= 0 s");
     if (p.has("position")) event.position = p.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     event.orientation = p.optionalOrientation("orientation");
+    if (event.orientation) event.orientation = toBodyOrientation(scene.bodies[index], *event.orientation);
     if (p.has("velocity")) event.velocity = p.boundedVec3("velocity", Vec3::Zero(), kMaxSpeed, "m/s", "the speed of light");
     event.angularVelocity = p.optionalVec3("angular_velocity");
     if (isStatic && (event.velocity || event.angularVelocity)) p.fail("velocity", "a static body cannot move");
@@ -281,7 +293,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     Spring spring;
     spring.body = index;
     spring.anchor = s.boundedVec3("anchor", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
-    spring.point = s.vec3("point", Vec3::Zero());
+    spring.point = scene.bodies[index].fileFrame.axes.transpose() * s.vec3("point", Vec3::Zero());
     spring.stiffness = s.positiveNumber("stiffness", 1.0);
     spring.restLength = nonNegative(s, "rest_length", 0.0, "m");
     spring.damping = nonNegative(s, "damping", 0.0, "N s/m");

@@ -17,6 +17,9 @@ inline constexpr std::initializer_list<const char*> kBodyKeys = {
 // each defaulting to Material's.
 Material parseMaterial(const JsonObject& o);
 
+// The body's orientation for an orientation of the file's axes: q_file E (mass/mass_model.h).
+Quat toBodyOrientation(const BodyDef& def, const Quat& fileOrientation);
+
 // Appends the body described by `b` to scene.bodies (and its inertia method name).
 void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene);
 // Appends the forces, pose events and springs of body `index`.

@@ -49,11 +49,13 @@ std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, con
       // stableNorm: components near 1e308 (or 1e-320) have a length that norm() overflows (or loses).
       if (!(normal.stableNorm() > 0.0)) p.fail("normal", "expected a non-zero direction");
       CutPlane plane;
-      plane.normal = normal.stableNormalized();
+      // Written in the file's axes about the centre of mass; cut in the body's (principal) axes.
+      const Mat3& axes = def.fileFrame.axes;
+      plane.normal = axes.transpose() * normal.stableNormalized();
       if (!plane.normal.allFinite() || std::abs(plane.normal.norm() - 1.0) > kUnitTolerance) {
         p.fail("normal", "cannot be made a unit direction (its length is " + shortNumber(normal.stableNorm()) + ")");
       }
-      const Vec3 point = p.vec3("point", Vec3::Zero());
+      const Vec3 point = axes.transpose() * p.vec3("point", Vec3::Zero());
       plane.offset = plane.normal.dot(point);
       if (!std::isfinite(plane.offset)) {
         p.fail("point", "the plane's offset n . p overflows (" + shortNumber(plane.offset) + " m); expected a finite point");

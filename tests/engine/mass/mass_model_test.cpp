@@ -43,9 +43,15 @@ TEST(BuildMassModel, ExactRecentresOnTheCentroid) {
   EXPECT_TRUE(allNear(model.centerOffset, centroid, 1e-14));
   EXPECT_NEAR(model.mass, 2.0 / 6.0, 1e-15);
   ASSERT_EQ(model.mesh->vertices.size(), original.vertices.size());
+  // The body frame is the principal frame (seed 000): p_file = E p_body + c, the file's vertices
+  // kept as they were, and the inertia diagonal.
+  ASSERT_EQ(model.fileMesh->vertices.size(), original.vertices.size());
   for (std::size_t i = 0; i < original.vertices.size(); ++i) {
-    EXPECT_TRUE(allNear(model.mesh->vertices[i], original.vertices[i] - centroid, 1e-14));
+    EXPECT_TRUE(allNear(model.principalAxes * model.mesh->vertices[i] + centroid, original.vertices[i], 1e-14));
+    EXPECT_EQ(model.fileMesh->vertices[i], original.vertices[i]);
   }
+  EXPECT_NEAR(model.principalAxes.determinant(), 1.0, 1e-15);
+  EXPECT_TRUE(allNear(model.inertiaBody, Mat3(model.inertiaBody.diagonal().asDiagonal()), 0.0));
   const MassProperties again = polyhedralMassProperties(*model.mesh, 2.0);
   EXPECT_TRUE(allNear(again.centerOfMass, Vec3::Zero(), 1e-15)) << "body origin = centre of mass";
   EXPECT_TRUE(allNear(again.inertia, model.inertiaBody, 1e-15));

@@ -88,9 +88,14 @@ TEST(ParseScene, BuildsTheExpectedBodies) {
   // centroid (I_unit: 1/80 on, 1/480 off the diagonal); 3 kg scales that by 3 / (8/6).
   const BodyDef& tet = scene.bodies[1];
   EXPECT_EQ(tet.mass, 3.0);
-  EXPECT_NEAR(tet.inertiaBody(0, 0), 72.0 / 80.0, 1e-14);
-  EXPECT_NEAR(tet.inertiaBody(0, 1), 72.0 / 480.0, 1e-14);
-  EXPECT_TRUE(allNear(tet.mesh->vertices[0], Vec3::Constant(-0.5), 1e-15)) << "re-centred on the centroid";
+  // In the file's axes that is 72/80 on and 72/480 off the diagonal; the body frame is the
+  // principal frame (seed 000), where it is diag(72/80 - 72/480, same, 72/80 + 2 x 72/480).
+  const Mat3 inFile = tet.fileFrame.axes * tet.inertiaBody * tet.fileFrame.axes.transpose();
+  EXPECT_NEAR(inFile(0, 0), 72.0 / 80.0, 1e-14);
+  EXPECT_NEAR(inFile(0, 1), 72.0 / 480.0, 1e-14);
+  EXPECT_TRUE(allNear(tet.inertiaBody, Mat3(Vec3(0.75, 0.75, 1.2).asDiagonal()), 1e-14));
+  EXPECT_TRUE(allNear(tet.fileFrame.axes * tet.mesh->vertices[0], Vec3::Constant(-0.5), 1e-15))
+      << "re-centred on the centroid";
   EXPECT_EQ(scene.inertiaMethods, (std::vector<std::string>{"exact", "exact"}));
 
   ASSERT_EQ(scene.forces.size(), 1u);
