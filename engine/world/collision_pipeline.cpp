@@ -41,6 +41,12 @@ Aabb boundsOf(const RigidBody& body) {
 
 PosedShape posed(const RigidBody& body) { return {&body.shape(), body.rotation(), body.position()}; }
 
+// A hull large enough that GJK climbs its vertex graph rather than scanning it.
+bool climbs(const RigidBody& body) {
+  const Shape& s = body.shape();
+  return s.type == ShapeType::ConvexHull && s.hull->vertices.size() > kHillClimbMinVertices;
+}
+
 SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) {
   return SweptBody{&body.mesh().vertices, start, body.state(), radius};
 }
@@ -205,8 +211,15 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       boxA = OrientedBox{a.position(), a.rotation(), a.shape().halfExtents};
       boxB = OrientedBox{b.position(), b.rotation(), b.shape().halfExtents};
     }
-    const ConvexContact c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr,
-                                          boxB ? &*boxB : nullptr);
+    ConvexContact c;
+    if (!boxA && (climbs(a) || climbs(b))) {
+      const PosedHullSupport hullA(posed(a)), hullB(posed(b));
+      const PointSetSupport pointsA(a.worldVertices()), pointsB(b.worldVertices());
+      c = collideConvex(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(),
+                        climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), margin);
+    } else {
+      c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr, boxB ? &*boxB : nullptr);
+    }
     if (settings_.logQueries) log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold,
                           c.distance, time));
     if (c.manifold.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold});

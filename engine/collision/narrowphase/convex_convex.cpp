@@ -149,8 +149,14 @@ ConvexContact collideConvex(const std::vector<Vec3>& a, const std::vector<Vec3>&
     }
     return out;
   }
+  return collideConvex(PointSetSupport(a), a, PointSetSupport(b), b, margin, featureTolerance);
+}
 
-  const GjkResult g = gjk(a, b);
+ConvexContact collideConvex(const SupportMap& supportA, const std::vector<Vec3>& a, const SupportMap& supportB,
+                            const std::vector<Vec3>& b, double margin, double featureTolerance) {
+  ConvexContact out;
+  if (a.empty() || b.empty()) return out;
+  const GjkResult g = gjk(supportA, supportB);
   out.overlap = g.overlap;
   Vec3 n;
   if (!g.overlap) {
@@ -160,7 +166,7 @@ ConvexContact collideConvex(const std::vector<Vec3>& a, const std::vector<Vec3>&
     if (g.distance > margin) return out;
     n = (g.pointB - g.pointA) / g.distance;
   } else {
-    const EpaResult e = epa(a, b, g.simplex);
+    const EpaResult e = epa(supportA, supportB, g.simplex);
     if (e.valid) {
       n = e.normal;
       out.depth = e.depth;

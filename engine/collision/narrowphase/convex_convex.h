@@ -9,6 +9,7 @@
 
 #include "rbsim/collision/contact.h"
 #include "rbsim/collision/narrowphase/box_box.h"
+#include "rbsim/collision/narrowphase/gjk.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {
@@ -37,6 +38,12 @@ struct ConvexContact {
 // boxes are given (their poses must match the vertex sets) the SAT of collideBoxes is used.
 ConvexContact collideConvex(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double margin = 0.0,
                             const OrientedBox* boxA = nullptr, const OrientedBox* boxB = nullptr,
+                            double featureTolerance = kSupportFeatureTolerance);
+
+// The same with GJK and EPA on the sets' own support mappings (a hill climb over a large hull's
+// vertex graph instead of a scan); a and b are still the vertex sets, for the feature manifold.
+ConvexContact collideConvex(const SupportMap& supportA, const std::vector<Vec3>& a, const SupportMap& supportB,
+                            const std::vector<Vec3>& b, double margin = 0.0,
                             double featureTolerance = kSupportFeatureTolerance);
 
 struct ConvexDistance {

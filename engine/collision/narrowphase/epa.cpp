@@ -51,7 +51,7 @@ std::vector<Vec3> searchDirections(const std::vector<SupportPoint>& pts) {
 }
 
 // Four affinely independent support points containing the start simplex's hull, or false.
-bool buildTetrahedron(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const GjkSimplex& start,
+bool buildTetrahedron(const SupportMap& a, const SupportMap& b, const GjkSimplex& start,
                       std::vector<SupportPoint>& pts) {
   pts.clear();
   for (int k = 0; k < start.size; ++k) {
@@ -119,8 +119,13 @@ struct HorizonEdge {
 }  // namespace
 
 EpaResult epa(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const GjkSimplex& start) {
+  if (a.empty() || b.empty()) return EpaResult{};
+  return epa(PointSetSupport(a), PointSetSupport(b), start);
+}
+
+EpaResult epa(const SupportMap& a, const SupportMap& b, const GjkSimplex& start) {
   EpaResult result;
-  if (a.empty() || b.empty() || start.size < 1) return result;
+  if (start.size < 1) return result;
   std::vector<SupportPoint> verts;
   if (!buildTetrahedron(a, b, start, verts)) return result;
 

@@ -36,6 +36,7 @@ struct EpaResult {
 
 // `start` is GJK's terminating simplex for overlapping hulls (any size 1..4: fewer than 4 points,
 // as when the hulls only touch, are blown up to a tetrahedron by support points).
-EpaResult epa(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const GjkSimplex& start);
+EpaResult epa(const SupportMap& a, const SupportMap& b, const GjkSimplex& start);
+EpaResult epa(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const GjkSimplex& start);  // empty: invalid
 
 }  // namespace rbsim

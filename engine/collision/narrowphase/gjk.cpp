@@ -136,22 +136,32 @@ std::size_t supportIndex(const std::vector<Vec3>& points, const Vec3& direction)
   return best;
 }
 
-SupportPoint minkowskiSupport(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& direction) {
+SupportPoint minkowskiSupport(const SupportMap& a, const SupportMap& b, const Vec3& direction) {
   SupportPoint s;
-  s.a = a[supportIndex(a, direction)];
-  s.b = b[supportIndex(b, -direction)];
+  s.a = a.support(direction);
+  s.b = b.support(-direction);
   s.w = s.a - s.b;
   return s;
 }
 
+SupportPoint minkowskiSupport(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& direction) {
+  return minkowskiSupport(PointSetSupport(a), PointSetSupport(b), direction);
+}
+
 GjkResult gjk(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  GjkResult r;
   if (a.empty() || b.empty()) {
+    GjkResult r;
     r.distance = std::numeric_limits<double>::infinity();
     return r;
   }
+  return gjk(PointSetSupport(a), PointSetSupport(b));
+}
+
+GjkResult gjk(const SupportMap& a, const SupportMap& b) {
+  GjkResult r;
   GjkSimplex& s = r.simplex;
-  s.points[0] = {a[0] - b[0], a[0], b[0]};
+  const Vec3 a0 = a.anyPoint(), b0 = b.anyPoint();
+  s.points[0] = {a0 - b0, a0, b0};
   s.size = 1;
   std::array<double, 4> lambda = {1.0, 0.0, 0.0, 0.0};
   Vec3 v = s.points[0].w;

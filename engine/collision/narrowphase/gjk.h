@@ -44,9 +44,32 @@ struct GjkResult {
 // Index of the vertex of `points` furthest along `direction` (the first one on ties).
 std::size_t supportIndex(const std::vector<Vec3>& points, const Vec3& direction);
 
+// A convex set as GJK and EPA see it (van den Bergen 2003, ch. 4): its support mapping, the point
+// of the set furthest along a direction, world frame. A shape answers it in its own way
+// (shapes/shape.h: a formula, a scan, a climb over a hull's vertex graph).
+class SupportMap {
+ public:
+  virtual ~SupportMap() = default;
+  virtual Vec3 support(const Vec3& direction) const = 0;
+  virtual Vec3 anyPoint() const = 0;  // where GJK starts: a point of the set
+};
+
+// The convex hull of a vertex set, by scanning every vertex.
+class PointSetSupport final : public SupportMap {
+ public:
+  explicit PointSetSupport(const std::vector<Vec3>& points) : points_(points) {}
+  Vec3 support(const Vec3& direction) const override { return points_[supportIndex(points_, direction)]; }
+  Vec3 anyPoint() const override { return points_[0]; }
+
+ private:
+  const std::vector<Vec3>& points_;
+};
+
 // The support point of A - B in `direction`: support_A(d) - support_B(-d).
+SupportPoint minkowskiSupport(const SupportMap& a, const SupportMap& b, const Vec3& direction);
 SupportPoint minkowskiSupport(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& direction);
 
-GjkResult gjk(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
+GjkResult gjk(const SupportMap& a, const SupportMap& b);
+GjkResult gjk(const std::vector<Vec3>& a, const std::vector<Vec3>& b);  // empty sets: +infinity apart
 
 }  // namespace rbsim

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rbsim/collision/contact.h"
+#include "rbsim/collision/narrowphase/gjk.h"
 #include "rbsim/math/types.h"
 #include "rbsim/shapes/shape.h"
 
@@ -20,6 +21,22 @@ struct PosedShape {
   const Shape* shape = nullptr;
   Mat3 rotation = Mat3::Identity();
   Vec3 position = Vec3::Zero();  // [m]
+};
+
+// A hull's support mapping in world frame, R support(R^T d) + x, climbing its vertex graph from
+// where the last query ended (shapes/shape.h): GJK's successive directions change little, so
+// each climb is a few steps where a scan visits every vertex.
+class PosedHullSupport final : public SupportMap {
+ public:
+  explicit PosedHullSupport(const PosedShape& body) : body_(body) {}
+  Vec3 support(const Vec3& d) const override {
+    return body_.rotation * body_.shape->support(body_.rotation.transpose() * d, &hint_) + body_.position;
+  }
+  Vec3 anyPoint() const override { return body_.rotation * body_.shape->hull->vertices[0] + body_.position; }
+
+ private:
+  PosedShape body_;
+  mutable unsigned hint_ = 0;
 };
 
 // World-frame vertices of a box's corners or a hull's vertices (what GJK runs on).

@@ -5,6 +5,11 @@
 #include <gtest/gtest.h>
 
 #include "rbsim/collision/narrowphase/shape_pairs.h"
+
+#include <random>
+
+#include "rbsim/collision/narrowphase/convex_convex.h"
+#include "rbsim/geometry/shapes.h"
 #include "rbsim/math/rotation.h"
 
 namespace rbsim {
@@ -103,6 +108,29 @@ TEST(ShapePairs, ACapsuleLyingOnABoxTouchesAtTwoPoints) {
     EXPECT_NEAR(m.points[i].depth, 0.001, 1e-9);
     EXPECT_NEAR(std::abs(m.points[i].position.z()), 0.3, 1e-9);
   }
+}
+
+// GJK and EPA climbing two large hulls' vertex graphs find what scanning every vertex finds.
+TEST(ShapePairs, HillClimbingHullsCollideAsScannedOnes) {
+  const Mesh mesh = makeUvSphere(0.5, 48, 24);
+  const Shape hull = Shape::convexHull(mesh);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int touching = 0;
+  for (int i = 0; i < 200; ++i) {
+    const PosedShape a = at(hull, Vec3::Zero(), rotationFromAxisAngle(Vec3(u(rng), u(rng), u(rng))));
+    const PosedShape b = at(hull, Vec3(u(rng), u(rng), u(rng)), rotationFromAxisAngle(Vec3(u(rng), u(rng), u(rng))));
+    const std::vector<Vec3> va = worldHullVertices(a), vb = worldHullVertices(b);
+    const ConvexContact scanned = collideConvex(va, vb, 0.01);
+    const ConvexContact climbed = collideConvex(PosedHullSupport(a), va, PosedHullSupport(b), vb, 0.01);
+    ASSERT_EQ(scanned.overlap, climbed.overlap) << i;
+    EXPECT_NEAR(scanned.distance, climbed.distance, 1e-9) << i;
+    EXPECT_NEAR(scanned.depth, climbed.depth, 1e-7) << i;
+    ASSERT_EQ(scanned.manifold.count, climbed.manifold.count) << i;
+    if (scanned.manifold.count > 0) EXPECT_NEAR((scanned.manifold.normal - climbed.manifold.normal).norm(), 0.0, 1e-6) << i;
+    touching += scanned.overlap ? 1 : 0;
+  }
+  EXPECT_GT(touching, 50);  // both kinds of pair were tried
 }
 
 }  // namespace
