@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../../sanitized_build.h"
 #include "dynamics_util.h"
 
 namespace rbsim {
@@ -105,6 +106,7 @@ TEST(SoftStep, ATallColumnStandsAtTwoHundredFortyHertz) {
 }
 
 TEST(SoftStep, APyramidOfTwentyRowsStandsAtSixtyHertz) {
+  if (test::kSanitizedBuild) GTEST_SKIP() << "a 10 s outcome; the sanitizers see the same solver in the columns";
   const std::vector<Vec3> starts = pyramid(20);
   ASSERT_EQ(starts.size(), 210u);
   World world = boxes(settingsAt(kDt60), starts);
