@@ -39,6 +39,11 @@ struct BodyDef {
   // A static body never moves: it is not integrated, forces do not act on it, and it behaves as
   // if its mass were infinite. Its mass and inertia are kept for display only.
   bool isStatic = false;
+  // A kinematic body (seed 000's "infinite mass kinematic objects", K = 0) moves with its velocity
+  // and angular velocity, which only the program changes (setVelocity, a pose event): gravity,
+  // forces and contacts do not act on it, and it pushes and carries dynamic bodies as if its mass
+  // were infinite. Not both static and kinematic.
+  bool isKinematic = false;
   // The collision shape (shapes/shape.h), in the body frame of `mesh`. Unset: the mesh decides,
   // as shapeOfMesh does (a box's eight corners make a box, a body with a grid is a mesh, any
   // other mesh its convex hull), so a body built in C++ collides as the same body read from JSON.

@@ -9,7 +9,10 @@
 
 namespace rbsim {
 
-RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), mass_(def.mass) {
+RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), isKinematic_(def.isKinematic), mass_(def.mass) {
+  if (def.isStatic && def.isKinematic) {
+    throw std::invalid_argument("body '" + def.name + "': static and kinematic at once; expected one");
+  }
   auto cold = std::make_shared<ColdConstants>();
   cold->name = def.name;
   cold->mesh = def.mesh;

@@ -32,6 +32,8 @@ class alignas(64) RigidBody {
   const Mat3& inverseInertiaBody() const { return inputs_.inverseInertiaBody; }
   const Vec3& color() const { return cold_->color; }
   bool isStatic() const { return isStatic_; }  // never moves, never awake (BodyDef::isStatic)
+  bool isKinematic() const { return isKinematic_; }  // moves as prescribed (BodyDef::isKinematic)
+  bool isDynamic() const { return !isStatic_ && !isKinematic_; }  // moved by forces and contacts
   const Shape& shape() const { return cold_->shape; }  // collision shape, body frame
 
   // State Y(t).
@@ -132,6 +134,7 @@ class alignas(64) RigidBody {
   // touches one line per body.
   bool awake_ = true;
   bool isStatic_ = false;
+  bool isKinematic_ = false;
   mutable bool worldVerticesStale_ = true;  // the pose changed since worldVertices_ was filled
   double mass_ = 1.0;                       // for gravity, m g
   BodyState state_;

@@ -14,7 +14,12 @@ int ContactSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) 
   int& slot = slotOfBody_[body];
   if (slot != 0) return slot;
   const RigidBody& b = bodies[body];
-  bodies_.push_back(SolverBody{1.0 / b.mass(), b.inverseInertiaWorld(), body});
+  // A kinematic body: infinite mass (seed 000's K = 0), its prescribed velocity in the relative one.
+  if (b.isKinematic()) {
+    bodies_.push_back(SolverBody{0.0, Mat3::Zero(), body});
+  } else {
+    bodies_.push_back(SolverBody{1.0 / b.mass(), b.inverseInertiaWorld(), body});
+  }
   velocities_.push_back(Velocity{b.velocity(), b.angularVelocity()});
   slot = static_cast<int>(bodies_.size() - 1);
   return slot;
@@ -214,6 +219,8 @@ void ContactSolver::writeBack(std::vector<RigidBody>& bodies, double dt) {
   }
   for (std::size_t i = 1; i < bodies_.size(); ++i) {
     RigidBody& body = bodies[bodies_[i].body];
+    slotOfBody_[bodies_[i].body] = 0;
+    if (body.isKinematic()) continue;  // moves as prescribed: no impulse or correction changes it
     BodyState state = body.state();
     state.linearMomentum += linear[i];
     state.angularMomentum += angular[i];
@@ -222,7 +229,6 @@ void ContactSolver::writeBack(std::vector<RigidBody>& bodies, double dt) {
     state.position += dt * pseudoVelocities_[i].linear;
     state.orientation = expMapStep(state.orientation, pseudoVelocities_[i].angular, dt);
     body.setState(state);
-    slotOfBody_[bodies_[i].body] = 0;
   }
 }
 

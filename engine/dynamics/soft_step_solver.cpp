@@ -30,11 +30,14 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   if (s != 0) return s;
   BodySim sim;
   sim.body = body;
-  sim.inverseMass = 1.0 / b.mass();
-  sim.inverseInertiaNow = b.inverseInertiaWorld();
   sim.position0 = b.position();
-  sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
-  sim.torque = b.torque();
+  sim.kinematic = b.isKinematic();
+  if (!sim.kinematic) {  // a kinematic body keeps infinite mass and its prescribed velocities
+    sim.inverseMass = 1.0 / b.mass();
+    sim.inverseInertiaNow = b.inverseInertiaWorld();
+    sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
+    sim.torque = b.torque();
+  }
   sims_.push_back(sim);
   states_.push_back(SolverState{b.velocity(), b.angularVelocity(), Vec3::Zero(), b.orientation()});
   s = static_cast<int>(sims_.size() - 1);
@@ -284,6 +287,10 @@ void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, do
     SolverState& s = states_[i];
     const RigidBody& body = bodies[sims_[i].body];
     s.deltaPosition += h * s.linearVelocity;
+    if (sims_[i].kinematic) {  // turns at its prescribed omega, which no impulse changes
+      s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
+      continue;
+    }
     // The rotation by angle |omega| h (seed 004's alternative), with L = I omega carried over:
     // free rotation keeps L, so omega follows the new orientation (the gyroscopic term of
     // Euler's equations, which a fixed omega would drop).
@@ -327,6 +334,7 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     if (contact.manifold.count == 0) continue;
     const int b = slotOfBody_[contact.b], a = plane ? 0 : slotOfBody_[contact.a];
     if (a == 0 && b == 0) continue;  // asleep, or static against static
+    if (sims_[a].inverseMass == 0.0 && sims_[b].inverseMass == 0.0) continue;  // kinematic against static
     const Material material = combine(bodyMaterials[contact.b], plane ? planeMaterials[contact.a] : bodyMaterials[contact.a]);
     prepare(bodies, contact, i, material, settings);
   }

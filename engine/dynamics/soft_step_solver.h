@@ -67,6 +67,7 @@ class SoftStepSolver {
     Vec3 position0 = Vec3::Zero();           // x at the step's start [m]
     Vec3 acceleration = Vec3::Zero();        // F / m (+ g) over the step [m/s^2]
     Vec3 torque = Vec3::Zero();              // tau about x [N m]
+    bool kinematic = false;                  // moves as prescribed, infinite mass (zero inverses)
   };
   struct Point {  // one manifold point
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // the point from each centre of mass, world [m]

@@ -128,6 +128,15 @@ Quat expMapStep(const Quat& q, const Vec3& omega, double dt) {
   return (quatFromAxisAngle(dt * omega) * q).normalized();
 }
 
+BodyState integrateKinematic(const BodyState& y, const StepInputs& in, double dt) {
+  BodyState next = y;
+  next.position = y.position + dt * in.velocity;
+  next.orientation = expMapStep(y.orientation, in.angularVelocity, dt);
+  const Mat3 R = next.orientation.toRotationMatrix();
+  next.angularMomentum = R * (in.inertia->inertiaBody * (R.transpose() * in.angularVelocity));
+  return next;
+}
+
 namespace {
 
 // Seed 004 "Automatic state update": every derivative at t_n, the rotation by the chosen method.

@@ -57,4 +57,9 @@ struct StepInputs {
 // step, P += dt F, L += dt tau (seed 004 "Applying force and torque").
 BodyState integrate(Integrator integrator, const BodyState& y, const StepInputs& in, double dt);
 
+// A kinematic body's step (seed 000's infinite-mass objects, moved by what the program prescribes):
+// x += dt v and the rotation by omega dt, exact for constant v and omega, whatever the forces;
+// P = m v kept, L = I(t+dt) omega, so v and omega stay what was prescribed.
+BodyState integrateKinematic(const BodyState& y, const StepInputs& in, double dt);
+
 }  // namespace rbsim

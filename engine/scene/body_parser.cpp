@@ -246,6 +246,8 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   def.color = b.vec3("color", def.color);
   if (def.color.minCoeff() < 0.0 || def.color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
   def.isStatic = b.boolean("static", false);
+  def.isKinematic = b.boolean("kinematic", false);
+  if (def.isStatic && def.isKinematic) b.fail("kinematic", "a body is static or kinematic, not both");
   def.material = parseMaterial(b);
   if (def.isStatic && (def.velocity != Vec3::Zero() || def.angularVelocity != Vec3::Zero())) {
     b.fail(def.velocity != Vec3::Zero() ? "velocity" : "angular_velocity", "a static body cannot move; expected zero");
@@ -257,8 +259,12 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
 
 void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
   const bool isStatic = scene.bodies[index].isStatic;
+  // Forces and springs act on dynamic bodies only: a kinematic body moves as its velocities say.
+  const bool forcesIgnored = isStatic || scene.bodies[index].isKinematic;
+  const char* ignoredBecause = isStatic ? "a static body does not respond to forces"
+                                        : "a kinematic body moves as prescribed; forces do not act on it";
   for (const JsonObject& f : b.objectArray("forces", {"force", "point", "force_frame", "point_frame", "start", "end"})) {
-    if (isStatic) b.fail("forces", "a static body does not respond to forces");
+    if (forcesIgnored) b.fail("forces", ignoredBecause);
     ScriptedForce force;
     force.body = index;
     force.force = f.vec3("force", Vec3::Zero());
@@ -289,7 +295,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     scene.poseEvents.push_back(event);
   }
   for (const JsonObject& s : b.objectArray("springs", {"anchor", "point", "stiffness", "rest_length", "damping"})) {
-    if (isStatic) b.fail("springs", "a static body does not respond to forces");
+    if (forcesIgnored) b.fail("springs", ignoredBecause);
     Spring spring;
     spring.body = index;
     spring.anchor = s.boundedVec3("anchor", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);

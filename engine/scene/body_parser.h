@@ -10,7 +10,7 @@ namespace rbsim::scene_detail {
 
 inline constexpr std::initializer_list<const char*> kBodyKeys = {
     "name", "shape", "mass", "density", "inertia", "position", "orientation", "velocity",
-    "angular_velocity", "color", "static", "forces", "set_pose", "springs", "restitution",
+    "angular_velocity", "color", "static", "kinematic", "forces", "set_pose", "springs", "restitution",
     "friction_static", "friction_kinetic", "fracture", "sdf"};
 
 // The material keys of a body or a plane ("restitution", "friction_static", "friction_kinetic"),

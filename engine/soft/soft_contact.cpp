@@ -30,8 +30,8 @@ int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const s
       const Vec3 u = v[i] - (body.velocity() + body.angularVelocity().cross(r));
       const double un = u.dot(n);
       if (un >= 0.0) continue;
-      const double inverseMassBody = body.isStatic() ? 0.0 : 1.0 / body.mass();
-      const Mat3 inverseInertia = body.isStatic() ? Mat3::Zero() : Mat3(body.inverseInertiaWorld());
+      const double inverseMassBody = !body.isDynamic() ? 0.0 : 1.0 / body.mass();
+      const Mat3 inverseInertia = !body.isDynamic() ? Mat3::Zero() : Mat3(body.inverseInertiaWorld());
       const Mat3 k = (1.0 / m[i]) * Mat3::Identity() + impulseFactor(inverseMassBody, inverseInertia, r);
       const double jn = -(1.0 + material.restitution) * un / n.dot(k * n);
       Vec3 j = jn * n;
@@ -42,7 +42,7 @@ int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const s
         j -= std::min(stop, (stop <= material.staticFriction * jn ? material.staticFriction : material.kineticFriction) * jn) * t;
       }
       v[i] += j / m[i];
-      if (!body.isStatic()) {
+      if (body.isDynamic()) {  // a kinematic body keeps its prescribed motion
         BodyState state = body.state();
         state.linearMomentum -= j;
         state.angularMomentum -= r.cross(j);

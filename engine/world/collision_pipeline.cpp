@@ -119,7 +119,8 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const RigidBody& body = bodies[i];
     fast_[i] = 0;
-    if (!body.awake() || !haveStart_ || hasGrid_[i]) continue;
+    // A kinematic body goes where it is told, through anything: it is never stopped.
+    if (!body.awake() || !haveStart_ || hasGrid_[i] || body.isKinematic()) continue;
     // Stopping a body the solver moved would undo its speculative contacts, which already hold
     // it at the surfaces it can reach this step (and hold it still, again, every step after).
     if (solved != nullptr && i < solved->size() && (*solved)[i] != 0) continue;
@@ -191,6 +192,9 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) continue;
+    // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
+    // K = 0), so no impulse could separate them.
+    if (!a.isDynamic() && !b.isDynamic()) continue;
     const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
     if (shapes[pair.a].sdf || shapes[pair.b].sdf) {
       const std::vector<ContactManifold> manifolds = collideSdf(a, shapes[pair.a], b, shapes[pair.b], margin);
@@ -226,7 +230,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   }
   for (std::size_t p = 0; p < planes.size(); ++p) {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-      if (bodies[i].isStatic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
+      if (!bodies[i].isDynamic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
       const double margin = settings_.contactMargin + reach_[i];
       const bool round = bodies[i].shape().isRound();
       const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)

@@ -111,7 +111,9 @@ void World::addForce(const ScriptedForce& force) {
 
 std::size_t World::addSpring(const Spring& spring) {
   if (spring.body >= bodies_.size()) throw std::invalid_argument("spring names no body");
-  if (bodies_[spring.body].isStatic()) throw std::invalid_argument("spring on static body '" + bodies_[spring.body].name() + "'");
+  if (!bodies_[spring.body].isDynamic()) {
+    throw std::invalid_argument("spring on the static or kinematic body '" + bodies_[spring.body].name() + "'");
+  }
   if (!spring.anchor.allFinite() || !spring.point.allFinite() || !(spring.stiffness >= 0.0) || !(spring.restLength >= 0.0) ||
       !(spring.damping >= 0.0) || !std::isfinite(spring.stiffness) || !std::isfinite(spring.restLength) ||
       !std::isfinite(spring.damping)) {
@@ -253,7 +255,7 @@ void World::accumulateForces(bool withGravity) {
   }
   if (withGravity) {
     for (RigidBody& body : bodies_) {
-      if (body.awake()) body.applyForce(body.mass() * settings_.gravity);
+      if (body.awake() && body.isDynamic()) body.applyForce(body.mass() * settings_.gravity);
     }
   }
   for (const ScriptedForce& f : forces_) {
@@ -290,8 +292,12 @@ void World::integrateBodies(bool withGravity) {
       if (i + kPrefetchAhead < count) bodies_[i + kPrefetchAhead].prefetchForStep();
       RigidBody& body = bodies_[i];
       if (!body.awake() || softStep_.advanced(i)) continue;
-      if (addGravity) body.applyForce(body.mass() * gravity);  // F = 0 + m g, as AccumulateForces would
-      next[n] = integrate(settings_.integrator, body.state(), body.stepInputs(), dt);
+      if (body.isKinematic()) {
+        next[n] = integrateKinematic(body.state(), body.stepInputs(), dt);
+      } else {
+        if (addGravity) body.applyForce(body.mass() * gravity);  // F = 0 + m g, as AccumulateForces would
+        next[n] = integrate(settings_.integrator, body.state(), body.stepInputs(), dt);
+      }
       if (!isFinite(next[n])) {
         commit(n);  // the bodies before it have stepped, as they would have one at a time
         reportDivergence(body, next[n]);
@@ -308,7 +314,9 @@ void World::updateSleep() {
   const double dt = settings_.timeStep;
   for (RigidBody& body : bodies_) {
     if (!body.awake()) continue;
-    const bool slow = body.velocity().norm() < settings_.sleepLinearSpeed &&
+    // A kinematic body that moves at all is never at rest: sleeping would stop it.
+    const bool still = !body.isKinematic() || (body.velocity().isZero(0.0) && body.angularVelocity().isZero(0.0));
+    const bool slow = still && body.velocity().norm() < settings_.sleepLinearSpeed &&
                       body.angularVelocity().norm() < settings_.sleepAngularSpeed;
     body.setRestingTime(slow ? body.restingTime() + dt : 0.0);
   }
