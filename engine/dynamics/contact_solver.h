@@ -32,6 +32,11 @@ class ContactSolver {
              const Settings& settings);
 
   const std::vector<SolvedContactPoint>& points() const { return solved_; }
+  // Forgets the warm starts: the bodies were renumbered (World::destroyBody).
+  void forget() {
+    cache_.clear();
+    solved_.clear();
+  }
 
  private:
   // The velocities a sweep reads and changes, 48 bytes per body (as Box2D's b2BodyState): the

@@ -39,6 +39,12 @@ class SoftStepSolver {
             const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
             const Settings& settings, bool addGravity);
 
+  // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
+  void forget() {
+    clearAdvanced();
+    cache_.clear();
+    solved_.clear();
+  }
   // Forgets which bodies the last step advanced: a step that does not run the solver advanced none.
   void clearAdvanced() {
     for (std::size_t body : advancedList_) advanced_[body] = 0;

@@ -31,6 +31,14 @@ class Emitter {
 
   const EmitterDef& def() const { return def_; }
 
+  // The World destroyed a body (World::destroyBody): an emitter on it stops, as after a fracture;
+  // one on the body moved into its place (`from`, the last) follows it to `to`.
+  void bodyRemoved(std::size_t removed, std::size_t from, std::size_t to) {
+    if (def_.shape != EmitterShape::MeshSurface) return;
+    if (def_.body == removed) mesh_.reset();
+    else if (def_.body == from) def_.body = to;
+  }
+
  private:
   // False once a mesh-surface emitter's body no longer has the mesh the emitter was made for.
   bool bodyIntact(const std::vector<RigidBody>& bodies) const;

@@ -38,6 +38,11 @@ class ParticleSystem {
   std::uint64_t emitted() const { return emitted_; }  // particles born so far
   std::uint64_t lost() const { return lost_; }        // births refused because the store was full
 
+  // World::destroyBody removed body `removed` and moved body `from` into its index `to`.
+  void bodyRemoved(std::size_t removed, std::size_t from, std::size_t to) {
+    for (Emitter& e : emitters_) e.bodyRemoved(removed, from, to);
+  }
+
   // FNV-1a over the bits of every live particle's x, v and age, continuing from `hash`.
   std::uint64_t hashState(std::uint64_t hash) const;
 

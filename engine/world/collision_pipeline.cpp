@@ -80,9 +80,8 @@ void CollisionPipeline::addBody(const RigidBody& body, bool hasGrid) {
   boxes_.emplace_back();
   measure(index, body);
   proxies_.push_back(broad_->add(boxes_[index], body.isStatic()));
-  // narrowPhase reads a pair's proxy ids as body indices: bodies are never removed, so the
-  // broad phase hands out 0, 1, 2, ... in order.
-  if (proxies_.back() != index) throw std::logic_error("broad phase ids are not body indices");
+  if (bodyOfProxy_.size() <= proxies_.back()) bodyOfProxy_.resize(proxies_.back() + 1);
+  bodyOfProxy_[proxies_.back()] = index;
   start_.push_back(body.state());
   fast_.push_back(0);
   hasGrid_.push_back(hasGrid ? 1 : 0);
@@ -93,12 +92,38 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, bo
   // Removed and added again, since the piece may be dynamic where the body was static; the pool
   // hands back the smallest free id, which is this one.
   broad_->remove(proxies_[index]);
-  if (broad_->add(boxes_[index], body.isStatic()) != proxies_[index]) {
-    throw std::logic_error("broad phase did not reuse the replaced body's id");
-  }
+  proxies_[index] = broad_->add(boxes_[index], body.isStatic());
+  if (bodyOfProxy_.size() <= proxies_[index]) bodyOfProxy_.resize(proxies_[index] + 1);
+  bodyOfProxy_[proxies_[index]] = index;
   start_[index] = body.state();
   fast_[index] = 0;
   hasGrid_[index] = hasGrid ? 1 : 0;
+}
+
+namespace {
+
+template <typename T>
+void swapRemove(std::vector<T>& items, std::size_t index) {
+  if (index + 1 != items.size()) items[index] = items.back();
+  items.pop_back();
+}
+
+}  // namespace
+
+void CollisionPipeline::removeBody(std::size_t index) {
+  broad_->remove(proxies_[index]);
+  const std::size_t last = proxies_.size() - 1;
+  if (index != last) bodyOfProxy_[proxies_[last]] = index;
+  swapRemove(proxies_, index);
+  swapRemove(radius_, index);
+  swapRemove(thickness_, index);
+  swapRemove(reach_, index);
+  swapRemove(start_, index);
+  swapRemove(fast_, index);
+  swapRemove(hasGrid_, index);
+  swapRemove(boxes_, index);
+  contacts_.clear();
+  impacts_.clear();
 }
 
 bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const {
@@ -187,8 +212,11 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
 void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                                     const std::vector<Plane>& planes, double time) {
   contacts_.clear();
-  for (const ProxyPair& pair : broad_->pairs()) {
-    // Proxies are added in body order and never removed, so a proxy id is its body's index.
+  for (const ProxyPair& proxies : broad_->pairs()) {
+    // Body indices, the lower first (a destroyed body's index goes to the last body, whose
+    // proxy id stays as it was).
+    ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
+    if (pair.a > pair.b) std::swap(pair.a, pair.b);
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) continue;

@@ -39,9 +39,12 @@ class CollisionPipeline {
  public:
   explicit CollisionPipeline(const Settings& settings);
 
-  // Bodies are added in World order; ids are indices. `hasGrid`: the body's shape has a signed
-  // distance grid (BodyShape::sdf), so its convex hull is not its shape.
+  // Bodies are added in World order (each the last of the World's bodies). `hasGrid`: the body's
+  // shape has a signed distance grid (BodyShape::sdf), so its convex hull is not its shape.
   void addBody(const RigidBody& body, bool hasGrid);
+  // Body `index` was destroyed and the last body moved into its index (World::destroyBody). The
+  // contacts and impacts of the last step are forgotten: they name bodies by their old indices.
+  void removeBody(std::size_t index);
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
   void replaceBody(std::size_t index, const RigidBody& body, bool hasGrid);
@@ -65,7 +68,9 @@ class CollisionPipeline {
   // Something awake and something to meet: two bodies, or a body and a plane. The stage also
   // refreshes boxes(), which the plane tests of the narrow phase read.
   bool needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const;
+  // Broad-phase proxy ids: the bodies' indices until a body is destroyed, bodyOfProxy after.
   const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
+  std::size_t bodyOfProxy(ProxyId proxy) const { return bodyOfProxy_.at(proxy); }
   const std::vector<Contact>& contacts() const { return contacts_; }
   const std::vector<Impact>& impacts() const { return impacts_; }
   const std::vector<Aabb>& boxes() const { return boxes_; }  // per body, as last given to the broad phase
@@ -78,6 +83,7 @@ class CollisionPipeline {
   Settings settings_;
   std::unique_ptr<BroadPhase> broad_;
   std::vector<ProxyId> proxies_;        // per body
+  std::vector<std::size_t> bodyOfProxy_;  // per broad-phase proxy id: its body's index
   std::vector<double> radius_;          // per body: farthest vertex from the centre of mass [m]
   std::vector<double> thickness_;       // per body: smallest extent of its body-frame bounds [m]
   // Per body: how far its points may move in the coming step, dt (|v| + |omega| radius + dt |g|),

@@ -88,22 +88,6 @@ const Settings& checked(const Settings& settings) {
 
 World::World(const Settings& settings) : settings_(checked(settings)), collision_(settings_) {}
 
-std::size_t World::addBody(const BodyDef& def) {
-  const std::string problem = checkMaterial(def.material);
-  if (!problem.empty()) throw std::invalid_argument("body '" + def.name + "': " + problem);
-  if (def.fracture) {
-    const std::string misfit = checkFracturePattern(*def.fracture, def);
-    if (!misfit.empty()) throw std::invalid_argument("body '" + def.name + "': fracture: " + misfit);
-  }
-  bodies_.emplace_back(def);
-  bodyMaterials_.push_back(def.material);
-  bodyShapes_.push_back(bodyShapeOf(def));
-  fracturePatterns_.push_back(def.fracture);
-  if (def.fracture) ++breakableBodies_;
-  collision_.addBody(bodies_.back(), bodyShapes_.back().sdf != nullptr);
-  return bodies_.size() - 1;
-}
-
 void World::addForce(const ScriptedForce& force) {
   if (force.body >= bodies_.size()) throw std::invalid_argument("scripted force names no body");
   forces_.push_back(force);

@@ -18,6 +18,7 @@
 #include "rbsim/particles/particle_system.h"
 #include "rbsim/planar/planar_world.h"
 #include "rbsim/soft/soft_body.h"
+#include "rbsim/world/body_id.h"
 #include "rbsim/world/collision_pipeline.h"
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spring.h"
@@ -71,8 +72,22 @@ class World {
   explicit World(const Settings& settings);  // throws std::invalid_argument (checkSettings)
 
   // Throws std::invalid_argument on an invalid def, naming the body (also for a fracture pattern
-  // that does not fit it: fracture/fracture.h checkFracturePattern).
-  std::size_t addBody(const BodyDef& def);
+  // that does not fit it: fracture/fracture.h checkFracturePattern). The new body is the last of
+  // bodies(); its id stays valid until it is destroyed, whatever else is added or destroyed.
+  BodyId addBody(const BodyDef& def);
+  // Removes the body and what acts on it alone (its scripted forces, springs and pose events) and
+  // wakes the bodies touching it; the last body takes its index (bodies() stays dense), with its id unchanged. Contacts and the
+  // solvers' warm starts are forgotten for one step. Throws std::invalid_argument on a stale id.
+  void destroyBody(BodyId id);
+  bool isValid(BodyId id) const;
+  // The body's index in bodies() now; throws std::invalid_argument on a stale id.
+  std::size_t indexOf(BodyId id) const;
+  BodyId idAt(std::size_t index) const;  // the id of bodies()[index]; throws when out of range
+  RigidBody& body(BodyId id) { return bodies_[indexOf(id)]; }
+  const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
+  // Manual changes go through here (seed 004's "change x and R"): bodies() is read-only, since
+  // adding or removing bodies behind the World's back would leave its per-body data behind.
+  RigidBody& body(std::size_t index);
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
   std::size_t addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
@@ -97,7 +112,6 @@ class World {
   const Settings& settings() const { return settings_; }
   double time() const { return static_cast<double>(stepCount_) * settings_.timeStep; }
   std::uint64_t stepCount() const { return stepCount_; }
-  std::vector<RigidBody>& bodies() { return bodies_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
   const std::vector<Spring>& springs() const { return springs_; }
@@ -147,6 +161,15 @@ class World {
 
   Settings settings_;
   std::vector<RigidBody> bodies_;
+  // Ids (world/body_id.h): per slot the body's index in bodies_ (or, for a free slot, the next
+  // free slot) and its generation; per body its slot.
+  struct Slot {
+    std::uint32_t index = 0;
+    std::uint32_t generation = 0;
+  };
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> slotOfBody_;
+  std::uint32_t freeSlot_ = UINT32_MAX;  // head of the free list
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
   std::vector<Plane> planes_;

@@ -38,7 +38,7 @@ std::size_t addBowl(World& world, int resolution) {
   const Vec3 centre = polyhedralMassProperties(bowl, 1.0).centerOfMass;
   def.position = centre;  // the mesh was re-centred on it: put the rim back at y = 0
   def.isStatic = true;
-  return world.addBody(def);
+  return world.indexOf(world.addBody(def));
 }
 
 Settings settings() {

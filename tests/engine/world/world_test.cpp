@@ -251,7 +251,7 @@ TEST(World, AMovedSpringWakesItsBodyPullsItAndStopsWhenRemoved) {
   spring.point = Vec3(0.5, 0.0, 0.0);  // on the +x face
   spring.stiffness = 10.0;
   const std::size_t index = world.addSpring(spring);
-  world.bodies()[0].sleep();
+  world.body(std::size_t{0}).sleep();
   world.moveSpringAnchor(index, Vec3(1.5, 0.0, 0.0));
   EXPECT_TRUE(world.bodies()[0].awake());
   const auto [point, force] = world.springForce(index);

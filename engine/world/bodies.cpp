@@ -1,0 +1,121 @@
+// World's bodies as a dense array with ids of a generation (world/body_id.h, as Box2D v3's
+// b2BodyId): adding and destroying bodies, and keeping every per-body array in step with
+// bodies_ (the materials, shapes, fracture patterns, the collision pipeline's data, and the
+// scripts, springs and emitters that name a body by its index).
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "rbsim/world/world.h"
+
+namespace rbsim {
+
+namespace {
+
+constexpr std::uint32_t kNoSlot = UINT32_MAX;
+
+// Removes the entries naming `removed` and renames those naming `from` to `to`.
+template <typename T>
+void renumber(std::vector<T>& items, std::size_t removed, std::size_t from, std::size_t to) {
+  items.erase(std::remove_if(items.begin(), items.end(), [&](const T& item) { return item.body == removed; }),
+              items.end());
+  for (T& item : items) {
+    if (item.body == from) item.body = to;
+  }
+}
+
+// Moves element `from` (the last) onto `to` and drops the last.
+template <typename T>
+void swapRemove(std::vector<T>& items, std::size_t to) {
+  if (to + 1 != items.size()) items[to] = std::move(items.back());
+  items.pop_back();
+}
+
+}  // namespace
+
+BodyId World::addBody(const BodyDef& def) {
+  const std::string problem = checkMaterial(def.material);
+  if (!problem.empty()) throw std::invalid_argument("body '" + def.name + "': " + problem);
+  if (def.fracture) {
+    const std::string misfit = checkFracturePattern(*def.fracture, def);
+    if (!misfit.empty()) throw std::invalid_argument("body '" + def.name + "': fracture: " + misfit);
+  }
+  bodies_.emplace_back(def);
+  bodyMaterials_.push_back(def.material);
+  bodyShapes_.push_back(bodyShapeOf(def));
+  fracturePatterns_.push_back(def.fracture);
+  if (def.fracture) ++breakableBodies_;
+  collision_.addBody(bodies_.back(), bodyShapes_.back().sdf != nullptr);
+  std::uint32_t slot = freeSlot_;
+  if (slot == kNoSlot) {
+    slot = static_cast<std::uint32_t>(slots_.size());
+    slots_.push_back({});
+  } else {
+    freeSlot_ = slots_[slot].index;
+  }
+  slots_[slot].index = static_cast<std::uint32_t>(bodies_.size() - 1);
+  slotOfBody_.push_back(slot);
+  return {slot, slots_[slot].generation};
+}
+
+bool World::isValid(BodyId id) const {
+  return id.slot < slots_.size() && slots_[id.slot].generation == id.generation &&
+         slots_[id.slot].index < slotOfBody_.size() && slotOfBody_[slots_[id.slot].index] == id.slot;
+}
+
+std::size_t World::indexOf(BodyId id) const {
+  if (!isValid(id)) {
+    throw std::invalid_argument("body id (slot " + std::to_string(id.slot) + ", generation " +
+                                std::to_string(id.generation) + ") names no body: destroyed, or never made here");
+  }
+  return slots_[id.slot].index;
+}
+
+BodyId World::idAt(std::size_t index) const {
+  if (index >= bodies_.size()) throw std::invalid_argument("idAt: no body at index " + std::to_string(index));
+  const std::uint32_t slot = slotOfBody_[index];
+  return {slot, slots_[slot].generation};
+}
+
+RigidBody& World::body(std::size_t index) {
+  if (index >= bodies_.size()) throw std::invalid_argument("body: no body at index " + std::to_string(index));
+  return bodies_[index];
+}
+
+void World::destroyBody(BodyId id) {
+  const std::size_t removed = indexOf(id);
+  const std::size_t last = bodies_.size() - 1;
+  // Whatever rested on it must notice it is gone (as Box2D's b2DestroyBody wakes its contacts).
+  for (const Contact& c : collision_.contacts()) {
+    if (c.kind != Contact::Kind::BodyBody) continue;
+    if (c.a == removed) bodies_[c.b].wake();
+    if (c.b == removed) bodies_[c.a].wake();
+  }
+  // What names the body goes with it; what names the last body follows it to its new index.
+  renumber(forces_, removed, last, removed);
+  renumber(springs_, removed, last, removed);
+  renumber(pendingEvents_, removed, last, removed);
+  for (ParticleSystem& system : particleSystems_) system.bodyRemoved(removed, last, removed);
+  if (fracturePatterns_[removed]) --breakableBodies_;
+  swapRemove(bodies_, removed);
+  swapRemove(bodyMaterials_, removed);
+  swapRemove(bodyShapes_, removed);
+  swapRemove(fracturePatterns_, removed);
+  collision_.removeBody(removed);
+  // Warm starts are keyed by body indices, which have changed: one step starts cold.
+  contactSolver_.forget();
+  softStep_.forget();
+  // The id: the slot's generation moves on (every copy of the id is now stale), and the slot joins
+  // the free list; the body moved into `removed` keeps its slot, which now points there.
+  const std::uint32_t slot = id.slot;
+  ++slots_[slot].generation;
+  slots_[slot].index = freeSlot_;
+  freeSlot_ = slot;
+  if (removed != last) {
+    slotOfBody_[removed] = slotOfBody_[last];
+    slots_[slotOfBody_[removed]].index = static_cast<std::uint32_t>(removed);
+  }
+  slotOfBody_.pop_back();
+}
+
+}  // namespace rbsim
