@@ -3,14 +3,14 @@
 // them is finite, but finite is not enough: a speed of 1e300 m/s passes the parser and then
 // overflows a body's bounding box in its first step. Beyond these bounds no rigid-body scene is
 // meaningful, so the parser refuses them naming the field, rather than the step diverging.
+// The World's own tuning values (gravity, contact tolerances) are ranged by checkSettings.
+#include "rbsim/world/settings.h"
+
 namespace rbsim {
 
 // Positions, anchors and points on planes [m]. The contact tolerances (5 mm slop, millimetre
 // margins) need positions resolved far below a millimetre; ulp(1e6 m) = 1.2e-10 m.
 inline constexpr double kMaxCoordinate = 1e6;  // [m]
-// Contact tolerances (world.contact_margin, contact_slop): a tolerance, not a reach. Past a metre
-// every body near another is a contact pair each step, and the narrow phase runs on all n^2/2.
-inline constexpr double kMaxContactTolerance = 1.0;  // [m]
 // No body moves faster than light: a larger speed is a typo or an attempt to overflow.
 inline constexpr double kMaxSpeed = 299'792'458.0;  // [m/s], c
 // Masses and principal moments of inertia [kg, kg m^2], and their inverses, at most this: the
@@ -19,7 +19,5 @@ inline constexpr double kMaxSpeed = 299'792'458.0;  // [m/s], c
 inline constexpr double kMaxMassScale = 1e150;
 // Stiffer than any solid: ten times diamond's 1.2e12 Pa (steel is 2e11 Pa).
 inline constexpr double kMaxYoungsModulus = 1e13;  // [Pa]
-// Above the surface gravity of a neutron star (~2e12 m/s^2).
-inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
 
 }  // namespace rbsim

@@ -97,7 +97,25 @@ struct Settings {
   bool skipIdleStages = true;
 };
 
-// Empty when the settings are usable; otherwise what is wrong, naming the field.
-std::string checkSettings(const Settings& settings);
+// Contact tolerances (contactMargin, contactSlop): a tolerance, not a reach. Past a metre every
+// body near another is a contact pair each step, and the narrow phase runs on all n^2/2.
+inline constexpr double kMaxContactTolerance = 1.0;  // [m]
+// Gravity above the surface gravity of a neutron star (~2e12 m/s^2) is no scene's.
+inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
+// A query log longer than this holds more than anyone reads, at ~200 B a record.
+inline constexpr std::size_t kMaxQueryLogCapacity = 1000000;  // [records]
+
+// What is wrong with a Settings: the scene key of the field (under "world") and what was
+// expected. Empty (false) when the settings are usable.
+struct SettingsProblem {
+  std::string key;          // e.g. "dt", "ccd_motion_fraction"
+  std::string expectation;  // "expected ..."
+  explicit operator bool() const { return !key.empty(); }
+  std::string message() const { return "world." + key + ": " + expectation; }
+};
+
+// The one check of every field (World's constructor and the scene loader both use it, so a value
+// is refused with the same words wherever it comes from).
+SettingsProblem checkSettings(const Settings& settings);
 
 }  // namespace rbsim

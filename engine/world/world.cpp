@@ -80,8 +80,8 @@ const char* stageName(Stage stage) {
 
 namespace {
 const Settings& checked(const Settings& settings) {
-  const std::string problem = checkSettings(settings);
-  if (!problem.empty()) throw std::invalid_argument(problem);
+  const SettingsProblem problem = checkSettings(settings);
+  if (problem) throw std::invalid_argument(problem.message());
   return settings;
 }
 }  // namespace
@@ -363,48 +363,6 @@ std::uint64_t World::stateHash() const {
     }
   }
   return hash;
-}
-
-std::string checkSettings(const Settings& s) {
-  std::ostringstream problem;
-  if (!std::isfinite(s.timeStep) || s.timeStep < kMinTimeStep || s.timeStep > kMaxTimeStep) {
-    problem << "dt: a time step of " << s.timeStep << " s is outside [" << kMinTimeStep << ", " << kMaxTimeStep << "] s";
-  } else if (!s.gravity.allFinite()) {
-    problem << "gravity: expected finite components";
-  } else if (!(s.sleepLinearSpeed >= 0.0) || !std::isfinite(s.sleepLinearSpeed)) {
-    problem << "sleep_linear_speed: expected a finite speed >= 0 m/s";
-  } else if (!(s.sleepAngularSpeed >= 0.0) || !std::isfinite(s.sleepAngularSpeed)) {
-    problem << "sleep_angular_speed: expected a finite speed >= 0 rad/s";
-  } else if (!(s.timeToSleep > 0.0) || !std::isfinite(s.timeToSleep)) {
-    problem << "time_to_sleep: expected a finite time > 0 s";
-  } else if (!(s.contactMargin >= 0.0) || !std::isfinite(s.contactMargin)) {
-    problem << "contact_margin: expected a finite distance >= 0 m";
-  } else if (!(s.ccdMotionFraction > 0.0) || !std::isfinite(s.ccdMotionFraction)) {
-    problem << "ccd_motion_fraction: expected a finite fraction > 0";
-  } else if (s.queryLogCapacity == 0) {
-    problem << "query_log_capacity: expected at least one record";
-  } else if (s.velocityIterations < 1 || s.positionIterations < 0 || s.velocityIterations > kMaxSolverIterations ||
-             s.positionIterations > kMaxSolverIterations) {
-    problem << "velocity_iterations, position_iterations: expected [1, " << kMaxSolverIterations << "] and [0, "
-            << kMaxSolverIterations << "] sweeps";
-  } else if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
-    problem << "substeps: expected an integer in [1, " << kMaxSubsteps << "]";
-  } else if (!(s.contactHertz >= 0.0) || !std::isfinite(s.contactHertz)) {
-    problem << "contact_hertz: expected a finite frequency >= 0 Hz";
-  } else if (!(s.contactDampingRatio >= 0.0) || !std::isfinite(s.contactDampingRatio)) {
-    problem << "contact_damping_ratio: expected a finite ratio >= 0";
-  } else if (!(s.contactPushSpeed > 0.0) || !std::isfinite(s.contactPushSpeed)) {
-    problem << "contact_push_speed: expected a finite speed > 0 m/s";
-  } else if (!(s.restitutionThreshold >= 0.0) || !std::isfinite(s.restitutionThreshold)) {
-    problem << "restitution_threshold: expected a finite speed >= 0 m/s";
-  } else if (!(s.contactSlop >= 0.0) || !std::isfinite(s.contactSlop)) {
-    problem << "contact_slop: expected a finite distance >= 0 m";
-  } else if (!(s.positionCorrection >= 0.0 && s.positionCorrection <= 1.0)) {
-    problem << "position_correction: expected a fraction in [0, 1]";
-  } else if (!(s.warmStartDistance >= 0.0) || !std::isfinite(s.warmStartDistance)) {
-    problem << "warm_start_distance: expected a finite distance >= 0 m";
-  }
-  return problem.str();
 }
 
 }  // namespace rbsim

@@ -207,7 +207,7 @@ TEST(StressTimeStep, OutsideTheAcceptedRangeTheWorldRefusesAndNamesDt) {
     }
     std::ostringstream value;
     value << dt;
-    EXPECT_EQ(message.rfind("dt", 0), 0u) << message;  // names the field first
+    EXPECT_EQ(message.rfind("world.dt: ", 0), 0u) << message;  // names the field first, as the scene loader does
     EXPECT_NE(message.find(value.str()), std::string::npos) << message;
   }
   for (double dt : {kMinTimeStep, kMaxTimeStep}) {

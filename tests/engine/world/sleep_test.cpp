@@ -136,10 +136,10 @@ TEST(Settings, SleepThresholdsAreChecked) {
                    +[](Settings& s) { s.timeToSleep = 0.0; }}) {
     Settings s;
     bad(s);
-    EXPECT_FALSE(checkSettings(s).empty());
+    EXPECT_TRUE(static_cast<bool>(checkSettings(s)));
     EXPECT_THROW(World{s}, std::invalid_argument);
   }
-  EXPECT_TRUE(checkSettings(Settings{}).empty());
+  EXPECT_FALSE(static_cast<bool>(checkSettings(Settings{})));
 }
 
 // A scene that exercises every stage at some point: a pose event, a push, gravity off, two
