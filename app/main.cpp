@@ -22,7 +22,7 @@
 #include "run/reel.h"
 #include "run/runner.h"
 #include "rbsim/scene/scene.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include "window/orbit_camera.h"
 #include "window/picking.h"
 #include "window/x11_window.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim::app {
 

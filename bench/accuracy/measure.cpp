@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "rbsim/math/rotation.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim::accuracy {

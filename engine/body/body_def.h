@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rbsim/dynamics/material.h"
+#include "rbsim/body/material.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/math/types.h"
 #include "rbsim/shapes/shape.h"
@@ -35,7 +35,7 @@ struct BodyDef {
   Vec3 velocity = Vec3::Zero();            // v of the centre of mass [m/s]
   Vec3 angularVelocity = Vec3::Zero();     // omega, world frame [rad/s]
   Vec3 color = Vec3(0.85, 0.45, 0.2);      // display only, linear RGB in [0, 1]
-  Material material;                       // restitution and friction (dynamics/material.h)
+  Material material;                       // restitution and friction (body/material.h)
   // A static body never moves: it is not integrated, forces do not act on it, and it behaves as
   // if its mass were infinite. Its mass and inertia are kept for display only.
   bool isStatic = false;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "rbsim/body/body_def.h"
-#include "rbsim/body/body_state.h"
+#include "rbsim/integrate/body_state.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/integrate/integrator.h"
 

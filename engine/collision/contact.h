@@ -4,6 +4,7 @@
 #include <array>
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
 #include "rbsim/math/types.h"
@@ -39,6 +40,17 @@ struct Plane {
   Vec3 normal = Vec3::UnitY();  // unit [1]
   double offset = 0.0;          // [m]
   double signedDistance(const Vec3& p) const { return normal.dot(p) - offset; }
+};
+
+// A touching (or, within the contact margin, nearly touching) pair. For a body against a plane,
+// `a` is the plane's index and the normal is the plane's (collision/narrowphase/convex_plane.h).
+struct Contact {
+  enum class Kind { BodyBody, PlaneBody } kind = Kind::BodyBody;
+  std::size_t a = 0, b = 0;
+  // Which of the pair's manifolds (a body of any shape may touch another along several normals:
+  // collision/narrowphase/sdf_contact.h); part of the warm-start key.
+  std::uint8_t part = 0;
+  ContactManifold manifold;
 };
 
 }  // namespace rbsim

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "rbsim/math/types.h"
-#include "rbsim/world/collision_pipeline.h"
+#include "rbsim/collision/contact.h"
 
 namespace rbsim {
 

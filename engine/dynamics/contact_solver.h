@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
-#include "rbsim/dynamics/material.h"
+#include "rbsim/body/material.h"
 #include "rbsim/dynamics/solved_contact_point.h"
-#include "rbsim/world/collision_pipeline.h"
-#include "rbsim/world/settings.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/settings/settings.h"
 
 namespace rbsim {
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "rbsim/dynamics/material.h"
+#include "rbsim/body/material.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 
 namespace rbsim {
 

@@ -5,12 +5,12 @@
 // radius (the seed's sphere around a grid point), the nearest triangle anywhere, and which
 // triangles a segment between two grid points crosses (the sign flood fill's occlusion).
 // Closest points on a triangle are Ericson's Voronoi-region method, closestPointOnTriangle in
-// collision/narrowphase/distance.h (exact up to rounding in all seven regions).
+// geometry/distance.h (exact up to rounding in all seven regions).
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "rbsim/collision/aabb.h"
+#include "rbsim/geometry/aabb.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/math/types.h"
 

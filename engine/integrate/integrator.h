@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "rbsim/body/body_state.h"
+#include "rbsim/integrate/body_state.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {

@@ -1,6 +1,6 @@
 #pragma once
 // Every tuning value of one particle system, with its default and unit (in the style of
-// world/settings.h). Seed 000's homework: "Build a particle system based either on F = ma or
+// settings/settings.h). Seed 000's homework: "Build a particle system based either on F = ma or
 // procedural simulation" (smoke, fire, water, wind, cloth, magnets, flocks); seed 004's cumulative
 // submission asks for it beside the rigid bodies. Scenes fill it from "particles" blocks.
 #include <cstdint>

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "rbsim/particles/cloth.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
 

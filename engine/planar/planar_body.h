@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 
 #include "rbsim/dynamics/impulse.h"
-#include "rbsim/dynamics/material.h"
+#include "rbsim/body/material.h"
 
 namespace rbsim {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <tuple>
 
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
 

@@ -4,7 +4,7 @@
 // overflows a body's bounding box in its first step. Beyond these bounds no rigid-body scene is
 // meaningful, so the parser refuses them naming the field, rather than the step diverging.
 // The World's own tuning values (gravity, contact tolerances) are ranged by checkSettings.
-#include "rbsim/world/settings.h"
+#include "rbsim/settings/settings.h"
 
 namespace rbsim {
 

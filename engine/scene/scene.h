@@ -14,7 +14,7 @@
 #include "rbsim/soft/soft_body.h"
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spring.h"
-#include "rbsim/world/settings.h"
+#include "rbsim/settings/settings.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {

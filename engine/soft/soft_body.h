@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "rbsim/collision/contact.h"
-#include "rbsim/dynamics/material.h"
+#include "rbsim/body/material.h"
 #include "rbsim/soft/constitutive.h"
 #include "rbsim/soft/tet_mesh.h"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
-#include "rbsim/dynamics/material.h"
+#include "rbsim/body/material.h"
 #include "rbsim/collision/body_shape.h"
 #include "rbsim/soft/soft_body.h"
 

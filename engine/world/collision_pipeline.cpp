@@ -12,7 +12,7 @@
 #include "rbsim/collision/narrowphase/sdf_contact.h"
 #include "rbsim/collision/narrowphase/shape_pairs.h"
 #include "rbsim/world/continuous_collision.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
 

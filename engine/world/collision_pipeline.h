@@ -12,20 +12,9 @@
 #include "rbsim/collision/broadphase/broad_phase.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/collision/narrowphase/query_log.h"
-#include "rbsim/world/settings.h"
+#include "rbsim/settings/settings.h"
 
 namespace rbsim {
-
-// A touching (or, within the contact margin, nearly touching) pair. For a body against a plane,
-// `a` is the plane's index and the normal is the plane's (collision/narrowphase/convex_plane.h).
-struct Contact {
-  enum class Kind { BodyBody, PlaneBody } kind = Kind::BodyBody;
-  std::size_t a = 0, b = 0;
-  // Which of the pair's manifolds (a body of any shape may touch another along several normals:
-  // collision/narrowphase/sdf_contact.h); part of the warm-start key.
-  std::uint8_t part = 0;
-  ContactManifold manifold;
-};
 
 // A fast body stopped at its time of impact by continuous collision detection.
 struct Impact {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "rbsim/body/body_state.h"
+#include "rbsim/integrate/body_state.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/math/types.h"
 

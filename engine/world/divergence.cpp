@@ -5,7 +5,7 @@
 #include <string>
 
 #include "rbsim/integrate/integrator.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {

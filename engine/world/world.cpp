@@ -12,7 +12,7 @@
 #include "rbsim/integrate/integrator.h"
 #include "rbsim/soft/soft_contact.h"
 #include "rbsim/world/islands.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
 

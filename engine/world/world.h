@@ -11,7 +11,7 @@
 #include "rbsim/collision/body_shape.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/dynamics/contact_solver.h"
-#include "rbsim/dynamics/material.h"
+#include "rbsim/body/material.h"
 #include "rbsim/dynamics/soft_step_solver.h"
 #include "rbsim/fracture/fracture.h"
 #include "rbsim/particles/particle_collision.h"
@@ -22,7 +22,7 @@
 #include "rbsim/world/collision_pipeline.h"
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spring.h"
-#include "rbsim/world/settings.h"
+#include "rbsim/settings/settings.h"
 
 namespace rbsim {
 

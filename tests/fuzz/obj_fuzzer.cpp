@@ -10,7 +10,7 @@
 #include "rbsim/io/input_error.h"
 #include "rbsim/io/obj_loader.h"
 #include "rbsim/mass/mass_model.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 #include "rbsim/world/world.h"
 
 namespace {

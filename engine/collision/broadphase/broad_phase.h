@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "rbsim/collision/aabb.h"
+#include "rbsim/geometry/aabb.h"
 
 namespace rbsim {
 

@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 #include "rbsim/collision/narrowphase/manifold_reduction.h"
 #include "rbsim/collision/narrowphase/polygon_clip.h"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 #include "rbsim/collision/narrowphase/epa.h"
 #include "rbsim/collision/narrowphase/gjk.h"
 #include "rbsim/collision/narrowphase/manifold_reduction.h"

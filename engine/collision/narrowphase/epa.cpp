@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 
 namespace rbsim {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 
 namespace rbsim {
 

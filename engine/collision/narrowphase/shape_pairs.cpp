@@ -5,7 +5,7 @@
 
 #include "rbsim/collision/narrowphase/convex_convex.h"
 #include "rbsim/collision/narrowphase/convex_plane.h"
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 
 namespace rbsim {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 
 namespace rbsim {
 

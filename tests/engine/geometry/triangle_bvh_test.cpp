@@ -9,7 +9,7 @@
 #include <random>
 #include <set>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 #include "rbsim/geometry/shapes.h"
 
 namespace rbsim {

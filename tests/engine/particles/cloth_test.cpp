@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "rbsim/math/uniform_random.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 #include "particle_test_util.h"
 
 namespace rbsim {

@@ -9,7 +9,7 @@
 
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
 namespace {

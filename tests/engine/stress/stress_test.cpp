@@ -47,7 +47,7 @@
 #include "rbsim/math/rotation.h"
 #include "stress/stress_length.h"
 #include "test_util.h"
-#include "rbsim/world/simulation_error.h"
+#include "rbsim/integrate/simulation_error.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -1,4 +1,4 @@
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 
 #include <algorithm>
 

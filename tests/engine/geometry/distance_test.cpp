@@ -1,6 +1,6 @@
-// collision/narrowphase/distance: seed 004's point-point, point-edge and point-face distances and
+// geometry/distance: seed 004's point-point, point-edge and point-face distances and
 // segment-segment closest points, on hand-made cases and against independent references.
-#include "rbsim/collision/narrowphase/distance.h"
+#include "rbsim/geometry/distance.h"
 
 #include <cmath>
 #include <random>

@@ -1,4 +1,4 @@
-#include "rbsim/world/settings.h"
+#include "rbsim/settings/settings.h"
 
 #include <cmath>
 #include <sstream>
