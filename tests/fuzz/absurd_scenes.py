@@ -278,10 +278,10 @@ def main():
     parser.add_argument("--every-element", action="store_true",
                         help="sweep every element of arrays of objects (bodies[0..n]), not the first of each key")
     parser.add_argument("--keep", help="copy the failing variants into this folder")
-    parser.add_argument("--small", action="store_true", help="the ctest mode: --max-runs %d --seed %d" % (SMALL_RUNS, SMALL_SEED))
+    parser.add_argument("--small", action="store_true", help="the ctest mode: --max-runs %d (unless given) --seed %d" % (SMALL_RUNS, SMALL_SEED))
     args = parser.parse_args()
     if args.small:
-        args.max_runs, args.seed = SMALL_RUNS, SMALL_SEED
+        args.max_runs, args.seed = args.max_runs or SMALL_RUNS, SMALL_SEED  # --max-runs may shorten it
     if not os.access(args.binary, os.X_OK):
         sys.exit("absurd_scenes.py: no executable binary at %s (build the rbsim target)" % args.binary)
 

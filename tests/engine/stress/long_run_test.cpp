@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../../sanitized_build.h"
 #include "rbsim/mass/mass_properties.h"
 #include "rbsim/particles/particle_def.h"
 #include "rbsim/particles/particle_system.h"
@@ -99,7 +100,9 @@ TEST(LongRun, TumblingBoxStaysFiniteWithBoundedEnergyAndFlatMemory) {
 // E = sum(kinetic + m g y) never rises above its start by more than the solver's rounding, no box
 // sinks through the plane, and the pile comes to rest.
 TEST(LongRun, HundredBoxPileStaysFiniteLosesEnergyAndKeepsFlatMemory) {
-  const long steps = test::stressSteps(5000, 100000);
+  // Under the sanitizers 1500 steps (the pile lands and tumbles; memory is not measurable there
+  // and the rest it reaches after ~40 s is the normal build's to check): 5000 took 136 s of CI.
+  const long steps = test::kSanitizedBuild ? 1500 : test::stressSteps(5000, 100000);
   const Vec3 gravity(0.0, -9.81, 0.0);
   Settings settings;
   settings.timeStep = kDt;
@@ -151,7 +154,7 @@ TEST(LongRun, HundredBoxPileStaysFiniteLosesEnergyAndKeepsFlatMemory) {
   EXPECT_TRUE(allFinite);
   EXPECT_LE(energyMax, energy0 * (1.0 + 1e-9));
   EXPECT_GT(lowest, 0.5 - 0.05) << "a box centre sank more than 5 cm into the plane";
-  EXPECT_LT(fastestAtEnd, 0.05) << "the pile should be at rest";
+  if (!test::kSanitizedBuild) EXPECT_LT(fastestAtEnd, 0.05) << "the pile should be at rest";
   memory.expectFlat();
 }
 
