@@ -124,9 +124,12 @@ void RigidBody::applyForceAtPoint(const Vec3& force, const Vec3& worldPoint) {
 
 void RigidBody::applyTorque(const Vec3& torque) { inputs_.torque += torque; }
 
+void RigidBody::applyBodyTorque(const Vec3& torque) { inputs_.bodyTorque += torque; }
+
 void RigidBody::clearAccumulators() {
   inputs_.force.setZero();
   inputs_.torque.setZero();
+  inputs_.bodyTorque.setZero();
 }
 
 void RigidBody::wake() {

@@ -83,6 +83,10 @@ class alignas(64) RigidBody {
   void applyForce(const Vec3& force);                          // at the centre of mass
   void applyForceAtPoint(const Vec3& force, const Vec3& worldPoint);  // tau += (p - x) x f
   void applyTorque(const Vec3& torque);
+  // A torque fixed in the body (body frame) [N m]: the splitting integrators turn it with the body
+  // within a step; to the others it is R tau_body at the step's start.
+  void applyBodyTorque(const Vec3& torque);
+  const Vec3& bodyTorque() const { return inputs_.bodyTorque; }
   const Vec3& force() const { return inputs_.force; }
   const Vec3& torque() const { return inputs_.torque; }
   void clearAccumulators();
@@ -102,6 +106,8 @@ class alignas(64) RigidBody {
   // Everything an integrator step reads besides the state, kept together so World::step hands
   // it over in place.
   const StepInputs& stepInputs() const { return inputs_; }
+  // What exact and exact4 keep between this body's steps (integrator.h), made when first asked for.
+  FreeFlowMemo& freeFlowMemo() { return freeFlow_.get(); }
 
   // Starts fetching the lines a step reads and writes, for a pass over many bodies to call a few
   // bodies ahead: the hardware prefetcher alone left the step waiting on memory (bench/
@@ -139,12 +145,13 @@ class alignas(64) RigidBody {
   double mass_ = 1.0;                       // for gravity, m g
   BodyState state_;
   StepInputs inputs_{Vec3::Zero(), Vec3::Zero(), Mat3::Identity(), Vec3::Zero(), Vec3::Zero(),
-                     1.0,          Mat3::Identity(), nullptr};  // v, omega, R, F, tau, constants
+                     1.0,          Mat3::Identity(), nullptr,   Vec3::Zero()};  // v, omega, R, F, tau, constants, tau_b
 
   // The seventh line: what only UpdateSleep and the accessors above read.
   double restingTime_ = 0.0;
   std::shared_ptr<const ColdConstants> cold_;
   mutable std::vector<Vec3> worldVertices_;  // a cache, filled by worldVertices() on demand
+  FreeFlowMemoSlot freeFlow_;
 };
 
 // Tolerance for accepting a matrix or quaternion as a rotation: ||R^T R - I||_F and | |q| - 1 |.

@@ -36,7 +36,7 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
     sim.inverseMass = 1.0 / b.mass();
     sim.inverseInertiaNow = b.inverseInertiaWorld();
     sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
-    sim.torque = b.torque();
+    sim.torque = b.torque() + b.rotation() * b.bodyTorque();  // the substeps hold both over the step
   }
   sims_.push_back(sim);
   states_.push_back(SolverState{b.velocity(), b.angularVelocity(), Vec3::Zero(), b.orientation()});

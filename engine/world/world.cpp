@@ -245,6 +245,12 @@ void World::accumulateForces(bool withGravity) {
   for (const ScriptedForce& f : forces_) {
     if (!isActive(f, t)) continue;
     RigidBody& body = bodies_[f.body];
+    if (f.forceFrame == Frame::Body && f.pointFrame == Frame::Body) {
+      // Fixed in the body: its torque r x f turns with the body within a step (integrator.h).
+      body.applyForce(body.rotation() * f.force);
+      body.applyBodyTorque(f.point.cross(f.force));
+      continue;
+    }
     const auto [point, force] = inWorldFrame(f, body);
     body.applyForceAtPoint(force, point);
   }
@@ -280,7 +286,8 @@ void World::integrateBodies(bool withGravity) {
         next[n] = integrateKinematic(body.state(), body.stepInputs(), dt);
       } else {
         if (addGravity) body.applyForce(body.mass() * gravity);  // F = 0 + m g, as AccumulateForces would
-        next[n] = integrate(settings_.integrator, body.state(), body.stepInputs(), dt);
+        FreeFlowMemo* memo = usesFreeFlow(settings_.integrator) ? &body.freeFlowMemo() : nullptr;
+        next[n] = integrate(settings_.integrator, body.state(), body.stepInputs(), dt, memo);
       }
       if (!isFinite(next[n])) {
         commit(n);  // the bodies before it have stepped, as they would have one at a time

@@ -75,6 +75,11 @@ TEST_P(ObservedOrder, MatchesTheMethodsOrderOnTheTumblingBox) {
   const std::string& name = GetParam();
   Integrator integrator;
   ASSERT_TRUE(parseIntegrator(name, integrator));
+  if (usesFreeFlow(integrator)) {
+    // Exact without torque: no order to observe, the error is rounding at any step.
+    for (double dt : {1.0 / 30.0, 1.0 / 60.0}) EXPECT_LT(orientationError(integrator, dt), 1e-10) << name;
+    return;
+  }
   Expected expected;
   ASSERT_TRUE(expectedFor(name, expected)) << "no expected order recorded for " << name;
   const double coarse = orientationError(integrator, expected.dt);
