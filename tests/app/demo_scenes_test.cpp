@@ -7,6 +7,8 @@
 #include <set>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "../sanitized_build.h"
@@ -87,7 +89,7 @@ TEST(ComparedPhase, EachWorldGetsItsOwnSolverAndIsOtherwiseTheSame) {
   RunOptions options;
   options.render = false;
   options.quiet = true;
-  options.tracePath = (std::filesystem::temp_directory_path() / "rbsim_compare_trace.csv").string();
+  options.tracePath = (std::filesystem::temp_directory_path() / ("rbsim_compare_trace_" + std::to_string(::getpid()) + ".csv")).string();
   options.traceEvery = 15;
   const RunSummary summary = runPhases(phases, options, "");
   EXPECT_EQ(summary.steps, 2u * 15u);  // 0.25 s at 1/60 s, in each of the two worlds

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "demos/demo.h"
@@ -70,7 +72,8 @@ TEST(FrameTiming, FramesKeepTimeWithinHalfAStepAtSixtyFps) {
 // A cut-down reel of every demo (0.1 s of each scene, 3-frame cards, 320x180): the plan's
 // counts must be the frames the run produced, per demo (its PNGs) and in the reel's MP4.
 TEST(Reel, PlanMatchesTheFramesAShortRunWrites) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rbsim_reel_test";
+  // Per process: two builds' suites may run at once on one machine.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rbsim_reel_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   ReelOptions options;
   options.width = 320;

@@ -72,7 +72,11 @@ std::vector<Integrator> allIntegrators() {
 
 // Issue 18: with PGS at dt = 1/60 a column of 20 toppled (top 11.7 m away with dlm).
 TEST(SoftStep, ColumnsOfTwentyAndFortyStandAtSixtyHertzWithEveryIntegrator) {
-  for (Integrator integrator : allIntegrators()) {
+  // Under the sanitizers one integrator (73 s of CI for all nine): bodies in contact do not
+  // depend on it, bit for bit (the next test), which runs there too.
+  const std::vector<Integrator> integrators =
+      test::kSanitizedBuild ? std::vector<Integrator>{Integrator::ExpMap} : allIntegrators();
+  for (Integrator integrator : integrators) {
     World twenty = boxes(settingsAt(kDt60, integrator), column(20));
     run(twenty, 10.0);
     const RigidBody& top = twenty.bodies().back();
