@@ -7,6 +7,7 @@
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/mass/mass_properties.h"
 #include "rbsim/math/rotation.h"
+#include "rbsim/world/world.h"
 #include "reference/torque_free.h"
 
 namespace rbsim::accuracy {
@@ -38,6 +39,16 @@ const Vec3 kBrickR0AxisAngle(-0.2, 0.6, 0.1);     // [rad]
 const Vec3 kBrickPosition(0.0, 1.0, 0.0);         // [m]
 const Vec3 kBrickVelocity(4.0, 12.0, -1.0);       // [m/s]
 const Vec3 kGravity(0.0, -9.81, 0.0);             // [m/s^2]
+
+// Case 4: the box of case 1 spun (0.3, 4, -0.5) rad/s under a couple fixed in the body: forces
+// +-(0, 0.05, 0.08) N at +-(0.2, 0, 0) m, torque 2 r x f = (0, -0.032, 0.02) N m, no net force.
+const Vec3 kTorquedOmegaBody(0.3, 4.0, -0.5);  // [rad/s]
+const Vec3 kCoupleArm(0.2, 0.0, 0.0);          // [m], body frame
+const Vec3 kCoupleForce(0.0, 0.05, 0.08);      // [N], body frame
+// Its reference: world-frame RK4 (fourth order, |L| exact) at this step, recorded on a grid
+// every dt of the sweep (1/30 ... 1/1000 s) falls on.
+constexpr int kReferenceRate = 30000;  // 1 / dt [1/s]
+constexpr int kReferenceGrid = 6000;   // samples per second [1/s]
 
 // The exact flips are counted on this grid: far finer than the ~4.4 s between them, and a
 // crossing is never missed because the omega component is smooth and monotone near its zeros.
@@ -113,10 +124,51 @@ ReferenceCase projectile() {
   return c;
 }
 
+ReferenceCase torquedBox(double duration) {
+  const Mat3 R0 = rotationFromAxisAngle(kBoxR0AxisAngle);
+  ReferenceCase c;
+  c.name = "torqued-box";
+  c.description = "the box of case 1, omega0 = (0.3, 4, -0.5) rad/s, under a torque (0, -0.032, 0.02) N m fixed in the body";
+  c.body = boxBody("box", kBoxExtents, kBoxMass, R0, kTorquedOmegaBody);
+  c.conservative = false;
+  for (double sign : {1.0, -1.0}) {
+    ScriptedForce f;
+    f.force = sign * kCoupleForce;
+    f.point = sign * kCoupleArm;
+    f.forceFrame = Frame::Body;
+    f.pointFrame = Frame::Body;
+    f.end = 2.0 * duration;
+    c.forces.push_back(f);
+  }
+  Settings settings;
+  settings.gravity = Vec3::Zero();
+  settings.timeStep = 1.0 / kReferenceRate;
+  settings.integrator = Integrator::Rk4;
+  settings.allowSleep = false;
+  World world(settings);
+  world.addBody(c.body);
+  for (const ScriptedForce& f : c.forces) world.addForce(f);
+  const long samples = std::lround(duration * kReferenceGrid) + 1;
+  auto grid = std::make_shared<std::vector<Quat>>();
+  grid->reserve(static_cast<std::size_t>(samples));
+  grid->push_back(world.bodies()[0].orientation());
+  for (long i = 1; i < samples; ++i) {
+    for (int k = 0; k < kReferenceRate / kReferenceGrid; ++k) world.step();
+    grid->push_back(world.bodies()[0].orientation());
+  }
+  c.exactRotation = [grid](double t) {
+    const long i = std::lround(t * kReferenceGrid);
+    if (i < 0 || i >= static_cast<long>(grid->size())) throw std::out_of_range("torqued-box: no reference at this time");
+    return Mat3((*grid)[static_cast<std::size_t>(i)].toRotationMatrix());
+  };
+  c.exactPosition = [](double) { return Vec3::Zero(); };
+  return c;
+}
+
 }  // namespace
 
 std::vector<ReferenceCase> referenceCases(double duration) {
-  return {torqueFreeBox(duration), symmetricTop(), projectile()};
+  return {torqueFreeBox(duration), symmetricTop(), projectile(), torquedBox(duration)};
 }
 
 }  // namespace rbsim::accuracy

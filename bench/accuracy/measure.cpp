@@ -27,6 +27,7 @@ World makeWorld(const ReferenceCase& c, Integrator integrator, double dt) {
   settings.allowSleep = false;  // the sweep measures integration, never a body put to rest
   World world(settings);
   world.addBody(c.body);
+  for (const ScriptedForce& f : c.forces) world.addForce(f);
   return world;
 }
 

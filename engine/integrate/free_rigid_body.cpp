@@ -35,7 +35,7 @@ double inverseGap(double a, double b) { return std::abs(a - b) / (a * b); }
 // roots of sums, accurate for every m.
 Quat alignmentToAxis3(const Vec3& m) {
   const double g = m.norm();
-  const double rho = std::hypot(m.x(), m.y());
+  const double rho = std::sqrt(m.x() * m.x() + m.y() * m.y());
   const double cosHalfTheta = std::sqrt((g + m.z()) / (2.0 * g));
   const double sinHalfTheta = rho / (2.0 * g * cosHalfTheta);
   double cosHalfPsi = 1.0, sinHalfPsi = 0.0;
@@ -142,8 +142,8 @@ FreeRigidBodyFlow::FreeRigidBodyFlow(const Quat& principalToWorld, const Vec3& a
   pi0_ = phaseAt(u0_).pi;
   precessionRate_ = momentumMagnitude_ / Ic[2];
   piCoefficient_ = momentumMagnitude_ * (1.0 / Ic[0] - 1.0 / Ic[2]) / rate_;
-  circulationToWorld_ = epoch_ * Quat(circulationFromPrincipal_).conjugate();
-  epochAlignmentInverse_ = alignmentToAxis3(mc).conjugate();
+  principalToCirculation_ = Quat(circulationFromPrincipal_);
+  epochFrame_ = epoch_ * principalToCirculation_.conjugate() * alignmentToAxis3(mc).conjugate();
 }
 
 double FreeRigidBodyFlow::period() const {
@@ -190,7 +190,7 @@ FreeRigidBodyFlow::Phase FreeRigidBodyFlow::phaseAt(double u) const {
     pi = thirdKind(characteristic_, sn, cn, complementary2_);
   }
   if (j != 0.0) pi += 2.0 * j * completePi_;
-  if (std::fmod(j, 2.0) != 0.0) {
+  if (std::fmod(j, 2.0) != 0.0) {  // j is a whole number
     sn = -sn;
     cn = -cn;
   }
@@ -232,8 +232,7 @@ Quat FreeRigidBodyFlow::principalToWorld(double t) const {
   const Phase phase = phaseAt(u0_ + rate_ * t);
   const double halfTurn = 0.5 * rotationAboutMomentum(phase, t);
   const Quat aboutAxis3(std::cos(halfTurn), 0.0, 0.0, std::sin(halfTurn));
-  const Quat circulation = circulationToWorld_ * epochAlignmentInverse_ * aboutAxis3 * alignmentToAxis3(phase.momentum);
-  return (circulation * Quat(circulationFromPrincipal_)).normalized();
+  return epochFrame_ * aboutAxis3 * alignmentToAxis3(phase.momentum) * principalToCirculation_;
 }
 
 }  // namespace rbsim

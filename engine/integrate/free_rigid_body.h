@@ -20,7 +20,8 @@ class FreeRigidBodyFlow {
   FreeRigidBodyFlow(const Quat& principalToWorld, const Vec3& angularMomentum, const Vec3& principalMoments);
 
   // The principal frame's orientation t [s] after the epoch (t may be negative: the flow is
-  // reversible). L stays what it was: the flow maps the body-frame momentum onto it exactly.
+  // reversible), unit to rounding (not renormalised). L stays what it was: the flow maps the
+  // body-frame momentum onto it exactly.
   Quat principalToWorld(double t) const;
   // The angular momentum in the principal frame at time t [kg m^2/s].
   Vec3 principalMomentum(double t) const;
@@ -50,8 +51,10 @@ class FreeRigidBodyFlow {
 
   // The circulation frame c: a signed permutation of the principal axes (a rotation) whose third
   // axis is the one the momentum circulates about, with m_3 >= 0.
-  Quat circulationToWorld_;  // at t = 0
-  Quat epochAlignmentInverse_;  // A(m(0))^-1, A(m) the rotation taking m / |m| to e_3
+  // R(t) = epochFrame_ Rz(phi(t) - phi(0)) A(m(t)) principalToCirculation_, with
+  // epochFrame_ = R_c(0) A(m(0))^-1 and A(m) the rotation taking m / |m| to e_3.
+  Quat epochFrame_;
+  Quat principalToCirculation_;
   Mat3 circulationFromPrincipal_;
   Vec3 circulationMoments_;  // I in the circulation frame [kg m^2]
   double momentumMagnitude_ = 0.0;  // G = |L| [kg m^2/s]

@@ -237,8 +237,8 @@ BodyState dlmStep(const BodyState& y, const StepInputs& in, double dt) {
 // memo, a step that continues the last one (same orientation to the bit, same L, same h) evaluates
 // the memo's flow at (steps + 1) h instead of restarting it.
 Quat freeRotation(const Quat& orientation, const Vec3& L, const StepInputs& in, double h, FreeFlowMemo* memo) {
-  const Quat principalToBody(in.inertia->principalAxes);
   if (memo == nullptr) {
+    const Quat principalToBody(in.inertia->principalAxes);
     const FreeRigidBodyFlow flow(orientation * principalToBody, L, in.inertia->principalMoments);
     return (flow.principalToWorld(h) * principalToBody.conjugate()).normalized();
   }
@@ -248,12 +248,13 @@ Quat freeRotation(const Quat& orientation, const Vec3& L, const StepInputs& in, 
   if (continues) {
     ++memo->steps;
   } else {
-    memo->flow.emplace(orientation * principalToBody, L, in.inertia->principalMoments);
+    memo->bodyToPrincipal = Quat(in.inertia->principalAxes).conjugate();
+    memo->flow.emplace(orientation * memo->bodyToPrincipal.conjugate(), L, in.inertia->principalMoments);
     memo->dt = h;
     memo->steps = 1;
   }
   const double t = static_cast<double>(memo->steps) * h;
-  memo->lastOrientation = (memo->flow->principalToWorld(t) * principalToBody.conjugate()).normalized();
+  memo->lastOrientation = (memo->flow->principalToWorld(t) * memo->bodyToPrincipal).normalized();
   return memo->lastOrientation;
 }
 

@@ -75,6 +75,7 @@ struct FreeFlowMemo {
   double dt = 0.0;                   // [s]
   long steps = 0;                    // since the epoch
   Quat lastOrientation = Quat::Identity();  // the body orientation the last step wrote
+  Quat bodyToPrincipal = Quat::Identity();  // E^T of BodyInertia, as a quaternion
 };
 
 // A FreeFlowMemo that a body copies with itself (each copy goes on alone), made when first used.
