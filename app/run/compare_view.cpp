@@ -50,7 +50,8 @@ bool toPixel(const glm::mat4& viewProj, const glm::vec3& p, int width, int heigh
 // The selected body in every world, quantity by quantity, so the values stand one under the
 // other: "x  PGS", "x  soft step", "v  PGS", ... (KE: kinetic energy, a short label keeps the
 // panel narrow enough to leave the worlds in view)
-std::vector<std::pair<std::string, std::string>> selectedBodyRows(const std::vector<World>& worlds, const Phase& phase) {
+std::vector<std::pair<std::string, std::string>> selectedBodyRows(const std::vector<World>& worlds, const Phase& phase,
+                                                                  const std::vector<FreeFlightError>* freeFlight) {
   const Scene& scene = phase.scene();
   const std::size_t i = scene.view.selected;
   std::vector<std::pair<std::string, std::string>> rows = {{"compared", phase.compareKey}};
@@ -66,13 +67,20 @@ std::vector<std::pair<std::string, std::string>> selectedBodyRows(const std::vec
   add("v", [](const RigidBody& b) { return formatVec(b.velocity(), "m/s"); });
   add("omega", [](const RigidBody& b) { return formatVec(b.angularVelocity(), "rad/s"); });
   add("KE", [](const RigidBody& b) { return formatNumber(b.kineticEnergy(), b.awake() ? "J" : "J (asleep)"); });
+  if (freeFlight != nullptr) {
+    for (std::size_t k = 0; k < worlds.size() && k < freeFlight->size(); ++k) {
+      rows.push_back({"vs exact spin  " + phase.worlds[k].label, formatFreeFlightError((*freeFlight)[k].read(worlds[k]))});
+    }
+  }
   return rows;
 }
 
 }  // namespace
 
-render::FrameData buildPhaseFrame(const std::vector<World>& worlds, const Phase& phase, const std::string& demoTitle) {
-  if (!phase.compared()) return buildFrame(worlds.front(), phase.scene(), demoTitle);
+render::FrameData buildPhaseFrame(const std::vector<World>& worlds, const Phase& phase, const std::string& demoTitle,
+                                  const std::vector<FreeFlightError>* freeFlight) {
+  const FreeFlightError* first = freeFlight != nullptr && !freeFlight->empty() ? &freeFlight->front() : nullptr;
+  if (!phase.compared()) return buildFrame(worlds.front(), phase.scene(), demoTitle, true, first);
   render::FrameData frame = buildFrame(worlds.front(), phase.scene(), demoTitle, /*selectedBodyRows=*/false);
   shift(frame, toGlm(phase.worlds.front().offset));
   for (std::size_t k = 1; k < worlds.size(); ++k) {
@@ -95,7 +103,7 @@ render::FrameData buildPhaseFrame(const std::vector<World>& worlds, const Phase&
     }
   }
   // After "time t" and "integrator" (buildFrame's first rows), before any debug view's rows.
-  const std::vector<std::pair<std::string, std::string>> rows = selectedBodyRows(worlds, phase);
+  const std::vector<std::pair<std::string, std::string>> rows = selectedBodyRows(worlds, phase, freeFlight);
   auto& all = frame.overlay.rows;
   all.insert(all.begin() + std::min<std::ptrdiff_t>(kLeadingRows, static_cast<std::ptrdiff_t>(all.size())), rows.begin(), rows.end());
   return frame;

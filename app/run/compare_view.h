@@ -7,11 +7,14 @@
 
 #include "render/frame_data.h"
 #include "run/phase.h"
+#include "rbsim/world/free_flight_error.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim::app {
 
-// `worlds[k]` was built from phase.worlds[k].scene.
-render::FrameData buildPhaseFrame(const std::vector<World>& worlds, const Phase& phase, const std::string& demoTitle);
+// `worlds[k]` was built from phase.worlds[k].scene; `freeFlight[k]`, when given, follows its
+// selected body (the "vs exact spin" rows).
+render::FrameData buildPhaseFrame(const std::vector<World>& worlds, const Phase& phase, const std::string& demoTitle,
+                                  const std::vector<FreeFlightError>* freeFlight = nullptr);
 
 }  // namespace rbsim::app

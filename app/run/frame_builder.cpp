@@ -31,8 +31,16 @@ render::Camera sceneCamera(const ViewDesc& view) {
   return camera;
 }
 
+std::string formatFreeFlightError(const FreeFlightError::Reading& reading) {
+  if (!reading.tracked) return "not free (asleep, static or kinematic)";
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%.3g rad, dE/E %+.2g (torque-free since %.2f s)", reading.angle, reading.energy,
+                reading.since);
+  return buffer;
+}
+
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
-                             bool selectedBodyRows) {
+                             bool selectedBodyRows, const FreeFlightError* freeFlight) {
   render::FrameData frame;
   const ViewDesc& view = scene.view;
   frame.camera = sceneCamera(view);
@@ -90,6 +98,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
         {"L", formatVec(body.state().angularMomentum, "kg m^2/s")},
         {"kinetic energy", formatNumber(body.kineticEnergy(), "J")},
     });
+    if (freeFlight != nullptr) overlay.rows.push_back({"vs exact spin", formatFreeFlightError(freeFlight->read(world))});
   }
   if (!world.particleSystems().empty()) addParticleView(world, scene, frame);
   if (!world.softBodies().empty()) addSoftView(world, frame);

@@ -6,6 +6,7 @@
 
 #include "render/frame_data.h"
 #include "rbsim/scene/scene.h"
+#include "rbsim/world/free_flight_error.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim::app {
@@ -13,9 +14,14 @@ namespace rbsim::app {
 render::Camera sceneCamera(const ViewDesc& view);
 
 // `selectedBodyRows` false leaves the selected body's variables out of the overlay's rows (a
-// compared phase, compare_view.h, shows its own rows of every world instead).
+// compared phase, compare_view.h, shows its own rows of every world instead). With
+// `freeFlight` (following the selected body) the rows end with its error against the exact
+// torque-free motion.
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
-                             bool selectedBodyRows = true);
+                             bool selectedBodyRows = true, const FreeFlightError* freeFlight = nullptr);
+
+// "0.0123 rad, dE/E +1.2e-05 (free since 3.2 s)", or why the body is not compared.
+std::string formatFreeFlightError(const FreeFlightError::Reading& reading);
 
 // "+1.0000 -2.0000 +0.5000 m": the overlay's format of a vector.
 std::string formatVec(const Vec3& v, const char* unit);

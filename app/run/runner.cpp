@@ -154,6 +154,12 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     std::vector<World> worlds;
     worlds.reserve(phase.worlds.size());
     for (const PhaseWorld& w : phase.worlds) worlds.push_back(buildWorld(w.scene));
+    // The overlay's error against the exact spin, of each world's selected body.
+    std::vector<FreeFlightError> freeFlight;
+    for (std::size_t k = 0; k < worlds.size(); ++k) {
+      freeFlight.emplace_back(phase.worlds[k].scene.view.selected);
+      if (renderer) freeFlight.back().observe(worlds[k]);
+    }
     const auto traceRow = [&](std::size_t k) {
       const std::uint64_t step = stepBase + worlds[k].stepCount();
       if (trace && step % options.traceEvery == 0) {
@@ -165,6 +171,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
         const auto start = Clock::now();
         worlds[k].step();
         summary.simulateSeconds += secondsSince(start);
+        if (renderer) freeFlight[k].observe(worlds[k]);
         ++summary.steps;
         traceRow(k);
         if (!renderer) report();
@@ -191,7 +198,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
         continue;
       }
       auto start = Clock::now();
-      const render::FrameData frame = buildPhaseFrame(worlds, phase, title);
+      const render::FrameData frame = buildPhaseFrame(worlds, phase, title, &freeFlight);
       summary.buildSeconds += secondsSince(start);
       const std::vector<std::uint8_t>& pixels = renderer->render(frame);
       start = Clock::now();

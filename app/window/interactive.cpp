@@ -55,6 +55,7 @@ class Session {
   Session(const SceneSource& source, const WindowOptions& options) : source_(source), options_(options) {
     scene_ = load(phase_, {});
     world_ = std::make_unique<World>(buildWorld(scene_));
+    watchFreeFlight();
   }
 
   void run() {
@@ -132,7 +133,10 @@ class Session {
 
   void stepUntil(std::uint64_t target) {
     try {
-      while (world_->stepCount() < target) world_->step();
+      while (world_->stepCount() < target) {
+        world_->step();
+        freeFlight_->observe(*world_);
+      }
     } catch (const SimulationError& e) {
       paused_ = true;
       message_ = std::string("diverged, paused: ") + e.what();
@@ -150,6 +154,7 @@ class Session {
   void restart() {
     drag_.reset();
     world_ = std::make_unique<World>(buildWorld(scene_));
+    watchFreeFlight();
     frameIndex_ = 0;
     history_.clear();
   }
@@ -217,7 +222,7 @@ class Session {
   }
 
   render::FrameData frame() {
-    render::FrameData f = buildFrame(*world_, scene_, title());
+    render::FrameData f = buildFrame(*world_, scene_, title(), true, &*freeFlight_);
     if (orbit_) f.camera = orbit_->camera();
     if (drag_) {
       const auto [point, force] = world_->springForce(drag_->spring);
@@ -301,6 +306,7 @@ class Session {
         restart();
       } else {
         scene_.view = scene.view;
+        if (freeFlight_->body() != scene_.view.selected) watchFreeFlight();
       }
     } catch (const InputError& e) {
       message_ = e.what();
@@ -361,6 +367,12 @@ class Session {
   std::vector<std::pair<std::string, std::string>> panel_;  // scene-key assignments made in the window
   Scene scene_;
   std::unique_ptr<World> world_;
+  std::optional<FreeFlightError> freeFlight_;  // the selected body's error against the exact spin
+
+  void watchFreeFlight() {
+    freeFlight_.emplace(scene_.view.selected);
+    freeFlight_->observe(*world_);
+  }
   std::uint64_t frameIndex_ = 0;
   bool paused_ = false;
   std::optional<OrbitCamera> orbit_;  // unset until the user moves the camera
