@@ -32,10 +32,9 @@ render::Camera sceneCamera(const ViewDesc& view) {
 }
 
 std::string formatFreeFlightError(const FreeFlightError::Reading& reading) {
-  if (!reading.tracked) return "not free (asleep, static or kinematic)";
+  if (!reading.tracked) return "not compared (asleep, static, kinematic)";
   char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%.3g rad, dE/E %+.2g (torque-free since %.2f s)", reading.angle, reading.energy,
-                reading.since);
+  std::snprintf(buffer, sizeof buffer, "%.3g rad, dE/E %+.2g, since %.3g s", reading.angle, reading.energy, reading.since);
   return buffer;
 }
 

@@ -20,7 +20,8 @@ render::Camera sceneCamera(const ViewDesc& view);
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
                              bool selectedBodyRows = true, const FreeFlightError* freeFlight = nullptr);
 
-// "0.0123 rad, dE/E +1.2e-05 (free since 3.2 s)", or why the body is not compared.
+// "0.0123 rad, dE/E +1.2e-05, since 3.2 s" (the time the spin was last torqued), or why the
+// body is not compared.
 std::string formatFreeFlightError(const FreeFlightError::Reading& reading);
 
 // "+1.0000 -2.0000 +0.5000 m": the overlay's format of a vector.
