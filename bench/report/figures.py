@@ -227,6 +227,10 @@ def accuracy(results):
     if projectile:
         out += "Spinning projectile at dt = 1/60 s, max position error: %s.\n" % ", ".join(
             "%s %s m" % (r["integrator"], sig(float(r["position_err_max_m"]), 2)) for r in projectile)
+    torqued = [r for r in read_csv(path(results, "accuracy.csv")) if r["case"] == "torqued-box" and r["steps_per_s"] == "60"]
+    if torqued:
+        out += "Box under a body-fixed torque at dt = 1/60 s, max orientation error against RK4 at 1/30000 s: %s.\n" % ", ".join(
+            "%s %s rad" % (r["integrator"], sig(float(r["orient_err_max_rad"]), 2)) for r in torqued)
     return out
 
 

@@ -156,7 +156,9 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     if (!parseIntegrator(integrator, scene.settings.integrator)) {
       std::string names;
       for (const std::string& n : integratorNames()) names += (names.empty() ? "" : ", ") + n;
-      w.fail("integrator", "unknown integrator \"" + integrator + "\"; expected one of " + names);
+      const std::string near = nearestKey(integrator, integratorNames());
+      const std::string hint = near.empty() ? "" : " (did you mean \"" + near + "\"?)";
+      w.fail("integrator", "unknown integrator \"" + integrator + "\"" + hint + "; expected one of " + names);
     }
     const std::string particles = w.string("particle_integrator", particleIntegratorName(scene.particleIntegrator));
     if (!parseParticleIntegrator(particles, scene.particleIntegrator)) {
