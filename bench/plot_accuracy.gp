@@ -13,6 +13,8 @@ if (!exists("outdir")) outdir = 'bench/results'
 box = 'torque-free-box'
 pi_rad = pi  # the largest possible orientation error [rad]
 
+# gnuplot's default colours repeat after eight: the ninth integrator gets its own.
+set linetype 9 lc rgb '#8b4513' lw 1 pt 10
 set datafile separator comma
 set datafile columnheaders  # 'nan' cells read as NaN: not drawn
 set encoding utf8
@@ -48,12 +50,12 @@ set arrow 1 from graph 0, first pi_rad to graph 1, first pi_rad nohead dt 2 lc r
 set label 1 'π rad: orientation lost' at graph 0.01, first pi_rad * 1.5 tc rgb '#666666'
 set title sprintf('over the whole %s s run (4 flips); circled: the body stopped flipping (flip-period error nan)', simtime)
 plot for [i=1:words(names)] csv using (onBox(word(names, i), column("wall_ms_per_run"))):(column("orient_err_max_rad")) \
-       with linespoints lc i pt (4 + 2 * ((i - 1) % 4)) title word(names, i), \
+       with linespoints lc i pt (4 + 2 * ((i - 1) % 5)) title word(names, i), \
      for [i=1:words(names)] csv using (noFlip(word(names, i), column("wall_ms_per_run"))):(column("orient_err_max_rad")) \
        with points lc rgb 'black' pt 6 ps 2.6 title (i == 1 ? 'stopped flipping' : '')
 set title sprintf('over the first %s s only (before the first flip): the first-order methods have not yet lost the orientation', early)
 plot for [i=1:words(names)] csv using (onBox(word(names, i), column("wall_ms_per_run"))):(column("orient_err_max_early_rad")) \
-       with linespoints lc i pt (4 + 2 * ((i - 1) % 4)) title word(names, i)
+       with linespoints lc i pt (4 + 2 * ((i - 1) % 5)) title word(names, i)
 unset multiplot
 unset arrow 1
 unset label 1
@@ -65,7 +67,7 @@ set title 'max relative energy drift max_t |E(t)/E_0 - 1|'
 set ylabel 'max |E/E_0 - 1|  [1]'
 set yrange [*:100]
 plot for [i=1:words(names)] csv using (onBox(word(names, i), column("wall_ms_per_run"))):(column("energy_drift_max_rel")) \
-       with linespoints lc i pt (4 + 2 * ((i - 1) % 4)) title word(names, i)
+       with linespoints lc i pt (4 + 2 * ((i - 1) % 5)) title word(names, i)
 
 # Runs without a measurable flip period are drawn on the dashed line at the top (never dropped).
 noflip_y = 3.0  # plotted value for "no flip" [1]: above any real error, which is < 1 here
@@ -75,7 +77,7 @@ set yrange [*:10]
 set arrow 2 from graph 0, first noflip_y to graph 1, first noflip_y nohead dt 2 lc rgb '#888888'
 set label 2 'no flip' at graph 0.01, first noflip_y * 1.5 tc rgb '#666666'
 plot for [i=1:words(names)] csv using (onBox(word(names, i), column("wall_ms_per_run"))):(column("flip_period_err_rel")) \
-       with linespoints lc i pt (4 + 2 * ((i - 1) % 4)) title word(names, i), \
+       with linespoints lc i pt (4 + 2 * ((i - 1) % 5)) title word(names, i), \
      for [i=1:words(names)] csv using (noFlip(word(names, i), column("wall_ms_per_run"))):(noflip_y) \
        with points lc i pt 2 ps 2 notitle
 unset multiplot
@@ -92,4 +94,4 @@ set yrange [1e-12:20]
 unset arrow 2
 unset label 2
 plot for [i=1:words(names)] csv using (onTorqued(word(names, i), column("wall_ms_per_run"))):(column("orient_err_max_rad")) \
-       with linespoints lc i pt (4 + 2 * ((i - 1) % 4)) title word(names, i)
+       with linespoints lc i pt (4 + 2 * ((i - 1) % 5)) title word(names, i)
