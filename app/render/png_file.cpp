@@ -1,12 +1,10 @@
 #include "png_file.h"
 
-#include <csetjmp>
-#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
-#include <png.h>
+#include <libdeflate.h>
 
 #include "checked_file.h"
 #include "render_error.h"
@@ -15,45 +13,75 @@ namespace rbsim::render {
 
 namespace {
 
-// libpng's own stdio writer turns a failed fwrite into "Write Error" and loses errno; these
-// write through CheckedFile, which keeps the OS's reason for the message.
-void writeData(png_structp png, png_bytep data, png_size_t size) {
-  if (!static_cast<CheckedFile*>(png_get_io_ptr(png))->write(data, size)) png_error(png, "write failed");
-}
+// stb_image_write hands its compressor one process-wide level; ours comes with each call, so the
+// writer threads may each write at their own.
+thread_local int threadLevel = kDefaultPngLevel;
 
-void flushData(png_structp) {}  // CheckedFile::close flushes and reports
-
-// libpng prints its errors on stderr by default; keep the words for our own message instead.
-void keepError(png_structp png, png_const_charp message) {
-  *static_cast<std::string*>(png_get_error_ptr(png)) = message;
-  png_longjmp(png, 1);
-}
-
-void ignoreWarning(png_structp, png_const_charp) {}
-
-// libpng reports errors by longjmp; keep every C++ object with a destructor outside the frame
-// that calls setjmp, so none is skipped. Returns false on any libpng error.
-bool writeRows(CheckedFile& file, int width, int height, png_bytep* rows, int zlibLevel, std::string& pngError) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &pngError, keepError, ignoreWarning);
-  if (png == nullptr) return false;
-  png_infop info = png_create_info_struct(png);
-  if (info == nullptr || setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    return false;
+// A libdeflate compressor per thread, kept for the next frame at the same level: allocating one
+// (its hash tables) costs about as much as compressing a small frame.
+struct ThreadCompressor {
+  int level = -1;
+  libdeflate_compressor* compressor = nullptr;
+  ~ThreadCompressor() { libdeflate_free_compressor(compressor); }
+  libdeflate_compressor* at(int wanted) {
+    if (wanted != level) {
+      libdeflate_free_compressor(compressor);
+      compressor = libdeflate_alloc_compressor(wanted);
+      level = compressor != nullptr ? wanted : -1;
+    }
+    return compressor;
   }
-  png_set_write_fn(png, &file, writeData, flushData);
-  png_set_compression_level(png, zlibLevel);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
-               PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
-  png_write_info(png, info);
-  png_write_image(png, rows);
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  return true;
-}
+};
+thread_local ThreadCompressor threadCompressor;
 
 }  // namespace
+
+// stb_image_write's STBIW_ZLIB_COMPRESS hook: the zlib stream of the filtered rows, in memory stb
+// releases with free(); nullptr (stb then fails the write) if it cannot be made.
+unsigned char* zlibForStb(const unsigned char* data, int length, int* outLength, int /*stbLevel*/) {
+  libdeflate_compressor* compressor = threadCompressor.at(threadLevel);
+  if (compressor == nullptr || length < 0) return nullptr;
+  const std::size_t bound = libdeflate_zlib_compress_bound(compressor, static_cast<std::size_t>(length));
+  auto* out = static_cast<unsigned char*>(std::malloc(bound));
+  if (out == nullptr) return nullptr;
+  const std::size_t written = libdeflate_zlib_compress(compressor, data, static_cast<std::size_t>(length), out, bound);
+  if (written == 0 || written > static_cast<std::size_t>(INT32_MAX)) {
+    std::free(out);
+    return nullptr;
+  }
+  *outLength = static_cast<int>(written);
+  return out;
+}
+
+}  // namespace rbsim::render
+
+// Debian's stb_image_write (libstb-dev), compiled here with libdeflate behind its deflate hook and
+// kept static so it never meets libstb's own copy of the same functions.
+#define STBIW_ZLIB_COMPRESS(data, length, outLength, level) rbsim::render::zlibForStb(data, length, outLength, level)
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+
+namespace rbsim::render {
+
+namespace {
+
+void writeToFile(void* context, void* data, int size) {
+  static_cast<CheckedFile*>(context)->write(data, static_cast<std::size_t>(size));  // keeps its failure
+}
+
+// stb's forced row filter is one process-wide global, set here at start-up and by
+// setPngRowFilter; never by a writer thread.
+const bool kRowFilterSet = (stbi_write_force_png_filter = kDefaultPngRowFilter, true);
+
+}  // namespace
+
+void setPngRowFilter(int filter) {
+  if (filter < kMinPngRowFilter || filter > kMaxPngRowFilter) {
+    throw std::invalid_argument("PNG row filter: expected an integer in [0, 4], got " + std::to_string(filter));
+  }
+  stbi_write_force_png_filter = filter;
+}
 
 void encodePngFile(const std::filesystem::path& path, int width, int height, const std::uint8_t* rgba,
                    int zlibLevel) {
@@ -61,20 +89,14 @@ void encodePngFile(const std::filesystem::path& path, int width, int height, con
     throw std::invalid_argument("PNG compression level: expected an integer in [0, 9], got " +
                                 std::to_string(zlibLevel));
   }
-  std::vector<png_bytep> rows(static_cast<std::size_t>(height));
-  const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
-  for (std::size_t y = 0; y < rows.size(); ++y) {
-    rows[y] = const_cast<png_bytep>(rgba + y * rowBytes);  // libpng's API is not const-correct
-  }
+  threadLevel = zlibLevel;
   CheckedFile file;
   const bool opened = file.open(path);
-  std::string pngError;
-  const bool written = opened && writeRows(file, width, height, rows.data(), zlibLevel, pngError);
+  const bool written = opened && stbi_write_png_to_func(writeToFile, &file, width, height, 4, rgba, width * 4) != 0;
   const bool closed = opened && file.close();
   if (!written || !closed) {
-    // A libpng failure that was not a write (out of memory) leaves no OS reason.
-    const std::string why = !file.error().empty() ? file.error()
-                            : "libpng: " + (pngError.empty() ? std::string("out of memory") : pngError);
+    // A failure that was not a write (the compressor out of memory) leaves no OS reason.
+    const std::string why = !file.error().empty() ? file.error() : std::string("out of memory compressing it");
     throw RenderError("could not write PNG " + path.string() + ": " + why);
   }
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Writes frames as dir/frame_000000.png ... with libpng on a small pool of threads (PNG deflate
+// Writes frames as dir/frame_000000.png ... with stb_image_write and libdeflate (png_file.h) on a small pool of threads (PNG deflate
 // is the slowest step of the output path, and frames are independent).
 #include <cstdint>
 #include <filesystem>

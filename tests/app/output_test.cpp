@@ -8,11 +8,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cstring>
+#include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <stb/stb_image.h>  // the decoder, from Debian's libstb
 
 #include "shell_command.h"
 
@@ -158,6 +162,77 @@ TEST(PngFile, AFullDiskNamesThePathAndTheReason) {
   } catch (const render::RenderError& e) {
     EXPECT_NE(std::string(e.what()).find("Is a directory"), std::string::npos) << e.what();
   }
+  fs::remove_all(dir);
+}
+
+// An image with what rendered frames have (flat areas, a gradient, sharp edges) and noise, at an
+// odd size so no row is a multiple of anything.
+std::vector<std::uint8_t> testImage(int width, int height) {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
+  std::mt19937 random(22);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      std::uint8_t* p = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+      p[0] = static_cast<std::uint8_t>(x < width / 2 ? 200 : (255 * y) / height);
+      p[1] = static_cast<std::uint8_t>(x % 7 == 0 ? 0 : 128);
+      p[2] = static_cast<std::uint8_t>(y > height / 2 ? random() : 40);
+      p[3] = static_cast<std::uint8_t>(x + y < width ? 255 : random());
+    }
+  }
+  return rgba;
+}
+
+bool decodesTo(const fs::path& file, const std::vector<std::uint8_t>& rgba, int width, int height) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* back = stbi_load(file.string().c_str(), &w, &h, &channels, 4);
+  const bool same = back != nullptr && w == width && h == height && std::memcmp(back, rgba.data(), rgba.size()) == 0;
+  stbi_image_free(back);
+  return same;
+}
+
+// stb_image_write with libdeflate: every level and every row filter gives back the exact pixels.
+TEST(PngFile, DecodesToTheExactPixelsAtEveryLevelAndRowFilter) {
+  const int width = 97, height = 53;
+  const std::vector<std::uint8_t> rgba = testImage(width, height);
+  const fs::path dir = freshDir("png_exact");
+  for (int filter = render::kMinPngRowFilter; filter <= render::kMaxPngRowFilter; ++filter) {
+    render::setPngRowFilter(filter);
+    for (int level = render::kMinPngLevel; level <= render::kMaxPngLevel; ++level) {
+      const fs::path file = dir / ("f" + std::to_string(filter) + "_l" + std::to_string(level) + ".png");
+      render::encodePngFile(file, width, height, rgba.data(), level);
+      EXPECT_TRUE(decodesTo(file, rgba, width, height)) << "filter " << filter << " level " << level;
+    }
+  }
+  render::setPngRowFilter(render::kDefaultPngRowFilter);
+  EXPECT_THROW(render::setPngRowFilter(5), std::invalid_argument);
+  EXPECT_THROW(render::encodePngFile(dir / "x.png", width, height, rgba.data(), 10), std::invalid_argument);
+  // Higher levels compress harder: level 9's file is no larger than level 1's, level 0 stores.
+  EXPECT_LE(fs::file_size(dir / "f0_l9.png"), fs::file_size(dir / "f0_l1.png"));
+  EXPECT_GT(fs::file_size(dir / "f0_l0.png"), rgba.size());
+  fs::remove_all(dir);
+}
+
+// The frame writers run on several threads, each with its own level: their files stay exact.
+TEST(PngFile, ThreadsWritingAtTheirOwnLevelsEachGetTheirOwn) {
+  const int width = 64, height = 48;
+  const std::vector<std::uint8_t> rgba = testImage(width, height);
+  const fs::path dir = freshDir("png_threads");
+  std::vector<std::thread> writers;
+  for (int level : {0, 1, 6, 9}) {
+    writers.emplace_back([&, level] {
+      for (int k = 0; k < 20; ++k) {
+        render::encodePngFile(dir / ("l" + std::to_string(level) + "_" + std::to_string(k) + ".png"), width, height, rgba.data(), level);
+      }
+    });
+  }
+  for (std::thread& t : writers) t.join();
+  for (int level : {0, 1, 6, 9}) {
+    for (int k = 0; k < 20; ++k) {
+      EXPECT_TRUE(decodesTo(dir / ("l" + std::to_string(level) + "_" + std::to_string(k) + ".png"), rgba, width, height));
+    }
+    EXPECT_EQ(fs::file_size(dir / ("l" + std::to_string(level) + "_0.png")), fs::file_size(dir / ("l" + std::to_string(level) + "_19.png")));
+  }
+  EXPECT_GT(fs::file_size(dir / "l0_0.png"), fs::file_size(dir / "l9_0.png"));
   fs::remove_all(dir);
 }
 
