@@ -15,12 +15,13 @@ namespace rbsim {
 namespace {
 
 // Double precision throughout (Boost would otherwise promote to long double, 3x slower here for
-// no digit we keep), and a NaN rather than an exception on a domain error: the world's
-// divergence check then names the body.
+// no digit we keep), and a NaN rather than an exception on any error: the world's divergence
+// check then names the body.
 using Elliptic = boost::math::policies::policy<
     boost::math::policies::promote_double<false>,
     boost::math::policies::domain_error<boost::math::policies::errno_on_error>,
-    boost::math::policies::overflow_error<boost::math::policies::errno_on_error>>;
+    boost::math::policies::overflow_error<boost::math::policies::errno_on_error>,
+    boost::math::policies::evaluation_error<boost::math::policies::errno_on_error>>;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -83,16 +84,19 @@ double completeThirdKind(double n, double kc2) {
 FreeRigidBodyFlow::FreeRigidBodyFlow(const Quat& principalToWorld, const Vec3& angularMomentum,
                                      const Vec3& principalMoments)
     : epoch_(principalToWorld.normalized()), angularMomentum_(angularMomentum), moments_(principalMoments) {
-  momentumMagnitude_ = angularMomentum.norm();
+  momentumMagnitude_ = angularMomentum.stableNorm();  // |L| from 1e-160 to 1e158 without under- or overflow
   if (momentumMagnitude_ == 0.0) return;  // Regime::Rest
   const Vec3& I = moments_;
   const Vec3 m = epoch_.conjugate() * angularMomentum;
+  // The momentum in units of G: squares of |L| near 1e-160 or 1e155 [kg m^2/s] (moments and
+  // spins within the scene's ranges) would under- or overflow; the amplitudes and rate scale back.
+  const Vec3 unit = m / momentumMagnitude_;
   std::array<int, 3> order{0, 1, 2};
   std::sort(order.begin(), order.end(), [&I](int a, int b) { return I[a] < I[b]; });
   const int lo = order[0], mid = order[1], hi = order[2];
   // G^2 - 2 T I_mid = sum m_i^2 (1 - I_mid / I_i): the side of the separatrix. At or above zero
   // the momentum circulates about the major axis, below it about the minor one.
-  const double side = m[lo] * m[lo] * (1.0 - I[mid] / I[lo]) + m[hi] * m[hi] * (1.0 - I[mid] / I[hi]);
+  const double side = unit[lo] * unit[lo] * (1.0 - I[mid] / I[lo]) + unit[hi] * unit[hi] * (1.0 - I[mid] / I[hi]);
   const int c = side >= 0.0 ? hi : lo, a = side >= 0.0 ? lo : hi, b = mid;
   // Signs: m_c >= 0 and m_a >= 0 (a rotation by pi about axis c if not), det = +1.
   const double s3 = m[c] >= 0.0 ? 1.0 : -1.0, s1 = m[a] >= 0.0 ? 1.0 : -1.0;
@@ -101,7 +105,7 @@ FreeRigidBodyFlow::FreeRigidBodyFlow(const Quat& principalToWorld, const Vec3& a
   circulationFromPrincipal_(0, a) = s1;
   circulationFromPrincipal_(1, b) = s2;
   circulationFromPrincipal_(2, c) = s3;
-  const Vec3 mc = circulationFromPrincipal_ * m;
+  const Vec3 mc = circulationFromPrincipal_ * unit;
   circulationMoments_ = Vec3(I[a], I[b], I[c]);
   const Vec3& Ic = circulationMoments_;
 
@@ -117,18 +121,19 @@ FreeRigidBodyFlow::FreeRigidBodyFlow(const Quat& principalToWorld, const Vec3& a
     return;
   }
   regime_ = Regime::Elliptic;
-  amplitudes_ = Vec3(std::sqrt(d3 / p13), std::sqrt(d3 / p23), std::sqrt(d1 / p13));
+  amplitudes_ = momentumMagnitude_ * Vec3(std::sqrt(d3 / p13), std::sqrt(d3 / p23), std::sqrt(d1 / p13));
   // k^2 = d3 p12 / (d1 p23); kc^2 = 1 - k^2 = p13 (m3^2 p23 - m1^2 p12) / (d1 p23), which is
   // |G^2 - 2 T I_2| up to positive factors: zero on the separatrix.
+  // Both lie in [0, 1] in exact arithmetic; the bounds only catch rounding at the separatrix.
   k_ = std::sqrt(std::min(1.0, d3 * p12 / (d1 * p23)));
   complementary2_ = std::max(0.0, p13 * (mc[2] * mc[2] * p23 - mc[0] * mc[0] * p12) / (d1 * p23));
-  rate_ = (side >= 0.0 ? 1.0 : -1.0) * std::sqrt(d1 * p23);
+  rate_ = (side >= 0.0 ? 1.0 : -1.0) * momentumMagnitude_ * std::sqrt(d1 * p23);
   characteristic_ = -p12 / p23;  // -a3^2 k^2 / a1^2
   const bool periodic = complementary2_ > 0.0;
   quarterPeriodK_ = periodic ? completeFirstKind(complementary2_) : kInfinity;
   completePi_ = periodic ? completeThirdKind(characteristic_, complementary2_) : kInfinity;
   // u0 from (cn u0, sn u0) = (m1 / a1, m2 / a2), with cn u0 >= 0 as m1 >= 0: u0 in [-K, K].
-  double c0 = mc[0] / amplitudes_[0], s0 = mc[1] / amplitudes_[1];
+  double c0 = momentumMagnitude_ * mc[0] / amplitudes_[0], s0 = momentumMagnitude_ * mc[1] / amplitudes_[1];
   const double norm0 = std::hypot(c0, s0);
   c0 /= norm0;
   s0 /= norm0;
@@ -232,7 +237,7 @@ Quat FreeRigidBodyFlow::principalToWorld(double t) const {
   const Phase phase = phaseAt(u0_ + rate_ * t);
   const double halfTurn = 0.5 * rotationAboutMomentum(phase, t);
   const Quat aboutAxis3(std::cos(halfTurn), 0.0, 0.0, std::sin(halfTurn));
-  return epochFrame_ * aboutAxis3 * alignmentToAxis3(phase.momentum) * principalToCirculation_;
+  return epochFrame_ * aboutAxis3 * alignmentToAxis3(phase.momentum / momentumMagnitude_) * principalToCirculation_;
 }
 
 }  // namespace rbsim

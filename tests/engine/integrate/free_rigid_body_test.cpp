@@ -152,6 +152,21 @@ TEST(FreeRigidBodyFlow, FollowsTheSeparatrixAsFineRk4Does) {
   EXPECT_LT(worst, 1e-9);
 }
 
+// The motion depends on I / |L| only: moments from 1e-150 to 1e150 kg m^2 (the scene's range)
+// and spins from 1e-10 to 1e8 rad/s give the unit case's orientation after the same turn, where
+// squares of |L| (1e-320 to 1e316) would leave the doubles.
+TEST(FreeRigidBodyFlow, ScalesOverTheWholeRangeOfMomentsAndSpins) {
+  const Vec3 I(1.0, 2.0, 3.0), w(0.3, 1.0, -0.2);
+  const FreeRigidBodyFlow unitCase(kQ0, kQ0 * I.cwiseProduct(w), I);
+  const Quat expected = unitCase.principalToWorld(1.0);
+  for (double scale : {1e-150, 1e-100, 1.0, 1e100, 1e150}) {
+    for (double spin : {1e-10, 10.0, 1e8}) {
+      const FreeRigidBodyFlow flow(kQ0, kQ0 * Vec3((scale * spin) * I.cwiseProduct(w)), scale * I);
+      EXPECT_LT(angleBetween(flow.principalToWorld(1.0 / spin), expected), 1e-13) << "I x " << scale << ", omega x " << spin;
+    }
+  }
+}
+
 // The degenerate regimes are steady or precessing motions with answers in closed form.
 TEST(FreeRigidBodyFlow, SteadySpinsSymmetricTopsSpheresAndRest) {
   const double t = 3.7;
