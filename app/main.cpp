@@ -48,6 +48,7 @@ struct Flags {
   RunOptions run;
   std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
   std::string pngLevel, traceEvery, windowFrames;  // numbers, parsed by flag_values.h
+  std::string gl;                                  // off-screen GL backend, render/gl_context.h
   // Scene key -> the flag that set it ("view.size" -> "--size 0x0"), so an error the scene reports
   // about the key can say which flag it came from.
   std::map<std::string, std::string> keyFlags;
@@ -82,6 +83,10 @@ struct Flags {
     cmd.add_flag("--window", window, "open an X11 window with controls instead of writing a video");
     cmd.add_option("--window-frames", windowFrames, "with --window: close after N frames (scripted runs), N >= 1");
     cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame");
+    cmd.add_option("--gl", gl,
+                   "off-screen OpenGL: " + rbsim::render::glBackendChoices() + " (default " +
+                       rbsim::render::glBackendName(rbsim::render::defaultGlBackend()) +
+                       "; both are Mesa's llvmpipe, egl on the surfaceless platform)");
   }
 
   // `framesByDefault`: `demo all` writes PNG frames without --frames (so --png-level applies).
@@ -99,6 +104,12 @@ struct Flags {
     if (!windowFrames.empty()) {
       windowOptions.frames = parseFlagInteger("--window-frames", windowFrames, 1, kMaxWindowFrames,
                                               "a number of frames to show");
+    }
+    if (!gl.empty()) {
+      const std::optional<rbsim::render::GlBackend> backend = rbsim::render::parseGlBackend(gl);
+      if (!backend) throw InputError("", "--gl " + gl, "expected " + rbsim::render::glBackendChoices());
+      run.glBackend = *backend;
+      windowOptions.glBackend = *backend;
     }
     refuseIgnoredFlags(framesByDefault);
     auto add = [&](const std::string& key, const std::string& value, const std::string& flag) {
@@ -151,6 +162,9 @@ struct Flags {
       if (given && window) {
         throw InputError("", std::string(flag) + " with --window", "not allowed: --window shows the scene live and writes no trace or video");
       }
+    }
+    if (!gl.empty() && noRender) {
+      throw InputError("", "--gl with --no-render", "contradictory: --no-render makes no OpenGL context");
     }
     if (!pngLevel.empty() && run.framesDir.empty() && !framesByDefault) {
       throw InputError("", "--png-level without --frames", "it sets the PNG frames' compression; add --frames DIR");
@@ -224,6 +238,7 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
   reel.overrides = run.overrides;
   reel.quiet = run.quiet;
   reel.pngLevel = run.pngLevel;
+  reel.glBackend = run.glBackend;
   if (!run.framesDir.empty()) reel.framesBase = run.framesDir;
   const rbsim::app::ReelPlan plan = rbsim::app::planReel(rbsim::app::allDemos(), reel);
   if (!reel.quiet) {

@@ -64,7 +64,7 @@ void appendTo(std::vector<T>& all, const std::vector<T>& part) {
 
 }  // namespace
 
-GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int samples)
+GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int samples, GLuint target)
     : width_(width),
       height_(height),
       samples_(1),
@@ -79,7 +79,8 @@ GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int 
       shadowInstancedProgram_(shaderDir, "shadow_instanced.vert", "shadow.frag"),
       lineInstancedProgram_(shaderDir, "line_instanced.vert", "line.frag"),
       debugDraw_(width, height, shaderDir),
-      particleDraw_(shaderDir) {
+      particleDraw_(shaderDir),
+      target_(target) {
   glGenVertexArrays(1, &emptyVao_);
   glGenVertexArrays(1, &meshVao_);
   glGenBuffers(1, &meshVbo_);
@@ -126,7 +127,7 @@ void GlRenderer::createMultisampleTarget() {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                             depthRb_);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, target_);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     throw RenderError("OpenGL: multisampled framebuffer incomplete (status " +
                       std::to_string(status) + ")");
@@ -357,15 +358,19 @@ void GlRenderer::drawGhosts(const FrameData& frame, const glm::mat4& viewProj) {
   glDisable(GL_BLEND);
 }
 
-void GlRenderer::draw(const FrameData& frame) {
+void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
+  const auto mark = [clock](RenderPass pass) {
+    if (clock != nullptr) clock->mark(pass, [] { glFinish(); });
+  };
   buildSceneGeometry(frame, geometry_);
   upload(geometry_);
   instanced_.upload(frame);
   debugDraw_.upload(frame);
   particleDraw_.upload(frame);
   const glm::mat4 viewProj = viewProjection(frame.camera, width_, height_);
+  mark(RenderPass::Upload);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? fbo_ : 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? fbo_ : target_);
   glViewport(0, 0, width_, height_);
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);  // meshes from files may have either winding
@@ -388,16 +393,21 @@ void GlRenderer::draw(const FrameData& frame) {
   glPolygonOffset(1.0f, 1.0f);
   drawOpaqueBodies(frame, viewProj);
   glDisable(GL_POLYGON_OFFSET_FILL);
+  mark(RenderPass::Bodies);
   if (frame.options.grid) {
     drawGround(frame, viewProj);
+    mark(RenderPass::Ground);
     drawShadows(viewProj);
+    mark(RenderPass::Shadows);
   }
   drawSky(frame, viewProj);
+  mark(RenderPass::Sky);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   drawBodyEdges(viewProj);
   drawLines(viewProj, highlightFirst_, static_cast<GLsizei>(geometry_.highlight.size()),
             kHighlightWidth, 1.0f);
+  mark(RenderPass::Edges);
   particleDraw_.draw(frame, glm::lookAt(frame.camera.eye, frame.camera.target, frame.camera.up), viewProj);
   // Depth-tested debug lines before the ghosts, so they show through them; the on-top lines
   // and points last, over everything.
@@ -412,11 +422,12 @@ void GlRenderer::draw(const FrameData& frame) {
   glUseProgram(0);
   if (samples_ > 1) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
                       GL_NEAREST);
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, target_);
+  mark(RenderPass::Marks);
 }
 
 }  // namespace rbsim::render

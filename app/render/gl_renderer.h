@@ -15,6 +15,7 @@
 #include "frame_data.h"
 #include "gl_api.h"
 #include "instanced_bodies.h"
+#include "pass_clock.h"
 #include "projection.h"
 #include "particle_draw.h"
 #include "scene_geometry.h"
@@ -25,15 +26,17 @@ namespace rbsim::render {
 class GlRenderer {
  public:
   // Needs a current GL 4.5 compatibility context. samples > 1 renders with that many MSAA
-  // samples (clamped to GL_MAX_SAMPLES); 1 draws straight into the default framebuffer.
-  GlRenderer(int width, int height, const std::string& shaderDir, int samples);
+  // samples (clamped to GL_MAX_SAMPLES); 1 draws straight into `target`, the context's
+  // framebuffer (0 for OSMesa's default one, an object under EGL).
+  GlRenderer(int width, int height, const std::string& shaderDir, int samples, GLuint target);
   ~GlRenderer();
   GlRenderer(const GlRenderer&) = delete;
   GlRenderer& operator=(const GlRenderer&) = delete;
 
   // Sets every piece of GL state it relies on at the start, so whatever ran before (the ImGui
-  // overlay of the previous frame) cannot leak in. Leaves framebuffer 0 bound with the image.
-  void draw(const FrameData& frame);
+  // overlay of the previous frame) cannot leak in. Leaves the target bound with the image.
+  // With `clock`, finishes after each pass and charges its time there (pass_clock.h).
+  void draw(const FrameData& frame, PassClock* clock = nullptr);
 
   int samples() const { return samples_; }
 
@@ -74,7 +77,8 @@ class GlRenderer {
   GLuint emptyVao_ = 0;  // for the buffer-less sky and ground draws
   GLuint meshVao_ = 0, meshVbo_ = 0;
   GLuint lineVao_ = 0, lineVbo_ = 0;
-  GLuint fbo_ = 0, colorRb_ = 0, depthRb_ = 0;
+  GLuint target_ = 0;  // the context's framebuffer, which receives the image
+  GLuint fbo_ = 0, colorRb_ = 0, depthRb_ = 0;  // the multisampled one, when samples_ > 1
   // Reused every frame so steady-state frames allocate nothing.
   SceneGeometry geometry_;
   std::vector<MeshVertex> meshStaging_;  // bodies, ghosts, arrow heads, as uploaded

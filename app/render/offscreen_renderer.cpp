@@ -6,7 +6,6 @@
 #include <cstring>
 
 #include "gl_renderer.h"
-#include "osmesa_context.h"
 #include "overlay.h"
 #include "render_error.h"
 
@@ -29,41 +28,51 @@ std::string defaultShaderDir() {
 struct OffscreenRenderer::Impl {
   // Declaration order is construction order: the context must exist before any GL object, and
   // is destroyed last.
-  OsmesaContext context;
+  std::unique_ptr<GlContext> context;
   GlRenderer scene;
   Overlay overlay;
   std::vector<std::uint8_t> image;
   MeanMs renderMs;
   MeanMs readbackMs;
+  PassClock passes;
   long frames = 0;
   bool uiWantsPointer = false;
 
-  Impl(int width, int height, const std::string& shaderDir, int samples)
-      : context(width, height),
-        scene(width, height, shaderDir, samples),
-        overlay(width, height),
+  Impl(int width, int height, const std::string& shaderDir, int samples, GlBackend backend)
+      : context(makeGlContext(backend, width, height)),
+        scene(width, height, shaderDir, samples, context->framebuffer()),
+        overlay(width, height, context->framebuffer()),
         image(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {}
 };
 
-OffscreenRenderer::OffscreenRenderer(int width, int height, std::string shaderDir, int samples)
-    : impl_(std::make_unique<Impl>(width, height, shaderDir, samples)) {}
+OffscreenRenderer::OffscreenRenderer(int width, int height, std::string shaderDir, int samples,
+                                     GlBackend backend)
+    : impl_(std::make_unique<Impl>(width, height, shaderDir, samples, backend)) {}
 
 OffscreenRenderer::~OffscreenRenderer() {
   // GL objects are deleted by the members' destructors; they need this context current.
-  impl_->context.makeCurrent();
+  impl_->context->makeCurrent();
 }
 
 const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& frame, const UiFrame* ui) {
   Impl& d = *impl_;
-  d.context.makeCurrent();
+  d.context->makeCurrent();
+  // Frames measured pass by pass stay out of the mean: their extra flushes cost time.
+  PassClock* clock = d.frames % kPassSampleEvery == kPassSampleEvery - 1 ? &d.passes : nullptr;
   const auto start = std::chrono::steady_clock::now();
-  d.scene.draw(frame);
+  if (clock != nullptr) clock->begin();
+  d.scene.draw(frame, clock);
   // Off-screen, the overlay has no animation, so its time step only has to be positive.
   const OverlayData none;
   const float uiSeconds = ui != nullptr ? ui->input.deltaSeconds : 1.0f / 30.0f;
   d.uiWantsPointer = d.overlay.draw(frame.options.overlay ? frame.overlay : none, uiSeconds, ui);
-  glFinish();  // OSMesa's buffer holds the image only once GL has finished
-  d.renderMs.add(millisecondsSince(start));
+  glFinish();  // the context's buffer holds the image only once GL has finished
+  if (clock != nullptr) {
+    clock->mark(RenderPass::Overlay, [] {});
+    clock->endFrame();
+  } else {
+    d.renderMs.add(millisecondsSince(start));
+  }
   // A GL error here is a bug in this library, not bad input; fail loudly rather than write a
   // subtly wrong video. (Mesa answers glGetError without a pipeline stall.)
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
@@ -74,9 +83,9 @@ const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& fram
 
   // GL's first row is the bottom one; images and video want the top row first.
   const auto copyStart = std::chrono::steady_clock::now();
-  const std::size_t rowBytes = static_cast<std::size_t>(d.context.width()) * 4;
-  const std::uint8_t* source = d.context.pixels();
-  const int height = d.context.height();
+  const std::size_t rowBytes = static_cast<std::size_t>(d.context->width()) * 4;
+  const std::uint8_t* source = d.context->pixels();
+  const int height = d.context->height();
   for (int y = 0; y < height; ++y) {
     std::memcpy(d.image.data() + static_cast<std::size_t>(y) * rowBytes,
                 source + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
@@ -88,12 +97,13 @@ const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& fram
 
 bool OffscreenRenderer::uiWantsPointer() const { return impl_->uiWantsPointer; }
 
-int OffscreenRenderer::width() const { return impl_->context.width(); }
-int OffscreenRenderer::height() const { return impl_->context.height(); }
+int OffscreenRenderer::width() const { return impl_->context->width(); }
+int OffscreenRenderer::height() const { return impl_->context->height(); }
 int OffscreenRenderer::samples() const { return impl_->scene.samples(); }
 
 RenderTiming OffscreenRenderer::timing() const {
-  return {impl_->frames, impl_->renderMs.mean(), impl_->readbackMs.mean()};
+  const Impl& d = *impl_;
+  return {d.frames, d.renderMs.mean(), d.readbackMs.mean(), d.passes.frames(), d.passes.meanMs()};
 }
 
 }  // namespace rbsim::render

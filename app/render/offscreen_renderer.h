@@ -1,5 +1,5 @@
 #pragma once
-// The renderer's public face: FrameData in, a top-down RGBA8 image out. Owns the OSMesa context,
+// The renderer's public face: FrameData in, a top-down RGBA8 image out. Owns the GL context,
 // the GL scene renderer and the ImGui overlay. Not thread-safe: create it and call render() on
 // one thread (the GL context is current there); hand images to a FrameSink for output.
 #include <cstdint>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "frame_data.h"
+#include "gl_context.h"
 #include "timing.h"
 #include "ui_frame.h"
 
@@ -27,7 +28,7 @@ class OffscreenRenderer {
   // Throws RenderError if no GL context can be made or a shader is missing or does not compile
   // (the message names the file).
   OffscreenRenderer(int width, int height, std::string shaderDir = defaultShaderDir(),
-                    int samples = kDefaultSamples);
+                    int samples = kDefaultSamples, GlBackend backend = defaultGlBackend());
   ~OffscreenRenderer();
   OffscreenRenderer(const OffscreenRenderer&) = delete;
   OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;

@@ -7,11 +7,7 @@
 
 namespace rbsim::render {
 
-OsmesaContext::OsmesaContext(int width, int height) : width_(width), height_(height) {
-  if (width <= 0 || height <= 0) {
-    throw RenderError("OSMesa: invalid image size " + std::to_string(width) + "x" +
-                      std::to_string(height));
-  }
+OsmesaContext::OsmesaContext(int width, int height) : GlContext(width, height) {
   const int attribs[] = {OSMESA_FORMAT,
                          OSMESA_RGBA,
                          OSMESA_DEPTH_BITS,
@@ -40,17 +36,19 @@ OsmesaContext::OsmesaContext(int width, int height) : width_(width), height_(hei
 }
 
 OsmesaContext::~OsmesaContext() {
-  if (OSMesaGetCurrentContext() == context_) {
+  if (isCurrent()) {
     OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+    clearCurrent();
   }
   OSMesaDestroyContext(context_);
 }
 
 void OsmesaContext::makeCurrent() {
-  if (OSMesaGetCurrentContext() == context_) return;
-  if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_)) {
+  if (isCurrent()) return;
+  if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width(), height())) {
     throw RenderError("OSMesa: could not make the context current");
   }
+  markCurrent();
 }
 
 }  // namespace rbsim::render

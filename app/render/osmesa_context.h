@@ -8,28 +8,23 @@
 
 #include <GL/osmesa.h>
 
+#include "gl_context.h"
+
 namespace rbsim::render {
 
-class OsmesaContext {
+class OsmesaContext final : public GlContext {
  public:
   // Creates the context with an RGBA8 colour buffer of width x height, 24-bit depth and 8-bit
   // stencil, and makes it current on this thread. Throws RenderError if that is impossible.
   OsmesaContext(int width, int height);
-  ~OsmesaContext();
-  OsmesaContext(const OsmesaContext&) = delete;
-  OsmesaContext& operator=(const OsmesaContext&) = delete;
+  ~OsmesaContext() override;
 
-  // Makes the context current on the calling thread (cheap when it already is).
-  void makeCurrent();
-
-  int width() const { return width_; }
-  int height() const { return height_; }
-  // The colour buffer, RGBA8, bottom row first (GL's origin); valid after glFinish().
-  const std::uint8_t* pixels() const { return buffer_.data(); }
+  void makeCurrent() override;
+  unsigned framebuffer() const override { return 0; }
+  // OSMesa renders straight into this buffer: nothing to read back.
+  const std::uint8_t* pixels() override { return buffer_.data(); }
 
  private:
-  int width_;
-  int height_;
   std::vector<std::uint8_t> buffer_;
   OSMesaContext context_ = nullptr;
 };

@@ -82,7 +82,7 @@ void applyStyle() {
 
 }  // namespace
 
-Overlay::Overlay(int width, int height) : width_(width), height_(height) {
+Overlay::Overlay(int width, int height, unsigned target) : width_(width), height_(height), target_(target) {
   IMGUI_CHECKVERSION();
   context_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(context_);
@@ -133,7 +133,7 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
 
   // The OpenGL2 backend predates shaders and buffer objects: with a program or an array buffer
   // bound, its client-side vertex pointers would be misread. It saves and restores the rest.
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, target_);
   glUseProgram(0);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);

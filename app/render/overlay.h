@@ -13,12 +13,12 @@ class Overlay {
  public:
   // Needs a current GL compatibility context. Font size follows the image height; DejaVu Sans
   // Mono is used when installed (monospace, so number columns line up), else ImGui's own font.
-  Overlay(int width, int height);
+  Overlay(int width, int height, unsigned target);
   ~Overlay();
   Overlay(const Overlay&) = delete;
   Overlay& operator=(const Overlay&) = delete;
 
-  // Draws a fixed-size, fixed-position panel at the top left into framebuffer 0 (none when
+  // Draws a fixed-size, fixed-position panel at the top left into `target` (none when
   // `data` has no title, caption or rows), and each of data.labels in a box of its own. Fixed
   // size, because ImGui hides an auto-sized window on its first frame (DESIGN.md). With `ui`, its pointer drives ImGui and its windows are drawn in the same frame;
   // returns whether ImGui wants the pointer (it is over a control). Leaves no program, vertex
@@ -31,6 +31,7 @@ class Overlay {
 
   int width_;
   int height_;
+  unsigned target_;  // the context's framebuffer
   ImGuiContext* context_ = nullptr;
   ImFont* bodyFont_ = nullptr;
   ImFont* titleFont_ = nullptr;

@@ -1,13 +1,18 @@
 #pragma once
 // Per-frame cost of the output path, averaged, so the app can say where a frame's time went.
+#include <array>
 #include <mutex>
+
+#include "pass_clock.h"
 
 namespace rbsim::render {
 
 struct RenderTiming {
   long frames = 0;
   double renderMs = 0.0;    // GL draw of scene and overlay, up to glFinish (rasterised)
-  double readbackMs = 0.0;  // the finished OSMesa buffer flipped into the top-down RGBA image
+  double readbackMs = 0.0;  // the finished context's buffer flipped into the top-down RGBA image
+  long passFrames = 0;      // frames measured pass by pass (one in kPassSampleEvery)
+  std::array<double, kRenderPassCount> passMs{};  // mean ms of each pass over those frames
 };
 
 struct SinkTiming {

@@ -10,7 +10,7 @@
 #include <imgui.h>
 
 #include "gl_api.h"
-#include "osmesa_context.h"
+#include "gl_context.h"
 #include "render_error.h"
 
 namespace rbsim::render {
@@ -100,7 +100,7 @@ void drawTracked(ImDrawList* list, const ImFont* font, float size, ImVec2 at, Im
 }  // namespace
 
 struct TitleCardRenderer::Impl {
-  OsmesaContext context;
+  std::unique_ptr<GlContext> context;
   ImGuiContext* imgui = nullptr;
   float scale = 1.0f;
   ImFont* title = nullptr;
@@ -111,8 +111,8 @@ struct TitleCardRenderer::Impl {
   ImFont* footer = nullptr;
   std::vector<std::uint8_t> image;
 
-  Impl(int width, int height)
-      : context(width, height), image(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+  Impl(int width, int height, GlBackend backend)
+      : context(makeGlContext(backend, width, height)), image(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
     scale = static_cast<float>(height) / kDesignHeight;
     imgui = ImGui::CreateContext();
     ImGui::SetCurrentContext(imgui);
@@ -132,7 +132,7 @@ struct TitleCardRenderer::Impl {
   }
 
   ~Impl() {
-    context.makeCurrent();
+    context->makeCurrent();
     ImGui::SetCurrentContext(imgui);
     ImGui_ImplOpenGL2_Shutdown();
     ImGui::DestroyContext(imgui);
@@ -142,7 +142,7 @@ struct TitleCardRenderer::Impl {
 };
 
 void TitleCardRenderer::Impl::layout(const TitleCard& card, ImDrawList* list) const {
-  const float width = static_cast<float>(context.width()), height = static_cast<float>(context.height());
+  const float width = static_cast<float>(context->width()), height = static_cast<float>(context->height());
   const float s = scale;
   const float left = kMarginPx * s, right = width - kMarginPx * s;
   list->AddRectFilledMultiColor(ImVec2(0, 0), ImVec2(width, height), kTop, kTop, kBottom, kBottom);
@@ -206,23 +206,25 @@ void TitleCardRenderer::Impl::layout(const TitleCard& card, ImDrawList* list) co
                 kDim, card.footerRight.c_str());
 }
 
-TitleCardRenderer::TitleCardRenderer(int width, int height) : impl_(std::make_unique<Impl>(width, height)) {}
+TitleCardRenderer::TitleCardRenderer(int width, int height, GlBackend backend)
+    : impl_(std::make_unique<Impl>(width, height, backend)) {}
 
 TitleCardRenderer::~TitleCardRenderer() = default;
 
 const std::vector<std::uint8_t>& TitleCardRenderer::render(const TitleCard& card) {
   Impl& d = *impl_;
-  d.context.makeCurrent();
+  d.context->makeCurrent();
   ImGui::SetCurrentContext(d.imgui);
   ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(static_cast<float>(d.context.width()), static_cast<float>(d.context.height()));
+  io.DisplaySize = ImVec2(static_cast<float>(d.context->width()), static_cast<float>(d.context->height()));
   io.DeltaTime = 1.0f / 60.0f;  // no animation; ImGui only needs it positive
   ImGui_ImplOpenGL2_NewFrame();
   ImGui::NewFrame();
   d.layout(card, ImGui::GetBackgroundDrawList());
   ImGui::Render();
 
-  glViewport(0, 0, d.context.width(), d.context.height());
+  glBindFramebuffer(GL_FRAMEBUFFER, d.context->framebuffer());
+  glViewport(0, 0, d.context->width(), d.context->height());
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
@@ -232,11 +234,12 @@ const std::vector<std::uint8_t>& TitleCardRenderer::render(const TitleCard& card
   }
 
   // GL's first row is the bottom one; images and video want the top row first.
-  const std::size_t rowBytes = static_cast<std::size_t>(d.context.width()) * 4;
-  const int height = d.context.height();
+  const std::size_t rowBytes = static_cast<std::size_t>(d.context->width()) * 4;
+  const int height = d.context->height();
+  const std::uint8_t* source = d.context->pixels();
   for (int y = 0; y < height; ++y) {
     std::memcpy(d.image.data() + static_cast<std::size_t>(y) * rowBytes,
-                d.context.pixels() + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
+                source + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
   }
   return d.image;
 }

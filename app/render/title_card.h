@@ -1,11 +1,13 @@
 #pragma once
 // Full-frame title cards for a reel of demos: a dark backdrop with a large title, a description
 // and a list (a demo's phases, or the reel's demos), drawn by our own renderer (ImGui text on an
-// OSMesa context of its own), not by an ffmpeg filter. Not thread-safe, like OffscreenRenderer.
+// GL context of its own), not by an ffmpeg filter. Not thread-safe, like OffscreenRenderer.
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "gl_context.h"
 
 namespace rbsim::render {
 
@@ -26,9 +28,9 @@ struct TitleCard {
 
 class TitleCardRenderer {
  public:
-  // Makes its own OSMesa context (OffscreenRenderer's stays untouched; each makes its own
+  // Makes its own GL context (OffscreenRenderer's stays untouched; each makes its own
   // current before drawing). Throws RenderError like OffscreenRenderer.
-  TitleCardRenderer(int width, int height);
+  TitleCardRenderer(int width, int height, GlBackend backend = defaultGlBackend());
   ~TitleCardRenderer();
   TitleCardRenderer(const TitleCardRenderer&) = delete;
   TitleCardRenderer& operator=(const TitleCardRenderer&) = delete;

@@ -11,6 +11,7 @@
 #include "render/frame_sink.h"
 #include "render/png_sequence_writer.h"
 #include "render/title_card.h"
+#include "render/video_concat.h"
 #include "run/output_budget.h"
 #include "run/progress.h"
 #include "run/runner.h"
@@ -134,13 +135,11 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
   const auto wallStart = Clock::now();
   ReelResult result;
   const std::filesystem::path reelPath = options.videoDir / options.reelFile;
-  render::SinkOptions reelSink;
-  reelSink.videoPath = reelPath;
-  reelSink.fps = options.fps;
-  reelSink.width = options.width;
-  reelSink.height = options.height;
-  render::FrameSink reel(reelSink);  // checks ffmpeg and the folder before any frame
-  render::TitleCardRenderer cards(options.width, options.height);
+  render::ensureWritableDirectory(options.videoDir);  // before any frame, not after minutes
+  // The reel is its parts joined without encoding again (video_concat.h): each card becomes a
+  // clip beside its still, each demo its own video, and every frame is encoded once.
+  std::vector<std::filesystem::path> parts;
+  render::TitleCardRenderer cards(options.width, options.height, options.glBackend);
   ProgressMeter meter(stderr, isTerminal(stderr), options.quiet);
 
   std::uint64_t done = 0;
@@ -157,11 +156,19 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
     render::ensureWritableDirectory(path.parent_path());
     render::writePng(path, options.width, options.height, image);
     result.cardImages.push_back(path);
+    render::SinkOptions clip;
+    clip.videoPath = options.framesBase / "cards" / (still + ".mp4");
+    clip.fps = options.fps;
+    clip.width = options.width;
+    clip.height = options.height;
+    render::FrameSink sink(clip);
     for (std::uint64_t k = 0; k < plan.cardFrames; ++k) {
-      reel.submit(fadedFrame(image, k, plan.cardFrames, options.fps));
+      sink.submit(fadedFrame(image, k, plan.cardFrames, options.fps));
       ++done;
       report();
     }
+    sink.finish();
+    parts.push_back(*clip.videoPath);
   };
 
   playCard(openingCard(plan, options), "00_opening");
@@ -176,18 +183,19 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
     run.framesDir = (options.framesBase / d.demo.name).string();
     run.videoPath = (options.videoDir / (d.demo.name + ".mp4")).string();
     run.pngLevel = options.pngLevel;
+    run.glBackend = options.glBackend;
     run.quiet = true;
     const RunSummary summary =
         runPhases(d.phases, run, "Demo " + std::to_string(d.demo.number) + ": " + d.demo.name,
-                  [&](const std::vector<std::uint8_t>& image) {
-                    reel.submit(image);
+                  [&](const std::vector<std::uint8_t>&) {
                     ++done;
                     report();
                   });
+    parts.push_back(run.videoPath);
     result.videos.push_back({run.videoPath, summary.frames, static_cast<double>(summary.frames) / options.fps,
                              fileSize(run.videoPath)});
   }
-  reel.finish();
+  render::concatVideos(parts, reelPath);
   report(true);
   meter.finish();
   result.videos.push_back({reelPath, done, static_cast<double>(done) / options.fps, fileSize(reelPath)});

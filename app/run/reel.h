@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "demos/demo.h"
+#include "render/gl_context.h"
 #include "render/png_file.h"
 #include "run/phase.h"
 
@@ -23,6 +24,7 @@ struct ReelOptions {
   std::filesystem::path videoDir = "videos";          // <name>.mp4 and the reel go here
   std::string reelFile = "rbsim-demos.mp4";
   int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames (--png-level)
+  render::GlBackend glBackend = render::defaultGlBackend();  // --gl
   bool quiet = false;  // no progress and no summary
 };
 

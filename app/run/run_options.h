@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "render/gl_context.h"
 #include "render/png_file.h"
 
 namespace rbsim::app {
@@ -17,6 +18,7 @@ struct RunOptions {
   std::string tracePath;               // write the CSV trace here when non-empty
   std::uint64_t traceEvery = 1;        // trace every K-th step
   int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames, [0, 9]
+  render::GlBackend glBackend = render::defaultGlBackend();  // --gl osmesa|egl
   bool render = true;                  // --no-render turns frames and video off
   bool quiet = false;
 };

@@ -131,7 +131,9 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     sinkOptions.height = first.height;
     sinkOptions.pngLevel = options.pngLevel;
     sink = std::make_unique<render::FrameSink>(sinkOptions);  // checks ffmpeg and folders first
-    renderer = std::make_unique<render::OffscreenRenderer>(first.width, first.height);
+    renderer = std::make_unique<render::OffscreenRenderer>(first.width, first.height, render::defaultShaderDir(),
+                                                           render::OffscreenRenderer::kDefaultSamples,
+                                                           options.glBackend);
   }
 
   // Progress counts what the run is waiting for: frames when it renders, steps otherwise.
@@ -227,6 +229,8 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     const render::RenderTiming drawn = renderer->timing();
     summary.renderSeconds = 1e-3 * drawn.renderMs * static_cast<double>(drawn.frames);
     summary.readbackSeconds = 1e-3 * drawn.readbackMs * static_cast<double>(drawn.frames);
+    summary.passFrames = drawn.passFrames;
+    summary.passMs = drawn.passMs;
   }
   meter.finish();
   summary.wallSeconds = secondsSince(wallStart);
@@ -245,6 +249,14 @@ void printSummary(const RunSummary& s, const RunOptions& options) {
                 perFrame * s.simulateSeconds, perFrame * s.buildSeconds, perFrame * s.renderSeconds,
                 perFrame * s.readbackSeconds, perFrame * s.submitSeconds, s.pngMsPerFrame,
                 s.videoMsPerFrame, 1e3 * s.finishSeconds);
+  }
+  if (s.passFrames > 0) {
+    // Each pass finished before the next began, so these add up to a little more than render.
+    std::printf("render passes (ms, %ld frames finished after each pass):", s.passFrames);
+    for (int k = 0; k < render::kRenderPassCount; ++k) {
+      std::printf("%s %s %.2f", k == 0 ? "" : ",", render::kRenderPassNames[k], s.passMs[k]);
+    }
+    std::printf("\n");
   }
   if (!options.videoPath.empty() && s.frames > 0) std::printf("video: %s\n", options.videoPath.c_str());
   if (!options.framesDir.empty() && s.frames > 0) std::printf("frames: %s\n", options.framesDir.c_str());

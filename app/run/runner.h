@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "render/timing.h"
 #include "run/phase.h"
 #include "run/run_options.h"
 #include "rbsim/scene/scene.h"
@@ -23,6 +24,8 @@ struct RunSummary {
   double pngMsPerFrame = 0.0;    // deflate + write of one PNG on a worker thread (in parallel)
   double videoMsPerFrame = 0.0;  // pipe write of one frame to ffmpeg (waits while it encodes)
   double finishSeconds = 0.0;    // waiting for the writers after the last frame
+  long passFrames = 0;           // frames timed pass by pass (render/pass_clock.h)
+  std::array<double, render::kRenderPassCount> passMs{};  // mean ms per pass on those frames
   double wallSeconds = 0.0;
 };
 

@@ -66,7 +66,8 @@ class Session {
       throw render::RenderError("cannot write the screenshot " + shot.string() + ": it is a folder");
     }
     X11Window window(scene_.view.width, scene_.view.height, "rbsim: " + title());
-    render::OffscreenRenderer renderer(scene_.view.width, scene_.view.height);
+    render::OffscreenRenderer renderer(scene_.view.width, scene_.view.height, render::defaultShaderDir(),
+                                       render::OffscreenRenderer::kDefaultSamples, options_.glBackend);
     WindowInput input;
     auto last = Clock::now();
     for (std::uint64_t shown = 0; options_.frames == 0 || shown < options_.frames; ++shown) {

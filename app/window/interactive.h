@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "render/gl_context.h"
+
 namespace rbsim::app {
 
 struct SceneSource {
@@ -16,6 +18,7 @@ struct SceneSource {
 struct WindowOptions {
   std::uint64_t frames = 0;  // close after this many frames (0: when the user closes it)
   std::string screenshot;    // write the window's last frame here as PNG (read back from X)
+  render::GlBackend glBackend = render::defaultGlBackend();  // --gl
   bool quiet = false;
 };
 

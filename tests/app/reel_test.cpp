@@ -118,6 +118,16 @@ TEST(Reel, PlanMatchesTheFramesAShortRunWrites) {
   EXPECT_EQ(std::fscanf(pipe, "%llu", &packets), 1);
   pclose(pipe);
   EXPECT_EQ(packets, plan.totalFrames);
+  // The parts are joined without re-encoding: their timestamps must follow on, so the reel lasts
+  // its frames at 60 fps (a gap or an overlap at a join would show here), within a frame.
+  const std::string probe = "ffprobe -v error -select_streams v:0 -show_entries stream=duration -of csv=p=0 '" +
+                            (options.videoDir / options.reelFile).string() + "'";
+  FILE* durationPipe = popen(probe.c_str(), "r");
+  ASSERT_NE(durationPipe, nullptr);
+  double seconds = 0.0;
+  EXPECT_EQ(std::fscanf(durationPipe, "%lf", &seconds), 1);
+  pclose(durationPipe);
+  EXPECT_NEAR(seconds, static_cast<double>(plan.totalFrames) / options.fps, 1.0 / options.fps);
   std::filesystem::remove_all(dir);
 }
 

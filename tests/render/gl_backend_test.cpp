@@ -1,0 +1,141 @@
+// The EGL surfaceless context (OSMesa's successor) and OSMesa must give the same picture: both
+// are Mesa's llvmpipe behind the same GL calls, so any difference is a bug in how one of them is
+// set up (framebuffer, readback, row order, a state left bound to framebuffer 0).
+#include <algorithm>
+#include <cstdlib>
+#include <optional>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "render/gl_context.h"
+#include "render/offscreen_renderer.h"
+#include "render/title_card.h"
+#include "render_test_util.h"
+
+namespace rbsim::render::test {
+namespace {
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 180;
+
+// Everything the renderer draws: bodies with outlines and shadows on the ground grid, the sky,
+// axes, a force arrow, debug lines and points, and the overlay panel's text.
+FrameData fullFrame() {
+  FrameData frame;
+  frame.options.overlay = true;
+  frame.options.axes = true;
+  BodyView box = makeBox({0.0f, 0.6f, 0.0f}, {0.5f, 0.3f, 0.4f},
+                         glm::mat3(glm::vec3(0.8f, 0.0f, -0.6f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.6f, 0.0f, 0.8f)),
+                         {0.85f, 0.3f, 0.2f});
+  box.selected = true;
+  frame.bodies.push_back(box);
+  frame.bodies.push_back(makeBox({1.2f, 0.25f, 0.5f}, glm::vec3(0.25f), glm::mat3(1.0f), {0.25f, 0.45f, 0.85f}));
+  frame.forces.push_back({{0.0f, 0.9f, 0.0f}, {0.0f, 5.0f, 0.0f}});
+  frame.lines.push_back({{-1.0f, 0.1f, -1.0f}, {1.0f, 0.1f, 1.0f}, {0.2f, 0.9f, 0.3f}, true});
+  frame.points.push_back({{-0.8f, 0.5f, 0.2f}, {0.9f, 0.2f, 0.9f}, 8.0f});
+  frame.overlay.title = "Backend check";
+  frame.overlay.rows = {{"x", "(0.00, 0.60, 0.00) m"}, {"v", "(0.00, 0.00, 0.00) m/s"}};
+  return frame;
+}
+
+// OSMesa's buffer is a window-system framebuffer, drawn upside down (y = 0 at the top) and
+// flipped on the way out; EGL draws into a framebuffer object the GL way up. Edge pixels of
+// antialiased lines and triangles fall on the other side of a rasterisation tie, so a few
+// differ (measured at 320x180: 0.5 % of the bytes, 0.16 % by more than one level, at most 18
+// levels). A wrong setup (rows reversed, a pass drawn into another framebuffer, a missing panel)
+// moves whole regions by a hundred levels.
+constexpr int kMaxLevelDifference = 40;
+constexpr double kMaxDifferentFraction = 0.01;
+
+struct Difference {
+  std::size_t bytes = 0;  // bytes that differ
+  int maxLevel = 0;       // the largest difference of one byte
+};
+
+Difference compare(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  Difference d;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    const int level = std::abs(static_cast<int>(a[i]) - static_cast<int>(b[i]));
+    d.bytes += level > 0 ? 1 : 0;
+    d.maxLevel = std::max(d.maxLevel, level);
+  }
+  return d;
+}
+
+void expectSamePicture(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  const Difference d = compare(a, b);
+  EXPECT_LE(d.maxLevel, kMaxLevelDifference);
+  EXPECT_LE(static_cast<double>(d.bytes), kMaxDifferentFraction * static_cast<double>(a.size()))
+      << d.bytes << " of " << a.size() << " bytes differ";
+}
+
+bool haveOsmesa() { return parseGlBackend("osmesa").has_value(); }
+
+TEST(GlBackend, ParsesTheNamesThisBuildOffers) {
+  EXPECT_EQ(parseGlBackend("egl"), GlBackend::Egl);
+  EXPECT_FALSE(parseGlBackend("vulkan").has_value());
+  EXPECT_FALSE(parseGlBackend("EGL").has_value());
+  EXPECT_EQ(defaultGlBackend(), haveOsmesa() ? GlBackend::Osmesa : GlBackend::Egl);
+}
+
+TEST(GlBackend, EglDrawsTheSamePixelsAsOsmesa) {
+  if (!haveOsmesa()) GTEST_SKIP() << "this build has no OSMesa to compare with";
+  const FrameData frame = fullFrame();
+  std::vector<std::uint8_t> osmesa, egl;
+  {
+    OffscreenRenderer renderer(kWidth, kHeight, shaderDir(), 1, GlBackend::Osmesa);
+    osmesa = renderer.render(frame);
+  }
+  {
+    OffscreenRenderer renderer(kWidth, kHeight, shaderDir(), 1, GlBackend::Egl);
+    egl = renderer.render(frame);
+  }
+  // The picture is not blank: the sky at the top and the ground at the bottom differ.
+  EXPECT_NE(pixelAt(egl, kWidth, kWidth / 2, 5).b, pixelAt(egl, kWidth, kWidth / 2, kHeight - 5).b);
+  expectSamePicture(osmesa, egl);
+}
+
+// Two renderers, one on each backend, alive at once and used in turns (the reel has a title-card
+// context beside the scene's): each must draw into its own framebuffer, every time.
+TEST(GlBackend, ContextsOfBothBackendsTakeTurnsOnOneThread) {
+  if (!haveOsmesa()) GTEST_SKIP() << "this build has no OSMesa to compare with";
+  const FrameData frame = fullFrame();
+  FrameData empty = frame;
+  empty.bodies.clear();
+  empty.options.overlay = false;
+  OffscreenRenderer a(kWidth, kHeight, shaderDir(), 1, GlBackend::Osmesa);
+  OffscreenRenderer b(kWidth, kHeight, shaderDir(), 1, GlBackend::Egl);
+  const std::vector<std::uint8_t> first = a.render(frame);
+  const std::vector<std::uint8_t> other = b.render(empty);
+  const std::vector<std::uint8_t> again = a.render(frame);
+  const std::vector<std::uint8_t> eglFull = b.render(frame);
+  EXPECT_GT(compare(first, other).maxLevel, 100) << "the empty frame is another picture";
+  EXPECT_EQ(compare(first, again).bytes, 0u) << "the same context draws the same frame again";
+  expectSamePicture(first, eglFull);
+}
+
+TEST(GlBackend, TitleCardsAreTheSameThroughBoth) {
+  if (!haveOsmesa()) GTEST_SKIP() << "this build has no OSMesa to compare with";
+  TitleCard card;
+  card.kicker = "DEMO 1 OF 2";
+  card.title = "Backends";
+  card.description = "OSMesa and EGL";
+  std::vector<std::uint8_t> osmesa, egl;
+  {
+    TitleCardRenderer cards(kWidth, kHeight, GlBackend::Osmesa);
+    osmesa = cards.render(card);
+  }
+  {
+    TitleCardRenderer cards(kWidth, kHeight, GlBackend::Egl);
+    egl = cards.render(card);
+  }
+  expectSamePicture(osmesa, egl);
+  int lit = 0;
+  for (std::size_t i = 0; i < egl.size(); i += 4) lit += egl[i] > 128 ? 1 : 0;
+  EXPECT_GT(lit, 50) << "the title's text is drawn";
+}
+
+}  // namespace
+}  // namespace rbsim::render::test
