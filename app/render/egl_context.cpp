@@ -42,13 +42,12 @@ EGLDisplay surfacelessDisplay() {
 
 }  // namespace
 
-EglContext::EglContext(int width, int height)
-    : GlContext(width, height), buffer_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+EglContext::EglContext(int width, int height) : GlContext(width, height) {
   EGLDisplay display = surfacelessDisplay();
   display_ = display;
   if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) fail("eglBindAPI(OpenGL)");
   // No config and no surface (EGL_KHR_no_config_context, EGL_KHR_surfaceless_context): the
-  // image lives in the framebuffer object below.
+  // image lives in the framebuffer object.
   const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
                             EGL_CONTEXT_MINOR_VERSION, 5,
                             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
@@ -61,39 +60,22 @@ EglContext::EglContext(int width, int height)
     fail("eglMakeCurrent");
   }
   markCurrent();
-  GLint maxSize = 0;
-  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
-  if (width > maxSize || height > maxSize) {
-    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    clearCurrent();
-    eglDestroyContext(display, context);
-    throw RenderError("EGL: image size " + std::to_string(width) + "x" + std::to_string(height) +
-                      " is over the driver's largest framebuffer, " + std::to_string(maxSize));
-  }
-  glGenRenderbuffers(1, &colorRb_);
-  glBindRenderbuffer(GL_RENDERBUFFER, colorRb_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glGenRenderbuffers(1, &depthRb_);
-  glBindRenderbuffer(GL_RENDERBUFFER, depthRb_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glGenFramebuffers(1, &fbo_);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRb_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthRb_);
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw RenderError("EGL: the " + std::to_string(width) + "x" + std::to_string(height) +
-                      " framebuffer object is incomplete (status " + std::to_string(status) + ")");
+  try {
+    createFramebuffer("EGL");
+  } catch (...) {
+    release();
+    throw;
   }
 }
 
 EglContext::~EglContext() {
-  const auto display = static_cast<EGLDisplay>(display_);
   makeCurrent();
-  glDeleteFramebuffers(1, &fbo_);
-  glDeleteRenderbuffers(1, &colorRb_);
-  glDeleteRenderbuffers(1, &depthRb_);
+  deleteFramebuffer();
+  release();
+}
+
+void EglContext::release() {
+  const auto display = static_cast<EGLDisplay>(display_);
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   clearCurrent();
   eglDestroyContext(display, static_cast<EGLContext>(context_));
@@ -111,15 +93,6 @@ void EglContext::makeCurrent() {
     fail("eglMakeCurrent");
   }
   markCurrent();
-}
-
-const std::uint8_t* EglContext::pixels() {
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  glReadPixels(0, 0, width(), height(), GL_RGBA, GL_UNSIGNED_BYTE, buffer_.data());
-  return buffer_.data();
 }
 
 }  // namespace rbsim::render

@@ -1,11 +1,7 @@
 #pragma once
 // An EGL context on Mesa's surfaceless platform (EGL_MESA_platform_surfaceless, no window
-// system, no device): OpenGL 4.5 compatibility profile on llvmpipe, drawing into a framebuffer
-// object of its own, read back with glReadPixels. The successor of OSMesa for off-screen
-// rendering (OSMesa is gone from Mesa 25.1 on).
-#include <cstdint>
-#include <vector>
-
+// system, no device): OpenGL 4.5 compatibility profile on llvmpipe. The successor of OSMesa for
+// off-screen rendering (OSMesa is gone from Mesa 25.1 on).
 #include "gl_context.h"
 
 namespace rbsim::render {
@@ -18,14 +14,12 @@ class EglContext final : public GlContext {
   ~EglContext() override;
 
   void makeCurrent() override;
-  unsigned framebuffer() const override { return fbo_; }
-  const std::uint8_t* pixels() override;
 
  private:
+  void release();  // no context current, this one destroyed
+
   void* display_ = nullptr;  // EGLDisplay, kept opaque so EGL headers stay in the .cpp
   void* context_ = nullptr;  // EGLContext
-  unsigned fbo_ = 0, colorRb_ = 0, depthRb_ = 0;
-  std::vector<std::uint8_t> buffer_;
 };
 
 }  // namespace rbsim::render

@@ -1,6 +1,7 @@
 #include "gl_context.h"
 
 #include "egl_context.h"
+#include "gl_api.h"
 #include "render_error.h"
 #ifdef RBSIM_HAVE_OSMESA
 #include "osmesa_context.h"
@@ -16,6 +17,50 @@ bool GlContext::isCurrent() const { return currentContext == this; }
 void GlContext::markCurrent() const { currentContext = this; }
 void GlContext::clearCurrent() const {
   if (currentContext == this) currentContext = nullptr;
+}
+
+void GlContext::createFramebuffer(const char* backend) {
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
+  const std::string size = std::to_string(width_) + "x" + std::to_string(height_);
+  if (width_ > maxSize || height_ > maxSize) {
+    throw RenderError(std::string(backend) + ": image size " + size + " is over the driver's largest framebuffer, " +
+                      std::to_string(maxSize));
+  }
+  glGenRenderbuffers(1, &colorRb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, colorRb_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
+  glGenRenderbuffers(1, &depthRb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depthRb_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width_, height_);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRb_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthRb_);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    deleteFramebuffer();
+    throw RenderError(std::string(backend) + ": the " + size + " framebuffer object is incomplete (status " +
+                      std::to_string(status) + "; out of memory?)");
+  }
+  buffer_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4, 0);
+}
+
+void GlContext::deleteFramebuffer() {
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteRenderbuffers(1, &colorRb_);
+  glDeleteRenderbuffers(1, &depthRb_);
+  fbo_ = colorRb_ = depthRb_ = 0;
+}
+
+const std::uint8_t* GlContext::pixels() {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, buffer_.data());
+  return buffer_.data();
 }
 
 GlBackend defaultGlBackend() {

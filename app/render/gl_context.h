@@ -3,12 +3,16 @@
 // offers one: OSMesa (renders into a buffer in main memory; gone from Mesa 25.1 on) or EGL on
 // the surfaceless platform (EGL_MESA_platform_surfaceless) drawing into a framebuffer object.
 // Both are Mesa contexts on the same shared libglapi dispatch, so the GL entry points this
-// library calls reach whichever context is current (DESIGN.md, "Rendering facts").
+// library calls reach whichever context is current (DESIGN.md, "Rendering facts"). Both draw
+// into a framebuffer object of the context's own, never OSMesa's window-system buffer: that one
+// is stored upside down, so a copy between it and an object (the renderer's cached background)
+// would need a draw call instead of a memory copy, and the two backends would round edge pixels
+// differently.
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
-
+#include <vector>
 namespace rbsim::render {
 
 enum class GlBackend { Osmesa, Egl };
@@ -29,11 +33,11 @@ class GlContext {
 
   // Makes the context current on the calling thread (cheap when it already is).
   virtual void makeCurrent() = 0;
-  // The framebuffer that receives the image: 0 for OSMesa, the context's own object for EGL.
-  virtual unsigned framebuffer() const = 0;
-  // The finished image, RGBA8, bottom row first (GL's origin); call after glFinish(). Valid
-  // until the next call.
-  virtual const std::uint8_t* pixels() = 0;
+  // The framebuffer object that receives the image (RGBA8, 24-bit depth, 8-bit stencil).
+  unsigned framebuffer() const { return fbo_; }
+  // The finished image, RGBA8, bottom row first (GL's origin), read back with glReadPixels;
+  // call with the context current. Valid until the next call.
+  const std::uint8_t* pixels();
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -45,10 +49,17 @@ class GlContext {
   bool isCurrent() const;
   void markCurrent() const;
   void clearCurrent() const;  // after releasing the context, in the destructor
+  // With the new context current: the framebuffer object. Throws RenderError naming `backend`
+  // if the size is over the driver's limit or the object is incomplete.
+  void createFramebuffer(const char* backend);
+  // With the context current, before it is destroyed.
+  void deleteFramebuffer();
 
  private:
   int width_;
   int height_;
+  unsigned fbo_ = 0, colorRb_ = 0, depthRb_ = 0;
+  std::vector<std::uint8_t> buffer_;  // what pixels() returns
 };
 
 // Creates a width x height context (RGBA8 colour, 24-bit depth, 8-bit stencil) and makes it

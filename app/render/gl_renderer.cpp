@@ -73,9 +73,9 @@ GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int 
       skyProgram_(shaderDir, "sky.vert", "sky.frag"),
       groundProgram_(shaderDir, "ground.vert", "ground.frag"),
       shadowProgram_(shaderDir, "shadow.vert", "shadow.frag"),
-      meshProgram_(shaderDir, "mesh.vert", "mesh.frag"),
+      meshProgram_(shaderDir, "mesh.vert", "mesh.frag", "lighting.glsl"),
       lineProgram_(shaderDir, "line.vert", "line.frag"),
-      meshInstancedProgram_(shaderDir, "mesh_instanced.vert", "mesh.frag"),
+      meshInstancedProgram_(shaderDir, "mesh_instanced.vert", "mesh.frag", "lighting.glsl"),
       shadowInstancedProgram_(shaderDir, "shadow_instanced.vert", "shadow.frag"),
       lineInstancedProgram_(shaderDir, "line_instanced.vert", "line.frag"),
       debugDraw_(width, height, shaderDir),
@@ -98,13 +98,13 @@ GlRenderer::GlRenderer(int width, int height, const std::string& shaderDir, int 
   GLint maxSamples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
   samples_ = std::clamp(samples, 1, std::max(1, static_cast<int>(maxSamples)));
-  if (samples_ > 1) createMultisampleTarget();
+  if (samples_ > 1) createTarget(multisampled_);
+  createTarget(background_);
 }
 
 GlRenderer::~GlRenderer() {
-  glDeleteFramebuffers(1, &fbo_);
-  glDeleteRenderbuffers(1, &colorRb_);
-  glDeleteRenderbuffers(1, &depthRb_);
+  deleteTarget(multisampled_);
+  deleteTarget(background_);
   glDeleteBuffers(1, &meshVbo_);
   glDeleteBuffers(1, &lineVbo_);
   glDeleteVertexArrays(1, &meshVao_);
@@ -112,26 +112,34 @@ GlRenderer::~GlRenderer() {
   glDeleteVertexArrays(1, &emptyVao_);
 }
 
-void GlRenderer::createMultisampleTarget() {
-  glGenRenderbuffers(1, &colorRb_);
-  glBindRenderbuffer(GL_RENDERBUFFER, colorRb_);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width_, height_);
-  glGenRenderbuffers(1, &depthRb_);
-  glBindRenderbuffer(GL_RENDERBUFFER, depthRb_);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH24_STENCIL8, width_,
-                                   height_);
+void GlRenderer::createTarget(Target& target) const {
+  // samples_ == 1: plain storage (0 samples), so blits to and from the context's framebuffer
+  // are plain copies.
+  const GLsizei samples = samples_ > 1 ? samples_ : 0;
+  glGenRenderbuffers(1, &target.color);
+  glBindRenderbuffer(GL_RENDERBUFFER, target.color);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width_, height_);
+  glGenRenderbuffers(1, &target.depth);
+  glBindRenderbuffer(GL_RENDERBUFFER, target.depth);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, width_, height_);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glGenFramebuffers(1, &fbo_);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colorRb_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                            depthRb_);
+  glGenFramebuffers(1, &target.fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, target.color);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, target.depth);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindFramebuffer(GL_FRAMEBUFFER, target_);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw RenderError("OpenGL: multisampled framebuffer incomplete (status " +
+    throw RenderError("OpenGL: " + std::to_string(samples_) + "-sample framebuffer incomplete (status " +
                       std::to_string(status) + ")");
   }
+}
+
+void GlRenderer::deleteTarget(Target& target) {
+  glDeleteFramebuffers(1, &target.fbo);
+  glDeleteRenderbuffers(1, &target.color);
+  glDeleteRenderbuffers(1, &target.depth);
+  target = Target{};
 }
 
 void GlRenderer::upload(const SceneGeometry& g) {
@@ -166,9 +174,34 @@ void GlRenderer::upload(const SceneGeometry& g) {
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
+void GlRenderer::drawBackground(const FrameData& frame, const glm::mat4& viewProj, GLuint into) {
+  // Sky and ground depend only on the camera and the grid switch, and the scenes' cameras stand
+  // still: their picture and depth are drawn once into background_ and copied into every frame
+  // (a memory copy on llvmpipe, where shading them took 60 % of a one-body frame).
+  const Camera& cam = frame.camera;
+  const bool same = backgroundDrawn_ && backgroundGrid_ == frame.options.grid && cam.eye == backgroundCamera_.eye &&
+                    cam.target == backgroundCamera_.target && cam.up == backgroundCamera_.up &&
+                    cam.fovYDegrees == backgroundCamera_.fovYDegrees && cam.nearPlane == backgroundCamera_.nearPlane &&
+                    cam.farPlane == backgroundCamera_.farPlane;
+  if (!same) {
+    glBindFramebuffer(GL_FRAMEBUFFER, background_.fbo);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // the sky covers every colour pixel
+    if (frame.options.grid) drawGround(frame, viewProj);
+    drawSky(frame, viewProj);
+    backgroundDrawn_ = true;
+    backgroundGrid_ = frame.options.grid;
+    backgroundCamera_ = cam;
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, background_.fbo);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, into);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_,
+                    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, into);
+}
+
 void GlRenderer::drawSky(const FrameData& frame, const glm::mat4& viewProj) {
-  // Drawn after everything opaque, on the far plane: the depth test leaves only the pixels
-  // nothing else covered, so the gradient is not computed under the ground.
+  // Drawn after the ground, on the far plane: the depth test leaves only the pixels the ground
+  // did not cover, so the gradient is not computed under it.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
@@ -370,7 +403,7 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
   const glm::mat4 viewProj = viewProjection(frame.camera, width_, height_);
   mark(RenderPass::Upload);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? fbo_ : target_);
+  const GLuint frameTarget = samples_ > 1 ? multisampled_.fbo : target_;
   glViewport(0, 0, width_, height_);
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);  // meshes from files may have either winding
@@ -381,11 +414,11 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
   glStencilMask(0xff);
   glClearDepth(1.0);
   glClearStencil(0);
-  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // the sky covers every colour pixel
+  drawBackground(frame, viewProj, frameTarget);
+  mark(RenderPass::Background);
 
-  // Front to back, so llvmpipe's early depth test skips hidden ground and sky pixels: bodies,
-  // then the ground and the shadows on it, then the sky wherever nothing was drawn. Bodies are
-  // pushed slightly back so their outlines (drawn later at LEQUAL) win the depth test.
+  // Bodies over the ground's depth, pushed slightly back so their outlines (drawn later at
+  // LEQUAL) win the depth test; then the shadows on the ground wherever no body is in front.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -395,13 +428,9 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
   glDisable(GL_POLYGON_OFFSET_FILL);
   mark(RenderPass::Bodies);
   if (frame.options.grid) {
-    drawGround(frame, viewProj);
-    mark(RenderPass::Ground);
     drawShadows(viewProj);
     mark(RenderPass::Shadows);
   }
-  drawSky(frame, viewProj);
-  mark(RenderPass::Sky);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   drawBodyEdges(viewProj);
@@ -421,7 +450,7 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
   glBindVertexArray(0);
   glUseProgram(0);
   if (samples_ > 1) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
                       GL_NEAREST);

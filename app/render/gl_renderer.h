@@ -41,7 +41,14 @@ class GlRenderer {
   int samples() const { return samples_; }
 
  private:
-  void createMultisampleTarget();
+  // A framebuffer object of the image's size with samples_ samples: colour, depth and stencil.
+  struct Target {
+    GLuint fbo = 0, color = 0, depth = 0;
+  };
+  void createTarget(Target& target) const;
+  static void deleteTarget(Target& target);
+  // Sky and ground into `into`, from background_ (redrawn there when the camera moved).
+  void drawBackground(const FrameData& frame, const glm::mat4& viewProj, GLuint into);
   void upload(const SceneGeometry& geometry);
   void drawSky(const FrameData& frame, const glm::mat4& viewProj);
   void drawGround(const FrameData& frame, const glm::mat4& viewProj);
@@ -78,7 +85,11 @@ class GlRenderer {
   GLuint meshVao_ = 0, meshVbo_ = 0;
   GLuint lineVao_ = 0, lineVbo_ = 0;
   GLuint target_ = 0;  // the context's framebuffer, which receives the image
-  GLuint fbo_ = 0, colorRb_ = 0, depthRb_ = 0;  // the multisampled one, when samples_ > 1
+  Target multisampled_;  // the frame is drawn here and resolved into target_ when samples_ > 1
+  Target background_;    // sky and ground as seen from backgroundCamera_
+  bool backgroundDrawn_ = false;
+  bool backgroundGrid_ = false;
+  Camera backgroundCamera_;
   // Reused every frame so steady-state frames allocate nothing.
   SceneGeometry geometry_;
   std::vector<MeshVertex> meshStaging_;  // bodies, ghosts, arrow heads, as uploaded

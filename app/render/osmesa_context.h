@@ -1,10 +1,10 @@
 #pragma once
-// An OSMesa (llvmpipe) OpenGL 4.5 compatibility-profile context that renders into a buffer in
-// main memory. Compatibility rather than core because ImGui's OpenGL2 backend (the only Debian
+// An OSMesa (llvmpipe) OpenGL 4.5 compatibility-profile context. It draws into its framebuffer
+// object (gl_context.h); OSMesa's own buffer is one pixel, made only because OSMesa cannot make a
+// context current without one. Compatibility rather than core because ImGui's OpenGL2 backend (the only Debian
 // backend that starts under OSMesa, see DESIGN.md) uses fixed-function calls; GLSL 4.50 shaders
 // run in the same context.
 #include <cstdint>
-#include <vector>
 
 #include <GL/osmesa.h>
 
@@ -20,12 +20,9 @@ class OsmesaContext final : public GlContext {
   ~OsmesaContext() override;
 
   void makeCurrent() override;
-  unsigned framebuffer() const override { return 0; }
-  // OSMesa renders straight into this buffer: nothing to read back.
-  const std::uint8_t* pixels() override { return buffer_.data(); }
 
  private:
-  std::vector<std::uint8_t> buffer_;
+  std::uint8_t windowPixel_[4] = {};  // OSMesa's own buffer, never drawn into
   OSMesaContext context_ = nullptr;
 };
 

@@ -10,11 +10,10 @@
 namespace rbsim::render {
 
 enum class RenderPass {
-  Upload,     // scene geometry built on the CPU and uploaded (bodies, lines, instances)
-  Bodies,     // opaque bodies (flat shaded; instanced where they share a mesh)
-  Ground,     // the ground plane and its grid
-  Shadows,    // planar shadows onto the ground
-  Sky,        // the sky gradient where nothing else was drawn
+  Upload,      // scene geometry built on the CPU and uploaded (bodies, lines, instances)
+  Background,  // sky and ground copied in (and drawn first, when the camera moved)
+  Bodies,      // opaque bodies (flat shaded; instanced where they share a mesh)
+  Shadows,     // planar shadows onto the ground
   Edges,      // body outlines and the selection highlight
   Marks,      // particles, debug lines, axes, force arrows, ghosts
   Overlay,    // the Dear ImGui panel and captions
@@ -26,7 +25,7 @@ constexpr long kPassSampleEvery = 8;  // frames between two measured frames
 
 // The passes' names as printSummary prints them.
 constexpr std::array<const char*, kRenderPassCount> kRenderPassNames = {
-    "upload", "bodies", "ground", "shadows", "sky", "edges", "marks", "overlay"};
+    "upload", "background", "bodies", "shadows", "edges", "marks", "overlay"};
 
 // Accumulates per-pass milliseconds over the measured frames. mark() is called by the renderer;
 // `finish` is the glFinish it runs first (kept out of this header so it stays GL-free).

@@ -58,30 +58,30 @@ std::string readTextFile(const std::string& path) {
 }
 
 ShaderProgram::ShaderProgram(const std::string& dir, const std::string& vertexFile,
-                             const std::string& fragmentFile) {
-  const std::string vertexPath = dir + "/" + vertexFile;
-  const std::string fragmentPath = dir + "/" + fragmentFile;
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexPath);
-  GLuint fragment = 0;
+                             const std::string& fragmentFile, const std::string& vertexLibrary) {
+  std::vector<std::string> paths = {dir + "/" + vertexFile, dir + "/" + fragmentFile};
+  if (!vertexLibrary.empty()) paths.push_back(dir + "/" + vertexLibrary);
+  const GLenum stages[] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_VERTEX_SHADER};
+  std::vector<GLuint> shaders;
   try {
-    fragment = compile(GL_FRAGMENT_SHADER, fragmentPath);
+    for (std::size_t k = 0; k < paths.size(); ++k) shaders.push_back(compile(stages[k], paths[k]));
   } catch (...) {
-    glDeleteShader(vertex);
+    for (const GLuint shader : shaders) glDeleteShader(shader);
     throw;
   }
   program_ = glCreateProgram();
-  glAttachShader(program_, vertex);
-  glAttachShader(program_, fragment);
+  for (const GLuint shader : shaders) glAttachShader(program_, shader);
   glLinkProgram(program_);
   // The program keeps the compiled stages alive; flag the shader objects for deletion now.
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
+  for (const GLuint shader : shaders) glDeleteShader(shader);
   GLint ok = GL_FALSE;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
     const std::string log = programLog(program_);
     glDeleteProgram(program_);
-    throw RenderError("shader link error for " + vertexPath + " + " + fragmentPath + ":\n" + log);
+    std::string names = paths[0];
+    for (std::size_t k = 1; k < paths.size(); ++k) names += " + " + paths[k];
+    throw RenderError("shader link error for " + names + ":\n" + log);
   }
 }
 

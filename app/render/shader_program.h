@@ -11,10 +11,12 @@ namespace rbsim::render {
 
 class ShaderProgram {
  public:
-  // Reads dir/vertexFile and dir/fragmentFile, compiles and links them. Throws RenderError naming
-  // the file (missing, unreadable, compile error) or both files (link error) with GL's info log.
-  ShaderProgram(const std::string& dir, const std::string& vertexFile,
-                const std::string& fragmentFile);
+  // Reads dir/vertexFile and dir/fragmentFile, compiles and links them; with `vertexLibrary`, a
+  // second vertex shader object defining functions the first declares (several objects per stage
+  // link into one stage in desktop GL). Throws RenderError naming the file (missing, unreadable,
+  // compile error) or every file (link error) with GL's info log.
+  ShaderProgram(const std::string& dir, const std::string& vertexFile, const std::string& fragmentFile,
+                const std::string& vertexLibrary = "");
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;

@@ -42,6 +42,25 @@ TEST(Shaders, CompileErrorNamesTheFileAndCarriesTheLog) {
   }
 }
 
+// The bodies' vertex shaders call a function another file defines (lighting.glsl): when it is
+// missing, the link error names every file of the program.
+TEST(Shaders, LinkErrorNamesTheVertexLibraryToo) {
+  TempDir dir;
+  for (const auto& entry : std::filesystem::directory_iterator(shaderDir())) {
+    std::filesystem::copy_file(entry.path(), dir.path() / entry.path().filename());
+  }
+  std::ofstream(dir.path() / "lighting.glsl") << "#version 450\nvec3 unrelated() { return vec3(0.0); }\n";
+  try {
+    OffscreenRenderer renderer(64, 64, dir.path().string());
+    FAIL() << "expected RenderError";
+  } catch (const RenderError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("link error"), std::string::npos) << message;
+    EXPECT_NE(message.find((dir.path() / "lighting.glsl").string()), std::string::npos) << message;
+    EXPECT_NE(message.find((dir.path() / "mesh.vert").string()), std::string::npos) << message;
+  }
+}
+
 TEST(Shaders, DefaultDirectoryFollowsTheEnvironment) {
   setenv("RBSIM_SHADER_DIR", "/some/where", 1);
   EXPECT_EQ(defaultShaderDir(), "/some/where");
