@@ -2,7 +2,7 @@
 // A soft round blob: opacity falls off as a Gaussian of the distance from the centre and reaches
 // zero at the square's inscribed circle, so neighbouring sprites blend into a smooth cloud.
 in vec2 vLocal;
-flat in vec4 vColor;
+flat in vec4 vColor;  // display (sRGB) colour + opacity
 out vec4 fragColor;
 
 // exp(-kSharpness r^2): the edge of the disc keeps e^-3 = 5 % of the centre's opacity before the
@@ -13,5 +13,5 @@ void main() {
   float r2 = dot(vLocal, vLocal);
   if (r2 >= 1.0) discard;
   float falloff = exp(-kSharpness * r2) * (1.0 - r2);
-  fragColor = vec4(pow(vColor.rgb, vec3(1.0 / 2.2)), vColor.a * falloff);
+  fragColor = vec4(vColor.rgb, vColor.a * falloff);
 }

@@ -10,12 +10,14 @@ uniform vec3 uRight;  // unit, world frame
 uniform vec3 uUp;     // unit, world frame
 
 out vec2 vLocal;  // corner in [-1, 1]^2
-flat out vec4 vColor;
+flat out vec4 vColor;  // display (sRGB) colour + opacity
 
 void main() {
   vec2 corner = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
   vLocal = corner;
-  vColor = aColor;
+  // Gamma-encoded once per sprite, not per pixel: the colour is flat across it, and the encode
+  // per pixel was most of the particle demo's sprite pass on llvmpipe.
+  vColor = vec4(pow(aColor.rgb, vec3(1.0 / 2.2)), aColor.a);
   vec3 world = aCentre + 0.5 * aSize * (corner.x * uRight + corner.y * uUp);
   gl_Position = uViewProj * vec4(world, 1.0);
 }

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <libdeflate.h>
 
@@ -94,9 +95,20 @@ void encodePngFile(const std::filesystem::path& path, int width, int height, con
                                 std::to_string(zlibLevel));
   }
   threadLevel = zlibLevel;
+  // Opaque RGB: a frame is a picture, and GL's alpha after blending is bookkeeping (an outline's
+  // antialiased edge leaves 0.8 there), which a viewer would show as holes. A quarter fewer bytes
+  // to filter and deflate, too.
+  thread_local std::vector<std::uint8_t> rgb;
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  rgb.resize(pixels * 3);
+  for (std::size_t k = 0; k < pixels; ++k) {
+    rgb[3 * k] = rgba[4 * k];
+    rgb[3 * k + 1] = rgba[4 * k + 1];
+    rgb[3 * k + 2] = rgba[4 * k + 2];
+  }
   CheckedFile file;
   const bool opened = file.open(path);
-  const bool written = opened && stbi_write_png_to_func(writeToFile, &file, width, height, 4, rgba, width * 4) != 0;
+  const bool written = opened && stbi_write_png_to_func(writeToFile, &file, width, height, 3, rgb.data(), width * 3) != 0;
   const bool closed = opened && file.close();
   if (!written || !closed) {
     // A failure that was not a write (the compressor out of memory) leaves no OS reason.

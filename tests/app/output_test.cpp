@@ -182,10 +182,12 @@ std::vector<std::uint8_t> testImage(int width, int height) {
   return rgba;
 }
 
+// The PNG holds the image's colours, opaque: RGB, three channels, whatever the alpha bytes were.
 bool decodesTo(const fs::path& file, const std::vector<std::uint8_t>& rgba, int width, int height) {
   int w = 0, h = 0, channels = 0;
   unsigned char* back = stbi_load(file.string().c_str(), &w, &h, &channels, 4);
-  const bool same = back != nullptr && w == width && h == height && std::memcmp(back, rgba.data(), rgba.size()) == 0;
+  bool same = back != nullptr && w == width && h == height && channels == 3;
+  for (std::size_t i = 0; same && i < rgba.size(); ++i) same = back[i] == (i % 4 == 3 ? 255 : rgba[i]);
   stbi_image_free(back);
   return same;
 }
@@ -206,9 +208,11 @@ TEST(PngFile, DecodesToTheExactPixelsAtEveryLevelAndRowFilter) {
   render::setPngRowFilter(render::kDefaultPngRowFilter);
   EXPECT_THROW(render::setPngRowFilter(5), std::invalid_argument);
   EXPECT_THROW(render::encodePngFile(dir / "x.png", width, height, rgba.data(), 10), std::invalid_argument);
-  // Higher levels compress harder: level 9's file is no larger than level 1's, level 0 stores.
-  EXPECT_LE(fs::file_size(dir / "f0_l9.png"), fs::file_size(dir / "f0_l1.png"));
-  EXPECT_GT(fs::file_size(dir / "f0_l0.png"), rgba.size());
+  // Levels above 0 compress, level 0 stores. (Level 9 against level 1 is not a rule: on this
+  // small noisy image level 9 came out 22 bytes larger.)
+  EXPECT_LT(fs::file_size(dir / "f0_l1.png"), fs::file_size(dir / "f0_l0.png") / 2);
+  EXPECT_LT(fs::file_size(dir / "f0_l9.png"), fs::file_size(dir / "f0_l0.png") / 2);
+  EXPECT_GT(fs::file_size(dir / "f0_l0.png"), rgba.size() / 4 * 3);  // RGB, stored
   fs::remove_all(dir);
 }
 
