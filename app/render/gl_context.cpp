@@ -1,5 +1,7 @@
 #include "gl_context.h"
 
+#include <cstring>
+
 #include "egl_context.h"
 #include "gl_api.h"
 #include "render_error.h"
@@ -44,7 +46,13 @@ void GlContext::createFramebuffer(const char* backend) {
     throw RenderError(std::string(backend) + ": the " + size + " framebuffer object is incomplete (status " +
                       std::to_string(status) + "; out of memory?)");
   }
-  buffer_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4, 0);
+  GLint extensions = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
+  for (GLint k = 0; k < extensions && !packInvert_; ++k) {
+    const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(k)));
+    packInvert_ = name != nullptr && std::string(name) == "GL_MESA_pack_invert";
+  }
+  if (!packInvert_) buffer_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4, 0);
 }
 
 void GlContext::deleteFramebuffer() {
@@ -54,13 +62,23 @@ void GlContext::deleteFramebuffer() {
   fbo_ = colorRb_ = depthRb_ = 0;
 }
 
-const std::uint8_t* GlContext::pixels() {
+void GlContext::readTopDown(std::uint8_t* out) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  if (packInvert_) {
+    glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out);
+    glPixelStorei(GL_PACK_INVERT_MESA, GL_FALSE);
+    return;
+  }
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, buffer_.data());
-  return buffer_.data();
+  const std::size_t rowBytes = static_cast<std::size_t>(width_) * 4;
+  for (int y = 0; y < height_; ++y) {
+    std::memcpy(out + static_cast<std::size_t>(y) * rowBytes,
+                buffer_.data() + static_cast<std::size_t>(height_ - 1 - y) * rowBytes, rowBytes);
+  }
 }
 
 GlBackend defaultGlBackend() {

@@ -35,9 +35,10 @@ class GlContext {
   virtual void makeCurrent() = 0;
   // The framebuffer object that receives the image (RGBA8, 24-bit depth, 8-bit stencil).
   unsigned framebuffer() const { return fbo_; }
-  // The finished image, RGBA8, bottom row first (GL's origin), read back with glReadPixels;
-  // call with the context current. Valid until the next call.
-  const std::uint8_t* pixels();
+  // Reads the finished image into `out` (width*height*4 bytes, RGBA8, top row first); call with
+  // the context current. GL_MESA_pack_invert has glReadPixels write the rows top first, so the
+  // image is copied once; without it, it is read and then flipped row by row.
+  void readTopDown(std::uint8_t* out);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -59,7 +60,8 @@ class GlContext {
   int width_;
   int height_;
   unsigned fbo_ = 0, colorRb_ = 0, depthRb_ = 0;
-  std::vector<std::uint8_t> buffer_;  // what pixels() returns
+  bool packInvert_ = false;           // GL_MESA_pack_invert is offered
+  std::vector<std::uint8_t> buffer_;  // bottom row first, when it is not
 };
 
 // Creates a width x height context (RGBA8 colour, 24-bit depth, 8-bit stencil) and makes it

@@ -81,15 +81,8 @@ const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& fram
     throw RenderError(std::string("OpenGL error ") + code + " while rendering a frame");
   }
 
-  // GL's first row is the bottom one; images and video want the top row first.
   const auto copyStart = std::chrono::steady_clock::now();
-  const std::size_t rowBytes = static_cast<std::size_t>(d.context->width()) * 4;
-  const std::uint8_t* source = d.context->pixels();
-  const int height = d.context->height();
-  for (int y = 0; y < height; ++y) {
-    std::memcpy(d.image.data() + static_cast<std::size_t>(y) * rowBytes,
-                source + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
-  }
+  d.context->readTopDown(d.image.data());
   d.readbackMs.add(millisecondsSince(copyStart));
   ++d.frames;
   return d.image;

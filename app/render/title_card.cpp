@@ -233,14 +233,7 @@ const std::vector<std::uint8_t>& TitleCardRenderer::render(const TitleCard& card
     throw RenderError("OpenGL error while rendering a title card");
   }
 
-  // GL's first row is the bottom one; images and video want the top row first.
-  const std::size_t rowBytes = static_cast<std::size_t>(d.context->width()) * 4;
-  const int height = d.context->height();
-  const std::uint8_t* source = d.context->pixels();
-  for (int y = 0; y < height; ++y) {
-    std::memcpy(d.image.data() + static_cast<std::size_t>(y) * rowBytes,
-                source + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
-  }
+  d.context->readTopDown(d.image.data());
   return d.image;
 }
 
