@@ -37,6 +37,9 @@ struct OffscreenRenderer::Impl {
   PassClock passes;
   long frames = 0;
   bool uiWantsPointer = false;
+  bool pending = false;   // begin() ran, finish() not yet
+  bool measured = false;  // the pending frame was timed pass by pass
+  double issueMs = 0.0;   // begin()'s time for the pending frame
 
   Impl(int width, int height, const std::string& shaderDir, int samples, GlBackend backend)
       : context(makeGlContext(backend, width, height)),
@@ -55,7 +58,13 @@ OffscreenRenderer::~OffscreenRenderer() {
 }
 
 const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& frame, const UiFrame* ui) {
+  begin(frame, ui);
+  return finish();
+}
+
+void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui) {
   Impl& d = *impl_;
+  if (d.pending) throw RenderError("OffscreenRenderer::begin: the previous frame was not finished");
   d.context->makeCurrent();
   // Frames measured pass by pass stay out of the mean: their extra flushes cost time.
   PassClock* clock = d.frames % kPassSampleEvery == kPassSampleEvery - 1 ? &d.passes : nullptr;
@@ -66,13 +75,26 @@ const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& fram
   const OverlayData none;
   const float uiSeconds = ui != nullptr ? ui->input.deltaSeconds : 1.0f / 30.0f;
   d.uiWantsPointer = d.overlay.draw(frame.options.overlay ? frame.overlay : none, uiSeconds, ui);
-  glFinish();  // the context's buffer holds the image only once GL has finished
   if (clock != nullptr) {
-    clock->mark(RenderPass::Overlay, [] {});
+    clock->mark(RenderPass::Overlay, [] { glFinish(); });
     clock->endFrame();
   } else {
-    d.renderMs.add(millisecondsSince(start));
+    glFlush();  // llvmpipe's threads rasterise from here on, while the caller does other work
   }
+  d.pending = true;
+  d.measured = clock != nullptr;
+  d.issueMs = millisecondsSince(start);
+}
+
+const std::vector<std::uint8_t>& OffscreenRenderer::finish() {
+  Impl& d = *impl_;
+  if (!d.pending) throw RenderError("OffscreenRenderer::finish: no frame was begun");
+  d.pending = false;
+  d.context->makeCurrent();
+  const auto start = std::chrono::steady_clock::now();
+  glFinish();  // the framebuffer holds the image only once GL has finished
+  // What rendering cost the caller: issuing the frame and waiting for the rest of it.
+  if (!d.measured) d.renderMs.add(d.issueMs + millisecondsSince(start));
   // A GL error here is a bug in this library, not bad input; fail loudly rather than write a
   // subtly wrong video. (Mesa answers glGetError without a pipeline stall.)
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {

@@ -37,6 +37,12 @@ class OffscreenRenderer {
   // windows too) and returns the image: width*height*4 bytes, RGBA, top row first. Valid until
   // the next render() call.
   const std::vector<std::uint8_t>& render(const FrameData& frame, const UiFrame* ui = nullptr);
+  // render() in two halves, so the caller can work while llvmpipe's threads rasterise: begin()
+  // issues the frame's GL commands and flushes them (nothing refers to `frame` afterwards);
+  // finish() waits for the picture and returns it like render(). Each begin() needs its
+  // finish() before the next begin(); RenderError otherwise.
+  void begin(const FrameData& frame, const UiFrame* ui = nullptr);
+  const std::vector<std::uint8_t>& finish();
   // Whether ImGui wanted the pointer during the last render() with a UiFrame (it was over a
   // control), so the window does not also turn the drag into a camera move or a pick.
   bool uiWantsPointer() const;

@@ -180,6 +180,20 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
       }
     };
     for (std::size_t k = 0; k < worlds.size(); ++k) traceRow(k);
+    // A frame is begun, then the worlds step on to the next one while llvmpipe's threads
+    // rasterise it, and only then is it finished and handed to the writers: on 2 cores the
+    // simulation and the rasteriser overlap instead of taking turns.
+    bool pending = false;
+    const auto deliver = [&] {
+      const std::vector<std::uint8_t>& pixels = renderer->finish();
+      pending = false;
+      const auto start = Clock::now();
+      sink->submit(pixels);
+      summary.submitSeconds += secondsSince(start);
+      if (observer) observer(pixels);
+      ++summary.frames;
+      report();
+    };
     const double fps = phase.scene().view.fps;
     const std::uint64_t frames = frameCount(phase);
     for (std::uint64_t f = 0; f < frames;) {
@@ -199,18 +213,15 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
         f = std::max(f + 1, next);
         continue;
       }
-      auto start = Clock::now();
+      const auto start = Clock::now();
       const render::FrameData frame = buildPhaseFrame(worlds, phase, title, &freeFlight);
       summary.buildSeconds += secondsSince(start);
-      const std::vector<std::uint8_t>& pixels = renderer->render(frame);
-      start = Clock::now();
-      sink->submit(pixels);
-      summary.submitSeconds += secondsSince(start);
-      if (observer) observer(pixels);
-      ++summary.frames;
+      if (pending) deliver();
+      renderer->begin(frame);
+      pending = true;
       ++f;
-      report();
     }
+    if (pending) deliver();
     std::uint64_t longestSteps = 0;
     for (std::size_t k = 0; k < worlds.size(); ++k) {
       advance(k, phase.worlds[k].scene.stepCount());  // past the last frame, as the trace expects
