@@ -9,6 +9,7 @@
 #   --no-bench   keep the CSVs in bench/results/, only redraw the plots and refill REPORT.md
 #   --no-stills  keep videos/stills/ as it is
 #   --build DIR  the Release build folder (default build/)
+# RBSIM_BASELINE_BUILD=DIR also times that build's rbsim in bench/frame_pipeline.sh, side by side.
 # Needs: cmake, a C++ compiler, gnuplot, ffmpeg, python3 (standard library only).
 set -euo pipefail
 
@@ -99,7 +100,7 @@ if [ $run_bench = 1 ]; then
   low "$build/bench/sdf_contact_bench" "$results/sdf_contact.csv" > "$logs/sdf_contact.log" 2>&1
   # Not niced: the frame pipeline's wall time is the figure, and it needs both cores.
   say "running bench/frame_pipeline.sh -> $results/frame_pipeline.csv"
-  bash bench/frame_pipeline.sh "$build" $([ $mode = quick ] && echo 1 || echo 2) > "$logs/frame_pipeline.log" 2>&1 \
+  bash bench/frame_pipeline.sh "$build" 1 ${RBSIM_BASELINE_BUILD:-} > "$logs/frame_pipeline.log" 2>&1 \
     || { tail -20 "$logs/frame_pipeline.log"; exit 1; }
   say "running accuracy_sweep -> $results/accuracy.csv"
   low "$build/bench/accuracy_sweep" "$results/accuracy.csv" "${accuracy_timing[@]}" > "$logs/accuracy.log" 2>&1

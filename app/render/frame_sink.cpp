@@ -45,10 +45,14 @@ FrameSink::~FrameSink() {
 }
 
 void FrameSink::submit(std::vector<std::uint8_t> rgbaTopDown) {
+  submit(std::make_shared<const std::vector<std::uint8_t>>(std::move(rgbaTopDown)));
+}
+
+void FrameSink::submit(std::shared_ptr<const std::vector<std::uint8_t>> rgbaTopDown) {
   const std::size_t expected =
       static_cast<std::size_t>(options_.width) * static_cast<std::size_t>(options_.height) * 4;
-  if (rgbaTopDown.size() != expected) {
-    throw RenderError("frame output: image has " + std::to_string(rgbaTopDown.size()) +
+  if (rgbaTopDown == nullptr || rgbaTopDown->size() != expected) {
+    throw RenderError("frame output: image has " + std::to_string(rgbaTopDown ? rgbaTopDown->size() : 0) +
                       " bytes, expected " + std::to_string(expected));
   }
   // A writer that already failed would drop every further frame: stop the run now instead.
@@ -58,8 +62,7 @@ void FrameSink::submit(std::vector<std::uint8_t> rgbaTopDown) {
   if (png_) {
     if (std::string error = png_->error(); !error.empty()) throw RenderError(error);
   }
-  OutputFrame frame{frames_++,
-                    std::make_shared<const std::vector<std::uint8_t>>(std::move(rgbaTopDown))};
+  OutputFrame frame{frames_++, std::move(rgbaTopDown)};
   const auto start = std::chrono::steady_clock::now();
   if (video_) video_->submit(frame);
   if (png_) png_->submit(std::move(frame));

@@ -47,6 +47,8 @@ class FrameSink {
   // Takes one top-down RGBA8 image of width*height*4 bytes. Returns at once unless a queue is
   // full. Throws RenderError if a writer has already failed (e.g. ffmpeg exited).
   void submit(std::vector<std::uint8_t> rgbaTopDown);
+  // The same without a copy: the writers share the image until they are done with it.
+  void submit(std::shared_ptr<const std::vector<std::uint8_t>> rgbaTopDown);
   // Flushes every queue, closes ffmpeg's input and waits for it. Throws RenderError if any PNG
   // failed or ffmpeg exited with a non-zero status (its error output is in the message).
   void finish();

@@ -2,8 +2,9 @@
 // An off-screen OpenGL 4.5 compatibility-profile context on llvmpipe, whichever way the machine
 // offers one: OSMesa (renders into a buffer in main memory; gone from Mesa 25.1 on) or EGL on
 // the surfaceless platform (EGL_MESA_platform_surfaceless) drawing into a framebuffer object.
-// Both are Mesa contexts on the same shared libglapi dispatch, so the GL entry points this
-// library calls reach whichever context is current (DESIGN.md, "Rendering facts"). Both draw
+// Both are Mesa contexts on the same shared libglapi dispatch (libOSMesa links libglapi.so.0, as
+// EGL's driver does), so the GL entry points this library links from libOSMesa reach whichever
+// context is current; tests/render/gl_backend_test.cpp draws through both in one process. Both draw
 // into a framebuffer object of the context's own, never OSMesa's window-system buffer: that one
 // is stored upside down, so a copy between it and an object (the renderer's cached background)
 // would need a draw call instead of a memory copy, and the two backends would round edge pixels

@@ -1,5 +1,6 @@
 #include "offscreen_renderer.h"
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,7 +32,9 @@ struct OffscreenRenderer::Impl {
   std::unique_ptr<GlContext> context;
   GlRenderer scene;
   Overlay overlay;
-  std::vector<std::uint8_t> image;
+  // Image buffers: `current` is the last image; the pool's others may still be with the writers.
+  std::vector<std::shared_ptr<std::vector<std::uint8_t>>> pool;
+  std::shared_ptr<std::vector<std::uint8_t>> current;
   MeanMs renderMs;
   MeanMs readbackMs;
   PassClock passes;
@@ -44,8 +47,22 @@ struct OffscreenRenderer::Impl {
   Impl(int width, int height, const std::string& shaderDir, int samples, GlBackend backend)
       : context(makeGlContext(backend, width, height)),
         scene(width, height, shaderDir, samples, context->framebuffer()),
-        overlay(width, height, context->framebuffer()),
-        image(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {}
+        overlay(width, height, context->framebuffer()) {}
+
+  // A buffer of the pool that nobody else holds, or a new one.
+  std::shared_ptr<std::vector<std::uint8_t>> freeBuffer() {
+    current.reset();
+    for (const auto& buffer : pool) {
+      if (buffer.use_count() == 1) {
+        // The last holder let go on another thread; see its writes before overwriting.
+        std::atomic_thread_fence(std::memory_order_acquire);
+        return buffer;
+      }
+    }
+    const std::size_t bytes = static_cast<std::size_t>(context->width()) * static_cast<std::size_t>(context->height()) * 4;
+    pool.push_back(std::make_shared<std::vector<std::uint8_t>>(bytes));
+    return pool.back();
+  }
 };
 
 OffscreenRenderer::OffscreenRenderer(int width, int height, std::string shaderDir, int samples,
@@ -104,10 +121,16 @@ const std::vector<std::uint8_t>& OffscreenRenderer::finish() {
   }
 
   const auto copyStart = std::chrono::steady_clock::now();
-  d.context->readTopDown(d.image.data());
+  d.current = d.freeBuffer();
+  d.context->readTopDown(d.current->data());
   d.readbackMs.add(millisecondsSince(copyStart));
   ++d.frames;
-  return d.image;
+  return *d.current;
+}
+
+std::shared_ptr<const std::vector<std::uint8_t>> OffscreenRenderer::finishShared() {
+  finish();
+  return impl_->current;
 }
 
 bool OffscreenRenderer::uiWantsPointer() const { return impl_->uiWantsPointer; }

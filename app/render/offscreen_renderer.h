@@ -43,6 +43,9 @@ class OffscreenRenderer {
   // finish() before the next begin(); RenderError otherwise.
   void begin(const FrameData& frame, const UiFrame* ui = nullptr);
   const std::vector<std::uint8_t>& finish();
+  // finish(), the image shared instead of borrowed: the writers keep it as long as they need it
+  // and it is never copied; its buffer is reused once nobody holds it any more.
+  std::shared_ptr<const std::vector<std::uint8_t>> finishShared();
   // Whether ImGui wanted the pointer during the last render() with a UiFrame (it was over a
   // control), so the window does not also turn the drag into a camera move or a pick.
   bool uiWantsPointer() const;

@@ -185,12 +185,12 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     // simulation and the rasteriser overlap instead of taking turns.
     bool pending = false;
     const auto deliver = [&] {
-      const std::vector<std::uint8_t>& pixels = renderer->finish();
+      const std::shared_ptr<const std::vector<std::uint8_t>> pixels = renderer->finishShared();
       pending = false;
       const auto start = Clock::now();
       sink->submit(pixels);
       summary.submitSeconds += secondsSince(start);
-      if (observer) observer(pixels);
+      if (observer) observer(*pixels);
       ++summary.frames;
       report();
     };

@@ -236,15 +236,14 @@ def accuracy(results):
 
 def frame_pipeline(results):
     rows = read_csv(path(results, "frame_pipeline.csv"))
-    columns = ["config", "round", "frames", "wall_s", "cpu_s", "load1", "simulate_ms", "build_ms", "render_ms",
-               "readback_ms", "png_ms", "video_ms", "png_mb"]
+    columns = ["bench", "build", "round", "frames", "wall_s", "cpu_s", "fps", "video_s", "load1", "render_ms",
+               "png_ms", "video_ms"]
     for c in columns:
         if c not in rows[0]:
             raise MissingData("frame_pipeline.csv has no column " + c)
-    return table(["config", "round", "frames", "wall [s]", "CPU [s]", "load (1 min)", "simulate [ms/frame]",
-                  "build [ms/frame]", "render [ms/frame]", "read back [ms/frame]", "PNG [ms/frame]",
-                  "video [ms/frame]", "PNGs [MB]"],
-                 [[r["config"], r["round"], r["frames"]] + [sig(float(r[c])) if r[c] else "" for c in columns[3:]]
+    return table(["bench", "build", "round", "frames", "wall [s]", "CPU [s]", "frames / wall s", "video plays [s]",
+                  "load (1 min)", "render [ms/frame]", "PNG [ms/frame]", "video [ms/frame]"],
+                 [[r["bench"], r["build"], r["round"], r["frames"]] + [sig(float(r[c])) if r[c] else "" for c in columns[4:]]
                   for r in rows])
 
 

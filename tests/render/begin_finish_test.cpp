@@ -1,5 +1,6 @@
 // render() in two halves (begin, then finish after other work): the same picture as render(),
 // unaffected by what the caller does to its FrameData in between, and misuse is an error.
+#include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -31,6 +32,23 @@ TEST(BeginFinish, GivesWhatRenderGivesWhateverHappensBetween) {
     frame = boxAt(-2.0f);  // the caller moves on: the begun frame must not change
     EXPECT_EQ(halves.finish(), expected) << "frame " << k;
   }
+}
+
+// finishShared() hands out the image without copying it; one that a writer still holds must not
+// be reused for a later frame, and once let go its buffer is.
+TEST(BeginFinish, ASharedImageStaysAsItWasWhileHeld) {
+  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  renderer.begin(boxAt(0.0f));
+  const std::shared_ptr<const std::vector<std::uint8_t>> held = renderer.finishShared();
+  const std::vector<std::uint8_t> copy = *held;
+  const std::vector<std::uint8_t>* heldAddress = held.get();
+  for (int k = 1; k <= 4; ++k) {
+    renderer.begin(boxAt(0.3f * static_cast<float>(k)));
+    const auto later = renderer.finishShared();
+    EXPECT_NE(later.get(), heldAddress);
+    EXPECT_NE(*later, copy) << "frame " << k << " shows the box elsewhere";
+  }
+  EXPECT_EQ(*held, copy);
 }
 
 TEST(BeginFinish, RefusesTwoBeginsAndAFinishWithoutBegin) {
