@@ -70,6 +70,11 @@ void FrameSink::submit(std::shared_ptr<const std::vector<std::uint8_t>> rgbaTopD
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
 }
 
+void FrameSink::closeInput() {
+  if (video_) video_->closeInput();
+  if (png_) png_->closeInput();
+}
+
 void FrameSink::finish() {
   // Finish both even if one fails, then report the video first (its message says more).
   std::string error;

@@ -49,6 +49,9 @@ class FrameSink {
   void submit(std::vector<std::uint8_t> rgbaTopDown);
   // The same without a copy: the writers share the image until they are done with it.
   void submit(std::shared_ptr<const std::vector<std::uint8_t>> rgbaTopDown);
+  // No more frames: the writers finish in the background while the caller goes on; finish()
+  // then waits for them and reports. No submit() after it.
+  void closeInput();
   // Flushes every queue, closes ffmpeg's input and waits for it. Throws RenderError if any PNG
   // failed or ffmpeg exited with a non-zero status (its error output is in the message).
   void finish();

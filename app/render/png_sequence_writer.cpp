@@ -10,7 +10,14 @@
 #include "png_file.h"
 #include "render_error.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 namespace rbsim::render {
+
+namespace {
+constexpr int kWriterNice = 5;  // nice value of the PNG writer threads (0 = normal, 19 = lowest)
+}  // namespace
 
 void ensureWritableDirectory(const std::filesystem::path& dir) {
   std::error_code ec;
@@ -57,6 +64,10 @@ PngSequenceWriter::~PngSequenceWriter() {
 void PngSequenceWriter::submit(OutputFrame frame) { queue_.push(std::move(frame)); }
 
 void PngSequenceWriter::work() {
+  // Below the thread that simulates and draws: it is the pipeline's critical path, and the queue
+  // lets the writers catch up in its pauses (on 2 cores: `demo all` 157.3 -> 154.1 s, the
+  // 1000-body benchmark 19.0 -> 18.3 s, both within the spread of repeated runs).
+  setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kWriterNice);
   while (std::optional<OutputFrame> frame = queue_.pop()) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%06ld.png", frame->index);

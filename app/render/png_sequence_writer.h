@@ -25,6 +25,8 @@ class PngSequenceWriter {
   PngSequenceWriter& operator=(const PngSequenceWriter&) = delete;
 
   void submit(OutputFrame frame);  // blocks only while the queue is full
+  // No more frames: the workers stop once the queue has drained; finish() then only waits.
+  void closeInput() { queue_.close(); }
   // Waits for every queued frame; throws RenderError naming the first file that failed.
   void finish();
   // Empty while all is well; otherwise the first file that could not be written.

@@ -24,6 +24,9 @@ class VideoEncoder {
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   void submit(OutputFrame frame);  // blocks only while the queue is full
+  // No more frames: ffmpeg gets end-of-file once the queue has drained and finishes the file on
+  // its own; finish() then only waits. No submit() after it.
+  void closeInput() { queue_.close(); }
   // Closes ffmpeg's input and waits for it; throws RenderError with ffmpeg's exit status and
   // its error output when it failed.
   void finish();

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "rbsim/io/input_error.h"
 #include "paths.h"
@@ -139,6 +140,8 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
   // The reel is its parts joined without encoding again (video_concat.h): each card becomes a
   // clip beside its still, each demo its own video, and every frame is encoded once.
   std::vector<std::filesystem::path> parts;
+  // Each card's clip is encoded while the next demo renders; they are waited for before joining.
+  std::vector<std::unique_ptr<render::FrameSink>> clips;
   render::TitleCardRenderer cards(options.width, options.height, options.glBackend);
   ProgressMeter meter(stderr, isTerminal(stderr), options.quiet);
 
@@ -161,13 +164,14 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
     clip.fps = options.fps;
     clip.width = options.width;
     clip.height = options.height;
-    render::FrameSink sink(clip);
+    auto sink = std::make_unique<render::FrameSink>(clip);
     for (std::uint64_t k = 0; k < plan.cardFrames; ++k) {
-      sink.submit(fadedFrame(image, k, plan.cardFrames, options.fps));
+      sink->submit(fadedFrame(image, k, plan.cardFrames, options.fps));
       ++done;
       report();
     }
-    sink.finish();
+    sink->closeInput();
+    clips.push_back(std::move(sink));
     parts.push_back(*clip.videoPath);
   };
 
@@ -195,6 +199,7 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
     result.videos.push_back({run.videoPath, summary.frames, static_cast<double>(summary.frames) / options.fps,
                              fileSize(run.videoPath)});
   }
+  for (const std::unique_ptr<render::FrameSink>& sink : clips) sink->finish();
   render::concatVideos(parts, reelPath);
   report(true);
   meter.finish();
