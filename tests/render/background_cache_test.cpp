@@ -2,6 +2,7 @@
 // renderer that has drawn other views must give the same picture as a fresh one: moving the
 // camera, changing the field of view or switching the grid redraws the background, and a
 // copied background under moving bodies equals a freshly drawn one.
+#include <cstdlib>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -49,6 +50,28 @@ TEST(BackgroundCache, EveryViewMatchesAFreshRenderer) {
   // The views do differ, so the comparison above could fail.
   EXPECT_NE(fresh(frames[2]), fresh(frames[3]));
   EXPECT_NE(fresh(frames[3]), fresh(frames[4]));
+}
+
+// With multisampling the frame is drawn into a multisampled framebuffer and the cached
+// background must be multisampled like it (a blit between different sample counts is a GL
+// error, which render() turns into a RenderError). Away from edges the picture is the
+// single-sampled one: every sample of a pixel inside a surface has the same colour.
+TEST(BackgroundCache, MultisampledFramesCopyAMultisampledBackground) {
+  OffscreenRenderer single(kWidth, kHeight, shaderDir(), 1);
+  OffscreenRenderer multi(kWidth, kHeight, shaderDir(), 4);
+  ASSERT_GT(multi.samples(), 1) << "the driver offers no multisampling";
+  const std::vector<std::uint8_t> expected = single.render(boxAt(0.0f));
+  multi.render(boxAt(0.5f));
+  const std::vector<std::uint8_t> image = multi.render(boxAt(0.0f));  // background copied, not drawn
+  // Sky, ground and the box's front face: interior pixels, no edge nearby (off the face's centre,
+  // where the body's z axis comes through).
+  const glm::vec2 face = projectToPixel(Camera{}, kWidth, kHeight, {0.2f, 0.55f, 0.4f});
+  for (const glm::ivec2 p : {glm::ivec2(kWidth / 2, 3), glm::ivec2(5, kHeight - 4),
+                             glm::ivec2(static_cast<int>(face.x), static_cast<int>(face.y))}) {
+    const Rgb a = pixelAt(expected, kWidth, p.x, p.y);
+    const Rgb b = pixelAt(image, kWidth, p.x, p.y);
+    EXPECT_LE(std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b), 3) << "pixel " << p.x << "," << p.y;
+  }
 }
 
 }  // namespace
