@@ -27,7 +27,7 @@ class GlRenderer {
  public:
   // Needs a current GL 4.5 compatibility context. samples > 1 renders with that many MSAA
   // samples (clamped to GL_MAX_SAMPLES); 1 draws straight into `target`, the context's
-  // framebuffer (0 for OSMesa's default one, an object under EGL).
+  // framebuffer object (gl_context.h).
   GlRenderer(int width, int height, const std::string& shaderDir, int samples, GLuint target);
   ~GlRenderer();
   GlRenderer(const GlRenderer&) = delete;

@@ -9,8 +9,8 @@ namespace rbsim::render {
 
 struct RenderTiming {
   long frames = 0;
-  double renderMs = 0.0;    // GL draw of scene and overlay, up to glFinish (rasterised)
-  double readbackMs = 0.0;  // the finished context's buffer flipped into the top-down RGBA image
+  double renderMs = 0.0;    // issuing scene and overlay (begin) plus waiting for them (finish)
+  double readbackMs = 0.0;  // the finished framebuffer read into the top-down RGBA image
   long passFrames = 0;      // frames measured pass by pass (one in kPassSampleEvery)
   std::array<double, kRenderPassCount> passMs{};  // mean ms of each pass over those frames
 };

@@ -18,7 +18,7 @@ struct RunSummary {
   std::uint64_t frames = 0;
   double simulateSeconds = 0.0;  // World::step
   double buildSeconds = 0.0;     // World -> FrameData
-  double renderSeconds = 0.0;    // GL draw and overlay, up to glFinish (rasterised)
+  double renderSeconds = 0.0;    // issuing each frame and waiting for its rasteriser (begin + finish)
   double readbackSeconds = 0.0;  // the finished image flipped into a top-down RGBA buffer
   double submitSeconds = 0.0;    // hand-off to the writer threads (blocks only on a full queue)
   double pngMsPerFrame = 0.0;    // deflate + write of one PNG on a worker thread (in parallel)
