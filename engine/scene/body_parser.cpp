@@ -257,29 +257,32 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   scene.inertiaMethods.emplace_back(inertiaMethodName(method));
 }
 
+ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fileAxes, double duration) {
+  ScriptedForce force;
+  force.body = index;
+  force.force = f.vec3("force", Vec3::Zero());
+  force.point = f.vec3("point", Vec3::Zero());
+  force.forceFrame = parseFrame(f, "force_frame", Frame::World);
+  force.pointFrame = parseFrame(f, "point_frame", Frame::Body);
+  // Body-frame vectors are written in the file's axes (about the centre of mass).
+  if (force.forceFrame == Frame::Body) force.force = fileAxes.transpose() * force.force;
+  if (force.pointFrame == Frame::Body) force.point = fileAxes.transpose() * force.point;
+  force.start = f.number("start", 0.0);
+  force.end = f.number("end", duration);
+  if (force.start < 0.0) f.fail("start", "expected a time >= 0 s");
+  if (!(force.end > force.start)) f.fail("end", "expected a time after \"start\"");
+  return force;
+}
+
 void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
   const bool isStatic = scene.bodies[index].isStatic;
   // Forces and springs act on dynamic bodies only: a kinematic body moves as its velocities say.
   const bool forcesIgnored = isStatic || scene.bodies[index].isKinematic;
   const char* ignoredBecause = isStatic ? "a static body does not respond to forces"
                                         : "a kinematic body moves as prescribed; forces do not act on it";
-  for (const JsonObject& f : b.objectArray("forces", {"force", "point", "force_frame", "point_frame", "start", "end"})) {
+  for (const JsonObject& f : b.objectArray("forces", kForceKeys)) {
     if (forcesIgnored) b.fail("forces", ignoredBecause);
-    ScriptedForce force;
-    force.body = index;
-    force.force = f.vec3("force", Vec3::Zero());
-    force.point = f.vec3("point", Vec3::Zero());
-    force.forceFrame = parseFrame(f, "force_frame", Frame::World);
-    force.pointFrame = parseFrame(f, "point_frame", Frame::Body);
-    // Body-frame vectors are written in the file's axes (about the centre of mass).
-    const Mat3& axes = scene.bodies[index].fileFrame.axes;
-    if (force.forceFrame == Frame::Body) force.force = axes.transpose() * force.force;
-    if (force.pointFrame == Frame::Body) force.point = axes.transpose() * force.point;
-    force.start = f.number("start", 0.0);
-    force.end = f.number("end", scene.duration);
-    if (force.start < 0.0) f.fail("start", "expected a time >= 0 s");
-    if (!(force.end > force.start)) f.fail("end", "expected a time after \"start\"");
-    scene.forces.push_back(force);
+    scene.forces.push_back(parseForce(f, index, scene.bodies[index].fileFrame.axes, scene.duration));
   }
   for (const JsonObject& p : b.objectArray("set_pose", {"time", "position", "orientation", "velocity", "angular_velocity"})) {
     PoseEvent event;
@@ -315,16 +318,20 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
   }
 }
 
+std::pair<Plane, Material> parsePlane(const JsonObject& p) {
+  const Vec3 normal = p.vec3("normal", Vec3::UnitY());
+  if (!(normal.stableNorm() > 0.0)) p.fail("normal", "expected a non-zero direction");
+  Plane plane;
+  plane.normal = normal.stableNormalized();  // a direction: its length carries no meaning
+  plane.offset = plane.normal.dot(p.boundedVec3("point", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin));
+  return {plane, parseMaterial(p)};
+}
+
 void parsePlanes(const JsonObject& root, Scene& scene) {
-  for (const JsonObject& p :
-       root.objectArray("planes", {"normal", "point", "restitution", "friction_static", "friction_kinetic"})) {
-    const Vec3 normal = p.vec3("normal", Vec3::UnitY());
-    if (!(normal.stableNorm() > 0.0)) p.fail("normal", "expected a non-zero direction");
-    Plane plane;
-    plane.normal = normal.stableNormalized();  // a direction: its length carries no meaning
-    plane.offset = plane.normal.dot(p.boundedVec3("point", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin));
+  for (const JsonObject& p : root.objectArray("planes", kPlaneKeys)) {
+    const auto [plane, material] = parsePlane(p);
     scene.planes.push_back(plane);
-    scene.planeMaterials.push_back(parseMaterial(p));
+    scene.planeMaterials.push_back(material);
   }
 }
 

@@ -15,6 +15,7 @@
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/particle_parser.h"
 #include "rbsim/scene/planar_parser.h"
+#include "rbsim/scene/scene_parts.h"
 #include "rbsim/scene/soft_parser.h"
 #include "rbsim/scene/strict_json.h"
 
@@ -22,8 +23,6 @@ namespace rbsim {
 
 namespace {
 
-// Beyond this a video shows nothing a person can see, and it is most likely a typo.
-constexpr int kMaxFramesPerSecond = 240;  // [1/s]
 // A scene is a page of JSON: 64 MiB holds hundreds of thousands of bodies' keys. Checked before
 // reading (io/read_file.h), so /dev/zero or a file of gigabytes ends in a message, not in bad_alloc.
 constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{64} << 20;  // [bytes]
@@ -32,44 +31,12 @@ constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{64} << 20;  // [bytes]
 // day of computing, beyond what anyone waits for without meaning to.
 constexpr double kMaxBodySteps = 1e10;      // [bodies x steps]
 constexpr double kSecondsPerBodyStep = 1e-5;  // [s], the pile's measured cost, for the estimate
-// world.steps accepts at most 1e9 (json_fields' positiveInt); a duration may not ask for more.
-constexpr double kMaxSteps = 1e9;
 
 void parseView(const JsonObject& root, Scene& scene) {
   if (!root.has("view")) return;
-  const JsonObject v = root.object("view", {"camera", "size", "fps", "overlay", "wireframe", "axes", "grid", "aabbs", "contacts", "selected", "caption"});
-  ViewDesc& view = scene.view;
-  if (v.has("camera")) {
-    const JsonObject c = v.object("camera", {"eye", "target", "up", "fov_deg"});
-    view.eye = c.vec3("eye", view.eye);
-    view.target = c.vec3("target", view.target);
-    view.up = c.vec3("up", view.up);
-    view.fovDegrees = c.positiveNumber("fov_deg", view.fovDegrees);
-    if (view.fovDegrees >= 180.0) c.fail("fov_deg", "expected an angle below 180 degrees");
-    if ((view.eye - view.target).norm() == 0.0) c.fail("target", "must differ from \"eye\"");
-    if ((view.eye - view.target).cross(view.up).norm() == 0.0) c.fail("up", "must not be parallel to the view direction");
-  }
-  if (v.has("size")) {
-    const nlohmann::json& s = v.raw("size");
-    if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer() ||
-        s[0].get<long long>() < 16 || s[1].get<long long>() < 16 || s[0].get<long long>() > 8192 ||
-        s[1].get<long long>() > 8192) {
-      v.fail("size", "expected [width, height] in pixels, each an integer in [16, 8192]");
-    }
-    view.width = s[0].get<int>();
-    view.height = s[1].get<int>();
-    if (view.width % 2 != 0 || view.height % 2 != 0) v.fail("size", "H.264 in yuv420p needs even width and height");
-  }
-  view.fps = v.positiveInt("fps", view.fps);
-  if (view.fps > kMaxFramesPerSecond) v.fail("fps", "expected at most " + std::to_string(kMaxFramesPerSecond) + " frames per second");
-  view.overlay = v.boolean("overlay", view.overlay);
-  view.wireframe = v.boolean("wireframe", view.wireframe);
-  view.axes = v.boolean("axes", view.axes);
-  view.grid = v.boolean("grid", view.grid);
-  view.aabbs = v.boolean("aabbs", view.aabbs);
-  view.contacts = v.boolean("contacts", view.contacts);
-  view.caption = v.string("caption", view.caption);
-  if (v.has("selected")) view.selected = scene_detail::findBody(scene.bodies, v, "selected");
+  const JsonObject v = root.object("view", kViewKeys);
+  parseViewFields(v, scene.view);
+  if (v.has("selected")) scene.view.selected = scene_detail::findBody(scene.bodies, v, "selected");
 }
 
 void checkWorkBudget(const JsonObject& root, const Scene& scene) {
@@ -95,93 +62,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
-  if (root.has("world")) {
-    const JsonObject w = root.object("world", {"gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep",
-                                               "sleep_linear_speed", "sleep_angular_speed", "time_to_sleep",
-                                               "collisions", "ccd", "ccd_motion_fraction", "broad_phase",
-                                               "contact_margin", "solver", "substeps", "contact_hertz",
-                                               "contact_damping_ratio", "contact_push_speed", "velocity_iterations",
-                                               "position_iterations", "restitution_threshold", "contact_slop",
-                                               "position_correction", "warm_starting", "warm_start_distance",
-                                               "response", "log_queries", "query_log_capacity", "skip_idle_stages",
-                                               "particle_integrator"});
-    // Every Settings field, read as the type it is; the ranges are checkSettings's alone.
-    Settings& s = scene.settings;
-    s.gravity = w.vec3("gravity", s.gravity);
-    s.timeStep = w.number("dt", s.timeStep);
-    s.allowSleep = w.boolean("sleep", s.allowSleep);
-    s.sleepLinearSpeed = w.number("sleep_linear_speed", s.sleepLinearSpeed);
-    s.sleepAngularSpeed = w.number("sleep_angular_speed", s.sleepAngularSpeed);
-    s.timeToSleep = w.number("time_to_sleep", s.timeToSleep);
-    s.detectCollisions = w.boolean("collisions", s.detectCollisions);
-    s.continuousCollision = w.boolean("ccd", s.continuousCollision);
-    s.ccdMotionFraction = w.number("ccd_motion_fraction", s.ccdMotionFraction);
-    const std::string broad = w.string("broad_phase", "sap");
-    if (broad == "brute-force") {
-      s.broadPhase = Settings::BroadPhaseMethod::BruteForce;
-    } else if (broad != "sap") {
-      w.fail("broad_phase", "expected \"sap\" or \"brute-force\", got \"" + broad + "\"");
-    }
-    s.contactMargin = w.number("contact_margin", s.contactMargin);
-    const std::string solver = w.string("solver", "soft-step");
-    if (solver == "pgs") {
-      s.solver = Settings::ContactSolverMethod::Pgs;
-    } else if (solver != "soft-step") {
-      w.fail("solver", "expected \"soft-step\" or \"pgs\", got \"" + solver + "\"");
-    }
-    const auto integer = [&](const char* key, int fallback) {
-      if (!w.has(key)) return fallback;
-      const double x = w.number(key, fallback);
-      if (x != std::floor(x) || std::abs(x) > 1e9) w.fail(key, "expected an integer");
-      return static_cast<int>(x);
-    };
-    s.substeps = integer("substeps", s.substeps);
-    s.contactHertz = w.number("contact_hertz", s.contactHertz);
-    s.contactDampingRatio = w.number("contact_damping_ratio", s.contactDampingRatio);
-    s.contactPushSpeed = w.number("contact_push_speed", s.contactPushSpeed);
-    s.velocityIterations = integer("velocity_iterations", s.velocityIterations);
-    s.positionIterations = integer("position_iterations", s.positionIterations);
-    s.restitutionThreshold = w.number("restitution_threshold", s.restitutionThreshold);
-    s.contactSlop = w.number("contact_slop", s.contactSlop);
-    s.positionCorrection = w.number("position_correction", s.positionCorrection);
-    s.warmStarting = w.boolean("warm_starting", s.warmStarting);
-    s.warmStartDistance = w.number("warm_start_distance", s.warmStartDistance);
-    s.respondToContacts = w.boolean("response", s.respondToContacts);
-    s.logQueries = w.boolean("log_queries", s.logQueries);
-    const int capacity = integer("query_log_capacity", static_cast<int>(s.queryLogCapacity));
-    s.queryLogCapacity = capacity < 1 ? 0 : static_cast<std::size_t>(capacity);
-    s.skipIdleStages = w.boolean("skip_idle_stages", s.skipIdleStages);
-    if (const SettingsProblem problem = checkSettings(s)) w.fail(problem.key.c_str(), problem.expectation);
-    const std::string integrator = w.string("integrator", integratorName(scene.settings.integrator));
-    if (!parseIntegrator(integrator, scene.settings.integrator)) {
-      std::string names;
-      for (const std::string& n : integratorNames()) names += (names.empty() ? "" : ", ") + n;
-      const std::string near = nearestKey(integrator, integratorNames());
-      const std::string hint = near.empty() ? "" : " (did you mean \"" + near + "\"?)";
-      w.fail("integrator", "unknown integrator \"" + integrator + "\"" + hint + "; expected one of " + names);
-    }
-    const std::string particles = w.string("particle_integrator", particleIntegratorName(scene.particleIntegrator));
-    if (!parseParticleIntegrator(particles, scene.particleIntegrator)) {
-      w.fail("particle_integrator", "unknown particle integrator \"" + particles + "\"; expected explicit-euler or semi-implicit-euler");
-    }
-    const std::string inertia = w.string("inertia", inertiaMethodName(scene.settings.inertia));
-    if (!parseInertiaMethod(inertia, scene.settings.inertia)) w.fail("inertia", "expected \"cube\" or \"exact\"");
-    scene.duration = w.positiveNumber("duration", scene.duration);
-    if (scene.duration / scene.settings.timeStep > kMaxSteps) {
-      std::ostringstream expected;
-      expected << "a duration of " << scene.duration << " s at dt = " << scene.settings.timeStep << " s is "
-               << scene.duration / scene.settings.timeStep << " steps; expected at most " << kMaxSteps;
-      w.fail("duration", expected.str());
-    }
-    if (w.has("steps")) scene.duration = w.positiveInt("steps", 1) * scene.settings.timeStep;
-    if (scene.stepCount() == 0) {
-      std::ostringstream expected;
-      expected << "a duration of " << scene.duration << " s is less than half a time step (dt = "
-               << scene.settings.timeStep << " s): it would run no step; expected at least " << scene.settings.timeStep
-               << " s";
-      w.fail("duration", expected.str());
-    }
-  }
+  if (root.has("world")) parseWorldBlock(root.object("world", kWorldKeys), scene);
   const std::vector<JsonObject> bodies = root.objectArray("bodies", scene_detail::kBodyKeys);
   for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene);
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);

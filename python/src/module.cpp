@@ -1,0 +1,145 @@
+// The Python module `rbsim` (issue 23): pybind11 over the engine's public API and the scene
+// format. Errors become Python exceptions carrying the command line's messages: InputError (a
+// ValueError, with .file, .field and .problem), SimulationError and RenderError (RuntimeErrors);
+// the engine's std::invalid_argument is pybind11's ValueError.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "py_world.h"
+#include "rbsim/integrate/simulation_error.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene.h"
+#include "render/render_error.h"
+
+namespace py = pybind11;
+
+namespace rbsim::python {
+void bindRendering(py::module_& m);  // py_render.cpp
+}  // namespace rbsim::python
+
+namespace {
+
+using rbsim::BodyId;
+using rbsim::python::PyWorld;
+
+// The exception types live as long as the module (they are its attributes); plain handles avoid
+// destructors running after the interpreter has gone.
+PyObject* inputErrorType = nullptr;
+PyObject* simulationErrorType = nullptr;
+PyObject* renderErrorType = nullptr;
+
+void translate(std::exception_ptr error) {
+  try {
+    if (error) std::rethrow_exception(error);
+  } catch (const rbsim::InputError& e) {
+    py::object exception = py::reinterpret_borrow<py::object>(inputErrorType)(e.what());
+    exception.attr("file") = e.file();
+    exception.attr("field") = e.field();
+    exception.attr("problem") = e.problem();
+    PyErr_SetObject(inputErrorType, exception.ptr());
+  } catch (const rbsim::SimulationError& e) {
+    PyErr_SetString(simulationErrorType, e.what());
+  } catch (const rbsim::render::RenderError& e) {
+    PyErr_SetString(renderErrorType, e.what());
+  }
+}
+
+std::string idRepr(const BodyId& id) {
+  return "BodyId(slot=" + std::to_string(id.slot) + ", generation=" + std::to_string(id.generation) + ")";
+}
+
+py::dict settingsDict(const rbsim::Settings& s) {
+  py::dict d;
+  d["gravity"] = py::make_tuple(s.gravity.x(), s.gravity.y(), s.gravity.z());
+  d["dt"] = s.timeStep;
+  d["integrator"] = rbsim::integratorName(s.integrator);
+  d["inertia"] = rbsim::inertiaMethodName(s.inertia);
+  d["solver"] = s.solver == rbsim::Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
+  d["broad_phase"] = s.broadPhase == rbsim::Settings::BroadPhaseMethod::BruteForce ? "brute-force" : "sap";
+  d["sleep"] = s.allowSleep;
+  d["collisions"] = s.detectCollisions;
+  d["response"] = s.respondToContacts;
+  d["ccd"] = s.continuousCollision;
+  d["substeps"] = s.substeps;
+  d["velocity_iterations"] = s.velocityIterations;
+  d["position_iterations"] = s.positionIterations;
+  d["restitution_threshold"] = s.restitutionThreshold;
+  d["contact_hertz"] = s.contactHertz;
+  d["contact_damping_ratio"] = s.contactDampingRatio;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(rbsim, m) {
+  m.doc() = "rbsim: rigid bodies for physically based animation coursework (see README, \"Python\")";
+
+  inputErrorType = PyErr_NewException("rbsim.InputError", PyExc_ValueError, nullptr);
+  simulationErrorType = PyErr_NewException("rbsim.SimulationError", PyExc_RuntimeError, nullptr);
+  renderErrorType = PyErr_NewException("rbsim.RenderError", PyExc_RuntimeError, nullptr);
+  m.attr("InputError") = py::handle(inputErrorType);
+  m.attr("SimulationError") = py::handle(simulationErrorType);
+  m.attr("RenderError") = py::handle(renderErrorType);
+  py::register_exception_translator(translate);
+
+  m.def("integrators", &rbsim::integratorNames, "the names world.integrator accepts");
+  m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs"}; }, "the names world.solver accepts");
+
+  py::class_<BodyId>(m, "BodyId", "A body's handle: stays valid while the body exists (Box2D's b2BodyId)")
+      .def_readonly("slot", &BodyId::slot)
+      .def_readonly("generation", &BodyId::generation)
+      .def("__eq__", [](const BodyId& a, const BodyId& b) { return a == b; })
+      .def("__hash__", [](const BodyId& id) { return (static_cast<std::uint64_t>(id.generation) << 32) | id.slot; })
+      .def("__repr__", &idRepr);
+
+  py::class_<rbsim::Scene>(m, "Scene", "A scene file, parsed (rbsim.load_scene)")
+      .def_readonly("file", &rbsim::Scene::file)
+      .def_readonly("title", &rbsim::Scene::title)
+      .def_readonly("duration", &rbsim::Scene::duration, "[s]")
+      .def_property_readonly("steps", &rbsim::Scene::stepCount, "steps covering the duration")
+      .def_property_readonly("settings", [](const rbsim::Scene& s) { return settingsDict(s.settings); })
+      .def("world", [](const rbsim::Scene& s) { return PyWorld(s); }, "a new World holding the scene");
+
+  m.def(
+      "load_scene",
+      [](const std::string& path, const std::vector<std::string>& overrides) { return rbsim::loadScene(path, overrides); },
+      py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
+      "load_scene(path, overrides=[\"world.dt=0.01\", ...]): a scene file with --set overrides");
+
+  py::class_<PyWorld> world(m, "World",
+                            "World(**world): the keys of a scene's \"world\" block, e.g. World(dt=1/60, "
+                            "integrator=\"rk4\", solver=\"pgs\")");
+  world.def(py::init([](const py::kwargs& kwargs) { return PyWorld::fromKeywords(kwargs); }))
+      .def("add_body", &PyWorld::addBody,
+           "add_body(**body) -> BodyId: the keys of an entry of a scene's \"bodies\", e.g. "
+           "shape={\"type\": \"sphere\", \"radius\": 0.25}, mass=1, position=(0, 2, 0)")
+      .def("remove_body", &PyWorld::removeBody, py::arg("body"),
+           "the last body takes the removed one's index; ids stay valid")
+      .def("add_plane", &PyWorld::addPlane, "add_plane(normal=(0, 1, 0), point=(0, 0, 0), restitution=..., ...) -> index")
+      .def("add_force", &PyWorld::addForce, py::arg("body"),
+           "add_force(body, force=(fx, fy, fz), point=(0, 0, 0), force_frame=\"world\", point_frame=\"body\", "
+           "start=0, end=inf)")
+      .def("set_pose", &PyWorld::setPose, py::arg("body"), py::arg("position") = py::none(),
+           py::arg("orientation") = py::none(), py::arg("velocity") = py::none(),
+           py::arg("angular_velocity") = py::none())
+      .def("step", &PyWorld::step, py::arg("steps") = 1, "advance by steps x dt")
+      .def("is_valid", [](const PyWorld& w, BodyId id) { return w.world().isValid(id); })
+      .def("index_of", &PyWorld::index, py::arg("body"), "the body's row in the state arrays now")
+      .def("id_at", [](const PyWorld& w, std::size_t i) { return w.world().idAt(i); }, py::arg("index"))
+      .def("__len__", [](const PyWorld& w) { return w.world().bodies().size(); })
+      .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); }, "[s]")
+      .def_property_readonly("step_count", [](const PyWorld& w) { return w.world().stepCount(); })
+      .def_property_readonly("dt", [](const PyWorld& w) { return w.world().settings().timeStep; }, "[s]")
+      .def_property_readonly("settings", [](const PyWorld& w) { return settingsDict(w.world().settings()); })
+      .def_property_readonly("names", [](const PyWorld& w) {
+        std::vector<std::string> names;
+        for (const rbsim::RigidBody& b : w.world().bodies()) names.push_back(b.name());
+        return names;
+      })
+      .def_property_readonly("contact_count", [](const PyWorld& w) { return w.world().contactPoints().size(); },
+                             "contact points of the last step")
+      .def("state_hash", [](const PyWorld& w) { return w.world().stateHash(); },
+           "FNV-1a of every state's bits: equal hashes, identical runs");
+  rbsim::python::bindStateArrays(world);
+  rbsim::python::bindRendering(m);
+}

@@ -1,0 +1,137 @@
+// rbsim.Renderer and rbsim.VideoWriter: the program's off-screen renderer (app/render) and its
+// ffmpeg writer, so a notebook can show a frame of the current state or write a clip.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstring>
+#include <memory>
+
+#include "py_world.h"
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene_parts.h"
+#include "render/offscreen_renderer.h"
+#include "render/render_error.h"
+#include "render/video_encoder.h"
+#include "run/frame_builder.h"
+#include "to_json.h"
+
+namespace py = pybind11;
+
+namespace rbsim::python {
+
+namespace {
+
+constexpr const char* kRendererCall = "Renderer()";
+constexpr const char* kRenderCall = "Renderer.render()";
+constexpr const char* kVideoCall = "VideoWriter()";
+// The renderer's and H.264's limits, as the scene format's view.size has them.
+constexpr int kMinPixels = 16;
+constexpr int kMaxPixels = 8192;
+// Frames waiting for ffmpeg: 8 frames of 1280 x 720 RGBA are 29 MB.
+constexpr std::size_t kVideoQueueFrames = 8;
+
+void checkSize(const char* call, int width, int height) {
+  for (const auto& [name, value] : {std::pair{"width", width}, std::pair{"height", height}}) {
+    if (value < kMinPixels || value > kMaxPixels) {
+      throw InputError(call, name, "expected a size in [" + std::to_string(kMinPixels) + ", " + std::to_string(kMaxPixels) +
+                                       "] pixels, got " + std::to_string(value));
+    }
+    if (value % 2 != 0) throw InputError(call, name, "H.264 in yuv420p needs even width and height, got " + std::to_string(value));
+  }
+}
+
+class PyRenderer {
+ public:
+  PyRenderer(int width, int height, int samples, const std::string& gl) {
+    checkSize(kRendererCall, width, height);
+    if (samples < 1 || samples > 16) throw InputError(kRendererCall, "samples", "expected 1 to 16 samples per pixel");
+    render::GlBackend backend = render::defaultGlBackend();
+    if (!gl.empty()) {
+      const std::optional<render::GlBackend> parsed = render::parseGlBackend(gl);
+      if (!parsed) throw InputError(kRendererCall, "gl", "unknown backend \"" + gl + "\"; expected " + render::glBackendChoices());
+      backend = *parsed;
+    }
+    renderer_ = std::make_unique<render::OffscreenRenderer>(width, height, render::defaultShaderDir(), samples, backend);
+  }
+
+  // The world as the program draws it, under the world's view (a scene's "view" block, or the
+  // default camera) with `view`'s keys over it: a new (height, width, 4) uint8 array, top row first.
+  py::array_t<std::uint8_t> render(const PyWorld& world, const py::object& selected, const py::kwargs& view) {
+    Scene scene = world.scene();
+    parseViewBlock(toJson(view, kRenderCall, ""), kRenderCall, "", scene.view);
+    if (!selected.is_none()) scene.view.selected = world.index(selected.cast<BodyId>());
+    const render::FrameData frame = app::buildFrame(world.world(), scene, "");
+    const std::vector<std::uint8_t>& rgba = renderer_->render(frame);
+    py::array_t<std::uint8_t> out({py::ssize_t{renderer_->height()}, py::ssize_t{renderer_->width()}, py::ssize_t{4}});
+    std::memcpy(out.mutable_data(), rgba.data(), rgba.size());
+    return out;
+  }
+
+  int width() const { return renderer_->width(); }
+  int height() const { return renderer_->height(); }
+
+ private:
+  std::unique_ptr<render::OffscreenRenderer> renderer_;
+};
+
+class PyVideoWriter {
+ public:
+  PyVideoWriter(const std::string& path, int width, int height, int fps) : width_(width), height_(height) {
+    checkSize(kVideoCall, width, height);
+    if (fps < 1 || fps > 240) throw InputError(kVideoCall, "fps", "expected 1 to 240 frames per second");
+    encoder_ = std::make_unique<render::VideoEncoder>(path, width, height, fps, kVideoQueueFrames);
+  }
+
+  // An (height, width, 4) uint8 array, as Renderer.render gives.
+  void write(const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& frame) {
+    if (!encoder_) throw render::RenderError("VideoWriter.write(): the video is closed");
+    if (frame.ndim() != 3 || frame.shape(0) != height_ || frame.shape(1) != width_ || frame.shape(2) != 4) {
+      throw InputError("VideoWriter.write()", "frame",
+                       "expected a (" + std::to_string(height_) + ", " + std::to_string(width_) + ", 4) uint8 array");
+    }
+    auto pixels = std::make_shared<std::vector<std::uint8_t>>(frame.data(), frame.data() + frame.size());
+    encoder_->submit({frames_++, std::move(pixels)});
+    if (const std::string error = encoder_->error(); !error.empty()) throw render::RenderError(error);
+  }
+
+  // Waits for ffmpeg to finish the file; RenderError with its output when it failed.
+  void close() {
+    if (!encoder_) return;
+    std::unique_ptr<render::VideoEncoder> encoder = std::move(encoder_);
+    encoder->finish();
+  }
+
+  long frames() const { return frames_; }
+
+ private:
+  int width_;
+  int height_;
+  long frames_ = 0;
+  std::unique_ptr<render::VideoEncoder> encoder_;
+};
+
+}  // namespace
+
+void bindRendering(py::module_& m) {
+  py::class_<PyRenderer>(m, "Renderer", "The off-screen OpenGL renderer of `rbsim run` (OSMesa or EGL, llvmpipe).")
+      .def(py::init<int, int, int, const std::string&>(), py::arg("width") = 640, py::arg("height") = 360,
+           py::arg("samples") = 1, py::arg("gl") = "")
+      .def("render", &PyRenderer::render, py::arg("world"), py::arg("selected") = py::none(),
+           "render(world, selected=None, **view) -> (height, width, 4) uint8 RGBA. view: the keys of a scene's "
+           "\"view\" block (camera={eye, target, up, fov_deg}, overlay, wireframe, axes, grid, caption); "
+           "selected: the BodyId the overlay shows")
+      .def_property_readonly("width", &PyRenderer::width)
+      .def_property_readonly("height", &PyRenderer::height);
+
+  py::class_<PyVideoWriter>(m, "VideoWriter", "An H.264 MP4 written by ffmpeg, as `rbsim run --video` writes.")
+      .def(py::init<const std::string&, int, int, int>(), py::arg("path"), py::arg("width"), py::arg("height"),
+           py::arg("fps") = 30)
+      .def("write", &PyVideoWriter::write, py::arg("frame"))
+      .def("close", &PyVideoWriter::close)
+      .def_property_readonly("frames", &PyVideoWriter::frames)
+      .def("__enter__", [](PyVideoWriter& w) -> PyVideoWriter& { return w; })
+      .def("__exit__", [](PyVideoWriter& w, const py::args&) { w.close(); });
+}
+
+}  // namespace rbsim::python

@@ -1,0 +1,130 @@
+#include "py_world.h"
+
+#include <cmath>
+
+#include <pybind11/stl.h>
+
+#include "rbsim/io/input_error.h"
+#include "rbsim/scene/scene_parts.h"
+#include "to_json.h"
+
+namespace py = pybind11;
+
+namespace rbsim::python {
+
+namespace {
+
+// Keyword arguments are named after the call they came with, in the place of a scene file.
+constexpr const char* kWorldCall = "World()";
+constexpr const char* kBodyCall = "World.add_body()";
+constexpr const char* kPlaneCall = "World.add_plane()";
+constexpr const char* kForceCall = "World.add_force()";
+constexpr const char* kPoseCall = "World.set_pose()";
+
+// `count` finite numbers from a sequence or array, or InputError naming the keyword.
+Eigen::VectorXd finiteNumbers(const py::object& value, std::size_t count, const char* field) {
+  const nlohmann::json j = toJson(value, kPoseCall, field);
+  const std::string expected = "expected " + std::to_string(count) + " finite numbers";
+  if (!j.is_array() || j.size() != count) throw InputError(kPoseCall, field, expected);
+  Eigen::VectorXd out(static_cast<Eigen::Index>(count));
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!j[i].is_number() || !std::isfinite(j[i].get<double>())) throw InputError(kPoseCall, field, expected);
+    out[static_cast<Eigen::Index>(i)] = j[i].get<double>();
+  }
+  return out;
+}
+
+}  // namespace
+
+PyWorld PyWorld::fromKeywords(const py::kwargs& world) {
+  Scene scene;
+  scene.file = kWorldCall;
+  scene.title = "rbsim (Python)";
+  parseWorldBlock(JsonObject(toJson(world, kWorldCall, ""), kWorldCall, "", kWorldKeys), scene);
+  return PyWorld(std::move(scene));
+}
+
+PyWorld::PyWorld(Scene scene) : scene_(std::move(scene)), world_(buildWorld(scene_)) {}
+
+std::size_t PyWorld::index(BodyId id) const {
+  if (!world_.isValid(id)) {
+    throw InputError("", "body", "no body has this id (slot " + std::to_string(id.slot) + ", generation " +
+                                     std::to_string(id.generation) + "): it was removed, or is of another World");
+  }
+  return world_.indexOf(id);
+}
+
+BodyId PyWorld::addBody(const py::kwargs& body) {
+  const std::size_t index = world_.bodies().size();
+  const BodyBlock block = parseBodyBlock(toJson(body, kBodyCall, ""), kBodyCall, "", "", world_.settings(), index);
+  for (const RigidBody& other : world_.bodies()) {
+    if (other.name() == block.def.name) throw InputError(kBodyCall, "name", "duplicate body name \"" + block.def.name + "\"");
+  }
+  const BodyId id = world_.addBody(block.def);
+  scene_.inertiaMethods.push_back(block.inertiaMethod);
+  for (const ScriptedForce& f : block.forces) world_.addForce(f);
+  for (const PoseEvent& e : block.poseEvents) world_.addPoseEvent(e);
+  for (const Spring& s : block.springs) world_.addSpring(s);
+  return id;
+}
+
+void PyWorld::removeBody(BodyId id) {
+  const std::size_t i = index(id);
+  world_.destroyBody(id);
+  // The World moved its last body into the hole (world.h); the names of inertia methods follow.
+  scene_.inertiaMethods[i] = scene_.inertiaMethods.back();
+  scene_.inertiaMethods.pop_back();
+}
+
+std::size_t PyWorld::addPlane(const py::kwargs& plane) {
+  const auto [p, material] = parsePlaneBlock(toJson(plane, kPlaneCall, ""), kPlaneCall, "");
+  world_.addPlane(p, material);
+  return world_.planes().size() - 1;
+}
+
+void PyWorld::addForce(BodyId id, const py::kwargs& force) {
+  const std::size_t i = index(id);
+  const RigidBody& body = world_.bodies()[i];
+  if (!body.isDynamic()) {
+    throw InputError(kForceCall, "body", "\"" + body.name() + "\" is " + (body.isStatic() ? "static" : "kinematic") +
+                                             ": forces act on dynamic bodies only");
+  }
+  world_.addForce(parseForceBlock(toJson(force, kForceCall, ""), kForceCall, "", i, body.fileFrame().axes));
+}
+
+void PyWorld::setPose(BodyId id, const py::object& position, const py::object& orientation,
+                      const py::object& velocity, const py::object& angularVelocity) {
+  RigidBody& body = world_.body(index(id));
+  if (!body.isDynamic() && !body.isKinematic() && (!velocity.is_none() || !angularVelocity.is_none())) {
+    throw InputError(kPoseCall, "velocity", "a static body cannot move");
+  }
+  // Every value is checked before any is set, so a refused call changes nothing.
+  std::optional<Vec3> x, v, w;
+  std::optional<Quat> q;
+  if (!position.is_none()) x = Vec3(finiteNumbers(position, 3, "position"));
+  if (!orientation.is_none()) {
+    const Eigen::VectorXd c = finiteNumbers(orientation, 4, "orientation");
+    q = Quat(c[0], c[1], c[2], c[3]);
+    if (std::abs(q->norm() - 1.0) > kRotationTolerance) {
+      throw InputError(kPoseCall, "orientation", "expected a unit quaternion (w, x, y, z); its norm is " +
+                                                     formatNumber(q->norm()));
+    }
+  }
+  if (!velocity.is_none()) v = Vec3(finiteNumbers(velocity, 3, "velocity"));
+  if (!angularVelocity.is_none()) w = Vec3(finiteNumbers(angularVelocity, 3, "angular_velocity"));
+  if (x) body.setPosition(*x);
+  if (q) body.setOrientation(*q);
+  if (v) body.setVelocity(*v);
+  if (w) body.setAngularVelocity(*w);
+}
+
+void PyWorld::step(long long steps) {
+  if (steps < 0) throw InputError("", "steps", "expected a number of steps >= 0, got " + std::to_string(steps));
+  for (long long i = 0; i < steps; ++i) {
+    world_.step();
+    // Ctrl-C in a notebook stops a long run between two steps (the World stays consistent).
+    if ((i & 255) == 255 && PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+}
+
+}  // namespace rbsim::python

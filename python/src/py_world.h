@@ -1,0 +1,46 @@
+#pragma once
+// rbsim.World: a World with the Scene it came from (the view, the looks and the per-body inertia
+// names a renderer reads), built from a scene file or from keyword arguments that are blocks of
+// the scene format (engine/scene/scene_parts.h), so Python meets the same keys and messages as
+// the command line.
+#include <optional>
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
+
+namespace rbsim::python {
+
+class PyWorld {
+ public:
+  // World(**world_block): the keys of a scene's "world" block (dt, integrator, gravity, ...).
+  static PyWorld fromKeywords(const pybind11::kwargs& world);
+  explicit PyWorld(Scene scene);
+
+  BodyId addBody(const pybind11::kwargs& body);  // the keys of one entry of "bodies"
+  void removeBody(BodyId id);
+  std::size_t addPlane(const pybind11::kwargs& plane);  // the keys of one entry of "planes"
+  void addForce(BodyId id, const pybind11::kwargs& force);  // the keys of one entry of "forces"
+  // Sets any of x, q (w, x, y, z: the state's own, as World.q reads), v and omega now, as seed
+  // 004's manual change does: derived quantities follow and the body wakes.
+  void setPose(BodyId id, const pybind11::object& position, const pybind11::object& orientation,
+               const pybind11::object& velocity, const pybind11::object& angularVelocity);
+  void step(long long steps);  // steps >= 0
+
+  World& world() { return world_; }
+  const World& world() const { return world_; }
+  const Scene& scene() const { return scene_; }
+  std::size_t index(BodyId id) const;  // throws InputError (field "body") on a stale id
+
+ private:
+  Scene scene_;  // settings, view, looks; inertiaMethods kept per body in the World's order
+  World world_;
+};
+
+// Every body's state as NumPy arrays, one row per body in World order (python/src/state_arrays.cpp).
+void bindStateArrays(pybind11::class_<PyWorld>& world);
+
+}  // namespace rbsim::python
