@@ -10,6 +10,7 @@
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
 #include "render/render_error.h"
+#include "run/phase.h"
 
 namespace py = pybind11;
 
@@ -100,11 +101,32 @@ PYBIND11_MODULE(rbsim, m) {
       .def_property_readonly("settings", [](const rbsim::Scene& s) { return settingsDict(s.settings); })
       .def("world", [](const rbsim::Scene& s) { return PyWorld(s); }, "a new World holding the scene");
 
+  // Through the program's phase loader (app/run/phase.h), so a scene file means what it means to
+  // `rbsim run`, "compare" block and its messages included.
   m.def(
       "load_scene",
-      [](const std::string& path, const std::vector<std::string>& overrides) { return rbsim::loadScene(path, overrides); },
+      [](const std::string& path, const std::vector<std::string>& overrides) {
+        rbsim::app::Phase phase = rbsim::app::loadPhase(path, overrides);
+        if (phase.compared()) {
+          throw rbsim::InputError(path, "compare", "the scene compares " + phase.compareKey + " over " +
+                                                       std::to_string(phase.worlds.size()) +
+                                                       " worlds; rbsim.load_comparison gives one scene per value");
+        }
+        return std::move(phase.worlds.front().scene);
+      },
       py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
-      "load_scene(path, overrides=[\"world.dt=0.01\", ...]): a scene file with --set overrides");
+      "load_scene(path, overrides=[\"world.dt=0.01\", ...]) -> Scene: a scene file with --set overrides");
+  m.def(
+      "load_comparison",
+      [](const std::string& path, const std::vector<std::string>& overrides) {
+        rbsim::app::Phase phase = rbsim::app::loadPhase(path, overrides);
+        std::vector<std::pair<std::string, rbsim::Scene>> scenes;
+        for (rbsim::app::PhaseWorld& w : phase.worlds) scenes.emplace_back(w.label, std::move(w.scene));
+        return scenes;
+      },
+      py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
+      "load_comparison(path, overrides=[]) -> [(label, Scene)]: one scene per value of the file's \"compare\" "
+      "block (one, unlabelled, without it)");
 
   py::class_<PyWorld> world(m, "World",
                             "World(**world): the keys of a scene's \"world\" block, e.g. World(dt=1/60, "

@@ -1,0 +1,156 @@
+"""Bad input raises, with the field named and the command line's own words."""
+import json
+import math
+
+import numpy as np
+import pytest
+import rbsim
+
+from conftest import SOURCE, run_cli
+
+BAD = SOURCE / "tests" / "data" / "bad"
+
+
+def scene_cases():
+    """The bad-input corpus's cases that are a scene file and --set overrides (others are flags
+    of the program: --png-level, --window, ...)."""
+    with open(BAD / "cases.json") as f:
+        cases = json.load(f)["cases"]
+    for case in cases:
+        args = [a.replace("{dir}", str(BAD)) for a in case["args"]]
+        if args[0] != "run" or case.get("env") or "{tmp}" in " ".join(args):
+            continue
+        rest, overrides = args[2:], []
+        while rest and rest[0] in ("--set", "--no-render"):
+            if rest[0] == "--set":
+                overrides.append(rest[1])
+            rest = rest[2:] if rest[0] == "--set" else rest[1:]
+        if not rest:
+            yield pytest.param(args, args[1], overrides, id=case["name"])
+
+
+@pytest.mark.parametrize("args,scene,overrides", list(scene_cases()))
+def test_corpus_case_fails_in_python_as_on_the_command_line(rbsim_binary, args, scene, overrides):
+    code, stderr = run_cli(rbsim_binary, *args, "--no-render", "--quiet")
+    try:
+        # load_comparison reads a plain scene as one world, and a "compare" block as the program does
+        for _, scene_of_value in rbsim.load_comparison(scene, overrides):
+            scene_of_value.world().step(scene_of_value.steps)
+    except (rbsim.InputError, rbsim.SimulationError) as e:
+        assert code != 0, f"Python refused what the program ran: {e}"
+        assert str(e) in stderr, f"Python: {e}\nprogram: {stderr}"
+        return
+    assert code == 0, f"the program refused what Python ran: {stderr}"
+
+
+def test_the_corpus_gives_cases():
+    assert len(list(scene_cases())) > 100
+
+
+@pytest.mark.parametrize("keywords,field,words", [
+    ({"dt": 0}, "dt", "expected a positive time step"),
+    ({"dt": math.nan}, "dt", "finite"),
+    ({"integrator": "rk5"}, "integrator", 'did you mean "rk4"'),
+    ({"solver": "fast"}, "solver", 'expected "soft-step" or "pgs"'),
+    ({"gravty": [0, 0, 0]}, "gravty", 'did you mean "gravity"'),
+    ({"substeps": 2.5}, "substeps", "expected an integer"),
+    ({"gravity": [0, -9.81]}, "gravity", "3"),
+])
+def test_bad_world_keywords(keywords, field, words):
+    with pytest.raises(rbsim.InputError) as e:
+        rbsim.World(**keywords)
+    assert e.value.file == "World()" and e.value.field == field and words in e.value.problem
+    assert isinstance(e.value, ValueError)
+
+
+@pytest.mark.parametrize("keywords,field", [
+    ({"shape": {"type": "sphere", "radius": -1}, "mass": 1}, "shape.radius"),
+    ({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "position": [0, math.nan, 0]}, "position"),
+    ({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "velocity": [3e8, 0, 0]}, "velocity"),
+    ({"shape": {"type": "box", "extents": [1, 1, 1]}, "mass": 0}, "mass"),
+    ({"shape": {"type": "cone"}, "mass": 1}, "shape.type"),
+    ({"shape": {"type": "box", "extents": [1, 1, 1]}, "mass": 1, "static": True, "kinematic": True}, "kinematic"),
+    ({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "forces": [{"force": [1, 0, 0], "end": -1}]},
+     "forces[0].end"),
+    ({"shape": {"type": "sphere", "radius": 1}, "mass": 1, "colour": [1, 0, 0]}, "colour"),
+    ({"shape": {"type": "sphere", "radius": 1}, "mass": np.float64("inf")}, "mass"),
+    ({"shape": {"type": "mesh", "file": "/no/such.obj"}, "mass": 1}, "shape.file"),
+])
+def test_bad_body_keywords_name_the_field(keywords, field):
+    world = rbsim.World()
+    with pytest.raises(rbsim.InputError) as e:
+        world.add_body(**keywords)
+    assert e.value.field == field or e.value.file == "/no/such.obj", str(e.value)
+    assert len(world) == 0  # nothing half-added
+
+
+def test_python_values_the_scene_format_has_no_word_for():
+    world = rbsim.World()
+    with pytest.raises(rbsim.InputError) as e:
+        world.add_body(shape={"type": "sphere", "radius": 1}, mass=1, position=object())
+    assert e.value.field == "position" and "got a object" in e.value.problem
+    deep = []
+    for _ in range(100):
+        deep = [deep]
+    with pytest.raises(rbsim.InputError) as e:
+        world.add_body(shape={"type": "sphere", "radius": 1}, mass=1, position=deep)
+    assert "nested deeper" in e.value.problem
+
+
+def test_duplicate_name_and_stale_id():
+    world = rbsim.World()
+    body = world.add_body(name="ball", shape={"type": "sphere", "radius": 1}, mass=1)
+    with pytest.raises(rbsim.InputError) as e:
+        world.add_body(name="ball", shape={"type": "sphere", "radius": 1}, mass=1)
+    assert e.value.field == "name" and "duplicate" in e.value.problem
+    world.remove_body(body)
+    for call in (lambda: world.remove_body(body), lambda: world.add_force(body, force=[1, 0, 0]),
+                 lambda: world.set_pose(body, position=[0, 0, 0]), lambda: world.vertices(body)):
+        with pytest.raises(rbsim.InputError) as e:
+            call()
+        assert e.value.field == "body"
+
+
+def test_bad_plane_force_pose_and_steps():
+    world = rbsim.World()
+    with pytest.raises(rbsim.InputError) as e:
+        world.add_plane(normal=[0, 0, 0])
+    assert e.value.field == "normal"
+    wall = world.add_body(shape={"type": "box", "extents": [1, 1, 1]}, mass=1, static=True)
+    with pytest.raises(rbsim.InputError) as e:
+        world.add_force(wall, force=[1, 0, 0])
+    assert e.value.field == "body" and "static" in e.value.problem
+    with pytest.raises(rbsim.InputError) as e:
+        world.set_pose(wall, velocity=[1, 0, 0])
+    assert e.value.field == "velocity"
+    with pytest.raises(rbsim.InputError) as e:
+        world.step(-1)
+    assert e.value.field == "steps"
+
+
+def test_scene_errors_carry_the_command_lines_message(rbsim_binary, tmp_path):
+    scene = tmp_path / "scene.json"
+    scene.write_text('{"bodies": [{"shape": {"type": "sphere", "radius": 0.5}, "mass": 1}]}')
+    for overrides, field in ((["world.dt=-1"], "world.dt"), (["bodies[0].mass=-2"], "bodies[0].mass"),
+                             (["world.integrator=\"rk5\""], "world.integrator"), (["no_equals"], "--set no_equals")):
+        with pytest.raises(rbsim.InputError) as e:
+            rbsim.load_scene(str(scene), overrides)
+        assert e.value.field == field and e.value.file == str(scene)
+        args = ["run", str(scene), "--no-render"] + [a for o in overrides for a in ("--set", o)]
+        code, stderr = run_cli(rbsim_binary, *args)
+        assert code == 2 and str(e.value) in stderr
+    with pytest.raises(rbsim.InputError) as e:
+        rbsim.load_scene(str(tmp_path / "missing.json"))
+    assert "missing.json" in str(e.value)
+
+
+def test_diverging_integrator_raises_simulation_error():
+    # Explicit Euler on a stiff spring at dt = 0.01 s: omega dt = 10, far past its stability
+    # limit, so the amplitude grows tenfold a step until the state is no longer finite.
+    world = rbsim.World(dt=0.01, integrator="euler-quat", gravity=[0, 0, 0], collisions=False)
+    world.add_body(shape={"type": "sphere", "radius": 0.1}, mass=1, position=[1, 0, 0],
+                   springs=[{"anchor": [0, 0, 0], "stiffness": 1e6}])
+    with pytest.raises(rbsim.SimulationError) as e:
+        world.step(100000)
+    assert isinstance(e.value, RuntimeError) and "body0" in str(e.value)
+    assert world.step_count < 1000
