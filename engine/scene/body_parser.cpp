@@ -119,6 +119,8 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
 void parseCollisionShape(const JsonObject& b, BodyDef& def) {
   const Mesh& mesh = *def.mesh;
   if (!b.has("sdf")) {
+    // Spheres, capsules and boxes are convex by construction: no grid, and no mesh to check.
+    if (def.shape && (def.shape->isRound() || def.shape->type == ShapeType::Box)) return;
     // An open mesh (accepted with the cube inertia) has no inside to grid: it stays convex.
     const MeshCheck check = checkMesh(mesh);
     const bool solid = check.closed && check.consistentlyOriented && check.degenerateTriangles == 0;

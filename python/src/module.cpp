@@ -144,6 +144,9 @@ PYBIND11_MODULE(rbsim, m) {
       .def("set_pose", &PyWorld::setPose, py::arg("body"), py::arg("position") = py::none(),
            py::arg("orientation") = py::none(), py::arg("velocity") = py::none(),
            py::arg("angular_velocity") = py::none())
+      .def("exact_rotation", &PyWorld::exactRotation, py::arg("body"), py::arg("times"),
+           "(k, 4) the body's orientation (w, x, y, z) t seconds from now, for each t, by the closed-form "
+           "torque-free motion (Jacobi elliptic functions): the reference for integrator errors")
       .def("step", &PyWorld::step, py::arg("steps") = 1, "advance by steps x dt")
       .def("is_valid", [](const PyWorld& w, BodyId id) { return w.world().isValid(id); })
       .def("index_of", &PyWorld::index, py::arg("body"), "the body's row in the state arrays now")

@@ -56,7 +56,8 @@ class PyRenderer {
   }
 
   // The world as the program draws it, under the world's view (a scene's "view" block, or the
-  // default camera) with `view`'s keys over it: a new (height, width, 4) uint8 array, top row first.
+  // default camera) with `view`'s keys over it: a new (height, width, 4) uint8 array, top row
+  // first, alpha 255.
   py::array_t<std::uint8_t> render(const PyWorld& world, const py::object& selected, const py::kwargs& view) {
     Scene scene = world.scene();
     parseViewBlock(toJson(view, kRenderCall, ""), kRenderCall, "", scene.view);
@@ -64,7 +65,11 @@ class PyRenderer {
     const render::FrameData frame = app::buildFrame(world.world(), scene, "");
     const std::vector<std::uint8_t>& rgba = renderer_->render(frame);
     py::array_t<std::uint8_t> out({py::ssize_t{renderer_->height()}, py::ssize_t{renderer_->width()}, py::ssize_t{4}});
-    std::memcpy(out.mutable_data(), rgba.data(), rgba.size());
+    std::uint8_t* pixels = out.mutable_data();
+    std::memcpy(pixels, rgba.data(), rgba.size());
+    // Opaque, as the PNG frames are (png_file.h): GL's alpha after blending is bookkeeping, and
+    // antialiased outlines left at 0.8 would show as holes in imshow.
+    for (std::size_t i = 3; i < rgba.size(); i += 4) pixels[i] = 255;
     return out;
   }
 

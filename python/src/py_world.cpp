@@ -4,6 +4,7 @@
 
 #include <pybind11/stl.h>
 
+#include "rbsim/integrate/free_rigid_body.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene_parts.h"
 #include "to_json.h"
@@ -44,7 +45,9 @@ PyWorld PyWorld::fromKeywords(const py::kwargs& world) {
   return PyWorld(std::move(scene));
 }
 
-PyWorld::PyWorld(Scene scene) : scene_(std::move(scene)), world_(buildWorld(scene_)) {}
+PyWorld::PyWorld(Scene scene) : scene_(std::move(scene)), world_(buildWorld(scene_)) {
+  for (const RigidBody& body : world_.bodies()) names_.insert(body.name());
+}
 
 std::size_t PyWorld::index(BodyId id) const {
   if (!world_.isValid(id)) {
@@ -57,10 +60,11 @@ std::size_t PyWorld::index(BodyId id) const {
 BodyId PyWorld::addBody(const py::kwargs& body) {
   const std::size_t index = world_.bodies().size();
   const BodyBlock block = parseBodyBlock(toJson(body, kBodyCall, ""), kBodyCall, "", "", world_.settings(), index);
-  for (const RigidBody& other : world_.bodies()) {
-    if (other.name() == block.def.name) throw InputError(kBodyCall, "name", "duplicate body name \"" + block.def.name + "\"");
+  if (names_.count(block.def.name) != 0) {
+    throw InputError(kBodyCall, "name", "duplicate body name \"" + block.def.name + "\"");
   }
   const BodyId id = world_.addBody(block.def);
+  names_.insert(block.def.name);
   scene_.inertiaMethods.push_back(block.inertiaMethod);
   for (const ScriptedForce& f : block.forces) world_.addForce(f);
   for (const PoseEvent& e : block.poseEvents) world_.addPoseEvent(e);
@@ -70,6 +74,7 @@ BodyId PyWorld::addBody(const py::kwargs& body) {
 
 void PyWorld::removeBody(BodyId id) {
   const std::size_t i = index(id);
+  names_.erase(world_.bodies()[i].name());
   world_.destroyBody(id);
   // The World moved its last body into the hole (world.h); the names of inertia methods follow.
   scene_.inertiaMethods[i] = scene_.inertiaMethods.back();
@@ -125,6 +130,25 @@ void PyWorld::step(long long steps) {
     // Ctrl-C in a notebook stops a long run between two steps (the World stays consistent).
     if ((i & 255) == 255 && PyErr_CheckSignals() != 0) throw py::error_already_set();
   }
+}
+
+py::array_t<double> PyWorld::exactRotation(BodyId id, const py::array_t<double, py::array::c_style | py::array::forcecast>& times) const {
+  const RigidBody& body = world_.bodies()[index(id)];
+  // The flow moves the principal frame (free_flight_error.cpp does the same for the overlay).
+  const Quat principalToBody(body.principalAxes());
+  const FreeRigidBodyFlow flow(body.orientation() * principalToBody, body.state().angularMomentum, body.principalMoments());
+  const double* t = times.data();
+  py::array_t<double> out({times.size(), py::ssize_t{4}});
+  double* row = out.mutable_data();
+  for (py::ssize_t i = 0; i < times.size(); ++i, row += 4) {
+    if (!std::isfinite(t[i])) throw InputError("World.exact_rotation()", "times", "expected finite times [s]");
+    const Quat q = flow.principalToWorld(t[i]) * principalToBody.conjugate();
+    row[0] = q.w();
+    row[1] = q.x();
+    row[2] = q.y();
+    row[3] = q.z();
+  }
+  return out;
 }
 
 }  // namespace rbsim::python

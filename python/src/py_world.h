@@ -5,6 +5,7 @@
 // the command line.
 #include <optional>
 #include <string>
+#include <unordered_set>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -29,6 +30,10 @@ class PyWorld {
   void setPose(BodyId id, const pybind11::object& position, const pybind11::object& orientation,
                const pybind11::object& velocity, const pybind11::object& angularVelocity);
   void step(long long steps);  // steps >= 0
+  // The body's orientation (w, x, y, z) t [s] from now for each t of `times`, by the closed-form
+  // torque-free motion (integrate/free_rigid_body.h) from its state now: the reference the
+  // integrators' errors are measured against.
+  pybind11::array_t<double> exactRotation(BodyId id, const pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>& times) const;
 
   World& world() { return world_; }
   const World& world() const { return world_; }
@@ -38,6 +43,7 @@ class PyWorld {
  private:
   Scene scene_;  // settings, view, looks; inertiaMethods kept per body in the World's order
   World world_;
+  std::unordered_set<std::string> names_;  // every body's, for add_body's duplicate check
 };
 
 // Every body's state as NumPy arrays, one row per body in World order (python/src/state_arrays.cpp).
