@@ -24,3 +24,12 @@ def test_example_runs_and_writes_its_png(example, tmp_path):
     image = mpimg.imread(png)
     assert image.shape[0] > 300 and image.shape[1] > 600
     assert image[..., :3].std() > 0.05  # a plot, not a blank page
+
+
+def test_readme_example_runs_and_prints_the_free_fall(tmp_path):
+    text = (SOURCE / "README.md").read_text()
+    code = text.split("```python\n", 1)[1].split("```", 1)[0]
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ["[0.5", "0.77375", "0.", "]"]
+    assert (tmp_path / "videos" / "ball.mp4").stat().st_size > 0
