@@ -190,11 +190,9 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
     if (!bodies[i].awake()) continue;
     Aabb box = boundsOf(bodies[i]);
     if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
-    if (settings_.solver == Settings::ContactSolverMethod::SoftStep) {
-      const double dt = settings_.timeStep;
-      reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
-                        dt * settings_.gravity.norm());
-    }
+    const double dt = settings_.timeStep;
+    reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
+                      dt * settings_.gravity.norm());
     boxes_[i] = box.inflated(settings_.contactMargin + reach_[i]);
     // A finite state can still have a box that is not (a vertex R p + x or a reach dt |v|
     // overflows): that is the body diverging, reported as such rather than as a broad-phase fault.
