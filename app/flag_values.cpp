@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include <nlohmann/json.hpp>
+
 #include "rbsim/io/input_error.h"
 
 namespace rbsim::app {
@@ -46,6 +48,45 @@ std::pair<std::uint64_t, std::uint64_t> parseImageSize(const std::string& flag, 
     throw InputError("", flag, expected + ": a side has more digits than 64 bits hold");
   }
   return {w, h};
+}
+
+std::string parseCompareFlag(const std::string& text) {
+  const std::string flag = "--compare " + text;
+  const std::size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw InputError("", flag, "expected KEY=V1,V2[,...], e.g. world.integrator=euler-quat,dlm");
+  }
+  std::vector<std::string> values(1);
+  int depth = 0;
+  bool quoted = false;
+  for (std::size_t i = equals + 1; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '\\' && i + 1 < text.size()) {
+        values.back() += c;
+        values.back() += text[++i];
+        continue;
+      }
+      if (c == '"') quoted = false;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == '[' || c == '{') {
+      ++depth;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    } else if (c == ',' && depth == 0) {
+      values.emplace_back();
+      continue;
+    }
+    values.back() += c;
+  }
+  nlohmann::json block = {{"key", text.substr(0, equals)}, {"values", nlohmann::json::array()}};
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (values[k].empty()) throw InputError("", flag, "value " + std::to_string(k + 1) + " is empty; expected KEY=V1,V2[,...]");
+    nlohmann::json value = nlohmann::json::parse(values[k], nullptr, /*allow_exceptions=*/false);
+    block["values"].push_back(value.is_discarded() ? nlohmann::json(values[k]) : value);
+  }
+  return block.dump();
 }
 
 }  // namespace rbsim::app

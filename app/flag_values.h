@@ -18,4 +18,11 @@ std::uint64_t parseFlagInteger(const std::string& flag, const std::string& text,
 // side does not fit 64 bits. The range of each side is the scene's (view.size) to check.
 std::pair<std::uint64_t, std::uint64_t> parseImageSize(const std::string& flag, const std::string& text);
 
+// Reads --compare's "KEY=V1,V2[,...]" into the scene's compare block, {"key": KEY, "values":
+// [V1, V2, ...]}, as JSON text for a --set of "compare". Each value is JSON when it parses as JSON
+// (so [1,2,3] and "a,b" stay one value: commas split only outside brackets and quotes), a string
+// otherwise, as --set reads values. Throws InputError naming the flag when there is no "=", no
+// key or an empty value; the block's own checks (2 to 8 distinct values) are the scene's.
+std::string parseCompareFlag(const std::string& text);
+
 }  // namespace rbsim::app

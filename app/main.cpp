@@ -49,6 +49,7 @@ struct Flags {
   std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
   std::string pngLevel, traceEvery, windowFrames;  // numbers, parsed by flag_values.h
   std::string gl;                                  // off-screen GL backend, render/gl_context.h
+  std::string compare;                             // KEY=V1,V2[,...]: a compare block
   // Scene key -> the flag that set it ("view.size" -> "--size 0x0"), so an error the scene reports
   // about the key can say which flag it came from.
   std::map<std::string, std::string> keyFlags;
@@ -77,6 +78,10 @@ struct Flags {
                    "explicit-euler|semi-implicit-euler: of particle systems naming none (world.particle_integrator)")
         ->check(nonEmpty);
     cmd.add_option("--set", sets, "override any scene key: path=value, e.g. bodies.box.mass=2")->check(nonEmpty);
+    cmd.add_option("--compare", compare,
+                   "KEY=V1,V2[,...]: run the scene once per value of any scene key, drawn side by side in one "
+                   "frame (a \"compare\" block), e.g. world.integrator=euler-quat,dlm")
+        ->check(nonEmpty);
     cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
     cmd.add_flag("--quiet", run.quiet, "print nothing on success");
@@ -129,6 +134,10 @@ struct Flags {
       add("view.size", "[" + std::to_string(width) + "," + std::to_string(height) + "]", "--size " + size);
     }
     if (noOverlay) add("view.overlay", "false", "--no-overlay");
+    if (!compare.empty()) {
+      add("compare", rbsim::app::parseCompareFlag(compare), "--compare " + compare);
+      for (const char* field : {"compare.key", "compare.values"}) keyFlags[field] = "--compare " + compare;
+    }
     for (const std::string& s : sets) {
       run.overrides.push_back(s);
       keyFlags.erase(s.substr(0, s.find('=')));  // a later --set of the key wins over the flag

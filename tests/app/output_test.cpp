@@ -27,6 +27,7 @@
 #include "render/png_file.h"
 #include "render/render_error.h"
 #include "run/output_budget.h"
+#include "run/phase.h"
 #include "run/runner.h"
 #include "run/trace_writer.h"
 
@@ -267,6 +268,30 @@ TEST(FlagInteger, SaysTheRangeInWordsAndNeverWraps) {
   EXPECT_EQ(parseImageSize("--size", "640x360"), std::make_pair(std::uint64_t{640}, std::uint64_t{360}));
   EXPECT_THROW(parseImageSize("--size", "99999999999999999999x2"), InputError);
   EXPECT_THROW(parseImageSize("--size", "-2x2"), InputError);
+}
+
+// --compare KEY=V1,V2 is the scene's compare block: values read as --set reads them (JSON if it
+// parses, else a string), split at commas outside brackets and quotes.
+TEST(Flags, CompareFlagIsACompareBlock) {
+  EXPECT_EQ(nlohmann::json::parse(parseCompareFlag("world.integrator=euler-quat,dlm")),
+            nlohmann::json::parse(R"({"key": "world.integrator", "values": ["euler-quat", "dlm"]})"));
+  EXPECT_EQ(nlohmann::json::parse(parseCompareFlag(R"(bodies.box.position=[0,1,0],[0,2,0],"a,b",3)")),
+            nlohmann::json::parse(R"({"key": "bodies.box.position", "values": [[0,1,0], [0,2,0], "a,b", 3]})"));
+  for (const char* bad : {"world.solver", "=pgs,soft-step", "world.solver=pgs,", "world.solver=,pgs"}) {
+    try {
+      parseCompareFlag(bad);
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), std::string("--compare ") + bad);
+    }
+  }
+  // The block the flag makes gives the worlds a file's block would.
+  const Phase phase = loadPhase(std::string(RBSIM_BAD_DATA_DIR) + "/valid.json",
+                                {"compare=" + parseCompareFlag("world.integrator=euler-quat,dlm")});
+  ASSERT_EQ(phase.worlds.size(), 2u);
+  EXPECT_EQ(phase.worlds[0].scene.settings.integrator, Integrator::EulerQuat);
+  EXPECT_EQ(phase.worlds[1].scene.settings.integrator, Integrator::Dlm);
+  EXPECT_EQ(phase.worlds[1].label, "world.integrator = dlm");
 }
 
 // The direct frame count against counting frame by frame, the definition.
