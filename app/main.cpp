@@ -8,6 +8,7 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "demos/demo.h"
 #include "flag_values.h"
@@ -50,6 +51,7 @@ struct Flags {
   std::string pngLevel, traceEvery, windowFrames;  // numbers, parsed by flag_values.h
   std::string gl;                                  // off-screen GL backend, render/gl_context.h
   std::string compare;                             // KEY=V1,V2[,...]: a compare block
+  std::string plot;                                // Q1,Q2,...: view.plots
   // Scene key -> the flag that set it ("view.size" -> "--size 0x0"), so an error the scene reports
   // about the key can say which flag it came from.
   std::map<std::string, std::string> keyFlags;
@@ -81,6 +83,10 @@ struct Flags {
     cmd.add_option("--compare", compare,
                    "KEY=V1,V2[,...]: run the scene once per value of any scene key, drawn side by side in one "
                    "frame (a \"compare\" block), e.g. world.integrator=euler-quat,dlm")
+        ->check(nonEmpty);
+    cmd.add_option("--plot", plot,
+                   "time plots in the frame (view.plots): a comma-separated list of ke, pe, E, |P|, |L|, "
+                   "contacts, error; of the whole scene, or of the selected body with --set view.plot_of=selected")
         ->check(nonEmpty);
     cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
@@ -134,6 +140,15 @@ struct Flags {
       add("view.size", "[" + std::to_string(width) + "," + std::to_string(height) + "]", "--size " + size);
     }
     if (noOverlay) add("view.overlay", "false", "--no-overlay");
+    if (!plot.empty()) {
+      nlohmann::json names = nlohmann::json::array();
+      std::size_t start = 0;
+      for (std::size_t comma; (comma = plot.find(',', start)) != std::string::npos; start = comma + 1) {
+        names.push_back(plot.substr(start, comma - start));
+      }
+      names.push_back(plot.substr(start));
+      add("view.plots", names.dump(), "--plot " + plot);
+    }
     if (!compare.empty()) {
       add("compare", rbsim::app::parseCompareFlag(compare), "--compare " + compare);
       for (const char* field : {"compare.key", "compare.values"}) keyFlags[field] = "--compare " + compare;

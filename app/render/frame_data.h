@@ -111,13 +111,25 @@ struct OverlayLabel {
   glm::vec2 pixel{0.0f};  // where the caption's top centre goes, in pixels from the top left
 };
 
+// A time plot in the overlay (view.plots): one line per series over the last seconds, t
+// increasing to the right. NaN values leave a gap (a quantity not defined at that time).
+struct OverlayPlot {
+  std::string title;  // e.g. "E, total energy"
+  std::string unit;   // e.g. "J"
+  std::vector<std::string> legend;  // per series; empty names for a single unnamed series
+  std::vector<std::vector<float>> times;   // per series [s]
+  std::vector<std::vector<float>> values;  // per series, in `unit`
+  float tMin = 0.0f, tMax = 1.0f;  // the time axis [s]
+};
+
 // Text for the overlay panel: a title and rows of (label, value) already formatted by the app,
-// and captions pinned to points of the image.
+// captions pinned to points of the image, and time plots stacked at the bottom right.
 struct OverlayData {
   std::string title;
   std::string caption;  // e.g. the demo phase being shown
   std::vector<std::pair<std::string, std::string>> rows;
   std::vector<OverlayLabel> labels;
+  std::vector<OverlayPlot> plots;
 };
 
 struct FrameData {

@@ -89,9 +89,11 @@ void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui) {
   if (clock != nullptr) clock->begin();
   d.scene.draw(frame, clock);
   // Off-screen, the overlay has no animation, so its time step only has to be positive.
-  const OverlayData none;
+  // Without the overlay (--no-overlay) the plots asked for still show: they are not the panel.
+  OverlayData plotsOnly;
+  if (!frame.options.overlay) plotsOnly.plots = frame.overlay.plots;
   const float uiSeconds = ui != nullptr ? ui->input.deltaSeconds : 1.0f / 30.0f;
-  d.uiWantsPointer = d.overlay.draw(frame.options.overlay ? frame.overlay : none, uiSeconds, ui);
+  d.uiWantsPointer = d.overlay.draw(frame.options.overlay ? frame.overlay : plotsOnly, uiSeconds, ui);
   if (clock != nullptr) {
     clock->mark(RenderPass::Overlay, [] { glFinish(); });
     clock->endFrame();

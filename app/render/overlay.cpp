@@ -110,7 +110,7 @@ Overlay::~Overlay() {
 
 bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui) {
   const bool panel = !(data.title.empty() && data.caption.empty() && data.rows.empty());  // no empty box
-  if (!panel && data.labels.empty() && ui == nullptr) return false;
+  if (!panel && data.labels.empty() && data.plots.empty() && ui == nullptr) return false;
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
@@ -124,6 +124,7 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
   ImGui::NewFrame();
   drawLabels(data);
   if (panel) drawPanel(data);
+  drawPlots(data);
   if (ui != nullptr && ui->draw) {
     ImGui::PushFont(bodyFont_);
     ui->draw();

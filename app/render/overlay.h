@@ -28,6 +28,7 @@ class Overlay {
  private:
   void drawPanel(const OverlayData& data);  // inside an ImGui frame
   void drawLabels(const OverlayData& data);  // inside an ImGui frame
+  void drawPlots(const OverlayData& data);   // inside an ImGui frame (plot_panel.cpp)
 
   int width_;
   int height_;

@@ -14,6 +14,7 @@
 #include "render/offscreen_renderer.h"
 #include "run/compare_view.h"
 #include "run/output_budget.h"
+#include "run/plot_history.h"
 #include "run/progress.h"
 #include "run/trace_writer.h"
 
@@ -162,6 +163,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
       freeFlight.emplace_back(phase.worlds[k].scene.view.selected);
       if (renderer) freeFlight.back().observe(worlds[k]);
     }
+    PlotHistory plots(phase);
     const auto traceRow = [&](std::size_t k) {
       const std::uint64_t step = stepBase + worlds[k].stepCount();
       if (trace && step % options.traceEvery == 0) {
@@ -214,7 +216,11 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
         continue;
       }
       const auto start = Clock::now();
-      const render::FrameData frame = buildPhaseFrame(worlds, phase, title, &freeFlight);
+      render::FrameData frame = buildPhaseFrame(worlds, phase, title, &freeFlight);
+      if (!plots.empty()) {
+        plots.sample(worlds, &freeFlight);
+        frame.overlay.plots = plots.plots();
+      }
       summary.buildSeconds += secondsSince(start);
       if (pending) deliver();
       renderer->begin(frame);

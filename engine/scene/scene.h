@@ -36,7 +36,15 @@ struct ViewDesc {
   bool contacts = false;  // draw contact points, normals, distances and impact ghosts
   std::size_t selected = 0;            // body shown in the overlay
   std::string caption;
+  // Time plots in the overlay (app/run/plot_history.h): names of kPlotQuantities, of the whole
+  // scene or (plotSelected) of the selected body, over the last plotSeconds.
+  std::vector<std::string> plots;
+  bool plotSelected = false;
+  double plotSeconds = 10.0;  // [s]
 };
+
+// The quantities view.plots may name.
+inline const std::vector<std::string> kPlotQuantities = {"ke", "pe", "E", "|P|", "|L|", "contacts", "error"};
 
 // How one particle system is drawn: camera-facing sprites whose colour, opacity and size follow
 // the particle's age fraction a = age / lifetime from birth (a = 0) to death (a = 1).

@@ -1,5 +1,6 @@
 #include "rbsim/scene/scene_parts.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -15,6 +16,8 @@ namespace {
 constexpr double kMaxSteps = 1e9;
 // Beyond this a video shows nothing a person can see, and it is most likely a typo.
 constexpr int kMaxFramesPerSecond = 240;  // [1/s]
+// A plot wider than an hour shows a minute as a few pixels; its history would be kept for nothing.
+constexpr double kMaxPlotSeconds = 3600.0;  // [s]
 
 }  // namespace
 
@@ -128,6 +131,28 @@ void parseViewFields(const JsonObject& v, ViewDesc& view) {
   view.aabbs = v.boolean("aabbs", view.aabbs);
   view.contacts = v.boolean("contacts", view.contacts);
   view.caption = v.string("caption", view.caption);
+  if (v.has("plots")) {
+    const nlohmann::json& plots = v.raw("plots");
+    std::string names;
+    for (const std::string& q : kPlotQuantities) names += (names.empty() ? "" : ", ") + q;
+    if (!plots.is_array() || plots.empty() || plots.size() > kPlotQuantities.size()) {
+      v.fail("plots", "expected an array of 1 to " + std::to_string(kPlotQuantities.size()) + " of " + names);
+    }
+    view.plots.clear();
+    for (const nlohmann::json& p : plots) {
+      const std::string name = p.is_string() ? p.get<std::string>() : p.dump();
+      if (std::find(kPlotQuantities.begin(), kPlotQuantities.end(), name) == kPlotQuantities.end()) {
+        v.fail("plots", "unknown quantity " + name + "; expected one of " + names);
+      }
+      if (std::find(view.plots.begin(), view.plots.end(), name) != view.plots.end()) v.fail("plots", name + " is listed twice");
+      view.plots.push_back(name);
+    }
+  }
+  const std::string of = v.string("plot_of", view.plotSelected ? "selected" : "scene");
+  if (of != "scene" && of != "selected") v.fail("plot_of", "expected \"scene\" or \"selected\", got \"" + of + "\"");
+  view.plotSelected = of == "selected";
+  view.plotSeconds = v.positiveNumber("plot_seconds", view.plotSeconds);
+  if (view.plotSeconds > kMaxPlotSeconds) v.fail("plot_seconds", "expected at most " + formatNumber(kMaxPlotSeconds) + " s of history");
 }
 
 BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, const std::string& path,
