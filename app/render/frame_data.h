@@ -130,6 +130,7 @@ struct OverlayData {
   std::vector<std::pair<std::string, std::string>> rows;
   std::vector<OverlayLabel> labels;
   std::vector<OverlayPlot> plots;
+  float plotsRight = 0.0f;  // the plots' right edge [px from the left]; 0: the image's (less a margin)
 };
 
 struct FrameData {

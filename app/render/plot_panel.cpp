@@ -48,7 +48,8 @@ void Overlay::drawPlots(const OverlayData& data) {
   const float plotHeight = std::min(kMaxPlotHeightFraction * io.DisplaySize.y,
                                     (kPlotsHeightFraction * io.DisplaySize.y - 2.0f * style.WindowPadding.y) / count);
   const float height = plotHeight * count + 2.0f * style.WindowPadding.y;
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width - margin, io.DisplaySize.y - height - margin));
+  const float right = data.plotsRight > 0.0f ? data.plotsRight : io.DisplaySize.x - margin;
+  ImGui::SetNextWindowPos(ImVec2(right - width, io.DisplaySize.y - height - margin));
   ImGui::SetNextWindowSize(ImVec2(width, height));  // fixed: see overlay.h
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |

@@ -72,7 +72,7 @@ std::pair<std::string, std::string> plotUnitAndTitle(const std::string& name, bo
   return {"", name};
 }
 
-PlotHistory::PlotHistory(const Phase& phase) {
+TimePlots::TimePlots(const Phase& phase) {
   const ViewDesc& view = phase.scene().view;
   names_ = view.plots;
   selectedOnly_ = view.plotSelected;
@@ -89,23 +89,26 @@ PlotHistory::PlotHistory(const Phase& phase) {
   series_.assign(names_.size(), std::vector<Series>(phase.worlds.size()));
 }
 
-void PlotHistory::sample(const std::vector<World>& worlds, const std::vector<FreeFlightError>* freeFlight) {
-  for (std::size_t k = 0; k < worlds.size(); ++k) now_ = std::max(now_, worlds[k].time());
+void TimePlots::sample(const std::vector<World>& worlds, const std::vector<FreeFlightError>* freeFlight) {
+  for (std::size_t k = 0; k < worlds.size(); ++k) {
+    sample(worlds[k], freeFlight != nullptr && k < freeFlight->size() ? &(*freeFlight)[k] : nullptr, k);
+  }
+}
+
+void TimePlots::sample(const World& world, const FreeFlightError* freeFlight, std::size_t k) {
+  now_ = std::max(now_, world.time());
   for (std::size_t p = 0; p < names_.size(); ++p) {
-    for (std::size_t k = 0; k < worlds.size(); ++k) {
-      Series& s = series_[p][k];
-      const FreeFlightError* error = freeFlight != nullptr && k < freeFlight->size() ? &(*freeFlight)[k] : nullptr;
-      s.t.push_back(static_cast<float>(worlds[k].time()));
-      s.y.push_back(static_cast<float>(plotQuantity(names_[p], worlds[k], selectedOnly_, selected_[k], error)));
-      while (!s.t.empty() && s.t.front() < now_ - seconds_) {
-        s.t.pop_front();
-        s.y.pop_front();
-      }
+    Series& s = series_[p][k];
+    s.t.push_back(static_cast<float>(world.time()));
+    s.y.push_back(static_cast<float>(plotQuantity(names_[p], world, selectedOnly_, selected_[k], freeFlight)));
+    while (!s.t.empty() && s.t.front() < now_ - seconds_) {
+      s.t.pop_front();
+      s.y.pop_front();
     }
   }
 }
 
-std::vector<render::OverlayPlot> PlotHistory::plots() const {
+std::vector<render::OverlayPlot> TimePlots::plots() const {
   std::vector<render::OverlayPlot> out;
   // The window stands still while it fills, then scrolls with the time.
   const float tMax = static_cast<float>(std::max(now_, seconds_));

@@ -25,13 +25,15 @@ double plotQuantity(const std::string& name, const World& world, bool selectedOn
 // Its unit and a title, e.g. {"J", "E, kinetic + gravity"}.
 std::pair<std::string, std::string> plotUnitAndTitle(const std::string& name, bool selectedOnly);
 
-class PlotHistory {
+class TimePlots {
  public:
-  explicit PlotHistory(const Phase& phase);  // the phase's first view decides, as for the camera
+  explicit TimePlots(const Phase& phase);  // the phase's first view decides, as for the camera
   bool empty() const { return names_.empty(); }
   // Takes one sample of every plot from every world at its own time; drops samples older than
   // the window. `freeFlight[k]` follows world k's selected body (null: no error plot values).
   void sample(const std::vector<World>& worlds, const std::vector<FreeFlightError>* freeFlight);
+  // The same for world k alone (window mode has one World, not a vector of them).
+  void sample(const World& world, const FreeFlightError* freeFlight, std::size_t k = 0);
   std::vector<render::OverlayPlot> plots() const;
 
  private:

@@ -163,7 +163,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
       freeFlight.emplace_back(phase.worlds[k].scene.view.selected);
       if (renderer) freeFlight.back().observe(worlds[k]);
     }
-    PlotHistory plots(phase);
+    TimePlots plots(phase);
     const auto traceRow = [&](std::size_t k) {
       const std::uint64_t step = stepBase + worlds[k].stepCount();
       if (trace && step % options.traceEvery == 0) {

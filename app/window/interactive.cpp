@@ -18,6 +18,7 @@
 #include "render/render_error.h"
 #include "run/frame_builder.h"
 #include "run/phase.h"
+#include "run/plot_history.h"
 #include "run/runner.h"
 #include "run/to_glm.h"
 #include "rbsim/scene/scene.h"
@@ -138,6 +139,7 @@ class Session {
         world_->step();
         freeFlight_->observe(*world_);
       }
+      plots_->sample(*world_, &*freeFlight_);
     } catch (const SimulationError& e) {
       paused_ = true;
       message_ = std::string("diverged, paused: ") + e.what();
@@ -224,6 +226,11 @@ class Session {
 
   render::FrameData frame() {
     render::FrameData f = buildFrame(*world_, scene_, title(), true, &*freeFlight_);
+    if (!plots_->empty()) {
+      f.overlay.plots = plots_->plots();
+      // Left of the control panel, which holds the right-hand side of the window.
+      f.overlay.plotsRight = panelRect(scene_.view.width, scene_.view.height).x - 8.0f;
+    }
     if (orbit_) f.camera = orbit_->camera();
     if (drag_) {
       const auto [point, force] = world_->springForce(drag_->spring);
@@ -306,8 +313,10 @@ class Session {
         scene_ = std::move(scene);
         restart();
       } else {
+        const bool watched = freeFlight_->body() == scene.view.selected && scene_.view.plots == scene.view.plots &&
+                             scene_.view.plotSelected == scene.view.plotSelected;
         scene_.view = scene.view;
-        if (freeFlight_->body() != scene_.view.selected) watchFreeFlight();
+        if (!watched) watchFreeFlight();
       }
     } catch (const InputError& e) {
       message_ = e.what();
@@ -369,10 +378,12 @@ class Session {
   Scene scene_;
   std::unique_ptr<World> world_;
   std::optional<FreeFlightError> freeFlight_;  // the selected body's error against the exact spin
+  std::optional<TimePlots> plots_;           // view.plots, from the selected body's watch on
 
   void watchFreeFlight() {
     freeFlight_.emplace(scene_.view.selected);
     freeFlight_->observe(*world_);
+    plots_.emplace(singleWorldPhase(scene_));
   }
   std::uint64_t frameIndex_ = 0;
   bool paused_ = false;

@@ -71,12 +71,12 @@ Phase phaseOf(const std::string& view, const std::string& compare = "") {
   return parsePhaseText(text, "plots.json", ".");
 }
 
-TEST(PlotHistory, KeepsTheLastSecondsOfEveryWorldWithItsValueAsLegend) {
+TEST(TimePlots, KeepsTheLastSecondsOfEveryWorldWithItsValueAsLegend) {
   const Phase phase = phaseOf(R"({"plots": ["ke", "|L|"], "plot_seconds": 1})",
                               R"(, "compare": {"key": "world.integrator", "values": ["euler-quat", "dlm"]})");
   std::vector<World> worlds;
   for (const PhaseWorld& w : phase.worlds) worlds.push_back(buildWorld(w.scene));
-  PlotHistory history(phase);
+  TimePlots history(phase);
   ASSERT_FALSE(history.empty());
   for (int frame = 0; frame < 25; ++frame) {  // 2.5 s at 10 steps a frame
     for (World& w : worlds) {
@@ -104,7 +104,7 @@ TEST(PlotHistory, KeepsTheLastSecondsOfEveryWorldWithItsValueAsLegend) {
   EXPECT_NEAR(plots[0].values[1].back(), plots[0].values[1].front(), 1e-6f);
 }
 
-TEST(PlotHistory, TheSceneChecksItsPlotKeys) {
+TEST(TimePlots, TheSceneChecksItsPlotKeys) {
   const auto fieldOf = [](const std::string& view) {
     try {
       phaseOf(view);
