@@ -12,6 +12,7 @@
 
 #include "demos/demo.h"
 #include "flag_values.h"
+#include "record/recording.h"
 #include "rbsim/integrate/integrator.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/particles/particle_def.h"
@@ -70,6 +71,9 @@ struct Flags {
                    "see app/render/png_file.h");
     cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here")->check(nonEmpty);
     cmd.add_option("--trace-every", traceEvery, "trace every K-th step, K from 1 to 1e9");
+    cmd.add_option("--record", run.recordPath,
+                   "record every step's state into this file, for `rbsim replay` (record/recording.h)")
+        ->check(nonEmpty);
     cmd.add_option("--steps", steps, "number of steps per scene (world.steps)")->check(nonEmpty);
     cmd.add_option("--dt", dt, "time step in seconds (world.dt)")->check(nonEmpty);
     cmd.add_option("--fps", fps, "frames per simulated second (view.fps)")->check(nonEmpty);
@@ -250,7 +254,7 @@ int listEverything() {
 // or no rendering contradict that, so they are refused rather than half-applied.
 int renderAllDemos(const CLI::App& demo, Flags& flags) {
   for (const char* name : {"--phase", "--video", "--trace", "--trace-every", "--fps", "--size", "--no-render", "--window",
-                           "--window-frames", "--screenshot"}) {
+                           "--window-frames", "--screenshot", "--record"}) {
     if (demo.get_option(name)->count() > 0) {
       throw InputError("", std::string(name) + " with `demo all`",
                        "not allowed: `demo all` renders every demo at 1280x720, 60 fps into videos/<name>.mp4 and "
@@ -276,6 +280,42 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
   return finishStdout(0);
 }
 
+// `rbsim replay FILE`: the recording's phases rebuilt from the scene files it holds, with its own
+// overrides and then the view keys given now, drawn from the recorded states (record/recording.h).
+int replayRecording(const std::string& path, Flags& flags) {
+  if (flags.window) {
+    throw InputError("", "--window with replay", "not yet: a replay writes a video or frames (scrubbing in the window is issue 24's next step)");
+  }
+  const RunOptions options = flags.finish("videos/" + std::filesystem::path(path).stem().string() + "_replay.mp4");
+  if (!options.recordPath.empty()) throw InputError("", "--record with replay", "a replay records nothing: it is drawn from a recording");
+  for (const std::string& assignment : options.overrides) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    if (key.rfind("view.", 0) != 0 && key != "view") {
+      throw InputError("", key, "a replay shows the recorded motion: only view keys (camera, size, fps, overlay, plots) may change");
+    }
+  }
+  rbsim::app::RecordReader reader(path);
+  std::vector<std::string> overrides = reader.header().overrides;
+  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  std::vector<rbsim::app::Phase> phases;
+  for (const rbsim::app::RecordedPhase& p : reader.header().phases) {
+    phases.push_back(rbsim::app::parsePhaseText(p.text, p.file, p.baseDir, overrides));
+    // Contacts and boxes come from collision detection, which a replay does not run.
+    bool dropped = false;
+    for (rbsim::app::PhaseWorld& w : phases.back().worlds) {
+      dropped = dropped || w.scene.view.contacts || w.scene.view.aabbs;
+      w.scene.view.contacts = w.scene.view.aabbs = false;
+    }
+    if (dropped && !options.quiet) {
+      std::fprintf(stderr, "rbsim: replay: %s draws contacts or AABBs, which are not recorded; they are left out\n",
+                   p.file.c_str());
+    }
+  }
+  const rbsim::app::RunSummary summary = rbsim::app::runPhases(phases, options, reader.header().title, {}, &reader);
+  rbsim::app::printSummary(summary, options);
+  return finishStdout(0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -298,6 +338,13 @@ int main(int argc, char** argv) {
   run->add_option("SCENE", scenePath, "scene JSON file")->required();
   runFlags.attach(*run);
 
+  std::string recordingPath;
+  Flags replayFlags;
+  CLI::App* replay = app.add_subcommand("replay", "draw a recording (--record) again without simulating: another camera, "
+                                                  "size, overlay or plots through view keys");
+  replay->add_option("RECORDING", recordingPath, "a file written by --record")->required();
+  replayFlags.attach(*replay);
+
   app.add_subcommand("list", "list demos, integrators and inertia methods");
 
   try {
@@ -313,8 +360,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> files;
     std::string title;
     RunOptions options;
-    Flags& flags = app.got_subcommand("demo") ? demoFlags : runFlags;
+    Flags& flags = app.got_subcommand("demo") ? demoFlags : app.got_subcommand("replay") ? replayFlags : runFlags;
     if (app.got_subcommand("demo") && demoArgument == "all") return renderAllDemos(*demo, demoFlags);
+    if (app.got_subcommand("replay")) return replayRecording(recordingPath, replayFlags);
     if (app.got_subcommand("demo")) {
       const int demoNumber = parseDemoNumber(demoArgument);
       const rbsim::app::Demo* chosen = rbsim::app::findDemo(demoNumber);
@@ -342,6 +390,9 @@ int main(int argc, char** argv) {
       throw InputError("", "--window-frames/--screenshot", "only with --window");
     }
     if (flags.window) {
+      if (!options.recordPath.empty()) {
+        throw InputError("", "--record with --window", "not allowed: a window session is not recorded (its Record button writes a video)");
+      }
       flags.windowOptions.quiet = options.quiet;
       rbsim::app::runWindow({files, options.overrides, title}, flags.windowOptions);
       return finishStdout(0);
@@ -352,7 +403,8 @@ int main(int argc, char** argv) {
     return finishStdout(0);
   } catch (const InputError& e) {
     // Only the chosen subcommand's flags are filled in, so at most one of these names a flag.
-    std::fprintf(stderr, "rbsim: error: %s%s%s\n", e.what(), demoFlags.origin(e).c_str(), runFlags.origin(e).c_str());
+    std::fprintf(stderr, "rbsim: error: %s%s%s%s\n", e.what(), demoFlags.origin(e).c_str(), runFlags.origin(e).c_str(),
+                 replayFlags.origin(e).c_str());
     return 2;
   } catch (const rbsim::SimulationError& e) {
     std::fprintf(stderr, "rbsim: error: the simulation diverged: %s\n", e.what());

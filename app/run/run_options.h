@@ -17,6 +17,7 @@ struct RunOptions {
   std::string videoPath;               // write an MP4 here when non-empty
   std::string tracePath;               // write the CSV trace here when non-empty
   std::uint64_t traceEvery = 1;        // trace every K-th step
+  std::string recordPath;              // record every step's state here when non-empty (record/recording.h)
   int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames, [0, 9]
   render::GlBackend glBackend = render::defaultGlBackend();  // --gl osmesa|egl
   bool render = true;                  // --no-render turns frames and video off

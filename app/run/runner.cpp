@@ -15,6 +15,7 @@
 #include "run/compare_view.h"
 #include "run/output_budget.h"
 #include "run/plot_history.h"
+#include "record/recording.h"
 #include "run/progress.h"
 #include "run/trace_writer.h"
 
@@ -96,10 +97,31 @@ void checkRunBudgets(const std::vector<Phase>& phases, const Phase& longest, con
   checkTraceBudget(options.tracePath, rows, how.str());
 }
 
+// What a recording keeps of the run to rebuild its phases (record/recording.h): each phase's
+// scene file as read now, and the overrides. A 2D world and breakable bodies are not recorded yet.
+RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title) {
+  RecordingHeader header;
+  header.rbsimVersion = RBSIM_VERSION;
+  header.title = title;
+  header.overrides = options.overrides;
+  for (const Phase& phase : phases) {
+    for (const PhaseWorld& w : phase.worlds) {
+      if (w.scene.planar) throw InputError(phase.file, "--record", "a scene with a 2D world (planar) cannot be recorded yet");
+      for (const BodyDef& body : w.scene.bodies) {
+        if (body.fracture) {
+          throw InputError(phase.file, "--record", "body \"" + body.name + "\" can break, and a recording cannot add its pieces yet");
+        }
+      }
+    }
+    header.phases.push_back({phase.file, std::filesystem::path(phase.file).parent_path().string(), readSceneFile(phase.file)});
+  }
+  return header;
+}
+
 }  // namespace
 
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
-                     const FrameObserver& observer) {
+                     const FrameObserver& observer, RecordReader* replay) {
   RunSummary summary;
   const auto wallStart = Clock::now();
   const ViewDesc& first = phases.front().scene().view;
@@ -121,6 +143,8 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
   // The trace first: opening it is cheap, and a bad path then fails before ffmpeg has started.
   std::optional<TraceWriter> trace;
   if (!options.tracePath.empty()) trace.emplace(options.tracePath);
+  std::optional<RecordWriter> recorder;
+  if (!options.recordPath.empty()) recorder.emplace(options.recordPath, recordingHeader(phases, options, title));
   std::unique_ptr<render::OffscreenRenderer> renderer;
   std::unique_ptr<render::FrameSink> sink;
   if (wantImages) {
@@ -173,8 +197,13 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     const auto advance = [&](std::size_t k, std::uint64_t target) {
       while (worlds[k].stepCount() < target) {
         const auto start = Clock::now();
-        worlds[k].step();
+        if (replay != nullptr) {
+          replay->restoreNext(k, worlds[k]);
+        } else {
+          worlds[k].step();
+        }
         summary.simulateSeconds += secondsSince(start);
+        if (recorder) recorder->write(k, worlds[k]);
         if (renderer) freeFlight[k].observe(worlds[k]);
         ++summary.steps;
         traceRow(k);
@@ -236,6 +265,12 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     stepBase += longestSteps;
   }
   if (trace) trace->close();
+  if (replay != nullptr) replay->expectEnd();
+  if (recorder) {
+    recorder->close();
+    summary.recordBytes = recorder->fileBytes();
+    summary.recordBodySteps = recorder->bodySteps();
+  }
   if (sink) {
     const auto start = Clock::now();
     sink->finish();
@@ -259,6 +294,11 @@ void printSummary(const RunSummary& s, const RunOptions& options) {
   std::printf("steps %llu, frames %llu, wall %.2f s\n", static_cast<unsigned long long>(s.steps),
               static_cast<unsigned long long>(s.frames), s.wallSeconds);
   std::printf("simulate: %.4f ms per step\n", s.steps ? 1e3 * s.simulateSeconds / s.steps : 0.0);
+  if (s.recordBodySteps > 0) {
+    std::printf("recording: %s, %llu bytes, %.1f bytes per body-step\n", options.recordPath.c_str(),
+                static_cast<unsigned long long>(s.recordBytes),
+                static_cast<double>(s.recordBytes) / static_cast<double>(s.recordBodySteps));
+  }
   if (s.frames > 0) {
     const double perFrame = 1e3 / static_cast<double>(s.frames);
     std::printf("ms per frame: simulate %.2f, build %.2f, render %.2f, readback %.2f, hand-off %.2f; "

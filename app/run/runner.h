@@ -13,6 +13,8 @@
 
 namespace rbsim::app {
 
+class RecordReader;  // record/recording.h
+
 struct RunSummary {
   std::uint64_t steps = 0;
   std::uint64_t frames = 0;
@@ -27,6 +29,8 @@ struct RunSummary {
   long passFrames = 0;           // frames timed pass by pass (render/pass_clock.h)
   std::array<double, render::kRenderPassCount> passMs{};  // mean ms per pass on those frames
   double wallSeconds = 0.0;
+  std::uint64_t recordBytes = 0;      // the recording's size (--record) [bytes]
+  std::uint64_t recordBodySteps = 0;  // bodies x steps it holds
 };
 
 // Frame k of a scene shows the state at the step nearest to k / fps. When dt does not divide
@@ -64,8 +68,11 @@ using FrameObserver = std::function<void(const std::vector<std::uint8_t>& rgbaTo
 // RunSummary::steps counts the steps of every world. Before anything runs, a phase of 0 steps and
 // a video past output_budget.h's limits are refused (InputError); a run prints progress on stderr
 // unless options.quiet. Every output is checked: a failed write throws naming the file.
+// With `replay` (rbsim replay), the worlds are not stepped: each step's state is read from the
+// recording instead, which must be of these phases (InputError otherwise, or when it is cut short).
+// With options.recordPath every step's state is recorded (record/recording.h).
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
-                     const FrameObserver& observer = {});
+                     const FrameObserver& observer = {}, RecordReader* replay = nullptr);
 
 void printSummary(const RunSummary& summary, const RunOptions& options);
 

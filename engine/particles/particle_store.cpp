@@ -1,5 +1,8 @@
 #include "rbsim/particles/particle_store.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace rbsim {
 
 ParticleStore::ParticleStore(std::size_t capacity)
@@ -11,6 +14,14 @@ ParticleStore::ParticleStore(std::size_t capacity)
       color(capacity, Eigen::Vector3f::Ones()),
       size(capacity, 0.0f),
       capacity_(capacity) {}
+
+void ParticleStore::setCount(std::size_t count) {
+  if (count > capacity_) {
+    throw std::invalid_argument("ParticleStore::setCount: " + std::to_string(count) + " particles, capacity " +
+                                std::to_string(capacity_));
+  }
+  count_ = count;
+}
 
 std::size_t ParticleStore::add() {
   if (count_ == capacity_) return capacity_;

@@ -26,6 +26,9 @@ class ParticleStore {
   void remove(std::size_t i);
   // Removes every particle with age >= lifetime, in one pass.
   void removeExpired();
+  // Sets the number of live particles (<= capacity(), else std::invalid_argument), leaving the
+  // attributes as they are: for restoring a recorded state (app/record), whose caller writes them.
+  void setCount(std::size_t count);
 
   // Attributes, indexed [0, count()).
   std::vector<Vec3> position;        // x [m]

@@ -118,4 +118,23 @@ void World::destroyBody(BodyId id) {
   slotOfBody_.pop_back();
 }
 
+void World::restore(std::uint64_t stepCount, const std::vector<BodyState>& states, const std::vector<char>& awake) {
+  if (states.size() != bodies_.size() || awake.size() != bodies_.size()) {
+    throw std::invalid_argument("World::restore: " + std::to_string(states.size()) + " states and " +
+                                std::to_string(awake.size()) + " awake flags for " + std::to_string(bodies_.size()) +
+                                " bodies");
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    RigidBody& body = bodies_[i];
+    body.setState(states[i]);
+    // A sleeping body's momenta are zero (RigidBody::sleep); sleep() keeps what was recorded.
+    if (awake[i] != 0) {
+      body.wake();
+    } else if (!body.isStatic()) {
+      body.sleep();
+    }
+  }
+  stepCount_ = stepCount;
+}
+
 }  // namespace rbsim

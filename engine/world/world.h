@@ -108,6 +108,11 @@ class World {
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
   void step();
+  // Puts the World where a recording saw it (app/record; Jolt's PhysicsSystem::RestoreState):
+  // at step `stepCount`, every body in `states` with its awake flag, nothing simulated. Contacts
+  // and the solvers' warm starts are left as they were. Throws std::invalid_argument when the
+  // sizes do not match the bodies.
+  void restore(std::uint64_t stepCount, const std::vector<BodyState>& states, const std::vector<char>& awake);
 
   const Settings& settings() const { return settings_; }
   double time() const { return static_cast<double>(stepCount_) * settings_.timeStep; }

@@ -1,0 +1,282 @@
+#include "record/recording.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include <libdeflate.h>
+#include <nlohmann/json.hpp>
+
+#include "rbsim/io/input_error.h"
+
+namespace rbsim::app {
+
+namespace {
+
+constexpr char kMagic[8] = {'R', 'B', 'S', 'I', 'M', 'R', 'E', 'C'};
+// Entries are gathered into blocks of about this many raw bytes before deflating: large enough
+// for the deflater to find the repeats, small enough that a recording's memory stays flat.
+constexpr std::size_t kBlockBytes = std::size_t{1} << 20;  // [bytes]
+// libdeflate's fastest level: a recording is written while the run goes on.
+constexpr int kDeflateLevel = 1;
+// A header beyond this is not a recording's (a scene file is at most 64 MiB; a few of them).
+constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 30;  // [bytes]
+// No block of ours is larger (kBlockBytes plus one entry); a damaged size asks for no more.
+constexpr std::uint32_t kMaxBlockBytes = std::uint32_t{1} << 30;  // [bytes]
+
+template <typename T>
+void append(std::vector<std::uint8_t>& out, const T& value) {
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(&value);
+  out.insert(out.end(), bytes, bytes + sizeof(T));
+}
+
+void appendVec(std::vector<std::uint8_t>& out, const Vec3& v) {
+  for (int i = 0; i < 3; ++i) append(out, v[i]);
+}
+
+}  // namespace
+
+RecordWriter::RecordWriter(const std::string& path, const RecordingHeader& header) : path_(path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  file_ = std::fopen(path.c_str(), "wb");
+  if (file_ == nullptr) throw InputError(path, "--record", std::string("cannot create the recording (") + std::strerror(errno) + ")");
+  nlohmann::json phases = nlohmann::json::array();
+  for (const RecordedPhase& p : header.phases) phases.push_back({{"file", p.file}, {"base_dir", p.baseDir}, {"text", p.text}});
+  const std::string text =
+      nlohmann::json{{"rbsim", header.rbsimVersion}, {"title", header.title}, {"overrides", header.overrides},
+                     {"phases", phases}}.dump();
+  put(kMagic, sizeof kMagic);
+  put(&kRecordingVersion, sizeof kRecordingVersion);
+  const std::uint64_t size = text.size();
+  put(&size, sizeof size);
+  put(text.data(), text.size());
+  compressor_ = libdeflate_alloc_compressor(kDeflateLevel);
+  raw_.reserve(kBlockBytes + 4096);
+}
+
+RecordWriter::~RecordWriter() {
+  if (file_ != nullptr) std::fclose(file_);
+  if (compressor_ != nullptr) libdeflate_free_compressor(static_cast<libdeflate_compressor*>(compressor_));
+}
+
+void RecordWriter::put(const void* data, std::size_t bytes) {
+  if (std::fwrite(data, 1, bytes, file_) != bytes) {
+    throw InputError(path_, "--record", std::string("cannot write the recording (") + std::strerror(errno) + ")");
+  }
+  fileBytes_ += bytes;
+}
+
+void RecordWriter::write(std::size_t world, const World& state) {
+  append(raw_, static_cast<std::uint16_t>(world));
+  append(raw_, state.stepCount());
+  append(raw_, static_cast<std::uint32_t>(state.bodies().size()));
+  for (const RigidBody& b : state.bodies()) {
+    const BodyState& s = b.state();
+    appendVec(raw_, s.position);
+    for (const double c : {s.orientation.w(), s.orientation.x(), s.orientation.y(), s.orientation.z()}) append(raw_, c);
+    appendVec(raw_, s.linearMomentum);
+    appendVec(raw_, s.angularMomentum);
+    append(raw_, static_cast<std::uint8_t>(b.awake() ? 1 : 0));
+  }
+  append(raw_, static_cast<std::uint32_t>(state.particleSystems().size()));
+  for (const ParticleSystem& system : state.particleSystems()) {
+    const ParticleStore& p = system.particles();
+    append(raw_, static_cast<std::uint32_t>(p.count()));
+    for (std::size_t i = 0; i < p.count(); ++i) {
+      appendVec(raw_, p.position[i]);
+      appendVec(raw_, p.velocity[i]);
+      append(raw_, p.inverseMass[i]);
+      append(raw_, p.age[i]);
+      append(raw_, p.lifetime[i]);
+      for (int c = 0; c < 3; ++c) append(raw_, p.color[i][c]);
+      append(raw_, p.size[i]);
+    }
+  }
+  append(raw_, static_cast<std::uint32_t>(state.softBodies().size()));
+  for (const SoftBody& soft : state.softBodies()) {
+    append(raw_, static_cast<std::uint32_t>(soft.positions().size()));
+    for (const Vec3& x : soft.positions()) appendVec(raw_, x);
+    for (const Vec3& v : soft.velocities()) appendVec(raw_, v);
+  }
+  ++entries_;
+  bodySteps_ += state.bodies().size();
+  if (raw_.size() >= kBlockBytes) flush();
+}
+
+void RecordWriter::flush() {
+  if (raw_.empty()) return;
+  auto* compressor = static_cast<libdeflate_compressor*>(compressor_);
+  deflated_.resize(libdeflate_deflate_compress_bound(compressor, raw_.size()));
+  const std::size_t deflated = libdeflate_deflate_compress(compressor, raw_.data(), raw_.size(), deflated_.data(), deflated_.size());
+  const std::uint32_t sizes[3] = {static_cast<std::uint32_t>(raw_.size()), static_cast<std::uint32_t>(deflated),
+                                  libdeflate_crc32(0, raw_.data(), raw_.size())};
+  put(sizes, sizeof sizes);
+  put(deflated_.data(), deflated);
+  raw_.clear();
+}
+
+void RecordWriter::close() {
+  if (file_ == nullptr) return;
+  flush();
+  // The end: an empty block whose CRC field counts the entries (low 32 bits; the count follows).
+  const std::uint32_t end[3] = {0, 0, static_cast<std::uint32_t>(entries_)};
+  put(end, sizeof end);
+  put(&entries_, sizeof entries_);
+  const bool failed = std::fclose(file_) != 0;
+  file_ = nullptr;
+  if (failed) throw InputError(path_, "--record", std::string("cannot write the recording (") + std::strerror(errno) + ")");
+}
+
+RecordReader::RecordReader(const std::string& path) : path_(path) {
+  if (std::filesystem::is_directory(path)) fail("is a folder, not a recording");
+  file_ = std::fopen(path.c_str(), "rb");
+  if (file_ == nullptr) fail(std::string("cannot open it (") + std::strerror(errno) + ")");
+  char magic[sizeof kMagic] = {};
+  if (std::fread(magic, 1, sizeof magic, file_) != sizeof magic || std::memcmp(magic, kMagic, sizeof kMagic) != 0) {
+    fail("not an rbsim recording (it does not start with RBSIMREC)");
+  }
+  std::uint32_t version = 0;
+  std::uint64_t size = 0;
+  if (std::fread(&version, sizeof version, 1, file_) != 1) fail("truncated in its header");
+  if (version != kRecordingVersion) {
+    fail("a recording of format version " + std::to_string(version) + "; this rbsim reads version " +
+         std::to_string(kRecordingVersion) + " only");
+  }
+  if (std::fread(&size, sizeof size, 1, file_) != 1) fail("truncated in its header");
+  if (size > kMaxHeaderBytes) fail("its header claims " + std::to_string(size) + " bytes; a recording's is at most 1 GiB");
+  std::string text(size, '\0');
+  if (std::fread(text.data(), 1, size, file_) != size) fail("truncated in its header");
+  try {
+    const nlohmann::json h = nlohmann::json::parse(text);
+    header_.rbsimVersion = h.at("rbsim").get<std::string>();
+    header_.title = h.at("title").get<std::string>();
+    header_.overrides = h.at("overrides").get<std::vector<std::string>>();
+    for (const nlohmann::json& p : h.at("phases")) {
+      header_.phases.push_back({p.at("file").get<std::string>(), p.at("base_dir").get<std::string>(), p.at("text").get<std::string>()});
+    }
+  } catch (const nlohmann::json::exception& e) {
+    fail(std::string("its header is damaged (") + e.what() + ")");
+  }
+  if (header_.rbsimVersion != RBSIM_VERSION) {
+    fail("recorded by rbsim " + header_.rbsimVersion + "; this is rbsim " + RBSIM_VERSION +
+         ", whose scenes may read differently: replay it with the rbsim that recorded it");
+  }
+  if (header_.phases.empty()) fail("its header lists no scene");
+  decompressor_ = libdeflate_alloc_decompressor();
+}
+
+RecordReader::~RecordReader() {
+  if (file_ != nullptr) std::fclose(file_);
+  if (decompressor_ != nullptr) libdeflate_free_decompressor(static_cast<libdeflate_decompressor*>(decompressor_));
+}
+
+void RecordReader::fail(const std::string& problem) const { throw InputError(path_, "", problem); }
+
+bool RecordReader::loadBlock() {
+  std::uint32_t sizes[3];
+  if (std::fread(sizes, sizeof sizes, 1, file_) != 1) {
+    fail("truncated after " + std::to_string(entries_) + " steps: the recording was not finished");
+  }
+  if (sizes[0] == 0) {
+    if (std::fread(&endCount_, sizeof endCount_, 1, file_) != 1) fail("truncated at its end marker");
+    ended_ = true;
+    return false;
+  }
+  if (sizes[0] > kMaxBlockBytes || sizes[1] > kMaxBlockBytes) fail("a block claims more than 1 GiB: the file is damaged");
+  std::vector<std::uint8_t> deflated(sizes[1]);
+  if (std::fread(deflated.data(), 1, deflated.size(), file_) != deflated.size()) {
+    fail("truncated after " + std::to_string(entries_) + " steps: the recording was not finished");
+  }
+  block_.resize(sizes[0]);
+  std::size_t out = 0;
+  const libdeflate_result result = libdeflate_deflate_decompress(
+      static_cast<libdeflate_decompressor*>(decompressor_), deflated.data(), deflated.size(), block_.data(), block_.size(), &out);
+  if (result != LIBDEFLATE_SUCCESS || out != block_.size() || libdeflate_crc32(0, block_.data(), out) != sizes[2]) {
+    fail("a block after step " + std::to_string(entries_) + " is damaged (its data do not inflate to their checksum)");
+  }
+  offset_ = 0;
+  return true;
+}
+
+void RecordReader::take(void* out, std::size_t bytes) {
+  if (offset_ + bytes > block_.size()) fail("an entry runs past its block: the file is damaged");
+  std::memcpy(out, block_.data() + offset_, bytes);
+  offset_ += bytes;
+}
+
+void RecordReader::restoreNext(std::size_t index, World& world) {
+  if (offset_ >= block_.size() && (ended_ || !loadBlock())) {
+    fail("ends after " + std::to_string(entries_) + " steps, before the scene does");
+  }
+  const auto get = [&](auto& value) { take(&value, sizeof value); };
+  const auto getVec = [&](Vec3& v) {
+    for (int i = 0; i < 3; ++i) get(v[i]);
+  };
+  std::uint16_t worldIndex = 0;
+  std::uint64_t step = 0;
+  std::uint32_t bodies = 0;
+  get(worldIndex);
+  get(step);
+  get(bodies);
+  if (worldIndex != index || step != world.stepCount() + 1 || bodies != world.bodies().size()) {
+    fail("entry " + std::to_string(entries_) + " is step " + std::to_string(step) + " of world " + std::to_string(worldIndex) +
+         " with " + std::to_string(bodies) + " bodies; the scene expects step " + std::to_string(world.stepCount() + 1) +
+         " of world " + std::to_string(index) + " with " + std::to_string(world.bodies().size()) +
+         ": the recording does not belong to these scenes");
+  }
+  states_.resize(bodies);
+  awake_.resize(bodies);
+  for (std::uint32_t i = 0; i < bodies; ++i) {
+    BodyState& s = states_[i];
+    getVec(s.position);
+    double q[4];
+    for (double& c : q) get(c);
+    s.orientation = Quat(q[0], q[1], q[2], q[3]);
+    getVec(s.linearMomentum);
+    getVec(s.angularMomentum);
+    std::uint8_t awake = 0;
+    get(awake);
+    awake_[i] = static_cast<char>(awake);
+  }
+  world.restore(step, states_, awake_);
+  std::uint32_t systems = 0;
+  get(systems);
+  if (systems != world.particleSystems().size()) fail("an entry's particle systems do not match the scene's");
+  for (ParticleSystem& system : world.particleSystems()) {
+    ParticleStore& p = system.particles();
+    std::uint32_t count = 0;
+    get(count);
+    if (count > p.capacity()) fail("an entry holds more particles than the scene's system can");
+    p.setCount(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      getVec(p.position[i]);
+      getVec(p.velocity[i]);
+      get(p.inverseMass[i]);
+      get(p.age[i]);
+      get(p.lifetime[i]);
+      for (int c = 0; c < 3; ++c) get(p.color[i][c]);
+      get(p.size[i]);
+    }
+  }
+  std::uint32_t softBodies = 0;
+  get(softBodies);
+  if (softBodies != world.softBodies().size()) fail("an entry's soft bodies do not match the scene's");
+  for (SoftBody& soft : world.softBodies()) {
+    std::uint32_t nodes = 0;
+    get(nodes);
+    if (nodes != soft.positions().size()) fail("an entry's soft body nodes do not match the scene's");
+    for (Vec3& x : soft.positions()) getVec(x);
+    for (Vec3& v : soft.velocities()) getVec(v);
+  }
+  ++entries_;
+}
+
+void RecordReader::expectEnd() {
+  if (offset_ < block_.size()) fail("holds more steps than its scenes run: it does not belong to them");
+  if (!ended_ && loadBlock()) fail("holds more steps than its scenes run: it does not belong to them");
+  if (endCount_ != entries_) fail("its end counts " + std::to_string(endCount_) + " steps, " + std::to_string(entries_) + " were read");
+}
+
+}  // namespace rbsim::app

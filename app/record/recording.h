@@ -1,0 +1,102 @@
+#pragma once
+// A recording of a run (`--record FILE`, issue 24): the scenes it ran and every step's state, so
+// `rbsim replay FILE` draws it again, with another camera, size or overlay, without simulating
+// (Jolt's StateRecorder; deterministic replay is a standing request to Box2D, Rapier and bepu).
+//
+// The file, little-endian:
+//   "RBSIMREC", u32 kRecordingVersion, u64 n, n bytes of header JSON (rbsim's version, the
+//   overrides, each phase's scene file text, name and folder);
+//   blocks of entries: u32 raw size, u32 deflated size, u32 CRC-32 of the raw bytes, the bytes
+//   deflated by libdeflate; the last block is empty (raw size 0) and its CRC field is the number
+//   of entries, so a file cut short anywhere is known to be.
+// An entry is one world after one step: u16 world, u64 step, u32 bodies and per body x, q (w x y
+// z), P, L as doubles and an awake byte; u32 particle systems and per system its live particles'
+// attributes; u32 soft bodies and per body its nodes' x and v.
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "rbsim/world/world.h"
+
+namespace rbsim::app {
+
+inline constexpr std::uint32_t kRecordingVersion = 1;
+
+struct RecordedPhase {
+  std::string file;     // as the run named it, for messages
+  std::string baseDir;  // where its mesh paths start
+  std::string text;     // the scene file as it was read
+};
+
+struct RecordingHeader {
+  std::string rbsimVersion;
+  std::string title;                   // the overlay's heading (a demo's), empty for a scene's own
+  std::vector<std::string> overrides;  // --set assignments (and flags turned into them)
+  std::vector<RecordedPhase> phases;
+};
+
+class RecordWriter {
+ public:
+  // Throws InputError (field --record) when the file cannot be created or written, or a phase
+  // holds what recordings do not keep yet (a 2D world).
+  RecordWriter(const std::string& path, const RecordingHeader& header);
+  ~RecordWriter();
+  RecordWriter(const RecordWriter&) = delete;
+  RecordWriter& operator=(const RecordWriter&) = delete;
+
+  void write(std::size_t world, const World& state);  // after each step of world `world`
+  void close();  // the last block and the end; InputError when a write fails
+
+  std::uint64_t entries() const { return entries_; }
+  std::uint64_t bodySteps() const { return bodySteps_; }
+  std::uint64_t fileBytes() const { return fileBytes_; }
+
+ private:
+  void flush();
+  void put(const void* data, std::size_t bytes);
+
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  std::vector<std::uint8_t> raw_;
+  std::vector<std::uint8_t> deflated_;
+  void* compressor_ = nullptr;
+  std::uint64_t entries_ = 0, bodySteps_ = 0, fileBytes_ = 0;
+};
+
+class RecordReader {
+ public:
+  // Throws InputError naming the file: unreadable, not a recording, another format version or
+  // rbsim version, a header that does not parse.
+  explicit RecordReader(const std::string& path);
+  ~RecordReader();
+  RecordReader(const RecordReader&) = delete;
+  RecordReader& operator=(const RecordReader&) = delete;
+
+  const RecordingHeader& header() const { return header_; }
+  // Puts the next entry into `world`, which must be world `index` of the replayed phase and hold
+  // the bodies, particle systems and soft bodies of the recording's. InputError when the file
+  // ends (truncated), a block is damaged, or the entry is of another world or shape.
+  void restoreNext(std::size_t index, World& world);
+  // InputError unless the recording ends here, with as many entries as were read.
+  void expectEnd();
+
+ private:
+  bool loadBlock();  // false at the end marker
+  void take(void* out, std::size_t bytes);
+  [[noreturn]] void fail(const std::string& problem) const;
+
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  RecordingHeader header_;
+  std::vector<std::uint8_t> block_;
+  std::size_t offset_ = 0;
+  bool ended_ = false;
+  std::uint64_t endCount_ = 0;
+  std::uint64_t entries_ = 0;
+  void* decompressor_ = nullptr;
+  std::vector<BodyState> states_;  // restoreNext's scratch
+  std::vector<char> awake_;
+};
+
+}  // namespace rbsim::app
