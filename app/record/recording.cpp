@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rbsim/io/input_error.h"
+#include "run/phase.h"
 
 namespace rbsim::app {
 
@@ -23,6 +24,12 @@ constexpr int kDeflateLevel = 1;
 constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 30;  // [bytes]
 // No block of ours is larger (kBlockBytes plus one entry); a damaged size asks for no more.
 constexpr std::uint32_t kMaxBlockBytes = std::uint32_t{1} << 30;  // [bytes]
+
+// Bytes of one body, particle and soft-body node in an entry (recording.h): x, q, P, L and the
+// awake byte; x, v, 1/m, age, lifetime, colour (3 floats) and size; x and v.
+constexpr std::size_t kBodyEntryBytes = 13 * sizeof(double) + 1;
+constexpr std::size_t kParticleEntryBytes = 9 * sizeof(double) + 4 * sizeof(float);
+constexpr std::size_t kSoftNodeEntryBytes = 6 * sizeof(double);
 
 template <typename T>
 void append(std::vector<std::uint8_t>& out, const T& value) {
@@ -201,15 +208,50 @@ bool RecordReader::loadBlock() {
 }
 
 void RecordReader::take(void* out, std::size_t bytes) {
-  if (offset_ + bytes > block_.size()) fail("an entry runs past its block: the file is damaged");
-  std::memcpy(out, block_.data() + offset_, bytes);
-  offset_ += bytes;
+  if (bytes > entry_.size() - entryOffset_) fail("an entry runs past its end: the file is damaged");
+  std::memcpy(out, entry_.data() + entryOffset_, bytes);
+  entryOffset_ += bytes;
+}
+
+std::size_t RecordReader::entryLength() const {
+  std::size_t at = offset_;
+  const auto skip = [&](std::size_t bytes) {
+    if (bytes > block_.size() - at) fail("an entry runs past its block: the file is damaged");
+    at += bytes;
+  };
+  const auto count = [&] {
+    std::uint32_t n = 0;
+    skip(sizeof n);
+    std::memcpy(&n, block_.data() + at - sizeof n, sizeof n);
+    return static_cast<std::size_t>(n);
+  };
+  skip(sizeof(std::uint16_t) + sizeof(std::uint64_t));  // world, step
+  skip(count() * kBodyEntryBytes);
+  for (std::size_t systems = count(), i = 0; i < systems; ++i) skip(count() * kParticleEntryBytes);
+  for (std::size_t softBodies = count(), i = 0; i < softBodies; ++i) skip(count() * kSoftNodeEntryBytes);
+  return at - offset_;
 }
 
 void RecordReader::restoreNext(std::size_t index, World& world) {
-  if (offset_ >= block_.size() && (ended_ || !loadBlock())) {
-    fail("ends after " + std::to_string(entries_) + " steps, before the scene does");
+  // Entries come in the order the recording run stepped its worlds. A replay at another frame
+  // rate steps a compared phase's worlds in another order, so entries of the others wait.
+  if (index >= pending_.size()) pending_.resize(index + 1);
+  while (pending_[index].empty()) {
+    if (offset_ >= block_.size() && (ended_ || !loadBlock())) {
+      fail("ends after " + std::to_string(entries_) + " steps, before the scene does");
+    }
+    std::uint16_t owner = 0;
+    const std::size_t length = entryLength();
+    std::memcpy(&owner, block_.data() + offset_, sizeof owner);
+    if (owner >= kMaxComparedWorlds) fail("an entry names world " + std::to_string(owner) + ": the file is damaged");
+    if (owner >= pending_.size()) pending_.resize(owner + 1);
+    pending_[owner].emplace_back(block_.begin() + static_cast<std::ptrdiff_t>(offset_),
+                                 block_.begin() + static_cast<std::ptrdiff_t>(offset_ + length));
+    offset_ += length;
   }
+  entry_ = std::move(pending_[index].front());
+  pending_[index].pop_front();
+  entryOffset_ = 0;
   const auto get = [&](auto& value) { take(&value, sizeof value); };
   const auto getVec = [&](Vec3& v) {
     for (int i = 0; i < 3; ++i) get(v[i]);
@@ -274,6 +316,9 @@ void RecordReader::restoreNext(std::size_t index, World& world) {
 }
 
 void RecordReader::expectEnd() {
+  for (const auto& waiting : pending_) {
+    if (!waiting.empty()) fail("holds more steps than its scenes run: it does not belong to them");
+  }
   if (offset_ < block_.size()) fail("holds more steps than its scenes run: it does not belong to them");
   if (!ended_ && loadBlock()) fail("holds more steps than its scenes run: it does not belong to them");
   if (endCount_ != entries_) fail("its end counts " + std::to_string(endCount_) + " steps, " + std::to_string(entries_) + " were read");

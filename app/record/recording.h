@@ -14,6 +14,7 @@
 // attributes; u32 soft bodies and per body its nodes' x and v.
 #include <cstdint>
 #include <cstdio>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -83,7 +84,8 @@ class RecordReader {
 
  private:
   bool loadBlock();  // false at the end marker
-  void take(void* out, std::size_t bytes);
+  std::size_t entryLength() const;  // of the entry at offset_ in block_
+  void take(void* out, std::size_t bytes);  // from entry_
   [[noreturn]] void fail(const std::string& problem) const;
 
   std::string path_;
@@ -91,6 +93,9 @@ class RecordReader {
   RecordingHeader header_;
   std::vector<std::uint8_t> block_;
   std::size_t offset_ = 0;
+  std::vector<std::deque<std::vector<std::uint8_t>>> pending_;  // per world: entries read ahead
+  std::vector<std::uint8_t> entry_;  // the one being restored
+  std::size_t entryOffset_ = 0;
   bool ended_ = false;
   std::uint64_t endCount_ = 0;
   std::uint64_t entries_ = 0;

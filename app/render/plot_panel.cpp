@@ -22,6 +22,8 @@ constexpr ImU32 kSeriesColors[] = {IM_COL32(255, 158, 74, 255), IM_COL32(90, 170
 constexpr float kPanelWidthFraction = 0.34f;   // of the image width [1]
 constexpr float kPlotsHeightFraction = 0.62f;  // the stack, at most, of the image height [1]
 constexpr float kMaxPlotHeightFraction = 0.22f;  // one plot, at most [1]
+constexpr float kMinPlotLines = 5.0f;     // a plot's least height: title, three values, times [text lines]
+constexpr float kMinPlotColumns = 14.0f;  // its least width beside the value labels [text line heights]
 // The smallest range of a plot's value axis, relative to the values' size: the labels' 4
 // significant digits tell its ends apart [1]. And absolute, for values at zero [the plot's unit].
 constexpr float kMinRelativeSpan = 2e-3f;
@@ -43,10 +45,15 @@ void Overlay::drawPlots(const OverlayData& data) {
   ImGui::PushFont(bodyFont_);
   const float line = ImGui::GetTextLineHeight();
   const float margin = std::round(0.015f * io.DisplaySize.y) + 4.0f;
-  const float width = kPanelWidthFraction * io.DisplaySize.x;
+  const float labelWidth = ImGui::CalcTextSize("-0.0000e+00").x;
+  // In a small image the fractions leave no room for the text: a plot keeps kMinPlotLines of
+  // height and kMinPlotColumns of width beside its labels, overlapping more of the picture.
+  const float width = std::min(std::max(kPanelWidthFraction * io.DisplaySize.x, labelWidth + kMinPlotColumns * line),
+                               io.DisplaySize.x - 2.0f * margin);
   const float count = static_cast<float>(data.plots.size());
-  const float plotHeight = std::min(kMaxPlotHeightFraction * io.DisplaySize.y,
-                                    (kPlotsHeightFraction * io.DisplaySize.y - 2.0f * style.WindowPadding.y) / count);
+  const float plotHeight = std::max(kMinPlotLines * line,
+                                    std::min(kMaxPlotHeightFraction * io.DisplaySize.y,
+                                             (kPlotsHeightFraction * io.DisplaySize.y - 2.0f * style.WindowPadding.y) / count));
   const float height = plotHeight * count + 2.0f * style.WindowPadding.y;
   const float right = data.plotsRight > 0.0f ? data.plotsRight : io.DisplaySize.x - margin;
   ImGui::SetNextWindowPos(ImVec2(right - width, io.DisplaySize.y - height - margin));
@@ -59,7 +66,6 @@ void Overlay::drawPlots(const OverlayData& data) {
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
     const ImU32 dim = IM_COL32(175, 185, 200, 255);
     const ImU32 grid = IM_COL32(255, 255, 255, 40);
-    const float labelWidth = ImGui::CalcTextSize("-0.0000e+00").x;
     ImVec2 origin = ImGui::GetCursorScreenPos();
     const float innerWidth = width - 2.0f * style.WindowPadding.x;
     for (const OverlayPlot& plot : data.plots) {
