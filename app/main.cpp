@@ -19,6 +19,7 @@
 #include "paths.h"
 #include "render/render_error.h"
 #include "window/interactive.h"
+#include "window/replay_window.h"
 #include "window/x11_window.h"
 #include "run/progress.h"
 #include "run/reel.h"
@@ -283,9 +284,6 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
 // `rbsim replay FILE`: the recording's phases rebuilt from the scene files it holds, with its own
 // overrides and then the view keys given now, drawn from the recorded states (record/recording.h).
 int replayRecording(const std::string& path, Flags& flags) {
-  if (flags.window) {
-    throw InputError("", "--window with replay", "not yet: a replay writes a video or frames (scrubbing in the window is issue 24's next step)");
-  }
   const RunOptions options = flags.finish("videos/" + std::filesystem::path(path).stem().string() + "_replay.mp4");
   if (!options.recordPath.empty()) throw InputError("", "--record with replay", "a replay records nothing: it is drawn from a recording");
   for (const std::string& assignment : options.overrides) {
@@ -310,6 +308,11 @@ int replayRecording(const std::string& path, Flags& flags) {
       std::fprintf(stderr, "rbsim: replay: %s draws contacts or AABBs, which are not recorded; they are left out\n",
                    p.file.c_str());
     }
+  }
+  if (flags.window) {
+    flags.windowOptions.quiet = options.quiet;
+    rbsim::app::runReplayWindow(phases, reader, path, flags.windowOptions);
+    return finishStdout(0);
   }
   const rbsim::app::RunSummary summary = rbsim::app::runPhases(phases, options, reader.header().title, {}, &reader);
   rbsim::app::printSummary(summary, options);
@@ -341,7 +344,7 @@ int main(int argc, char** argv) {
   std::string recordingPath;
   Flags replayFlags;
   CLI::App* replay = app.add_subcommand("replay", "draw a recording (--record) again without simulating: another camera, "
-                                                  "size, overlay or plots through view keys");
+                                                  "size, overlay or plots through view keys; with --window, a timeline to scrub");
   replay->add_option("RECORDING", recordingPath, "a file written by --record")->required();
   replayFlags.attach(*replay);
 

@@ -251,6 +251,16 @@ void RecordReader::restoreNext(std::size_t index, World& world) {
   }
   entry_ = std::move(pending_[index].front());
   pending_[index].pop_front();
+  restoreEntry(index, world, /*nextStep=*/true);
+  ++entries_;
+}
+
+void RecordReader::restore(const std::vector<std::uint8_t>& entry, std::size_t index, World& world) {
+  entry_ = entry;
+  restoreEntry(index, world, /*nextStep=*/false);
+}
+
+void RecordReader::restoreEntry(std::size_t index, World& world, bool nextStep) {
   entryOffset_ = 0;
   const auto get = [&](auto& value) { take(&value, sizeof value); };
   const auto getVec = [&](Vec3& v) {
@@ -262,7 +272,7 @@ void RecordReader::restoreNext(std::size_t index, World& world) {
   get(worldIndex);
   get(step);
   get(bodies);
-  if (worldIndex != index || step != world.stepCount() + 1 || bodies != world.bodies().size()) {
+  if (worldIndex != index || (nextStep && step != world.stepCount() + 1) || bodies != world.bodies().size()) {
     fail("entry " + std::to_string(entries_) + " is step " + std::to_string(step) + " of world " + std::to_string(worldIndex) +
          " with " + std::to_string(bodies) + " bodies; the scene expects step " + std::to_string(world.stepCount() + 1) +
          " of world " + std::to_string(index) + " with " + std::to_string(world.bodies().size()) +
@@ -312,7 +322,6 @@ void RecordReader::restoreNext(std::size_t index, World& world) {
     for (Vec3& x : soft.positions()) getVec(x);
     for (Vec3& v : soft.velocities()) getVec(v);
   }
-  ++entries_;
 }
 
 void RecordReader::expectEnd() {

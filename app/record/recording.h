@@ -81,11 +81,17 @@ class RecordReader {
   void restoreNext(std::size_t index, World& world);
   // InputError unless the recording ends here, with as many entries as were read.
   void expectEnd();
+  // The entry restoreNext restored last, to keep (the replay window keeps one per frame to scrub
+  // back and forth), and puts such a kept entry of world `index` into `world` again.
+  const std::vector<std::uint8_t>& lastEntry() const { return entry_; }
+  void restore(const std::vector<std::uint8_t>& entry, std::size_t index, World& world);
 
  private:
   bool loadBlock();  // false at the end marker
   std::size_t entryLength() const;  // of the entry at offset_ in block_
   void take(void* out, std::size_t bytes);  // from entry_
+  // entry_ into `world`; with nextStep, it must be the step after the world's.
+  void restoreEntry(std::size_t index, World& world, bool nextStep);
   [[noreturn]] void fail(const std::string& problem) const;
 
   std::string path_;

@@ -28,6 +28,9 @@ class DebugDraw {
   DebugDraw(const DebugDraw&) = delete;
   DebugDraw& operator=(const DebugDraw&) = delete;
 
+  // The viewport the next draws go to [px] (a comparison's pane, or the whole image).
+  void setViewport(int width, int height) { viewport_ = glm::vec2(static_cast<float>(width), static_cast<float>(height)); }
+
   // Copies the frame's lines and points into the vertex buffer. Call once per frame, first.
   void upload(const FrameData& frame);
 

@@ -109,6 +109,7 @@ struct RenderOptions {
 struct OverlayLabel {
   std::string text;
   glm::vec2 pixel{0.0f};  // where the caption's top centre goes, in pixels from the top left
+  bool leftAligned = false;  // pixel is where its top left corner goes instead
 };
 
 // A time plot in the overlay (view.plots): one line per series over the last seconds, t
@@ -131,9 +132,18 @@ struct OverlayData {
   std::vector<OverlayLabel> labels;
   std::vector<OverlayPlot> plots;
   float plotsRight = 0.0f;  // the plots' right edge [px from the left]; 0: the image's (less a margin)
+  // The plots stacked under the panel, in the info column of a comparison's panes
+  // (pane_layout.h), instead of at the bottom right.
+  bool plotsUnderPanel = false;
+  float plotsBottomInset = 0.0f;  // the plots stand this far above the image's bottom [px] (a timeline below)
 };
 
 struct FrameData {
+  // A side-by-side comparison (app/run/compare_view.h): one frame per world, each drawn in a pane
+  // of its own (pane_layout.h) with its own bodies, lines, camera and options; this frame's
+  // scene fields are then unused, and its overlay is drawn once over the whole image.
+  std::vector<FrameData> panes;
+  bool infoColumn = false;  // the panes leave a column on the left to the panel and plots
   std::vector<BodyView> bodies;
   std::vector<ForceArrow> forces;
   std::vector<DebugLine> lines;    // all drawn with one upload and at most two draw calls

@@ -52,7 +52,7 @@ void GlRenderer::deleteTarget(Target& target) {
   target = Target{};
 }
 
-void GlRenderer::drawBackground(const FrameData& frame, const glm::mat4& viewProj, GLuint into) {
+void GlRenderer::drawBackground(const FrameData& frame, const glm::mat4& viewProj, GLuint into, const PaneRect& pane) {
   // Sky and ground depend only on the camera and the grid switch, and the scenes' cameras stand
   // still: their picture and depth are drawn once into background_ and copied into every frame
   // (a memory copy on llvmpipe, where shading them took 60 % of a one-body frame).
@@ -60,19 +60,29 @@ void GlRenderer::drawBackground(const FrameData& frame, const glm::mat4& viewPro
   const bool same = backgroundDrawn_ && backgroundGrid_ == frame.options.grid && cam.eye == backgroundCamera_.eye &&
                     cam.target == backgroundCamera_.target && cam.up == backgroundCamera_.up &&
                     cam.fovYDegrees == backgroundCamera_.fovYDegrees && cam.nearPlane == backgroundCamera_.nearPlane &&
-                    cam.farPlane == backgroundCamera_.farPlane;
+                    cam.farPlane == backgroundCamera_.farPlane && pane.width == backgroundWidth_ &&
+                    pane.height == backgroundHeight_;
+  // Drawn at background_'s bottom left, whichever pane it is for: a comparison's panes share
+  // one camera and one size, so it is drawn once for all of them.
+  const GLint glY = height_ - pane.y - pane.height;
   if (!same) {
     glBindFramebuffer(GL_FRAMEBUFFER, background_.fbo);
+    glViewport(0, 0, pane.width, pane.height);
+    glScissor(0, 0, pane.width, pane.height);
     glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // the sky covers every colour pixel
     if (frame.options.grid) drawGround(frame, viewProj);
     drawSky(frame, viewProj);
     backgroundDrawn_ = true;
     backgroundGrid_ = frame.options.grid;
     backgroundCamera_ = cam;
+    backgroundWidth_ = pane.width;
+    backgroundHeight_ = pane.height;
+    glViewport(pane.x, glY, pane.width, pane.height);
+    glScissor(pane.x, glY, pane.width, pane.height);
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, background_.fbo);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, into);
-  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_,
+  glBlitFramebuffer(0, 0, pane.width, pane.height, pane.x, glY, pane.x + pane.width, glY + pane.height,
                     GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, into);
 }

@@ -18,6 +18,7 @@ namespace {
 const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, 1.0f, 0.45f));
 constexpr float kShadowAlpha = 0.32f;
 constexpr float kXrayAlpha = 0.3f;  // axes and arrows seen through a body
+const glm::vec3 kPaneGapColor{0.08f, 0.09f, 0.11f};  // between a comparison's panes (sRGB)
 
 // Line widths in pixels for a 720-pixel-high image; scaled with the image height.
 constexpr float kEdgeWidth = 1.5f;
@@ -282,6 +283,34 @@ void GlRenderer::drawGhosts(const FrameData& frame, const glm::mat4& viewProj) {
 }
 
 void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
+  const GLuint frameTarget = samples_ > 1 ? multisampled_.fbo : target_;
+  if (frame.panes.empty()) {
+    drawView(frame, PaneRect{0, 0, width_, height_}, frameTarget, clock);
+  } else {
+    // The gaps between the panes; each pane then covers its own rectangle.
+    glBindFramebuffer(GL_FRAMEBUFFER, frameTarget);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearColor(kPaneGapColor.r, kPaneGapColor.g, kPaneGapColor.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const std::vector<PaneRect> rects = paneLayout(frame.panes.size(), width_, height_, frame.infoColumn);
+    for (std::size_t k = 0; k < frame.panes.size(); ++k) drawView(frame.panes[k], rects[k], frameTarget, clock);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glViewport(0, 0, width_, height_);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  if (samples_ > 1) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, target_);
+  if (clock != nullptr) clock->mark(RenderPass::Marks, [] { glFinish(); });
+}
+
+void GlRenderer::drawView(const FrameData& frame, const PaneRect& pane, GLuint frameTarget, PassClock* clock) {
   const auto mark = [clock](RenderPass pass) {
     if (clock != nullptr) clock->mark(pass, [] { glFinish(); });
   };
@@ -290,12 +319,16 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
   instanced_.upload(frame);
   debugDraw_.upload(frame);
   particleDraw_.upload(frame);
-  const glm::mat4 viewProj = viewProjection(frame.camera, width_, height_);
+  const glm::mat4 viewProj = viewProjection(frame.camera, pane.width, pane.height);
   mark(RenderPass::Upload);
 
-  const GLuint frameTarget = samples_ > 1 ? multisampled_.fbo : target_;
-  glViewport(0, 0, width_, height_);
-  glDisable(GL_SCISSOR_TEST);
+  // GL counts rows from the bottom; the pane, from the top.
+  const GLint glY = height_ - pane.y - pane.height;
+  glBindFramebuffer(GL_FRAMEBUFFER, frameTarget);
+  glViewport(pane.x, glY, pane.width, pane.height);
+  glScissor(pane.x, glY, pane.width, pane.height);
+  glEnable(GL_SCISSOR_TEST);
+  debugDraw_.setViewport(pane.width, pane.height);
   glDisable(GL_CULL_FACE);  // meshes from files may have either winding
   glDisable(GL_BLEND);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
@@ -304,7 +337,7 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
   glStencilMask(0xff);
   glClearDepth(1.0);
   glClearStencil(0);
-  drawBackground(frame, viewProj, frameTarget);
+  drawBackground(frame, viewProj, frameTarget, pane);
   mark(RenderPass::Background);
 
   // Bodies over the ground's depth, pushed slightly back so their outlines (drawn later at
@@ -336,17 +369,6 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
   drawOverlays(frame, viewProj);
   drawGhosts(frame, viewProj);
   debugDraw_.drawOnTop(viewProj, frame.camera.eye, debugWidth);
-
-  glBindVertexArray(0);
-  glUseProgram(0);
-  if (samples_ > 1) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, target_);
-  mark(RenderPass::Marks);
 }
 
 }  // namespace rbsim::render

@@ -15,6 +15,7 @@
 #include "frame_data.h"
 #include "gl_api.h"
 #include "instanced_bodies.h"
+#include "pane_layout.h"
 #include "pass_clock.h"
 #include "projection.h"
 #include "particle_draw.h"
@@ -47,8 +48,11 @@ class GlRenderer {
   };
   void createTarget(Target& target) const;
   static void deleteTarget(Target& target);
-  // Sky and ground into `into`, from background_ (redrawn there when the camera moved).
-  void drawBackground(const FrameData& frame, const glm::mat4& viewProj, GLuint into);
+  // One scene (a whole frame, or a comparison's pane) into `pane` of frameTarget.
+  void drawView(const FrameData& frame, const PaneRect& pane, GLuint frameTarget, PassClock* clock);
+  // Sky and ground into `pane` of `into`, from background_ (redrawn there when the camera or the
+  // pane's size changed).
+  void drawBackground(const FrameData& frame, const glm::mat4& viewProj, GLuint into, const PaneRect& pane);
   void upload(const SceneGeometry& geometry);
   void drawSky(const FrameData& frame, const glm::mat4& viewProj);
   void drawGround(const FrameData& frame, const glm::mat4& viewProj);
@@ -90,6 +94,7 @@ class GlRenderer {
   bool backgroundDrawn_ = false;
   bool backgroundGrid_ = false;
   Camera backgroundCamera_;
+  int backgroundWidth_ = 0, backgroundHeight_ = 0;  // the pane size it was drawn for [px]
   // Reused every frame so steady-state frames allocate nothing.
   SceneGeometry geometry_;
   std::vector<MeshVertex> meshStaging_;  // bodies, ghosts, arrow heads, as uploaded

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "gl_api.h"
+#include "pane_layout.h"
 #include "render_error.h"
 
 namespace rbsim::render {
@@ -123,8 +124,8 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
   ImGui_ImplOpenGL2_NewFrame();
   ImGui::NewFrame();
   drawLabels(data);
-  if (panel) drawPanel(data);
-  drawPlots(data);
+  const float panelBottom = panel ? drawPanel(data) : 0.0f;
+  drawPlots(data, panelBottom);
   if (ui != nullptr && ui->draw) {
     ImGui::PushFont(bodyFont_);
     ui->draw();
@@ -144,7 +145,7 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
   return io.WantCaptureMouse;
 }
 
-void Overlay::drawPanel(const OverlayData& data) {
+float Overlay::drawPanel(const OverlayData& data) {
   ImGuiIO& io = ImGui::GetIO();
 
   // Measure the content to give the window a fixed size (see overlay.h for why not auto-size).
@@ -174,10 +175,10 @@ void Overlay::drawPanel(const OverlayData& data) {
   }
   ImGui::PopFont();
 
-  const float margin = std::round(0.015f * io.DisplaySize.y) + 4.0f;
+  const float margin = overlayMargin(static_cast<int>(io.DisplaySize.y));
+  const float windowHeight = contentHeight + 2.0f * style.WindowPadding.y;
   ImGui::SetNextWindowPos(ImVec2(margin, margin));
-  ImGui::SetNextWindowSize(ImVec2(innerWidth + 2.0f * style.WindowPadding.x,
-                                  contentHeight + 2.0f * style.WindowPadding.y));
+  ImGui::SetNextWindowSize(ImVec2(innerWidth + 2.0f * style.WindowPadding.x, windowHeight));
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
                                  ImGuiWindowFlags_NoFocusOnAppearing;
@@ -212,6 +213,7 @@ void Overlay::drawPanel(const OverlayData& data) {
     ImGui::PopFont();
   }
   ImGui::End();
+  return margin + windowHeight;
 }
 
 void Overlay::drawLabels(const OverlayData& data) {
@@ -225,8 +227,9 @@ void Overlay::drawLabels(const OverlayData& data) {
     const OverlayLabel& label = data.labels[i];
     const ImVec2 text = ImGui::CalcTextSize(label.text.c_str());
     const ImVec2 size(text.x + 2.0f * style.WindowPadding.x, text.y + 2.0f * style.WindowPadding.y);
-    // Top centre on the point, moved inside the image when the point is near its edge.
-    const float x = std::clamp(label.pixel.x - 0.5f * size.x, 0.0f, std::max(0.0f, io.DisplaySize.x - size.x));
+    // Top centre (or top left) on the point, moved inside the image when the point is near its edge.
+    const float left = label.leftAligned ? label.pixel.x : label.pixel.x - 0.5f * size.x;
+    const float x = std::clamp(left, 0.0f, std::max(0.0f, io.DisplaySize.x - size.x));
     const float y = std::clamp(label.pixel.y, 0.0f, std::max(0.0f, io.DisplaySize.y - size.y));
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(size);  // fixed: see overlay.h

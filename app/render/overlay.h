@@ -26,9 +26,11 @@ class Overlay {
   bool draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui = nullptr);
 
  private:
-  void drawPanel(const OverlayData& data);  // inside an ImGui frame
+  // Inside an ImGui frame; returns the panel's bottom edge [px from the top], 0 with no panel.
+  float drawPanel(const OverlayData& data);
   void drawLabels(const OverlayData& data);  // inside an ImGui frame
-  void drawPlots(const OverlayData& data);   // inside an ImGui frame (plot_panel.cpp)
+  // Inside an ImGui frame (plot_panel.cpp); `top` is where plots under the panel may start [px].
+  void drawPlots(const OverlayData& data, float top);
 
   int width_;
   int height_;

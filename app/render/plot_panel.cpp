@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "overlay.h"
+#include "pane_layout.h"
 
 namespace rbsim::render {
 
@@ -22,7 +23,7 @@ constexpr ImU32 kSeriesColors[] = {IM_COL32(255, 158, 74, 255), IM_COL32(90, 170
 constexpr float kPanelWidthFraction = 0.34f;   // of the image width [1]
 constexpr float kPlotsHeightFraction = 0.62f;  // the stack, at most, of the image height [1]
 constexpr float kMaxPlotHeightFraction = 0.22f;  // one plot, at most [1]
-constexpr float kMinPlotLines = 5.0f;     // a plot's least height: title, three values, times [text lines]
+constexpr float kMinPlotLines = 5.0f;     // a plot's least height: title, two values, times [text lines]
 constexpr float kMinPlotColumns = 14.0f;  // its least width beside the value labels [text line heights]
 // The smallest range of a plot's value axis, relative to the values' size: the labels' 4
 // significant digits tell its ends apart [1]. And absolute, for values at zero [the plot's unit].
@@ -38,25 +39,29 @@ std::string axisNumber(float value) {
 
 }  // namespace
 
-void Overlay::drawPlots(const OverlayData& data) {
+void Overlay::drawPlots(const OverlayData& data, float top) {
   if (data.plots.empty()) return;
   const ImGuiIO& io = ImGui::GetIO();
   const ImGuiStyle& style = ImGui::GetStyle();
   ImGui::PushFont(bodyFont_);
   const float line = ImGui::GetTextLineHeight();
-  const float margin = std::round(0.015f * io.DisplaySize.y) + 4.0f;
+  const float margin = overlayMargin(static_cast<int>(io.DisplaySize.y));
   const float labelWidth = ImGui::CalcTextSize("-0.0000e+00").x;
   // In a small image the fractions leave no room for the text: a plot keeps kMinPlotLines of
   // height and kMinPlotColumns of width beside its labels, overlapping more of the picture.
-  const float width = std::min(std::max(kPanelWidthFraction * io.DisplaySize.x, labelWidth + kMinPlotColumns * line),
-                               io.DisplaySize.x - 2.0f * margin);
+  // Under the panel, the plots fill the info column of a comparison's panes (pane_layout.h),
+  // where there is room for each to keep its least height; otherwise at the bottom right.
   const float count = static_cast<float>(data.plots.size());
-  const float plotHeight = std::max(kMinPlotLines * line,
-                                    std::min(kMaxPlotHeightFraction * io.DisplaySize.y,
-                                             (kPlotsHeightFraction * io.DisplaySize.y - 2.0f * style.WindowPadding.y) / count));
+  const float roomUnder = io.DisplaySize.y - data.plotsBottomInset - std::max(top, 0.0f) - 2.0f * margin - 2.0f * style.WindowPadding.y;
+  const bool underPanel = data.plotsUnderPanel && roomUnder >= count * kMinPlotLines * line;
+  const float columnWidth = static_cast<float>(infoColumnWidth(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y))) - 2.0f * margin;
+  const float preferredWidth = underPanel ? columnWidth : kPanelWidthFraction * io.DisplaySize.x;
+  const float width = std::min(std::max(preferredWidth, labelWidth + kMinPlotColumns * line), io.DisplaySize.x - 2.0f * margin);
+  const float room = underPanel ? roomUnder : kPlotsHeightFraction * io.DisplaySize.y - 2.0f * style.WindowPadding.y;
+  const float plotHeight = std::max(kMinPlotLines * line, std::min(kMaxPlotHeightFraction * io.DisplaySize.y, room / count));
   const float height = plotHeight * count + 2.0f * style.WindowPadding.y;
-  const float right = data.plotsRight > 0.0f ? data.plotsRight : io.DisplaySize.x - margin;
-  ImGui::SetNextWindowPos(ImVec2(right - width, io.DisplaySize.y - height - margin));
+  const float right = underPanel ? margin + width : data.plotsRight > 0.0f ? data.plotsRight : io.DisplaySize.x - margin;
+  ImGui::SetNextWindowPos(ImVec2(right - width, io.DisplaySize.y - data.plotsBottomInset - height - margin));
   ImGui::SetNextWindowSize(ImVec2(width, height));  // fixed: see overlay.h
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
@@ -109,8 +114,11 @@ void Overlay::drawPlots(const OverlayData& data) {
       hi = middle + 0.54f * span;
       draw->AddRect(a, b, grid);
       draw->AddLine(ImVec2(a.x, 0.5f * (a.y + b.y)), ImVec2(b.x, 0.5f * (a.y + b.y)), grid);
+      // The middle value only where three labels fit without touching, the lowest where two do.
+      const bool middleFits = b.y - a.y >= 3.0f * line, lowFits = b.y - a.y >= 2.0f * line;
       for (const auto& [value, y] : {std::pair{hi, a.y}, std::pair{0.5f * (lo + hi), 0.5f * (a.y + b.y) - 0.5f * line},
                                      std::pair{lo, b.y - line}}) {
+        if ((!middleFits && value != hi && value != lo) || (!lowFits && value == lo)) continue;
         const std::string label = axisNumber(value);
         draw->AddText(ImVec2(a.x - ImGui::CalcTextSize(label.c_str()).x - 0.3f * line, y), dim, label.c_str());
       }

@@ -1,13 +1,11 @@
 #include "run/compare_view.h"
 
 #include <algorithm>
-#include <iterator>
 
 #include <glm/glm.hpp>
 
-#include "render/projection.h"
+#include "render/pane_layout.h"
 #include "run/frame_builder.h"
-#include "run/to_glm.h"
 
 namespace rbsim::app {
 
@@ -16,36 +14,9 @@ namespace {
 // buildFrame's overlay starts with "time t" and "integrator"; a comparison's rows follow them.
 constexpr std::ptrdiff_t kLeadingRows = 2;
 
-// Everything a world's frame draws in world space, moved by `d` [m].
-void shift(render::FrameData& frame, const glm::vec3& d) {
-  for (render::BodyView& body : frame.bodies) {
-    for (glm::vec3& p : body.worldVertices) p += d;
-    body.position += d;
-  }
-  for (render::ForceArrow& arrow : frame.forces) arrow.point += d;
-  for (render::DebugLine& line : frame.lines) {
-    line.a += d;
-    line.b += d;
-  }
-  for (render::DebugPoint& point : frame.points) point.position += d;
-  for (render::SpriteBatch& batch : frame.sprites) {
-    for (render::Sprite& sprite : batch.sprites) sprite.position += d;
-  }
-}
-
-template <typename T>
-void append(std::vector<T>& to, std::vector<T>&& from) {
-  to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
-}
-
-// Where a world point lands on the image, in pixels from the top left; false behind the camera.
-bool toPixel(const glm::mat4& viewProj, const glm::vec3& p, int width, int height, glm::vec2& pixel) {
-  const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
-  if (clip.w <= 0.0f) return false;
-  pixel = glm::vec2((0.5f + 0.5f * clip.x / clip.w) * static_cast<float>(width),
-                    (0.5f - 0.5f * clip.y / clip.w) * static_cast<float>(height));
-  return true;
-}
+// A pane's caption: its top left corner this far inside the pane's [px of a 720-row image].
+constexpr float kCaptionInset = 10.0f;
+constexpr float kReferenceRows = 720.0f;
 
 // The selected body in every world, quantity by quantity, so the values stand one under the
 // other: "x  PGS", "x  soft step", "v  PGS", ... (KE: kinetic energy, a short label keeps the
@@ -81,27 +52,30 @@ render::FrameData buildPhaseFrame(const std::vector<World>& worlds, const Phase&
                                   const std::vector<FreeFlightError>* freeFlight) {
   const FreeFlightError* first = freeFlight != nullptr && !freeFlight->empty() ? &freeFlight->front() : nullptr;
   if (!phase.compared()) return buildFrame(worlds.front(), phase.scene(), demoTitle, true, first);
+  // The panel and the plots in a column of their own, each world in a pane (pane_layout.h).
   render::FrameData frame = buildFrame(worlds.front(), phase.scene(), demoTitle, /*selectedBodyRows=*/false);
-  shift(frame, toGlm(phase.worlds.front().offset));
-  for (std::size_t k = 1; k < worlds.size(); ++k) {
-    render::FrameData other = buildFrame(worlds[k], phase.worlds[k].scene, demoTitle);
-    shift(other, toGlm(phase.worlds[k].offset));
-    for (render::BodyView& body : other.bodies) body.selected = false;  // the panel follows world 0
-    append(frame.bodies, std::move(other.bodies));
-    append(frame.forces, std::move(other.forces));
-    append(frame.lines, std::move(other.lines));
-    append(frame.points, std::move(other.points));
-    append(frame.sprites, std::move(other.sprites));
-  }
-
   const ViewDesc& view = phase.scene().view;
-  const glm::mat4 viewProj = render::viewProjection(frame.camera, view.width, view.height);
-  for (const PhaseWorld& world : phase.worlds) {
-    render::OverlayLabel label{world.label, glm::vec2(0.0f)};
-    if (toPixel(viewProj, toGlm(world.labelAnchor), view.width, view.height, label.pixel)) {
-      frame.overlay.labels.push_back(label);
+  frame.infoColumn = frame.options.overlay || !view.plots.empty();
+  frame.overlay.plotsUnderPanel = frame.infoColumn;
+  const std::vector<render::PaneRect> rects = render::paneLayout(worlds.size(), view.width, view.height, frame.infoColumn);
+  const float inset = kCaptionInset * static_cast<float>(view.height) / kReferenceRows;
+  for (std::size_t k = 0; k < worlds.size(); ++k) {
+    render::FrameData pane = buildFrame(worlds[k], phase.worlds[k].scene, demoTitle);
+    if (k > 0) {
+      for (render::BodyView& body : pane.bodies) body.selected = false;  // the panel follows world 0
     }
+    pane.camera = render::paneCamera(pane.camera, view.width, view.height, rects[k]);
+    pane.overlay = render::OverlayData{};
+    frame.panes.push_back(std::move(pane));
+    // At the pane's top left, where the sky usually is, clear of what the camera looks at.
+    const glm::vec2 corner(static_cast<float>(rects[k].x) + inset, static_cast<float>(rects[k].y) + inset);
+    frame.overlay.labels.push_back({phase.worlds[k].label, corner, /*leftAligned=*/true});
   }
+  frame.bodies.clear();
+  frame.forces.clear();
+  frame.lines.clear();
+  frame.points.clear();
+  frame.sprites.clear();
   // After "time t" and "integrator" (buildFrame's first rows), before any debug view's rows.
   const std::vector<std::pair<std::string, std::string>> rows = selectedBodyRows(worlds, phase, freeFlight);
   auto& all = frame.overlay.rows;

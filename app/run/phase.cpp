@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <sstream>
 
 #include "rbsim/io/input_error.h"
@@ -18,40 +17,6 @@ namespace {
 // "pgs" for a string, the JSON text otherwise: how a value reads in a caption.
 std::string shown(const nlohmann::json& value) {
   return value.is_string() ? value.get<std::string>() : value.dump();
-}
-
-// The box around the scene's bodies at t = 0 (world vertices R p + x), or false without bodies.
-bool bodiesBox(const Scene& scene, Vec3& lo, Vec3& hi) {
-  lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  hi = -lo;
-  bool any = false;
-  for (const BodyDef& def : scene.bodies) {
-    if (!def.mesh) continue;
-    for (const Vec3& p : def.mesh->vertices) {
-      const Vec3 world = def.orientation * p + def.position;
-      lo = lo.cwiseMin(world);
-      hi = hi.cwiseMax(world);
-      any = true;
-    }
-  }
-  return any;
-}
-
-// Below the middle of the front bottom edge of the world's bodies at t = 0 (the front faces the
-// camera), or at the camera's target without bodies.
-Vec3 labelAnchor(const Scene& scene) {
-  Vec3 lo, hi;
-  if (!bodiesBox(scene, lo, hi)) return scene.view.target;
-  const Vec3 centre = 0.5 * (lo + hi);
-  const Vec3 toEye = scene.view.eye - centre;
-  const double front = toEye.z() >= 0.0 ? hi.z() + kCompareLabelAhead : lo.z() - kCompareLabelAhead;
-  return Vec3(centre.x(), lo.y(), front);
-}
-
-Vec3 defaultOffset(const Scene& scene) {
-  Vec3 lo, hi;
-  const double width = bodiesBox(scene, lo, hi) ? hi.x() - lo.x() : 0.0;
-  return Vec3(std::max(kCompareSpacingFactor * width, kMinCompareSpacing), 0.0, 0.0);
 }
 
 // A --set assignment that changes the compared key (or something inside it) would be replaced
@@ -73,7 +38,7 @@ Phase parseCompared(nlohmann::json document, const std::string& file, const std:
                     const std::vector<std::string>& overrides) {
   const nlohmann::json block = document["compare"];
   document.erase("compare");  // the engine's scene parser knows nothing of it
-  const JsonObject c(block, file, "compare", {"key", "values", "labels", "offset"});
+  const JsonObject c(block, file, "compare", {"key", "values", "labels"});
   const std::string key = c.requiredString("key");
   const std::vector<std::string> parts = splitScenePath(key);
   if (parts.empty()) c.fail("key", "expected a scene key in --set form, such as world.solver or bodies.box.mass");
@@ -105,13 +70,11 @@ Phase parseCompared(nlohmann::json document, const std::string& file, const std:
     }
     for (const nlohmann::json& s : l) labels.push_back(s.get<std::string>());
   }
-  const std::optional<Vec3> offset = c.optionalVec3("offset");
   refuseOverridesOfTheKey(overrides, key, file);
 
   Phase phase;
   phase.file = file;
   phase.compareKey = key;
-  Vec3 spacing = Vec3::Zero();  // from one world to the next [m]
   for (std::size_t k = 0; k < values.size(); ++k) {
     const std::string field = "compare.values[" + std::to_string(k) + "]";
     nlohmann::json variant = document;
@@ -131,9 +94,6 @@ Phase parseCompared(nlohmann::json document, const std::string& file, const std:
     }
     world.value = values[k].dump();
     world.label = labels.empty() ? key + " = " + shown(values[k]) : labels[k];
-    if (k == 0) spacing = offset ? *offset : defaultOffset(world.scene);
-    world.offset = static_cast<double>(k) * spacing;
-    world.labelAnchor = labelAnchor(world.scene) + world.offset;
     phase.worlds.push_back(std::move(world));
   }
   return phase;
@@ -145,7 +105,6 @@ Phase singleWorldPhase(Scene scene) {
   Phase phase;
   phase.file = scene.file;
   PhaseWorld world;
-  world.labelAnchor = labelAnchor(scene);
   world.scene = std::move(scene);
   phase.worlds.push_back(std::move(world));
   return phase;

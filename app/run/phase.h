@@ -1,10 +1,10 @@
 #pragma once
 // One phase of a video: a scene file run as one World or, when the scene has a "compare" block,
 // as one World per value of one scene key, stepped in lockstep and drawn side by side in one
-// frame, each under a caption naming its value (README "Comparing settings side by side"):
+// frame, each in a pane of its own under a caption naming its value (README "Comparing
+// settings side by side"):
 //
-//   "compare": {"key": "world.solver", "values": ["pgs", "soft-step"],
-//               "labels": ["PGS", "soft step"], "offset": [30, 0, 0]}
+//   "compare": {"key": "world.solver", "values": ["pgs", "soft-step"], "labels": ["PGS", "soft step"]}
 //
 // Each value is applied to the scene document exactly as `--set KEY=VALUE` would be
 // (engine/scene/override.cpp), after the command line's own --set assignments, so a compared
@@ -20,21 +20,11 @@ namespace rbsim::app {
 
 // More worlds than this in one frame leaves each too small to see; most likely a typo.
 inline constexpr std::size_t kMaxComparedWorlds = 8;
-// Without "offset", world k is moved k times the x-extent of the first world's bodies at t = 0
-// times this, so a quarter of their width separates neighbours [1]...
-inline constexpr double kCompareSpacingFactor = 1.25;
-// ...and at least this far apart, for scenes of small bodies or none [m].
-inline constexpr double kMinCompareSpacing = 2.0;
-// A world's caption hangs below the front edge of its bodies' box at t = 0, this far in front
-// of it, on the ground in front of the world and clear of the overlay panel at the top left [m].
-inline constexpr double kCompareLabelAhead = 0.5;
 
 struct PhaseWorld {
   Scene scene;                 // the scene with this world's value applied
   std::string value;           // the value as JSON text ("\"pgs\""); empty for a plain scene
   std::string label;           // its caption: compare.labels[k], or "KEY = VALUE"
-  Vec3 offset = Vec3::Zero();  // its drawing is moved by this [m] (k times compare.offset)
-  Vec3 labelAnchor = Vec3::Zero();  // its caption's top centre, offset included [m]
 };
 
 struct Phase {

@@ -101,17 +101,19 @@ void TimePlots::sample(const World& world, const FreeFlightError* freeFlight, st
     Series& s = series_[p][k];
     s.t.push_back(static_cast<float>(world.time()));
     s.y.push_back(static_cast<float>(plotQuantity(names_[p], world, selectedOnly_, selected_[k], freeFlight)));
-    while (!s.t.empty() && s.t.front() < now_ - seconds_) {
+    while (!keepHistory_ && !s.t.empty() && s.t.front() < now_ - seconds_) {
       s.t.pop_front();
       s.y.pop_front();
     }
   }
 }
 
-std::vector<render::OverlayPlot> TimePlots::plots() const {
+std::vector<render::OverlayPlot> TimePlots::plotsAt(double t) const {
   std::vector<render::OverlayPlot> out;
   // The window stands still while it fills, then scrolls with the time.
-  const float tMax = static_cast<float>(std::max(now_, seconds_));
+  const float tMax = static_cast<float>(std::max(t, seconds_));
+  const float tMin = tMax - static_cast<float>(seconds_);
+  const float until = static_cast<float>(t);
   for (std::size_t p = 0; p < names_.size(); ++p) {
     render::OverlayPlot plot;
     const auto [unit, title] = plotUnitAndTitle(names_[p], selectedOnly_);
@@ -119,10 +121,14 @@ std::vector<render::OverlayPlot> TimePlots::plots() const {
     plot.title = selectedOnly_ && !bodyName_.empty() ? bodyName_ + ": " + title : title;
     plot.legend = legend_;
     plot.tMax = tMax;
-    plot.tMin = tMax - static_cast<float>(seconds_);
+    plot.tMin = tMin;
     for (const Series& s : series_[p]) {
-      plot.times.emplace_back(s.t.begin(), s.t.end());
-      plot.values.emplace_back(s.y.begin(), s.y.end());
+      // The samples in [t - seconds, t] (all of them, unless history is kept).
+      const auto first = std::lower_bound(s.t.begin(), s.t.end(), static_cast<float>(t - seconds_));
+      const auto last = std::upper_bound(first, s.t.end(), until);
+      const auto from = first - s.t.begin(), to = last - s.t.begin();
+      plot.times.emplace_back(first, last);
+      plot.values.emplace_back(s.y.begin() + from, s.y.begin() + to);
     }
     out.push_back(std::move(plot));
   }

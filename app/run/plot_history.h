@@ -34,7 +34,12 @@ class TimePlots {
   void sample(const std::vector<World>& worlds, const std::vector<FreeFlightError>* freeFlight);
   // The same for world k alone (window mode has one World, not a vector of them).
   void sample(const World& world, const FreeFlightError* freeFlight, std::size_t k = 0);
-  std::vector<render::OverlayPlot> plots() const;
+  std::vector<render::OverlayPlot> plots() const { return plotsAt(now_); }
+  // The plots as they were at time t: the window ending at t (the replay window scrubs with this;
+  // it keeps every sample, see keepHistory).
+  std::vector<render::OverlayPlot> plotsAt(double t) const;
+  // Keep samples older than the window too, so plotsAt can go back to any time.
+  void keepHistory() { keepHistory_ = true; }
 
  private:
   struct Series {
@@ -48,6 +53,7 @@ class TimePlots {
   std::string bodyName_;               // of the selected body, for the titles
   std::vector<std::vector<Series>> series_;  // [plot][world]
   double now_ = 0.0;
+  bool keepHistory_ = false;
 };
 
 }  // namespace rbsim::app

@@ -20,9 +20,6 @@ COLUMN_BOXES = 20
 PYRAMID_ROWS = 20       # 20 * 21 / 2 = 210 boxes
 # The column stands this far right of the pyramid's centre: 2 m clear of its bottom row [m].
 COLUMN_X = 0.5 * PYRAMID_ROWS * BOX_EDGE + 2.0 + 0.5 * BOX_EDGE
-# The soft-step world is drawn this far right of the PGS one: each world spans 23 m in x, and
-# the 11 m between them keep the PGS column's debris (it falls) clear of the soft-step pyramid [m].
-WORLD_OFFSET = 34.0
 
 COLUMN_COLOR = [0.30, 0.55, 0.90]
 TOP_COLOR = [0.95, 0.85, 0.30]   # the column's top box, whose variables the panel shows
@@ -55,14 +52,13 @@ def bodies():
 def main():
     scene = {
         "title": "Demo 5 (c): PGS against soft step at dt = 1/60 s",
-        "compare": {"key": "world.solver", "values": ["pgs", "soft-step"], "labels": ["PGS", "soft step"],
-                    "offset": [WORLD_OFFSET, 0, 0]},
+        "compare": {"key": "world.solver", "values": ["pgs", "soft-step"], "labels": ["PGS", "soft step"]},
         # Each solver's settings written out (engine/world/settings.h's defaults today), so that
         # the caption stays true if the defaults move.
         "world": {"dt": TIME_STEP, "duration": DURATION, "sleep": False, "velocity_iterations": 10,
                   "position_iterations": 4, "substeps": 8, "contact_hertz": 120},
         "view": {
-            "camera": {"eye": [4.5, 16.0, 62.0], "target": [4.5, 15.5, 0.0], "fov_deg": 45},
+            "camera": {"eye": [1.5, 11.0, 29.0], "target": [1.5, 9.5, 0.0], "fov_deg": 45},
             "size": [1280, 720], "fps": 30, "axes": False, "selected": f"stack_{COLUMN_BOXES - 1}",
             "caption": "a column of 20 and a pyramid of 210 unit boxes, sleep off. PGS: 10 sweeps, split "
                        "impulses; soft step: 8 substeps of 120 Hz soft contacts (Box2D v3)",

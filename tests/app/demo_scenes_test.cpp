@@ -15,6 +15,7 @@
 #include "demos/demo.h"
 #include "rbsim/io/input_error.h"
 #include "paths.h"
+#include "render/pane_layout.h"
 #include "run/compare_view.h"
 #include "run/phase.h"
 #include "run/runner.h"
@@ -58,8 +59,6 @@ TEST(ComparedPhase, EachWorldGetsItsOwnSolverAndIsOtherwiseTheSame) {
   ASSERT_EQ(phase.worlds.size(), 2u);
   EXPECT_EQ(phase.worlds[0].label, "PGS");
   EXPECT_EQ(phase.worlds[1].label, "soft step");
-  EXPECT_TRUE(phase.worlds[0].offset.isZero());
-  EXPECT_GT(phase.worlds[1].offset.x(), 0.0);
 
   World pgs = buildWorld(phase.worlds[0].scene), soft = buildWorld(phase.worlds[1].scene);
   EXPECT_EQ(pgs.settings().solver, Settings::ContactSolverMethod::Pgs);
@@ -137,40 +136,52 @@ TEST(ComparedPhase, TheSoftStepColumnStandsAndThePgsColumnFalls) {
   EXPECT_LT(pgs.bodies()[kTop].position().y(), kFallenBelow);
 }
 
-// One frame holds both worlds: the second one's bodies moved by its offset, one selected body
-// (the panel follows the first world), and a caption per world inside the image, left to right.
-TEST(ComparedPhase, OneFrameDrawsEveryWorldWithItsCaption) {
+// One frame holds both worlds, each in a pane of its own (world k's bodies where world k has
+// them, unmoved), one selected body (the panel follows the first world), and a caption per world
+// at the top left of its pane, right of the panel's column.
+TEST(ComparedPhase, OneFrameDrawsEveryWorldInItsPaneWithItsCaption) {
   const Phase phase = loadPhase(assetDir() + "/scenes/contact_solvers.json");
   std::vector<World> worlds;
   for (const PhaseWorld& w : phase.worlds) worlds.push_back(buildWorld(w.scene));
+  worlds[1].step();  // so the panes cannot both be world 0's
   const render::FrameData frame = buildPhaseFrame(worlds, phase, "Demo 5");
+  EXPECT_TRUE(frame.bodies.empty());
+  ASSERT_EQ(frame.panes.size(), 2u);
   const std::size_t n = worlds[0].bodies().size();
-  ASSERT_EQ(frame.bodies.size(), 2 * n);
-  const Vec3 offset = phase.worlds[1].offset;
-  for (std::size_t i = 0; i < n; i += 23) {
-    const Vec3 x = worlds[1].bodies()[i].position() + offset;
-    EXPECT_NEAR(frame.bodies[n + i].position.x, x.x(), 1e-4);
-    EXPECT_NEAR(frame.bodies[n + i].position.y, x.y(), 1e-4);
+  for (std::size_t k = 0; k < 2; ++k) {
+    ASSERT_EQ(frame.panes[k].bodies.size(), n);
+    for (std::size_t i = 0; i < n; i += 23) {
+      const Vec3 x = worlds[k].bodies()[i].position();
+      EXPECT_FLOAT_EQ(frame.panes[k].bodies[i].position.y, static_cast<float>(x.y()));
+    }
   }
+  EXPECT_NE(frame.panes[0].bodies[n - 1].position.y, frame.panes[1].bodies[n - 1].position.y);
   int selected = 0;
-  for (const render::BodyView& b : frame.bodies) selected += b.selected ? 1 : 0;
+  for (const render::FrameData& pane : frame.panes) {
+    for (const render::BodyView& b : pane.bodies) selected += b.selected ? 1 : 0;
+  }
   EXPECT_EQ(selected, 1);
   ASSERT_EQ(frame.overlay.labels.size(), 2u);
   EXPECT_EQ(frame.overlay.labels[0].text, "PGS");
   EXPECT_EQ(frame.overlay.labels[1].text, "soft step");
   const ViewDesc& view = phase.scene().view;
-  for (const render::OverlayLabel& label : frame.overlay.labels) {
-    EXPECT_GT(label.pixel.x, 0.0f);
-    EXPECT_LT(label.pixel.x, static_cast<float>(view.width));
-    EXPECT_GT(label.pixel.y, 0.0f);
-    EXPECT_LT(label.pixel.y, static_cast<float>(view.height));
+  EXPECT_TRUE(frame.infoColumn);
+  EXPECT_TRUE(frame.overlay.plotsUnderPanel);
+  const std::vector<render::PaneRect> rects = render::paneLayout(2, view.width, view.height, true);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const render::OverlayLabel& label = frame.overlay.labels[k];
+    EXPECT_TRUE(label.leftAligned);
+    EXPECT_GT(label.pixel.x, static_cast<float>(rects[k].x));
+    EXPECT_LT(label.pixel.x, static_cast<float>(rects[k].x + rects[k].width / 4));
+    EXPECT_GT(label.pixel.y, static_cast<float>(rects[k].y));
+    EXPECT_LT(label.pixel.y, static_cast<float>(rects[k].y + rects[k].height / 4));
+    EXPECT_GE(static_cast<float>(rects[k].x), render::infoColumnWidth(view.width, view.height) - 1.0f);
   }
-  EXPECT_LT(frame.overlay.labels[0].pixel.x, frame.overlay.labels[1].pixel.x);
 }
 
 // The mechanism is not tied to one key: worlds of different dt step in lockstep by time, the
-// caption defaults to "KEY = VALUE", the offset to the bodies' width, and --set reaches the
-// block itself but may not set the compared key.
+// caption defaults to "KEY = VALUE", and --set reaches the block itself but may not set the
+// compared key.
 TEST(ComparedPhase, AnyKeyWorksAndWorldsOfDifferentStepsKeepTheSameTime) {
   const std::string text = R"({"world": {"gravity": [0, -9.81, 0], "dt": 0.01, "duration": 0.1},
     "compare": {"key": "world.dt", "values": [0.01, 0.005]},
@@ -179,7 +190,6 @@ TEST(ComparedPhase, AnyKeyWorksAndWorldsOfDifferentStepsKeepTheSameTime) {
   ASSERT_EQ(phase.worlds.size(), 2u);
   EXPECT_EQ(phase.worlds[0].label, "world.dt = 0.01");
   EXPECT_EQ(phase.worlds[1].label, "world.dt = 0.005");
-  EXPECT_NEAR(phase.worlds[1].offset.x(), kCompareSpacingFactor * 3.0, 1e-12);  // the box is 3 m wide
   EXPECT_EQ(phase.worlds[0].scene.stepCount(), 10u);
   EXPECT_EQ(phase.worlds[1].scene.stepCount(), 20u);
   EXPECT_EQ(frameCount(phase), frameCount(phase.worlds[0].scene));

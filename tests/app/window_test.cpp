@@ -146,4 +146,47 @@ TEST(WindowModeErrors, NoDisplayAndMisplacedFlagsExitTwoWithAMessage) {
   EXPECT_NE(output.find("only with --window"), std::string::npos) << output;
 }
 
+// `rbsim replay FILE --window` (issue 24): the recording plays in the window with a timeline bar
+// along the bottom; above the bar, its fifth frame is the off-screen replay's fifth frame.
+TEST(ReplayWindow, PlaysTheRecordingAboveItsTimeline) {
+  const fs::path dir = fs::temp_directory_path() / ("rbsim_replay_window_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string binary = "'" + std::string(RBSIM_BINARY) + "'";
+  const std::string recording = (dir / "run.rbrec").string();
+  auto [code, output] = run(binary + " run '" + kScene + "' --no-render --record '" + recording + "' --quiet");
+  ASSERT_EQ(code, 0) << output;
+  std::tie(code, output) = run("xvfb-run -a -s '-screen 0 1280x1024x24' " + binary + " replay '" + recording +
+                               "' --window --window-frames " + std::to_string(kFramesShown) + " --screenshot '" +
+                               (dir / "window.png").string() + "' --quiet");
+  ASSERT_EQ(code, 0) << output;
+  std::tie(code, output) = run(binary + " replay '" + recording + "' --frames '" + (dir / "frames").string() +
+                               "' --video '" + (dir / "replay.mp4").string() + "' --quiet");
+  ASSERT_EQ(code, 0) << output;
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06d.png", kFramesShown - 1);
+  const Image shot = readPng(dir / "window.png"), frame = readPng(dir / "frames" / name);
+  ASSERT_EQ(shot.width, kWidth);
+  ASSERT_EQ(frame.width, kWidth);
+  // The bar takes the bottom quarter at most; above it, the same frame but for rounding.
+  const int barTop = kHeight * 3 / 4;
+  double aboveDiff = 0.0, barDiff = 0.0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      int diff = 0;
+      for (int c = 0; c < 3; ++c) diff += std::abs(shot.at(x, y)[c] - frame.at(x, y)[c]);
+      (y < barTop ? aboveDiff : barDiff) += diff;
+    }
+  }
+  EXPECT_LT(aboveDiff / (3.0 * kWidth * barTop), 0.5) << "mean difference per channel above the timeline";
+  const int barRows = kHeight / 10;  // its slider, at the very bottom
+  double sliderDiff = 0.0;
+  for (int y = kHeight - barRows; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      for (int c = 0; c < 3; ++c) sliderDiff += std::abs(shot.at(x, y)[c] - frame.at(x, y)[c]);
+    }
+  }
+  EXPECT_GT(sliderDiff / (3.0 * kWidth * barRows), 10.0) << "the timeline is drawn at the bottom";
+  fs::remove_all(dir);
+}
+
 }  // namespace
