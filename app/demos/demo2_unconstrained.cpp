@@ -1,5 +1,5 @@
 // Demo 2: assignment 2, rigid body unconstrained motion (seed 004). Five phases, one video:
-// (a) x and R set by hand; (b) given v and omega; (c) a force at an off-centre point, with the
+// (a) x and R set by hand, the engine's vertex list drawn as dots over the box; (b) given v and omega; (c) a force at an off-centre point, with the
 // torque it produces; (d) a general mesh with exact inertia beside its cube approximation, its
 // energy plotted; (e) that mesh under three integrators side by side, energy and error plotted.
 #include "demos/demo.h"

@@ -69,6 +69,7 @@ inline constexpr glm::vec3 kDebugContactPointColor{1.00f, 0.90f, 0.00f};   // ye
 inline constexpr glm::vec3 kDebugContactNormalColor{1.00f, 0.10f, 0.90f};  // magenta
 inline constexpr glm::vec3 kDebugGridNormalColor{0.30f, 1.00f, 0.25f};     // green: normal from grad phi
 inline constexpr glm::vec3 kDebugImpulseColor{1.00f, 0.50f, 0.00f};        // orange: impulse j
+inline constexpr glm::vec3 kDebugVertexColor{0.10f, 0.95f, 1.00f};         // cyan-white: a world vertex p' = R p + x
 
 // One particle drawn as a camera-facing sprite; the layout is the renderer's instance attribute.
 struct Sprite {

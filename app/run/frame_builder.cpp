@@ -10,6 +10,12 @@
 
 namespace rbsim::app {
 
+namespace {
+
+constexpr float kVertexDotPixels = 7.0f;  // a drawn world vertex (view.vertices), diameter [px]
+
+}  // namespace
+
 std::string formatVec(const Vec3& v, const char* unit) {
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "%+9.4f %+9.4f %+9.4f %s", v.x(), v.y(), v.z(), unit);
@@ -63,6 +69,9 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
     const Vec3 extents = body.mesh().boundsMax() - body.mesh().boundsMin();
     bv.axisLength = static_cast<float>(0.75 * extents.maxCoeff());
     bv.selected = i == view.selected;
+    if (view.vertices) {
+      for (const glm::vec3& p : bv.worldVertices) frame.points.push_back({p, render::kDebugVertexColor, kVertexDotPixels});
+    }
     frame.bodies.push_back(std::move(bv));
     for (const auto& [point, force] : world.activeForces(i, t)) {
       frame.forces.push_back({toGlm(point), toGlm(force)});

@@ -34,6 +34,9 @@ struct ViewDesc {
   bool grid = true;
   bool aabbs = false;     // draw AABBs (red when in a pair), compare pairs with brute force
   bool contacts = false;  // draw contact points, normals, distances and impact ghosts
+  // Draw each body's vertex list p' = R p + x as the engine computed it (seed 004 section 2: "do
+  // this transform yourself"), as dots over the body the renderer drew from R and x.
+  bool vertices = false;
   std::size_t selected = 0;            // body shown in the overlay
   std::string caption;
   // Time plots in the overlay (app/run/plot_history.h): names of kPlotQuantities, of the whole

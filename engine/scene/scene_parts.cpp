@@ -130,6 +130,7 @@ void parseViewFields(const JsonObject& v, ViewDesc& view) {
   view.grid = v.boolean("grid", view.grid);
   view.aabbs = v.boolean("aabbs", view.aabbs);
   view.contacts = v.boolean("contacts", view.contacts);
+  view.vertices = v.boolean("vertices", view.vertices);
   view.caption = v.string("caption", view.caption);
   if (v.has("plots")) {
     const nlohmann::json& plots = v.raw("plots");

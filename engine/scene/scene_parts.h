@@ -48,8 +48,8 @@ ScriptedForce parseForceBlock(const nlohmann::json& force, const std::string& fi
 std::pair<Plane, Material> parsePlaneBlock(const nlohmann::json& plane, const std::string& file, const std::string& path);
 
 inline constexpr std::initializer_list<const char*> kViewKeys = {
-    "camera", "size", "fps", "overlay", "wireframe", "axes", "grid", "aabbs", "contacts", "selected", "caption",
-    "plots", "plot_of", "plot_seconds"};
+    "camera", "size", "fps", "overlay", "wireframe", "axes", "grid", "aabbs", "contacts", "vertices", "selected",
+    "caption", "plots", "plot_of", "plot_seconds"};
 // The fields of a view block but "selected" (a body of the file: the caller's) into `view`.
 void parseViewFields(const JsonObject& v, ViewDesc& view);
 // What a single picture of a view block uses, over `view`: "camera", "overlay", "wireframe",
