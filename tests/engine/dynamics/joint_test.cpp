@@ -317,59 +317,5 @@ TEST_P(DoorIntegrator, PushedAtItsHandleTurnsAtTorqueOverHingeInertia) {
 INSTANTIATE_TEST_SUITE_P(Joints, DoorIntegrator, testing::Values(Integrator::Exact, Integrator::SymplecticEuler),
                          integratorParamName);
 
-TEST(Joints, PgsRefusesJoints) {
-  Settings s = pendulumSettings(1.0 / 60.0);
-  s.solver = Settings::ContactSolverMethod::Pgs;
-  World world(s);
-  world.addBody(boxDef(Vec3(0.1, 1.0, 0.1), 1.0, "rod"));
-  JointDef joint;
-  EXPECT_THROW(world.addJoint(joint), std::invalid_argument);
-}
-
-// Two overlapping boxes joined by a ball joint: no contact between them unless collideConnected.
-TEST(Joints, JointedBodiesDoNotCollideUnlessAsked) {
-  for (const bool collide : {false, true}) {
-    World world(pendulumSettings(1.0 / 60.0));
-    BodyDef a = boxDef(Vec3(0.5, 0.5, 0.5), 1.0, "a");
-    BodyDef b = boxDef(Vec3(0.5, 0.5, 0.5), 1.0, "b");
-    b.position = Vec3(0.3, 0.0, 0.0);
-    world.addBody(a);
-    world.addBody(b);
-    JointDef joint;
-    joint.bodyA = 1;
-    joint.bodyB = 0;
-    joint.anchor = Vec3(0.15, 0.0, 0.0);
-    joint.collideConnected = collide;
-    world.addJoint(joint);
-    world.step();
-    EXPECT_EQ(world.contacts().empty(), !collide);
-  }
-}
-
-// A body hung from a sleeping one: both sleep as one island, and moving one wakes the other.
-TEST(Joints, JointedBodiesSleepAndWakeTogether) {
-  Settings s = pendulumSettings(1.0 / 60.0);
-  s.allowSleep = true;
-  s.gravity = Vec3::Zero();
-  World world(s);
-  BodyDef a = boxDef(Vec3(0.2, 0.2, 0.2), 1.0, "a");
-  BodyDef b = boxDef(Vec3(0.2, 0.2, 0.2), 1.0, "b");
-  b.position = Vec3(0.0, -0.5, 0.0);
-  world.addBody(a);
-  world.addBody(b);
-  JointDef joint;
-  joint.bodyA = 1;
-  joint.bodyB = 0;
-  joint.anchor = Vec3(0.0, -0.25, 0.0);
-  world.addJoint(joint);
-  for (int i = 0; i < 120; ++i) world.step();
-  ASSERT_FALSE(world.bodies()[0].awake());
-  ASSERT_FALSE(world.bodies()[1].awake());
-  world.body(std::size_t{1}).setVelocity(Vec3(1.0, 0.0, 0.0));
-  world.step();
-  EXPECT_TRUE(world.bodies()[0].awake());
-  EXPECT_GT(world.bodies()[0].velocity().norm(), 0.0);  // pulled along by the joint
-}
-
 }  // namespace
 }  // namespace rbsim::test
