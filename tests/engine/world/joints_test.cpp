@@ -2,7 +2,9 @@
 // jointed bodies unless asked, one sleep island, and joints following destroyed bodies.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "test_util.h"
 #include "rbsim/world/world.h"
@@ -70,6 +72,68 @@ TEST(WorldJoints, JointedBodiesSleepAndWakeTogether) {
   world.step();
   EXPECT_TRUE(world.bodies()[0].awake());
   EXPECT_GT(world.bodies()[0].velocity().norm(), 0.0);  // pulled along by the joint
+}
+
+// A motor between two free bodies turns them against each other: no external torque, so the
+// pair's angular momentum stays zero while each spins up (the reaction acts on the base).
+TEST(WorldJoints, MotorBetweenTwoBodiesKeepsTheirAngularMomentum) {
+  Settings s = still();
+  s.gravity = Vec3::Zero();
+  World world(s);
+  BodyDef rotor = boxDef(Vec3(0.6, 0.6, 0.1), 1.0, "rotor");
+  BodyDef stator = boxDef(Vec3(1.0, 0.4, 0.3), 3.0, "stator");
+  rotor.position = Vec3(0.0, 0.0, 0.3);
+  world.addBody(rotor);
+  world.addBody(stator);
+  JointDef motor;
+  motor.type = JointDef::Type::Hinge;
+  motor.bodyA = 0;
+  motor.bodyB = 1;
+  motor.anchor = Vec3(0.0, 0.0, 0.2);
+  motor.axis = Vec3(0.0, 0.0, 1.0);
+  motor.motor = true;
+  motor.motorSpeed = 5.0;
+  motor.maxMotorTorque = 0.5;
+  world.addJoint(motor);
+  for (int i = 0; i < 240; ++i) world.step();
+  Vec3 total = Vec3::Zero();
+  for (const RigidBody& b : world.bodies()) total += b.position().cross(b.state().linearMomentum) + b.state().angularMomentum;
+  EXPECT_LT(total.norm(), 1e-9) << "kg m^2/s";
+  const double relative = world.bodies()[0].angularVelocity().z() - world.bodies()[1].angularVelocity().z();
+  EXPECT_NEAR(relative, 5.0, 1e-6);  // reached: 0.5 N m spins both up within 4 s
+  EXPECT_LT(world.bodies()[1].angularVelocity().z(), 0.0);
+}
+
+// A chain of ten jointed links dropped onto the ground: contacts and joints in one solve. It comes
+// to rest on the plane with its joints closed and its energy gone.
+TEST(WorldJoints, ChainSettlesOnTheGroundWithItsJointsHeld) {
+  Settings s = still();
+  World world(s);
+  world.addPlane(Plane{Vec3::UnitY(), 0.0});
+  for (int i = 0; i < 10; ++i) {
+    BodyDef link = boxDef(Vec3(0.3, 0.05, 0.05), 0.5, "link" + std::to_string(i));
+    link.position = Vec3(0.3 * i + 0.15, 1.0, 0.0);
+    world.addBody(link);
+    if (i == 0) continue;
+    JointDef joint;
+    joint.bodyA = static_cast<std::size_t>(i);
+    joint.bodyB = static_cast<std::size_t>(i - 1);
+    joint.anchor = Vec3(0.3 * i, 1.0, 0.0);
+    world.addJoint(joint);
+  }
+  for (int i = 0; i < 300; ++i) world.step();  // 5 s
+  double worst = 0.0, energy = 0.0;
+  for (const Joint& j : world.joints()) {
+    const Vec3 onA = world.bodies()[j.def.bodyA].bodyToWorld(j.localAnchorMoving);
+    const Vec3 onB = world.bodies()[j.def.bodyB].bodyToWorld(j.localAnchorBase);
+    worst = std::max(worst, (onA - onB).norm());
+  }
+  for (const RigidBody& b : world.bodies()) {
+    energy += b.kineticEnergy();
+    EXPECT_NEAR(b.position().y(), 0.025, 2e-3) << b.name();
+  }
+  EXPECT_LT(worst, 1e-3) << "m";
+  EXPECT_LT(energy, 1e-4) << "J";
 }
 
 // Destroying a body takes its joints with it; the body moved into its index keeps its joints.
