@@ -140,8 +140,8 @@ TEST(Joints, LargeSwingPeriodAtSixtyHertz) {
 
 // 1e4 swings of a 30 degree pendulum at dt = 1/60 s. The soft step never gives a pendulum energy
 // (its relax sweep removes the velocity along the rod at the new pose, which only takes), but it
-// takes some: per substep about (omega h)^2 of the kinetic energy is projected away and only
-// partly given back by the soft correction of the stretch this leaves. Bounds, in units of the
+// takes some: each substep's velocity along the rod at the new pose is projected away, and only
+// part of it comes back through the soft correction of the stretch this leaves. Bounds, in units of the
 // swing energy m g d (1 - cos theta0): E never above E0 + 1 % (the substeps' symplectic Euler
 // lets E oscillate within a swing; measured 0.67 %), and at most 20 % lost over the 1e4 swings
 // (measured 16 %, about 1.6e-5 a swing; without its soft correction the rod drifted off its
