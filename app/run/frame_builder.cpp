@@ -44,6 +44,32 @@ std::string formatFreeFlightError(const FreeFlightError::Reading& reading) {
   return buffer;
 }
 
+namespace {
+
+// Joints as Box2D's b2DrawRevoluteJoint draws them: a segment from each body's centre of mass to
+// its copy of the anchor, and for a hinge its axis through the anchor.
+constexpr float kJointAxisHalfLength = 0.35f;  // [m] drawn each side of the anchor
+const glm::vec3 kJointColor(1.0f, 0.8f, 0.1f);
+const glm::vec3 kHingeAxisColor(0.2f, 1.0f, 0.9f);
+
+void addJointLines(const World& world, render::FrameData& frame) {
+  for (const Joint& joint : world.joints()) {
+    const RigidBody& a = world.bodies()[joint.def.bodyA];
+    const Vec3 onA = a.bodyToWorld(joint.localAnchorMoving);
+    frame.lines.push_back({toGlm(a.position()), toGlm(onA), kJointColor, true});
+    if (joint.def.bodyB != kWorldAnchor) {
+      const RigidBody& b = world.bodies()[joint.def.bodyB];
+      frame.lines.push_back({toGlm(b.position()), toGlm(b.bodyToWorld(joint.localAnchorBase)), kJointColor, true});
+    }
+    if (joint.def.type == JointDef::Type::Hinge) {
+      const glm::vec3 axis = toGlm(a.rotation() * joint.localAxisMoving) * kJointAxisHalfLength;
+      frame.lines.push_back({toGlm(onA) - axis, toGlm(onA) + axis, kHingeAxisColor, true});
+    }
+  }
+}
+
+}  // namespace
+
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
                              bool selectedBodyRows, const FreeFlightError* freeFlight) {
   render::FrameData frame;
@@ -112,6 +138,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
   if (!world.softBodies().empty()) addSoftView(world, frame);
   if (world.planarWorld() != nullptr) addPlanarView(world, scene, frame);
   if (view.aabbs || view.contacts) addCollisionView(world, scene, frame);
+  if (!world.joints().empty()) addJointLines(world, frame);
   return frame;
 }
 

@@ -310,7 +310,7 @@ void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, do
 }
 
 void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
-                          const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
+                          std::vector<Joint>& joints, const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
                           const Settings& settings, bool addGravity) {
   clearAdvanced();
   advanced_.resize(bodies.size(), 0);
@@ -320,6 +320,7 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
   constraints_.clear();
   points_.clear();
   solved_.clear();
+  joints_.clear();
 
   const double h = settings.timeStep / settings.substeps;
   const double hertz = std::min(settings.contactHertz, kMaxHertzPerSubstepRate / h);
@@ -334,6 +335,8 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     slot(bodies, contact.b, settings, addGravity);
     if (!plane) slot(bodies, contact.a, settings, addGravity);
   }
+  slotJoints(bodies, joints, settings, addGravity);
+  prepareJoints(bodies, joints, settings);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& contact = contacts[i];
     const bool plane = contact.kind == Contact::Kind::PlaneBody;
@@ -349,10 +352,13 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
   const double inverseH = 1.0 / h;
   for (int substep = 0; substep < settings.substeps; ++substep) {
     integrateVelocities(h);
+    warmStartJoints();
     warmStart();  // the last substep's impulses (at the first, the last step's, when kept)
+    solveJoints(h, /*useBias=*/true);
     solve(inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
     integratePositions(bodies, h);
     updateJacobians();  // for the relax, and the next substep's warm start and solve
+    solveJoints(h, /*useBias=*/false);
     solve(inverseH, settings, /*useBias=*/false, /*lastRelax=*/substep == settings.substeps - 1);
   }
   applyRestitution(settings);

@@ -16,6 +16,10 @@
 // contactDampingRatio solved implicitly over the substep (Catto, "Soft Constraints", GDC 2011),
 // which gives the bias velocity, a mass scale and an impulse scale (softness.h). The relax sweep
 // then removes the velocity that bias added, so pushing out never becomes kinetic energy.
+//
+// Joints (dynamics/joint.h) are solved with the contacts, before them in every sweep (Box2D v3's
+// b2SolverStage order): soft in the biased solve, rigid in the relax (soft_step_joints.cpp). Every
+// awake jointed body is advanced by this solver, touching something or not.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +27,7 @@
 
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/body/material.h"
+#include "rbsim/dynamics/joint.h"
 #include "rbsim/dynamics/softness.h"
 #include "rbsim/dynamics/solved_contact_point.h"
 #include "rbsim/collision/contact.h"
@@ -34,8 +39,9 @@ class SoftStepSolver {
  public:
   // Advances by settings.timeStep every awake body in a contact with a manifold (x, q, P, L),
   // using the forces and torques accumulated in it, plus m g when `addGravity` (the World adds
-  // gravity in its Integrate pass unless other forces act). Clears their accumulators.
-  void step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
+  // gravity in its Integrate pass unless other forces act), and every awake body of a joint,
+  // whose warm-start impulses are read and written back. Clears their accumulators.
+  void step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts, std::vector<Joint>& joints,
             const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
             const Settings& settings, bool addGravity);
 
@@ -120,6 +126,17 @@ class SoftStepSolver {
     bool sticking = true;
   };
 
+  struct JointConstraint {  // one joint this step
+    std::size_t joint = 0;  // index into the joints
+    int base = 0, moving = 0;  // slots; 0 is the ground
+    Vec3 localAnchorBase = Vec3::Zero();  // in the slot's frame (world for the ground) [m]
+    Vec3 localAnchorMoving = Vec3::Zero();
+    Vec3 localAxisBase = Vec3::UnitZ();
+    Vec3 localAxisMoving = Vec3::UnitZ();
+    Quat baseOrientation = Quat::Identity();  // of a base without a slot, for the hinge angle
+    Joint* data = nullptr;  // definition and accumulated impulses
+  };
+
   int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
   void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
                const Settings& settings);
@@ -133,6 +150,12 @@ class SoftStepSolver {
   void collide(const Settings& settings);  // single-point collisions, before the substeps
   void applyRestitution(const Settings& settings);
   void finish(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts);
+  // soft_step_joints.cpp
+  void slotJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints, const Settings& settings,
+                  bool addGravity);
+  void prepareJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints, const Settings& settings);
+  void warmStartJoints();
+  void solveJoints(double h, bool useBias);
 
   std::vector<SolverState> states_;  // per slot
   std::vector<BodySim> sims_;      // per slot
@@ -144,6 +167,8 @@ class SoftStepSolver {
   std::vector<SolvedContactPoint> solved_;
   std::vector<Cached> cache_, nextCache_;  // sorted by key
   Softness softness_;  // of every contact this step
+  std::vector<JointConstraint> joints_;
+  Softness jointSoftness_;  // of every joint this step
 };
 
 }  // namespace rbsim

@@ -12,6 +12,7 @@
 #include "rbsim/mass/mass_model.h"
 #include "rbsim/scene/body_parser.h"
 #include "rbsim/scene/input_ranges.h"
+#include "rbsim/scene/joint_parser.h"
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/particle_parser.h"
 #include "rbsim/scene/planar_parser.h"
@@ -58,7 +59,7 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles", "soft_bodies", "planar"});
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles", "soft_bodies", "planar", "joints"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -81,6 +82,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   }
   checkWorkBudget(root, scene);
   scene_detail::parsePlanes(root, scene);
+  scene_detail::parseJoints(root, scene);
   scene_detail::parseParticleSystems(root, scene);
   scene_detail::parseSoftBodies(root, scene);
   scene_detail::parsePlanar(root, scene);
@@ -115,6 +117,7 @@ World buildWorld(const Scene& scene) {
   for (const ScriptedForce& f : scene.forces) world.addForce(f);
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
   for (const Spring& s : scene.springs) world.addSpring(s);
+  for (const JointDef& j : scene.joints) world.addJoint(j);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
   for (const ParticleSystemDef& def : scene.particleSystems) world.addParticleSystem(def);
   for (const SoftBodyDef& def : scene.softBodies) world.addSoftBody(def);

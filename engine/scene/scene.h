@@ -9,6 +9,7 @@
 
 #include "rbsim/body/body_def.h"
 #include "rbsim/collision/contact.h"
+#include "rbsim/dynamics/joint.h"
 #include "rbsim/particles/particle_def.h"
 #include "rbsim/planar/planar_world.h"
 #include "rbsim/soft/soft_body.h"
@@ -71,6 +72,7 @@ struct Scene {
   std::vector<ScriptedForce> forces;
   std::vector<PoseEvent> poseEvents;
   std::vector<Spring> springs;
+  std::vector<JointDef> joints;  // ball and hinge joints (dynamics/joint.h)
   std::vector<Plane> planes;  // static, infinite
   std::vector<Material> planeMaterials;  // per plane
   // world.particle_integrator: the integrator of particle systems that do not name their own, as

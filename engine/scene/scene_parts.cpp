@@ -7,6 +7,7 @@
 
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/body_parser.h"
+#include "rbsim/scene/joint_parser.h"
 
 namespace rbsim {
 
@@ -188,6 +189,15 @@ std::pair<Plane, Material> parsePlaneBlock(const nlohmann::json& plane, const st
 
 void parseViewBlock(const nlohmann::json& block, const std::string& file, const std::string& path, ViewDesc& view) {
   parseViewFields(JsonObject(block, file, path, {"camera", "overlay", "wireframe", "axes", "grid", "caption"}), view);
+}
+
+JointDef parseJointBlock(const nlohmann::json& joint, const std::string& file, const std::string& path, const World& world) {
+  scene_detail::JointBodies bodies;
+  for (const RigidBody& b : world.bodies()) {
+    bodies.names.push_back(b.name());
+    bodies.dynamic.push_back(b.isDynamic());
+  }
+  return scene_detail::parseJoint(JsonObject(joint, file, path, scene_detail::kJointKeys), bodies, world.settings());
 }
 
 }  // namespace rbsim

@@ -47,6 +47,10 @@ ScriptedForce parseForceBlock(const nlohmann::json& force, const std::string& fi
 // A plane block: {"normal", "point", "restitution", "friction_static", "friction_kinetic"}.
 std::pair<Plane, Material> parsePlaneBlock(const nlohmann::json& plane, const std::string& file, const std::string& path);
 
+// A joint block (the keys of one entry of "joints"), its body_a and body_b naming bodies of
+// `world`, whose settings must be the soft step's.
+JointDef parseJointBlock(const nlohmann::json& joint, const std::string& file, const std::string& path, const World& world);
+
 inline constexpr std::initializer_list<const char*> kViewKeys = {
     "camera", "size", "fps", "overlay", "wireframe", "axes", "grid", "aabbs", "contacts", "vertices", "selected",
     "caption", "plots", "plot_of", "plot_seconds"};

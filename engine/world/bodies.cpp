@@ -95,6 +95,19 @@ void World::destroyBody(BodyId id) {
   renumber(forces_, removed, last, removed);
   renumber(springs_, removed, last, removed);
   renumber(pendingEvents_, removed, last, removed);
+  // A joint goes with either of its bodies; its other body wakes to fall free.
+  for (const Joint& joint : joints_) {
+    const bool names = joint.def.bodyA == removed || joint.def.bodyB == removed;
+    if (names && joint.def.bodyA != removed) bodies_[joint.def.bodyA].wake();
+    if (names && joint.def.bodyB != removed && joint.def.bodyB != kWorldAnchor) bodies_[joint.def.bodyB].wake();
+  }
+  joints_.erase(std::remove_if(joints_.begin(), joints_.end(),
+                               [&](const Joint& j) { return j.def.bodyA == removed || j.def.bodyB == removed; }),
+                joints_.end());
+  for (Joint& joint : joints_) {
+    if (joint.def.bodyA == last) joint.def.bodyA = removed;
+    if (joint.def.bodyB == last) joint.def.bodyB = removed;
+  }
   for (ParticleSystem& system : particleSystems_) system.bodyRemoved(removed, last, removed);
   if (fracturePatterns_[removed]) --breakableBodies_;
   swapRemove(bodies_, removed);
@@ -102,6 +115,7 @@ void World::destroyBody(BodyId id) {
   swapRemove(bodyShapes_, removed);
   swapRemove(fracturePatterns_, removed);
   collision_.removeBody(removed);
+  updateJointFilter();
   // Warm starts are keyed by body indices, which have changed: one step starts cold.
   contactSolver_.forget();
   softStep_.forget();

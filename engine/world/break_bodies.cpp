@@ -1,6 +1,7 @@
 // Stage BreakBodies of World::step (seed 000 "Fracture"): a breakable body whose contacts took
 // more normal impulse this step than its pattern's threshold becomes its pieces. The first piece
 // takes the body's index, so every index held elsewhere stays valid; the others are appended.
+#include <algorithm>
 #include <string>
 
 #include "rbsim/world/world.h"
@@ -33,6 +34,11 @@ void World::breakBody(std::size_t body, double impulse) {
   bodyShapes_[body] = bodyShapeOf(pieces.front());
   collision_.replaceBody(body, bodies_[body], bodyShapes_[body].sdf != nullptr);
   for (std::size_t k = 1; k < pieces.size(); ++k) addBody(pieces[k]);
+  // The pieces are new bodies with their own centres of mass: the broken body's joints let go.
+  joints_.erase(std::remove_if(joints_.begin(), joints_.end(),
+                               [&](const Joint& j) { return j.def.bodyA == body || j.def.bodyB == body; }),
+                joints_.end());
+  updateJointFilter();
   fractureEvents_.push_back(event);
 }
 

@@ -207,6 +207,15 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
   broad_->update();
 }
 
+void CollisionPipeline::setIgnoredPairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+  ignored_.clear();
+  for (auto [a, b] : pairs) {
+    if (a > b) std::swap(a, b);
+    ignored_.push_back((std::uint64_t{a} << 32) | std::uint64_t{b});
+  }
+  std::sort(ignored_.begin(), ignored_.end());
+}
+
 void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                                     const std::vector<Plane>& planes, double time) {
   contacts_.clear();
@@ -215,6 +224,10 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     // proxy id stays as it was).
     ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
     if (pair.a > pair.b) std::swap(pair.a, pair.b);
+    if (!ignored_.empty() && std::binary_search(ignored_.begin(), ignored_.end(),
+                                                (std::uint64_t{pair.a} << 32) | std::uint64_t{pair.b})) {
+      continue;
+    }
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) continue;

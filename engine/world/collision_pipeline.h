@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
@@ -37,6 +38,10 @@ class CollisionPipeline {
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
   void replaceBody(std::size_t index, const RigidBody& body, bool hasGrid);
+
+  // Pairs of bodies that never collide (jointed bodies without collide_connected): body indices,
+  // either order. The narrow phase skips them.
+  void setIgnoredPairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
 
   // The state of every body before Integrate, kept for the continuous stage.
   void rememberStart(const std::vector<RigidBody>& bodies);
@@ -90,6 +95,7 @@ class CollisionPipeline {
   std::vector<char> hasGrid_;
   bool haveStart_ = false;              // start_ holds this step's start (rememberStart ran)
   std::vector<Aabb> boxes_;
+  std::vector<std::uint64_t> ignored_;  // sorted keys (lower index << 32 | higher index)
   std::vector<Contact> contacts_;
   std::vector<Impact> impacts_;
   QueryLog log_;

@@ -32,8 +32,10 @@ void World::stepSoft(bool withGravity, bool awake, bool collides) {
   softStep_.clearAdvanced();
   // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
   // are contacts between sleeping bodies, which receive nothing.
-  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
-    if (settings_.respondToContacts) solveContacts(withGravity);
+  // Joints are solved with the contacts, so a scene with joints runs the stage every awake step.
+  const bool contactsToSolve = !collision_.contacts().empty() && settings_.respondToContacts;
+  runStage(Stage::SolveContacts, awake && (contactsToSolve || !joints_.empty()), [&] {
+    if (contactsToSolve || !joints_.empty()) solveContacts(withGravity);
   });
   runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
   runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_, &softStep_.advancedFlags()); });
@@ -74,7 +76,10 @@ void World::solveContacts(bool withGravity) {
     contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
     return;
   }
-  softStep_.step(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_, withGravity);
+  wakeJointed();
+  static const std::vector<Contact> kNoContacts;
+  const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_.contacts() : kNoContacts;
+  softStep_.step(bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity);
   checkFinite(softStep_.advancedBodies());
 }
 

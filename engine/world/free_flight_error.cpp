@@ -9,14 +9,17 @@ namespace {
 double spinEnergy(const RigidBody& body) { return 0.5 * body.state().angularMomentum.dot(body.angularVelocity()); }
 
 // Whether anything but the integrator turned the body during the step that ended at world.time():
-// a contact (the speculative ones within the margin included), a spring, or a scripted force with
-// a moment about the centre of mass.
+// a contact (the speculative ones within the margin included), a spring, a joint, or a scripted
+// force with a moment about the centre of mass.
 bool torqued(const World& world, std::size_t i) {
   for (const Contact& c : world.contacts()) {
     if (c.b == i || (c.kind == Contact::Kind::BodyBody && c.a == i)) return true;
   }
   for (const Spring& s : world.springs()) {
     if (s.body == i) return true;
+  }
+  for (const Joint& j : world.joints()) {
+    if (j.def.bodyA == i || j.def.bodyB == i) return true;
   }
   const RigidBody& body = world.bodies()[i];
   const double stepStart = world.time() - world.settings().timeStep;

@@ -318,6 +318,9 @@ void World::updateSleep() {
       islands.link(contact.a, contact.b);
     }
   }
+  for (const Joint& joint : joints_) {  // jointed bodies sleep together (Box2D's b2LinkJoint)
+    if (joint.def.bodyB != kWorldAnchor && !bodies_[joint.def.bodyB].isStatic()) islands.link(joint.def.bodyA, joint.def.bodyB);
+  }
   std::vector<double>& rested = islandRestingTime_;
   rested.assign(bodies_.size(), std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < bodies_.size(); ++i) {

@@ -11,6 +11,7 @@
 #include "rbsim/collision/body_shape.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/dynamics/contact_solver.h"
+#include "rbsim/dynamics/joint.h"
 #include "rbsim/body/material.h"
 #include "rbsim/dynamics/soft_step_solver.h"
 #include "rbsim/fracture/fracture.h"
@@ -103,6 +104,11 @@ class World {
   std::size_t addParticleSystem(const ParticleSystemDef& def);
   // Throws std::invalid_argument on a bad definition (SoftBody's constructor).
   std::size_t addSoftBody(const SoftBodyDef& def);
+  // A ball or hinge joint between def.bodyA (dynamic) and def.bodyB (any body, or kWorldAnchor)
+  // at the bodies' poses now (world/joints.cpp). Throws std::invalid_argument on a bad def, and
+  // under the PGS solver, which does not solve joints.
+  std::size_t addJoint(const JointDef& def);
+  const std::vector<Joint>& joints() const { return joints_; }
   // A 2D world stepped with this World's dt and the x, y components of its gravity.
   void setPlanarWorld(const PlanarWorld& planar);
 
@@ -155,6 +161,8 @@ class World {
   void stepSoft(bool withGravity, bool awake, bool collides);  // the middle of step() with soft step
   void stepPgs(bool withGravity, bool awake, bool collides);   // ... and with PGS
   void solveContacts(bool withGravity);
+  void wakeJointed();         // a joint's sleeping side wakes with its awake one
+  void updateJointFilter();   // the pairs that must not collide, after joints or indices changed
   void checkFinite(const std::vector<std::size_t>& bodies) const;  // after the soft step
   void updateSleep();
   void breakBodies();  // world/break_bodies.cpp
@@ -192,6 +200,7 @@ class World {
   ContactSolver contactSolver_;  // PGS
   SoftStepSolver softStep_;
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
+  std::vector<Joint> joints_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::uint64_t stepCount_ = 0;
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};

@@ -138,6 +138,9 @@ PYBIND11_MODULE(rbsim, m) {
       .def("remove_body", &PyWorld::removeBody, py::arg("body"),
            "the last body takes the removed one's index; ids stay valid")
       .def("add_plane", &PyWorld::addPlane, "add_plane(normal=(0, 1, 0), point=(0, 0, 0), restitution=..., ...) -> index")
+      .def("add_joint", &PyWorld::addJoint,
+           "add_joint(type=\"hinge\"|\"ball\", body_a=NAME, body_b=NAME (absent: the world), anchor=(x, y, z), "
+           "axis=(x, y, z), motor={\"speed\": rad/s, \"max_torque\": N m}, limits=(lo, hi), collide_connected=False) -> index")
       .def("add_force", &PyWorld::addForce, py::arg("body"),
            "add_force(body, force=(fx, fy, fz), point=(0, 0, 0), force_frame=\"world\", point_frame=\"body\", "
            "start=0, end=inf)")

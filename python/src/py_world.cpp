@@ -1,6 +1,7 @@
 #include "py_world.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <pybind11/stl.h>
 
@@ -20,6 +21,7 @@ constexpr const char* kWorldCall = "World()";
 constexpr const char* kBodyCall = "World.add_body()";
 constexpr const char* kPlaneCall = "World.add_plane()";
 constexpr const char* kForceCall = "World.add_force()";
+constexpr const char* kJointCall = "World.add_joint()";
 constexpr const char* kPoseCall = "World.set_pose()";
 // Ctrl-C is looked for every this many steps: often enough to stop within a blink at 1000 bodies
 // (about 40 ms), rarely enough that the check costs nothing for one body.
@@ -98,6 +100,15 @@ void PyWorld::addForce(BodyId id, const py::kwargs& force) {
                                              ": forces act on dynamic bodies only");
   }
   world_.addForce(parseForceBlock(toJson(force, kForceCall, ""), kForceCall, "", i, body.fileFrame().axes));
+}
+
+std::size_t PyWorld::addJoint(const py::kwargs& joint) {
+  const JointDef def = parseJointBlock(toJson(joint, kJointCall, ""), kJointCall, "", world_);
+  try {
+    return world_.addJoint(def);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(kJointCall, "", e.what());
+  }
 }
 
 void PyWorld::setPose(BodyId id, const py::object& position, const py::object& orientation,

@@ -25,6 +25,7 @@ class PyWorld {
   void removeBody(BodyId id);
   std::size_t addPlane(const pybind11::kwargs& plane);  // the keys of one entry of "planes"
   void addForce(BodyId id, const pybind11::kwargs& force);  // the keys of one entry of "forces"
+  std::size_t addJoint(const pybind11::kwargs& joint);      // the keys of one entry of "joints"
   // Sets any of x, q (w, x, y, z: the state's own, as World.q reads), v and omega now, as seed
   // 004's manual change does: derived quantities follow and the body wakes.
   void setPose(BodyId id, const pybind11::object& position, const pybind11::object& orientation,

@@ -1,0 +1,28 @@
+#pragma once
+// Scene-file parsing of the "joints" array into JointDef (keys in README.md, "Joints"). Internal
+// to scene/; bodies and the world block must be parsed first.
+#include <string>
+#include <vector>
+
+#include "rbsim/dynamics/joint.h"
+#include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/scene.h"
+
+namespace rbsim::scene_detail {
+
+inline constexpr std::initializer_list<const char*> kJointKeys = {
+    "name", "type", "body_a", "body_b", "anchor", "axis", "motor", "limits", "collide_connected"};
+
+// What a joint needs to know of the bodies it may name: per body its name and whether it is
+// dynamic (body_a must be).
+struct JointBodies {
+  std::vector<std::string> names;
+  std::vector<char> dynamic;
+};
+
+// One entry of "joints"; `solver` refuses joints under PGS, which does not solve them.
+JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settings& settings);
+// "joints": [{...}, ...] into scene.joints.
+void parseJoints(const JsonObject& root, Scene& scene);
+
+}  // namespace rbsim::scene_detail

@@ -1,0 +1,37 @@
+"""Joints built from Python: World.add_joint(**joint) takes the keys of an entry of "joints"."""
+import math
+
+import numpy as np
+import pytest
+import rbsim
+
+
+def pendulum(**joint):
+    world = rbsim.World(dt=1 / 240, gravity=[0, -9.81, 0], sleep=False)
+    world.add_body(name="rod", shape={"type": "box", "extents": [0.1, 1.0, 0.1]}, mass=1.0,
+                   position=[0.5, 0.0, 0.0], orientation={"axis_angle_deg": [0, 0, 1, 90]})
+    world.add_joint(body_a="rod", anchor=[0, 0, 0], **joint)
+    return world
+
+
+@pytest.mark.parametrize("joint", [{"type": "ball"}, {"type": "hinge", "axis": [0, 0, 1]}])
+def test_rod_released_level_swings_through_the_bottom_on_its_pivot(joint):
+    world = pendulum(**joint)
+    # Down from level, I_pivot = m (w^2 + l^2) / 12 + m (l / 2)^2: at the bottom, m g l / 2 = I w^2 / 2.
+    inertia = (0.01 + 1.0) / 12 + 0.25
+    speed = math.sqrt(9.81 * 0.5 * 2 / inertia)
+    fastest = 0.0
+    for _ in range(240):
+        world.step(1)
+        fastest = max(fastest, abs(world.omega[0][2]))
+        assert np.linalg.norm(world.x[0]) == pytest.approx(0.5, abs=1e-3)
+    assert fastest == pytest.approx(speed, rel=5e-3)
+
+
+def test_bad_joint_names_the_call_and_the_key():
+    world = rbsim.World()
+    world.add_body(name="rod", shape={"type": "box", "extents": [0.1, 1.0, 0.1]}, mass=1.0)
+    with pytest.raises(rbsim.InputError, match=r"World.add_joint\(\): body_a: no body is named \"door\""):
+        world.add_joint(type="ball", body_a="door", anchor=[0, 0, 0])
+    with pytest.raises(rbsim.InputError, match=r"World.add_joint\(\): limits"):
+        world.add_joint(type="hinge", body_a="rod", anchor=[0, 0, 0], axis=[0, 1, 0], limits=[1, -1])
