@@ -127,6 +127,7 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
       const Point& p = points_[c.firstPoint + j];
       cache.localPoints[j] = p.localB;
       cache.normalImpulses[j] = p.normalImpulse;
+      cache.sliding[j] = p.sliding;
       cache.frictionImpulses[j] = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
     }
     cache.sticking = !c.slipping;
