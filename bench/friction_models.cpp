@@ -36,8 +36,7 @@ int main() {
   std::printf("%-9s %-6s %6s %8s %10s %10s\n", "solver", "dt", "c_R", "h [m]", "box", "ball");
   for (const auto solver : {Settings::ContactSolverMethod::SoftStep, Settings::ContactSolverMethod::Pgs}) {
     for (const double dt : {1.0 / 60.0, 1.0 / 240.0}) {
-      Settings s = frictionCaseSettings(solver, Settings{}.friction, dt);
-      s.restitutionThreshold = 0.0;
+      const Settings s = restitutionSettings(solver, dt);
       for (const double e : {0.3, 0.7, 1.0}) {
         for (const double h : {0.01, 1.0}) {
           const BounceResult box = dropAndBounce(s, e, h, false), ball = dropAndBounce(s, e, h, true);

@@ -115,8 +115,22 @@ void ContactSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& co
     // Bounce (seed 000: u_rel,N^new = -c_R u_rel,N) when the approach is fast enough to be a
     // collision rather than resting contact, and the gap closes within the next step.
     // Otherwise a speculative contact may close its gap in one step, a touching one not at all.
+    // The bounce leaves from here, up to |u| dt short of the surface, after a whole step of the
+    // applied acceleration a_N (gravity): it gets the speed that carries it back as far as c_R
+    // times the speed at the touch would, u_c^2 = u_0^2 - 2 a_N s_0 from the step's start. Seed
+    // 000's -c_R u_rel,N from here gave a ball dropped 1 cm at 1/60 s 19-80 % more than c_R u_c.
+    const double normalAcceleration = n.dot((s1.inverseMass > 0.0 ? settings.gravity : Vec3::Zero()) -
+                                            (s2.inverseMass > 0.0 ? settings.gravity : Vec3::Zero()));
+    // (The step's drift taken as the exact one under constant acceleration, dt (u_0 + u) / 2.)
+    const double startApproach = approach - normalAcceleration * dt;
+    const double startGap = std::max(gap - 0.5 * (startApproach + approach) * dt, 0.0);
+    const double touch = startApproach * startApproach - 2.0 * normalAcceleration * startGap;
+    const double leave = material.restitution * material.restitution * touch + 2.0 * normalAcceleration * std::max(gap, 0.0);
+    // Below leave = 0 the bounce would not reach back here at all; seed 000's -c_R u_rel,N then
+    // (the gap's energy gained, at most m |a_N| |u| dt).
     const bool bounces = approach < -settings.restitutionThreshold && -approach * dt >= gap;
-    row.targetNormalVelocity = bounces ? -material.restitution * approach : -std::max(gap, 0.0) / dt;
+    const double rebound = leave >= 0.0 ? std::sqrt(leave) : -material.restitution * approach;
+    row.targetNormalVelocity = bounces ? rebound : -std::max(gap, 0.0) / dt;
     row.correctionVelocity = std::max(0.0, settings.positionCorrection * (-gap - settings.contactSlop) / dt);
     if (old != nullptr) {
       for (int j = 0; j < old->count; ++j) {
