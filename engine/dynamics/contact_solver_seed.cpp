@@ -29,7 +29,7 @@ void ContactSolver::solveSeedFriction(const Patch& patch, NormalRow& row) {
   const Mat3 factor = impulseFactor(b1.inverseMass, b1.inverseInertiaWorld, row.arm1) +
                       impulseFactor(b2.inverseMass, b2.inverseInertiaWorld, row.arm2);
   const SeedFriction next =
-      seedFriction(factor, u, patch.normal, patch.tangent1, patch.tangent2, row.friction, row.impulse,
+      seedFriction(factor, u, patch.tangent1, patch.tangent2, row.friction, row.impulse,
                    patch.material.staticFriction, patch.material.kineticFriction, row.sliding);
   applySeed(patch, row, next.total - row.friction);
   row.friction = next.total;

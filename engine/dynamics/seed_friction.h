@@ -31,11 +31,11 @@ struct SeedFriction {
 };
 
 // `totalFactor` is K_T at the point, `relativeVelocity` u_1 - u_2 there now (every impulse so far
-// applied), `normal` the unit N towards body 1 and t1, t2 the tangents completing it,
+// applied), t1, t2 the unit tangents completing the normal N towards body 1,
 // `accumulated` the tangential impulse applied so far this step and `normalImpulse` the point's
 // accumulated j_n >= 0 [N s].
-SeedFriction seedFriction(const Mat3& totalFactor, const Vec3& relativeVelocity, const Vec3& normal, const Vec3& t1,
-                          const Vec3& t2, const Vec3& accumulated, double normalImpulse, double staticFriction,
+SeedFriction seedFriction(const Mat3& totalFactor, const Vec3& relativeVelocity, const Vec3& t1, const Vec3& t2,
+                          const Vec3& accumulated, double normalImpulse, double staticFriction,
                           double kineticFriction, bool sliding);
 
 }  // namespace rbsim

@@ -49,7 +49,7 @@ void SoftStepSolver::solveSeed(double inverseH, const Settings& settings, bool u
       const Vec3 u = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);  // u_rel, body 1 = B
       const Mat3 factor = impulseFactor(mA, iA, p.anchorA) + impulseFactor(mB, iB, p.anchorB);
       const Vec3 accumulated = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
-      const SeedFriction next = seedFriction(factor, u, n, c.tangent1, c.tangent2, accumulated, p.normalImpulse,
+      const SeedFriction next = seedFriction(factor, u, c.tangent1, c.tangent2, accumulated, p.normalImpulse,
                                              c.staticFriction, c.kineticFriction, p.sliding);
       sticking = sticking && next.sticking;
       const Vec3 delta = next.total - accumulated;
