@@ -11,7 +11,7 @@ namespace {
 
 // Newton's iterations for the static limit's lambda: from lambda = 0 they increase monotonically
 // to the root, within 1e-12 in a few; this caps them.
-constexpr int kTrustRegionIterations = 30;
+constexpr int kTrustRegionIterations = 30;  // [iterations]
 
 }  // namespace
 
