@@ -80,9 +80,9 @@ struct Settings {
   // Friction of both solvers (README "Friction"). Cone: the tangential impulse that stops the slip,
   // scaled onto the cone of mu_s or mu_k, the coefficient chosen by the regime the last step
   // ended in (soft step per point, PGS per patch at its centroid with a twist). Seed000: seed 000
-  // "Friction" at every point in every sweep, with the normal impulse solved with it through the
-  // point's 3x3 K_T: the sticking impulse if inside the mu_s cone, else (N - mu_k T) j_n
-  // (engine/dynamics/seed_friction.h).
+  // "Friction" at every point in every sweep, after its normal row, with the point's K_T: the
+  // sticking impulse if inside the mu_s cone, else -mu_k j_n T (engine/dynamics/seed_friction.h).
+  // Both meet the analytic slide and incline; cone stacks better with PGS (REPORT section 5).
   enum class FrictionModel { Cone, Seed000 };
   FrictionModel friction = FrictionModel::Cone;
   int velocityIterations = 10;  // PGS: [sweeps] over every contact point (Box2D v2's default is 8)
