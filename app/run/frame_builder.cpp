@@ -70,6 +70,17 @@ void addJointLines(const World& world, render::FrameData& frame) {
 
 }  // namespace
 
+std::string restitutionThresholdRow(const World& world) {
+  bool bouncy = false;
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) bouncy = bouncy || world.bodyMaterial(i).restitution > 0.0;
+  if (!bouncy) return {};
+  const double threshold = world.settings().restitutionThreshold;
+  if (threshold == 0.0) return "off: every approach bounces (seed 000's law)";
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%.3g m/s approach: none", threshold);
+  return buffer;
+}
+
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
                              bool selectedBodyRows, const FreeFlightError* freeFlight) {
   render::FrameData frame;
@@ -112,6 +123,9 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
       {"integrator", std::string(integratorName(world.settings().integrator)) + ", dt " +
                          formatNumber(world.settings().timeStep, "s")},
   };
+  if (const std::string threshold = restitutionThresholdRow(world); !threshold.empty()) {
+    overlay.rows.push_back({"restitution below", threshold});
+  }
   if (selectedBodyRows && view.selected < world.bodies().size()) {  // a scene of particles alone has no bodies
     const RigidBody& body = world.bodies()[view.selected];
     const Mat3& R = body.rotation();

@@ -24,6 +24,11 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
 // body is not compared.
 std::string formatFreeFlightError(const FreeFlightError::Reading& reading);
 
+// The overlay's row "restitution below" when a body has restitution > 0: "0.5 m/s approach:
+// none" (Settings::restitutionThreshold: slower approaches do not bounce), or that it is off.
+// Empty when nothing bounces.
+std::string restitutionThresholdRow(const World& world);
+
 // "+1.0000 -2.0000 +0.5000 m": the overlay's format of a vector.
 std::string formatVec(const Vec3& v, const char* unit);
 // "0.25 J": the overlay's format of a number.

@@ -61,6 +61,11 @@ class ContactSolver {
     double correctionVelocity = 0.0;      // split-impulse target [m/s]
     double impulse = 0.0;                 // accumulated j_N >= 0 [N s]
     double pseudoImpulse = 0.0;           // accumulated split impulse [N s]
+    // Settings::FrictionModel::Seed000 (contact_solver_seed.cpp): friction per point.
+    Vec3 arm1 = Vec3::Zero(), arm2 = Vec3::Zero();  // r1, r2: the point from each centre of mass [m]
+    Vec3 friction = Vec3::Zero();  // accumulated tangential impulse on body 1, world [N s]
+    bool sticking = true;          // the last sweep's sticking impulse was inside the mu_s cone
+    bool sliding = false;          // slipping at the end of the last step (seed_friction.h)
   };
   struct Patch {  // one manifold
     int body1 = 0, body2 = 0;  // indices into bodies_
@@ -86,6 +91,8 @@ class ContactSolver {
     Vec3 linearFriction = Vec3::Zero();  // world [N s]
     double twistFriction = 0.0;          // about the normal [N m s]
     bool sticking = true;                // the regime of the next step
+    std::array<Vec3, kMaxManifoldPoints> pointFriction{};  // seed000: per point, world [N s]
+    std::array<bool, kMaxManifoldPoints> sliding{};        // seed000: per point
   };
 
   int solverBody(std::vector<RigidBody>& bodies, std::size_t body);
@@ -98,6 +105,9 @@ class ContactSolver {
   double normalImpulse(const Patch& patch) const;  // sum of the patch's accumulated j_N [N s]
   void solveNormal(Patch& patch, NormalRow& row);
   void solveFriction(Patch& patch);
+  void solveSeedFriction(const Patch& patch, NormalRow& row);  // seed 000's, at the point
+  void applySeed(const Patch& patch, const NormalRow& row, const Vec3& impulse);  // at the point
+  void markSliding();  // seed000: each row's regime for the next step, from its slip now
   void solvePosition(const Patch& patch, NormalRow& row);
   void writeBack(std::vector<RigidBody>& bodies, double dt);
   void remember(const std::vector<Contact>& contacts);

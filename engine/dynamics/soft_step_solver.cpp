@@ -72,6 +72,8 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   // ended in: sliding when friction reached the cone, sticking again when it stayed inside.
   c.sticking = old == nullptr || old->sticking;
   c.friction = c.sticking ? material.staticFriction : material.kineticFriction;
+  c.staticFriction = material.staticFriction;
+  c.kineticFriction = material.kineticFriction;
 
   const Vec3 xA = sims_[c.a].position0, xB = sims_[c.b].position0;
   const BodySim& simA = sims_[c.a];
@@ -113,6 +115,7 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
         if ((old->localPoints[j] - p.localB).norm() <= settings.warmStartDistance) {
           p.normalImpulse = old->normalImpulses[j];
           p.tangentImpulse = {tangents[0].dot(old->frictionImpulses[j]), tangents[1].dot(old->frictionImpulses[j])};
+          p.sliding = old->sliding[j];
           break;
         }
       }
@@ -355,11 +358,11 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     warmStartJoints();
     warmStart();  // the last substep's impulses (at the first, the last step's, when kept)
     solveJoints(h, /*useBias=*/true);
-    solve(inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
+    sweep(inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
     integratePositions(bodies, h);
     updateJacobians();  // for the relax, and the next substep's warm start and solve
     solveJoints(h, /*useBias=*/false);
-    solve(inverseH, settings, /*useBias=*/false, /*lastRelax=*/substep == settings.substeps - 1);
+    sweep(inverseH, settings, /*useBias=*/false, /*lastRelax=*/substep == settings.substeps - 1);
   }
   applyRestitution(settings);
   finish(bodies, contacts);

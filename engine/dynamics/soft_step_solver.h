@@ -103,11 +103,13 @@ class SoftStepSolver {
     std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
     double totalNormalImpulse = 0.0;  // applied over the step [N s]
     Vec3 totalFriction = Vec3::Zero();  // applied over the step, world [N s]
+    bool sliding = false;  // seed000: slipping at the end of the last step (seed_friction.h)
   };
   struct Constraint {  // one manifold
     int a = 0, b = 0;  // body slots; 0 is the ground
     Vec3 normal = Vec3::UnitY(), tangent1 = Vec3::UnitX(), tangent2 = Vec3::UnitZ();
     double friction = 0.0;     // mu_s while sticking, mu_k while sliding [1]
+    double staticFriction = 0.0, kineticFriction = 0.0;  // mu_s, mu_k (Settings::FrictionModel::Seed000) [1]
     double restitution = 0.0;  // [1]
     Softness softness;
     bool sticking = true;      // this step's regime: the last step ended without slipping
@@ -123,6 +125,7 @@ class SoftStepSolver {
     std::array<Vec3, kMaxManifoldPoints> localPoints{};  // body B's frame [m]
     std::array<double, kMaxManifoldPoints> normalImpulses{};
     std::array<Vec3, kMaxManifoldPoints> frictionImpulses{};  // world [N s]
+    std::array<bool, kMaxManifoldPoints> sliding{};  // seed000: per point
     bool sticking = true;
   };
 
@@ -146,6 +149,15 @@ class SoftStepSolver {
   void integrateVelocities(double h);
   void warmStart();
   void solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
+  // solve with Settings::FrictionModel::Seed000 (soft_step_seed.cpp).
+  void solveSeed(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
+  void sweep(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
+    if (settings.friction == Settings::FrictionModel::Seed000) {
+      solveSeed(inverseH, settings, useBias, lastRelax);
+    } else {
+      solve(inverseH, settings, useBias, lastRelax);
+    }
+  }
   void integratePositions(const std::vector<RigidBody>& bodies, double h);
   void collide(const Settings& settings);  // single-point collisions, before the substeps
   void applyRestitution(const Settings& settings);

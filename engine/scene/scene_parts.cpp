@@ -47,6 +47,10 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
   } else if (solver != "soft-step") {
     w.fail("solver", "expected \"soft-step\" or \"pgs\", got \"" + solver + "\"");
   }
+  const std::string friction = w.string("friction", frictionModelName(s.friction));
+  if (!parseFrictionModel(friction, s.friction)) {
+    w.fail("friction", "expected \"cone\" or \"seed000\", got \"" + friction + "\"");
+  }
   const auto integer = [&](const char* key, int fallback) {
     if (!w.has(key)) return fallback;
     const double x = w.number(key, fallback);

@@ -66,4 +66,19 @@ SettingsProblem checkSettings(const Settings& s) {
   return {};
 }
 
+const char* frictionModelName(Settings::FrictionModel model) {
+  return model == Settings::FrictionModel::Seed000 ? "seed000" : "cone";
+}
+
+bool parseFrictionModel(const std::string& name, Settings::FrictionModel& model) {
+  if (name == "cone") {
+    model = Settings::FrictionModel::Cone;
+  } else if (name == "seed000") {
+    model = Settings::FrictionModel::Seed000;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace rbsim

@@ -77,6 +77,14 @@ struct Settings {
   double contactHertz = 120.0;        // [Hz]
   double contactDampingRatio = 10.0;  // [1]
   double contactPushSpeed = 3.0;      // [m/s]
+  // Friction of both solvers (README "Friction"). Cone: the tangential impulse that stops the slip,
+  // scaled onto the cone of mu_s or mu_k, the coefficient chosen by the regime the last step
+  // ended in (soft step per point, PGS per patch at its centroid with a twist). Seed000: seed 000
+  // "Friction" at every point in every sweep, after its normal row, with the point's K_T: the
+  // sticking impulse if inside the mu_s cone, else -mu_k j_n T (engine/dynamics/seed_friction.h).
+  // Both meet the analytic slide and incline; cone stacks better with PGS (REPORT section 5).
+  enum class FrictionModel { Cone, Seed000 };
+  FrictionModel friction = FrictionModel::Cone;
   int velocityIterations = 10;  // PGS: [sweeps] over every contact point (Box2D v2's default is 8)
   int positionIterations = 4;   // PGS: [sweeps] of the split-impulse pass (Box2D v2's default is 3)
   // Approach speeds below this do not bounce: a resting body meets the ground at g dt every step,
@@ -105,6 +113,11 @@ inline constexpr double kMaxContactTolerance = 1.0;  // [m]
 inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
 // A query log longer than this holds more than anyone reads, at ~200 B a record.
 inline constexpr std::size_t kMaxQueryLogCapacity = 1000000;  // [records]
+
+// The scene names of Settings::FrictionModel: "cone", "seed000".
+const char* frictionModelName(Settings::FrictionModel model);
+// False, leaving `model` alone, for a name that is neither.
+bool parseFrictionModel(const std::string& name, Settings::FrictionModel& model);
 
 // What is wrong with a Settings: the scene key of the field (under "world") and what was
 // expected. Empty (false) when the settings are usable.

@@ -56,6 +56,7 @@ py::dict settingsDict(const rbsim::Settings& s) {
   d["integrator"] = rbsim::integratorName(s.integrator);
   d["inertia"] = rbsim::inertiaMethodName(s.inertia);
   d["solver"] = s.solver == rbsim::Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
+  d["friction"] = rbsim::frictionModelName(s.friction);
   d["broad_phase"] = s.broadPhase == rbsim::Settings::BroadPhaseMethod::BruteForce ? "brute-force" : "sap";
   d["sleep"] = s.allowSleep;
   d["collisions"] = s.detectCollisions;

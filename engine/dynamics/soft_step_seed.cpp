@@ -1,0 +1,86 @@
+// The soft step's sweep with seed 000's friction at every point (Settings::FrictionModel::Seed000,
+// seed_friction.h): the normal rows of soft_step_solver.cpp's solve, with their bias and
+// softness, then each point's static-then-kinetic tangential impulse with its K_T.
+#include <algorithm>
+#include <cmath>
+
+#include "rbsim/dynamics/impulse.h"
+#include "rbsim/dynamics/seed_friction.h"
+#include "rbsim/dynamics/soft_step_solver.h"
+
+namespace rbsim {
+
+void SoftStepSolver::solveSeed(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
+  for (Constraint& c : constraints_) {
+    SolverState& A = states_[c.a];
+    SolverState& B = states_[c.b];
+    const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+    const Mat3& iA = sims_[c.a].inverseInertiaNow;
+    const Mat3& iB = sims_[c.b].inverseInertiaNow;
+    Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
+    const Vec3& n = c.normal;
+    bool sticking = true;
+    for (std::size_t k = 0; k < c.pointCount; ++k) {
+      Point& p = points_[c.firstPoint + k];
+      const double s = p.separation;
+      double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+      if (s > 0.0) {
+        bias = s * inverseH;
+      } else if (useBias) {
+        bias = std::max(c.softness.biasRate * s, -settings.contactPushSpeed);
+        massScale = c.softness.massScale;
+        impulseScale = c.softness.impulseScale;
+      }
+      const double vn = n.dot(vB - vA) + p.crossB.dot(wB) - p.crossA.dot(wA);
+      if (lastRelax && c.pointCount == 1 && s > 0.0 && c.restitution > 0.0 && -vn > settings.restitutionThreshold) continue;
+      const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
+      const double total = std::max(p.normalImpulse + impulse, 0.0);
+      const double delta = total - p.normalImpulse;
+      p.normalImpulse = total;
+      p.totalNormalImpulse += delta;
+      if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
+      vA -= (mA * delta) * n;
+      wA -= delta * p.angularA;
+      vB += (mB * delta) * n;
+      wB += delta * p.angularB;
+    }
+    for (std::size_t k = 0; k < c.pointCount; ++k) {
+      Point& p = points_[c.firstPoint + k];
+      const Vec3 u = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);  // u_rel, body 1 = B
+      const Mat3 factor = impulseFactor(mA, iA, p.anchorA) + impulseFactor(mB, iB, p.anchorB);
+      const Vec3 accumulated = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+      const SeedFriction next = seedFriction(factor, u, c.tangent1, c.tangent2, accumulated, p.normalImpulse,
+                                             c.staticFriction, c.kineticFriction, p.sliding);
+      sticking = sticking && next.sticking;
+      const Vec3 delta = next.total - accumulated;
+      p.tangentImpulse = {next.total.dot(c.tangent1), next.total.dot(c.tangent2)};
+      p.totalFriction += delta;
+      vA -= mA * delta;
+      wA -= iA * p.anchorA.cross(delta);
+      vB += mB * delta;
+      wB += iB * p.anchorB.cross(delta);
+    }
+    if (lastRelax) {
+      // Each point's regime for the next step (seed_friction.h), and the patch's for the report.
+      double slip = 0.0;
+      for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+        Point& p = points_[j];
+        const Vec3 v = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
+        const double pointSlip = (v - v.dot(n) * n).norm();
+        p.sliding = pointSlip > kSeedSlidingSpeed;
+        slip = std::max(slip, pointSlip);
+      }
+      c.slipping = !sticking && slip > kSeedSlidingSpeed;
+    }
+    if (c.a != 0) {
+      A.linearVelocity = vA;
+      A.angularVelocity = wA;
+    }
+    if (c.b != 0) {
+      B.linearVelocity = vB;
+      B.angularVelocity = wB;
+    }
+  }
+}
+
+}  // namespace rbsim
