@@ -1,0 +1,31 @@
+"""Implicit and CSG shapes from Python: add_body goes through the scene's body parser, so a cup made
+as a cylinder minus a cylinder weighs what its analytic volume says and stands on a plane."""
+import math
+
+import numpy as np
+import pytest
+import rbsim
+
+
+def cylinder(radius, height, y=0.0):
+    return {"type": "implicit", "function": "cylinder", "radius": radius, "height": height, "position": [0, y, 0]}
+
+
+def test_csg_cup_from_python_has_its_volume_and_stands_on_a_plane():
+    R, H, r, floor = 0.5, 0.6, 0.44, 0.06
+    cup = {"type": "csg", "op": "difference", "a": cylinder(R, H), "b": cylinder(r, H, floor), "resolution": 48}
+    world = rbsim.World(dt=1 / 120)
+    world.add_plane(normal=[0, 1, 0], point=[0, 0, 0])
+    world.add_body(shape=cup, density=1000, position=[0, 0.5, 0])
+    volume = math.pi * (R * R * H - r * r * (H - floor))
+    assert world.mass[0] / 1000 == pytest.approx(volume, rel=0.01)
+    world.step(360)
+    assert np.abs(world.v).max() < 0.02
+    lowest = world.vertices(world.id_at(0))[:, 1].min()
+    assert -0.01 < lowest < 0.02  # standing on its floor, not in the plane, not above it
+
+
+def test_a_wrong_function_is_a_clear_error():
+    world = rbsim.World()
+    with pytest.raises(rbsim.InputError, match=r"shape\.function.*\"cylinder\""):
+        world.add_body(shape={"type": "implicit", "function": "cone", "radius": 1.0}, mass=1.0)
