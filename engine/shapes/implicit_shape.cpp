@@ -88,6 +88,13 @@ ImplicitMeshing meshImplicitShape(const ImplicitShape& shape) {
             << " m) is inside (phi < 0), so it has no volume";
     throw std::invalid_argument(problem.str());
   }
+  if (out.mesh.triangles.size() > kMaxMeshTriangles || out.mesh.vertices.size() > kMaxMeshVertices) {
+    std::ostringstream problem;
+    problem << "resolution " << shape.resolution << " meshes the surface into " << out.mesh.triangles.size()
+            << " triangles and " << out.mesh.vertices.size() << " vertices; the limit is " << kMaxMeshTriangles
+            << " triangles and " << kMaxMeshVertices << " vertices (as for a mesh file)";
+    throw std::invalid_argument(problem.str());
+  }
   return out;
 }
 

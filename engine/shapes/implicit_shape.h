@@ -48,7 +48,8 @@ struct ImplicitMeshing {
 };
 
 // Samples and meshes the shape. Throws std::invalid_argument when the resolution is out of range,
-// over budget, or no grid point is inside (an empty solid: a difference that removes everything,
+// over budget, the mesh would pass a mesh file's limits (kMaxMeshTriangles, kMaxMeshVertices),
+// or no grid point is inside (an empty solid: a difference that removes everything,
 // an intersection of disjoint operands, or a solid thinner than a cell).
 ImplicitMeshing meshImplicitShape(const ImplicitShape& shape);
 
