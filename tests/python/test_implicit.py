@@ -13,12 +13,12 @@ def cylinder(radius, height, y=0.0):
 
 def test_csg_cup_from_python_has_its_volume_and_stands_on_a_plane():
     R, H, r, floor = 0.5, 0.6, 0.44, 0.06
-    cup = {"type": "csg", "op": "difference", "a": cylinder(R, H), "b": cylinder(r, H, floor), "resolution": 48}
+    cup = {"type": "csg", "op": "difference", "a": cylinder(R, H), "b": cylinder(r, H, floor), "resolution": 32}
     world = rbsim.World(dt=1 / 120)
     world.add_plane(normal=[0, 1, 0], point=[0, 0, 0])
     world.add_body(shape=cup, density=1000, position=[0, 0.5, 0])
     volume = math.pi * (R * R * H - r * r * (H - floor))
-    assert world.mass[0] / 1000 == pytest.approx(volume, rel=0.01)
+    assert world.mass[0] / 1000 == pytest.approx(volume, rel=0.015)  # 0.94 % at 32 cells (REPORT)
     world.step(360)
     assert np.abs(world.v).max() < 0.02
     lowest = world.vertices(world.id_at(0))[:, 1].min()
