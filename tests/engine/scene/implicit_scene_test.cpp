@@ -120,12 +120,6 @@ TEST(ImplicitScene, TheGridResolutionIsTheShapesNotTheSdfBlocks) {
   EXPECT_NO_THROW(parse({{"bodies", {ball}}}));
 }
 
-}  // namespace
-}  // namespace rbsim
-
-namespace rbsim {
-namespace {
-
 // Demo 6's mug (assets/scenes/csg_cup.json): its floor's top is 0.08 m above the ground and its
 // cavity 0.64 m in radius about the y axis. The boxes land first; every box and every grain of
 // sand poured onto them is inside it once the pour is over (5 s) and has had a second to settle.
