@@ -19,7 +19,7 @@ constexpr std::array<std::array<int, 4>, 6> kTetrahedra{{
 class Mesher {
  public:
   Mesher(const GridShape& grid, const std::vector<double>& values, MarchingStats& stats)
-      : grid_(grid), values_(values), stats_(stats) {}
+      : grid_(grid), values_(values), stats_(stats), zeroBand_(kMarchingZeroBand * grid.cellSize) {}
 
   void cell(int i, int j, int k) {
     std::array<std::size_t, 8> index{};
@@ -29,7 +29,8 @@ class Mesher {
       const int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
       index[c] = grid_.index(i + di, j + dj, k + dk);
       point[c] = grid_.point(i + di, j + dj, k + dk);
-      value[c] = values_[index[c]];
+      const double v = values_[index[c]];
+      value[c] = std::abs(v) <= zeroBand_ ? 0.0 : v;
     }
     for (const auto& tet : kTetrahedra) tetrahedron(tet, index, point, value);
   }
@@ -78,8 +79,10 @@ class Mesher {
     const double t = p.value / (p.value - q.value);
     const Vec3 exact = p.point + t * (q.point - p.point);
     // A grid point's key is 2 * index; an edge's 2 * (first index) * 8 + 1 + the offset's bit mask.
-    if (t <= kMarchingSnapFraction || t >= 1.0 - kMarchingSnapFraction) {
-      const Corner& at = t <= kMarchingSnapFraction ? p : q;
+    // Only an end of value zero (outside, t = 1) holds a vertex; any other crossing is inside the
+    // edge, apart from both ends (for a distance, by at least 1e-6 cells / sqrt(3)).
+    if (q.value == 0.0 || p.value == 0.0) {
+      const Corner& at = q.value == 0.0 ? q : p;
       return {2 * static_cast<std::uint64_t>(at.index), exact, at.point};
     }
     const bool pFirst = p.index < q.index;
@@ -113,6 +116,7 @@ class Mesher {
   const GridShape& grid_;
   const std::vector<double>& values_;
   MarchingStats& stats_;
+  const double zeroBand_;  // [m]
   Mesh mesh_;
   std::unordered_map<std::uint64_t, std::uint32_t> vertexOf_;
 };
@@ -129,7 +133,7 @@ Mesh marchingTetrahedra(const GridShape& grid, const std::vector<double>& values
   s = MarchingStats{};
   for (const double v : values) {
     if (!std::isfinite(v)) throw std::invalid_argument("marchingTetrahedra: a value is not finite");
-    if (v < 0.0) ++s.insidePoints;
+    if (v < -kMarchingZeroBand * grid.cellSize) ++s.insidePoints;
   }
   Mesher mesher(grid, values, s);
   if (s.insidePoints > 0) {

@@ -17,15 +17,17 @@
 
 namespace rbsim {
 
-// A vertex this close to a grid point, as a fraction of its edge, is put on the point and shared
-// by every edge there: otherwise a zero value on a grid point (a flat face on a grid plane) would
-// give coincident vertices and zero-area triangles. Moves a vertex by at most 1e-6 of a cell.
-inline constexpr double kMarchingSnapFraction = 1e-6;  // [1]
+// A value within this fraction of a cell of zero is taken as exactly zero (outside): the surface
+// then runs through that grid point, and every edge from it to an inside point puts its vertex
+// there, shared. A value of rounding size left as it is would put a vertex mid-way between two
+// such points as well as on them: three in a line, a zero-area triangle. Moves the surface by at
+// most 1e-6 of a cell.
+inline constexpr double kMarchingZeroBand = 1e-6;  // [1]
 
 struct MarchingStats {
-  std::size_t insidePoints = 0;  // grid points with phi < 0
-  std::size_t snappedVertices = 0;
-  std::size_t droppedTriangles = 0;  // collapsed by snapping (two corners on one grid point)
+  std::size_t insidePoints = 0;      // grid points with phi < 0 (beyond the zero band)
+  std::size_t snappedVertices = 0;   // vertices on grid points of value zero
+  std::size_t droppedTriangles = 0;  // collapsed: two corners on one such grid point
 };
 
 // `values` holds phi at the points of `grid` (GridShape::index order). Throws std::invalid_argument
