@@ -121,8 +121,9 @@ ImplicitMeshing meshImplicitShapeOrFail(const JsonObject& shape, const ImplicitS
   try {
     return meshImplicitShape(implicit);
   } catch (const std::invalid_argument& e) {
-    shape.fail(shape.has("op") ? "op" : "function",
-               std::string(e.what()) + "; expected a shape with a volume of at least one grid cell");
+    const std::string problem = e.what();
+    if (problem.rfind("the solid is empty", 0) != 0) shape.fail("resolution", problem + "; use a lower resolution");
+    shape.fail(shape.has("op") ? "op" : "function", problem + "; expected a shape with a volume of at least one grid cell");
   }
 }
 

@@ -16,7 +16,8 @@ namespace rbsim::scene_detail {
 // its ring, nesting deeper than kMaxCsgDepth, a resolution out of range or over budget.
 ImplicitShape parseImplicitShape(const JsonObject& shape);
 
-// Meshes the shape (file frame), failing naming the field when the solid is empty.
+// Meshes the shape (file frame), failing naming "op" (or "function") when the solid is empty and
+// "resolution" when the mesh would pass a mesh file's limits.
 ImplicitMeshing meshImplicitShapeOrFail(const JsonObject& shape, const ImplicitShape& implicit);
 
 }  // namespace rbsim::scene_detail
