@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
@@ -16,6 +17,7 @@
 #include "rbsim/geometry/surface_samples.h"
 #include "rbsim/mass/mass_model.h"
 #include "rbsim/scene/fracture_parser.h"
+#include "rbsim/scene/implicit_parser.h"
 #include "rbsim/scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
@@ -40,10 +42,16 @@ Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
 constexpr int kRoundSegments = kDisplaySegments;  // around the axis [1]
 constexpr int kRoundRings = kDisplayRings;        // from pole to pole [1]
 
-Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def) {
+Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def,
+                std::optional<ImplicitShape>& implicit) {
   const JsonObject shape = body.object("shape", {"type", "extents", "file", "scale", "radius", "major_radius",
-                                                  "minor_radius", "thickness", "stroke", "length"});
+                                                  "minor_radius", "thickness", "stroke", "length", "function", "op",
+                                                  "a", "b", "position", "orientation", "resolution", "radii", "height"});
   const std::string type = shape.requiredString("type");
+  if (type == "implicit" || type == "csg") {
+    implicit = parseImplicitShape(shape);
+    return meshImplicitShapeOrFail(shape, *implicit).mesh;
+  }
   try {
     if (type == "box") {
       shape.allowOnly({"type", "extents"}, "a \"box\" shape");
@@ -110,15 +118,21 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
     for (Vec3& p : mesh.vertices) p *= scale;
     return mesh;
   }
-  shape.fail("type", "expected \"box\", \"sphere\", \"capsule\", \"torus\", \"bowl\", \"letter_u\" or \"mesh\", got \"" + type + "\"");
+  shape.fail("type", "expected \"box\", \"sphere\", \"capsule\", \"torus\", \"bowl\", \"letter_u\", \"mesh\", "
+                    "\"implicit\" or \"csg\", got \"" + type + "\"");
 }
 
 // A body of any shape gets a signed distance grid (seed 000 "Constructing Signed Distance
 // Functions") and surface samples: asked for with "sdf": {"resolution", "sample_spacing"}, and
-// always for a closed non-convex mesh, which the convex narrow phase would treat as its hull.
-void parseCollisionShape(const JsonObject& b, BodyDef& def) {
+// always for a closed non-convex mesh, which the convex narrow phase would treat as its hull. An
+// implicit shape's grid holds its exact function's values, at the shape's own resolution.
+void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<ImplicitShape>& implicit) {
   const Mesh& mesh = *def.mesh;
-  if (!b.has("sdf")) {
+  if (implicit && b.has("sdf")) {
+    const JsonObject sdf = b.object("sdf", {"resolution", "sample_spacing"});
+    if (sdf.has("resolution")) sdf.fail("resolution", "an implicit shape's grid has the shape's \"resolution\"; expected it there");
+  }
+  if (!b.has("sdf") && !implicit) {
     // Spheres, capsules and boxes are convex by construction: no grid, and no mesh to check.
     if (def.shape && (def.shape->isRound() || def.shape->type == ShapeType::Box)) return;
     // An open mesh (accepted with the cube inertia) has no inside to grid: it stays convex.
@@ -128,7 +142,8 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def) {
   }
   const JsonObject o = b.has("sdf") ? b.object("sdf", {"resolution", "sample_spacing"}) : b;
   SdfGridOptions options;
-  options.resolution = b.has("sdf") ? o.positiveInt("resolution", options.resolution) : options.resolution;
+  options.resolution = implicit ? implicit->resolution
+                      : b.has("sdf") ? o.positiveInt("resolution", options.resolution) : options.resolution;
   if (options.resolution < kMinSdfResolution || options.resolution > kMaxSdfResolution) {
     o.fail("resolution", "expected " + std::to_string(kMinSdfResolution) + " to " + std::to_string(kMaxSdfResolution) +
                              " cells along the longest side");
@@ -144,7 +159,9 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def) {
   const double spacingGiven = b.has("sdf") && o.has("sample_spacing") ? o.number("sample_spacing", 0.0) : 0.0;
   if (spacingGiven < 0.0) o.fail("sample_spacing", "expected a spacing >= 0 m (0: the vertices only)");
   try {
-    def.sdf = std::make_shared<const SignedDistanceGrid>(SignedDistanceGrid::build(mesh, options));
+    def.sdf = std::make_shared<const SignedDistanceGrid>(
+        implicit ? implicitBodyGrid(*implicit, mesh, def.fileFrame.axes, def.fileFrame.centre)
+                 : SignedDistanceGrid::build(mesh, options));
   } catch (const std::invalid_argument& e) {
     b.fail("shape", std::string("no signed distance grid for this shape: ") + e.what());
   }
@@ -220,7 +237,8 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
   if (b.has("inertia") && !parseInertiaMethod(b.string("inertia", ""), method)) {
     b.fail("inertia", "expected \"cube\" or \"exact\"");
   }
-  Mesh mesh = parseShape(b, baseDir, def);
+  std::optional<ImplicitShape> implicit;
+  Mesh mesh = parseShape(b, baseDir, def, implicit);
   if (b.has("mass")) b.positiveNumber("mass", 1.0);  // type and sign errors name the field
   if (b.has("density")) b.positiveNumber("density", 1.0);
   try {
@@ -234,7 +252,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
     throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
   }
   checkMassScale(b, def);
-  parseCollisionShape(b, def);
+  parseCollisionShape(b, def, implicit);
   def.position = b.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
   // The file gives the orientation of the file's axes; the body's are its principal axes.
   def.orientation = toBodyOrientation(def, b.optionalOrientation("orientation").value_or(Quat::Identity()));
