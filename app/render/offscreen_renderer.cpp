@@ -90,8 +90,15 @@ void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui) {
   d.scene.draw(frame, clock);
   // Off-screen, the overlay has no animation, so its time step only has to be positive.
   // Without the overlay (--no-overlay) the plots asked for still show: they are not the panel.
+  // A comparison's captions stay too: without them the panes could not be told apart.
   OverlayData plotsOnly;
-  if (!frame.options.overlay) plotsOnly.plots = frame.overlay.plots;
+  if (!frame.options.overlay) {
+    plotsOnly.plots = frame.overlay.plots;
+    plotsOnly.plotsRight = frame.overlay.plotsRight;
+    plotsOnly.plotsUnderPanel = frame.overlay.plotsUnderPanel;
+    plotsOnly.plotsBottomInset = frame.overlay.plotsBottomInset;
+    if (!frame.panes.empty()) plotsOnly.labels = frame.overlay.labels;
+  }
   const float uiSeconds = ui != nullptr ? ui->input.deltaSeconds : 1.0f / 30.0f;
   d.uiWantsPointer = d.overlay.draw(frame.options.overlay ? frame.overlay : plotsOnly, uiSeconds, ui);
   if (clock != nullptr) {
