@@ -18,6 +18,11 @@ namespace rbsim {
 
 namespace {
 
+// A plane's manifold is taken from the vertices within the body's reach in the step (|v| dt +
+// |omega| r dt + |g| dt^2) of the deepest, plus this [m]: above a resting face's rounding and
+// solver noise (0.1 mm), below a grid bevel's rise (half a cell, centimetres).
+constexpr double kPlaneSupportSlack = 1e-3;
+
 std::unique_ptr<BroadPhase> makeBroadPhase(Settings::BroadPhaseMethod method) {
   if (method == Settings::BroadPhaseMethod::BruteForce) return std::make_unique<BruteForce>();
   return std::make_unique<SweepAndPrune>();
@@ -273,7 +278,8 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       const double margin = settings_.contactMargin + reach_[i];
       const bool round = bodies[i].shape().isRound();
       const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
-                                      : collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin);
+                                      : collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin,
+                                                           reach_[i] + kPlaneSupportSlack);
       if (settings_.logQueries) log_.record(summarize(round ? QueryKind::PlaneRound : QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
       if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, 0, m});
     }

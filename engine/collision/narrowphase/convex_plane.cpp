@@ -1,17 +1,25 @@
 #include "rbsim/collision/narrowphase/convex_plane.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "rbsim/collision/narrowphase/manifold_reduction.h"
 
 namespace rbsim {
 
-ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& vertices, double margin) {
+ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& vertices, double margin,
+                                   double supportSlab) {
   std::vector<ContactPoint> candidates;
+  double deepest = -std::numeric_limits<double>::infinity();
   for (const Vec3& p : vertices) {
     const double s = plane.signedDistance(p);
-    if (s <= margin) candidates.push_back({p - plane.normal * (0.5 * s), -s});
+    if (s > margin) continue;
+    candidates.push_back({p - plane.normal * (0.5 * s), -s});
+    deepest = std::max(deepest, -s);
   }
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                  [&](const ContactPoint& c) { return c.depth < deepest - supportSlab; }),
+                   candidates.end());
   // A vertex above a deeper one, higher by more than it lies beside it, is shadowed: the deeper
   // vertex meets the plane first and holds the body there. Reduction by area sees the plane's
   // projection only, so without this it may keep the top corner of a thin plate (within the

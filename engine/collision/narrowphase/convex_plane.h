@@ -7,6 +7,7 @@
 // B) is the plane's normal, pointing out of the solid half-space towards the body. A point's
 // depth is -signedDistance of its vertex; its position is midway between the vertex and the
 // vertex's projection onto the plane.
+#include <limits>
 #include <vector>
 
 #include "rbsim/collision/contact.h"
@@ -15,6 +16,13 @@
 namespace rbsim {
 
 // `margin` [m] >= 0: vertices up to this far above the plane are speculative contacts (depth < 0).
-ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& vertices, double margin = 0.0);
+// `supportSlab` [m]: only vertices at most this much shallower than the deepest are candidates for
+// the manifold; the caller passes how far the body can move in the step (its reach), so the
+// corners of a tumbling body coming down stay in. A body at rest on a face of many vertices (a
+// mesh from an implicit surface, whose sharp edges are bevelled half a grid cell above the face)
+// is then held by its face, not by bevel vertices hanging above the plane whose wider footprint
+// reduction by area would prefer.
+ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& vertices, double margin = 0.0,
+                                   double supportSlab = std::numeric_limits<double>::infinity());
 
 }  // namespace rbsim

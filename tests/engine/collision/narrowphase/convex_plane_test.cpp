@@ -124,5 +124,41 @@ TEST(CollidePlaneConvex, ManyPointsReduceToFourSpanningTheFootprint) {
   EXPECT_GT(area, 0.6 * M_PI);
 }
 
+// A mesh from an implicit surface rests on a flat disc bevelled half a grid cell up at its rim
+// (marching tetrahedra chamfer the edge): the bevel ring reaches farther out than the floor but
+// hangs 9 mm above it. Reduction by area alone takes the bevel: one point holds the body and it
+// rocks. With the body's reach as the slab, only vertices that could reach the deepest depth in
+// the step are candidates: at rest the four points are the floor's; a body rolling onto the
+// bevel keeps the bevel.
+TEST(CollidePlaneConvex, ARestingFaceIsHeldByItsFloorNotByABevelAboveIt) {
+  std::vector<Vec3> disc;
+  constexpr int kRim = 64;
+  for (int i = 0; i < kRim; ++i) {
+    const double a = 2.0 * M_PI * i / kRim;
+    disc.emplace_back(0.47 * std::cos(a), -0.001 + 1e-5 * std::sin(3.0 * a), 0.47 * std::sin(a));  // floor, 1 mm deep
+    disc.emplace_back(0.49 * std::cos(a), 0.008, 0.49 * std::sin(a));                            // bevel, 8 mm up
+  }
+  const double margin = 0.02;
+  const ContactManifold byArea = collidePlaneConvex(kGround, disc, margin);
+  int below = 0;
+  for (int k = 0; k < byArea.count; ++k) below += byArea.points[k].depth > 0.0 ? 1 : 0;
+  EXPECT_EQ(below, 1) << "without the body's motion the bevel is chosen (the case this guards against)";
+
+  // At rest at dt = 1/60 s the body's reach is g dt^2 = 2.7 mm; with 1 mm of slack the slab is
+  // below the bevel's 9 mm.
+  const double restSlab = 1e-3 + 9.81 / 3600.0;
+  const ContactManifold held = collidePlaneConvex(kGround, disc, margin, restSlab);
+  ASSERT_EQ(held.count, 4);
+  for (int k = 0; k < held.count; ++k) {
+    EXPECT_GT(held.points[k].depth, 0.0);
+    EXPECT_NEAR(std::hypot(held.points[k].position.x(), held.points[k].position.z()), 0.47, 1e-9);
+  }
+  // Rolling at 2 rad/s, its rim moves 0.49 * 2 / 60 = 16 mm in the step: the bevel is within reach.
+  const ContactManifold rolled = collidePlaneConvex(kGround, disc, margin, restSlab + 0.49 * 2.0 / 60.0);
+  bool bevelKept = false;
+  for (int k = 0; k < rolled.count; ++k) bevelKept = bevelKept || rolled.points[k].depth < 0.0;
+  EXPECT_TRUE(bevelKept);
+}
+
 }  // namespace
 }  // namespace rbsim
