@@ -2,15 +2,19 @@
 # Regenerates every figure of REPORT.md (issue 11): builds the benchmarks, runs each one writing a
 # CSV into bench/results/, draws the plots (PNG) with gnuplot from those CSVs, extracts one still
 # per demo video into videos/stills/ (rendering the demo first when its MP4 is missing), and
-# rewrites the generated blocks of REPORT.md (<!-- fig:NAME --> ... <!-- /fig:NAME -->) from the CSVs.
+# rewrites the generated blocks (<!-- fig:NAME --> ... <!-- /fig:NAME -->) of REPORT.md and of the
+# docs/*.md pages the long tables moved to (issue 26) from the CSVs, then renders REPORT.pdf
+# (bench/make_pdf.sh).
 #
 # usage: bash bench/make_report.sh [--quick] [--no-bench] [--no-stills] [--build DIR]
 #   --quick      fewer repetitions and sizes: a check in minutes (the report says it was quick)
-#   --no-bench   keep the CSVs in bench/results/, only redraw the plots and refill REPORT.md
+#   --no-bench   keep the CSVs in bench/results/, only redraw the plots, refill REPORT.md and docs/
+#                and render REPORT.pdf
 #   --no-stills  keep videos/stills/ as it is
 #   --build DIR  the Release build folder (default build/)
 # RBSIM_BASELINE_BUILD=DIR also times that build's rbsim in bench/frame_pipeline.sh, side by side.
-# Needs: cmake, a C++ compiler, gnuplot, ffmpeg, python3 (standard library only).
+# Needs: cmake, a C++ compiler, gnuplot, ffmpeg, python3 (standard library only), and for the PDF
+# pandoc and pdflatex (.ci/setup installs them).
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -143,6 +147,8 @@ if [ $make_stills = 1 ]; then
   done < bench/report/stills.txt
 fi
 
-say "filling the generated blocks of REPORT.md"
-python3 bench/report/fill_report.py REPORT.md "$results"
+say "filling the generated blocks of REPORT.md and docs/*.md"
+python3 bench/report/fill_report.py "$results" REPORT.md docs/*.md
+say "rendering REPORT.pdf (bench/make_pdf.sh)"
+bash bench/make_pdf.sh
 say "done in $(( $(date +%s) - started )) s ($mode)"

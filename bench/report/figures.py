@@ -1,4 +1,4 @@
-"""The generated figures of REPORT.md (issue 11): one function per `<!-- fig:NAME -->` block, each
+"""The generated figures of REPORT.md and docs/*.md (issues 11, 26): one function per `<!-- fig:NAME -->` block, each
 making Markdown from the CSVs in bench/results/. Numbers are never typed here, only read."""
 import math
 import os

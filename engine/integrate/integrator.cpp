@@ -42,7 +42,7 @@ const double kYoshidaInner = 1.0 - 2.0 * kYoshidaOuter;
 // by torque, so |L| of a free body is exact to the bit and the step stays bounded at any spin
 // (|omega| dt = 17 rad included), but the energy drifts at O(dt^4), and near the separatrix the
 // ratio |L|^2 / 2E decides the motion: a box spun near its intermediate axis flips 23 % early at
-// dt = 1/60 s (REPORT section 6). RK4 on Euler's equations in the body frame keeps the energy
+// dt = 1/60 s (docs/accuracy.md). RK4 on Euler's equations in the body frame keeps the energy
 // instead, and diverges once |omega| dt passes RK4's stability limit (about 2.8): dlm, exact and
 // exact4 do both.
 struct Derivative {

@@ -99,7 +99,7 @@ TEST(TimePlots, KeepsTheLastSecondsOfEveryWorldWithItsValueAsLegend) {
       EXPECT_FLOAT_EQ(plot.times[k].back(), 2.5f);
     }
   }
-  // dlm keeps the spin's energy; euler-quat gains it (REPORT section 6).
+  // dlm keeps the spin's energy; euler-quat gains it (docs/accuracy.md).
   EXPECT_GT(plots[0].values[0].back(), plots[0].values[0].front());
   EXPECT_NEAR(plots[0].values[1].back(), plots[0].values[1].front(), 1e-6f);
 }
