@@ -27,7 +27,8 @@ struct ReelOptions {
   // the same chapters are muxed into the reel's MP4.
   std::string chaptersFile = "chapters.txt";
   // YouTube shows a video's chapters only if each lasts at least 10 s (and there are at least
-  // three, the first at 0:00; YouTube Help, "Video chapters"): shorter ones are merged (reelChapters).
+  // three, the first at 0:00; YouTube Help, "Video chapters"): shorter ones are merged
+  // (mergeChapters). Minus infinity keeps every phase's chapter, however short.
   double minChapterSeconds = 10.0;
   int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames (--png-level)
   render::GlBackend glBackend = render::defaultGlBackend();  // --gl
@@ -55,7 +56,9 @@ struct ReelChapter {
   std::uint64_t startFrame = 0;
   std::uint64_t endFrame = 0;
   std::string title;
-  int startSecond = 0;  // as chapters.txt writes it: the first whole second at or after startFrame
+  // As chapters.txt writes it: the first whole second at or after startFrame, so that a click on
+  // the chapter lands inside it (in its title card), not in the end of the one before.
+  int startSecond = 0;
 };
 
 // A place where a chapter may start, in frame-plan order: each demo phase (the first one with its
