@@ -68,21 +68,46 @@ int runFfmpeg(std::vector<std::string> args, std::string& errors) {
 
 }  // namespace
 
-void concatVideos(const std::vector<std::filesystem::path>& parts, const std::filesystem::path& output) {
-  std::filesystem::path list = output;
-  list += ".parts.txt";
-  {
-    std::ofstream file(list);
-    file << "ffconcat version 1.0\n";
-    for (const std::filesystem::path& part : parts) file << "file " << quoted(part) << "\n";
-    if (!file.flush()) throw RenderError("cannot write " + list.string() + " (the list of the reel's parts)");
+std::string ffmetadata(const std::vector<VideoChapter>& chapters) {
+  std::string text = ";FFMETADATA1\n";
+  for (const VideoChapter& chapter : chapters) {
+    text += "[CHAPTER]\nTIMEBASE=1/1000\nSTART=" + std::to_string(chapter.startMs) + "\nEND=" +
+            std::to_string(chapter.endMs) + "\ntitle=";
+    for (const char c : chapter.title) {
+      if (c == '=' || c == ';' || c == '#' || c == '\\' || c == '\n') text += '\\';
+      text += c;
+    }
+    text += "\n";
   }
+  return text;
+}
+
+void concatVideos(const std::vector<std::filesystem::path>& parts, const std::filesystem::path& output,
+                  const std::vector<VideoChapter>& chapters) {
+  std::filesystem::path list = output, metadata = output;
+  list += ".parts.txt";
+  metadata += ".chapters.txt";
+  const auto write = [](const std::filesystem::path& path, const std::string& text, const char* what) {
+    std::ofstream file(path);
+    file << text;
+    if (!file.flush()) throw RenderError("cannot write " + path.string() + " (" + what + ")");
+  };
+  std::string listText = "ffconcat version 1.0\n";
+  for (const std::filesystem::path& part : parts) listText += "file " + quoted(part) + "\n";
+  write(list, listText, "the list of the reel's parts");
+  std::vector<std::string> args = {"ffmpeg", "-y", "-loglevel", "error", "-f", "concat", "-safe", "0", "-i", list.string()};
+  if (!chapters.empty()) {
+    write(metadata, ffmetadata(chapters), "the reel's chapters for ffmpeg");
+    // Input 1 has no streams, only chapters: the video is input 0's, the chapters input 1's
+    // (-map_chapters takes them from there instead of from the first input, ffmpeg(1)).
+    args.insert(args.end(), {"-f", "ffmetadata", "-i", metadata.string(), "-map", "0", "-map_chapters", "1"});
+  }
+  args.insert(args.end(), {"-c", "copy", "-movflags", "+faststart", output.string()});
   std::string errors;
-  const int status = runFfmpeg({"ffmpeg", "-y", "-loglevel", "error", "-f", "concat", "-safe", "0", "-i",
-                                list.string(), "-c", "copy", "-movflags", "+faststart", output.string()},
-                               errors);
+  const int status = runFfmpeg(args, errors);
   std::error_code ignored;
   std::filesystem::remove(list, ignored);
+  std::filesystem::remove(metadata, ignored);
   if (status != 0) {
     while (!errors.empty() && (errors.back() == '\n' || errors.back() == ' ')) errors.pop_back();
     throw RenderError("ffmpeg could not join " + std::to_string(parts.size()) + " videos into " + output.string() +

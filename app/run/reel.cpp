@@ -9,8 +9,10 @@
 
 #include "rbsim/io/input_error.h"
 #include "paths.h"
+#include "render/checked_file.h"
 #include "render/frame_sink.h"
 #include "render/png_sequence_writer.h"
+#include "render/render_error.h"
 #include "render/title_card.h"
 #include "render/video_concat.h"
 #include "run/output_budget.h"
@@ -103,7 +105,100 @@ std::uintmax_t fileSize(const std::filesystem::path& path) {
   return error ? 0 : size;
 }
 
+std::string demoChapterTitle(const Demo& demo) {
+  // The description up to its first colon: demo 2's goes on to list its phases.
+  const std::string& d = demo.description;
+  return "Demo " + std::to_string(demo.number) + " " + demo.name + ": " + d.substr(0, d.find(':'));
+}
+
+// The frame time as the MP4's chapters count it, in ms (TIMEBASE=1/1000), nearest.
+std::int64_t frameMs(std::uint64_t frame, int fps) {
+  return static_cast<std::int64_t>(std::llround(static_cast<double>(frame) * 1000.0 / fps));
+}
+
 }  // namespace
+
+std::vector<ChapterCandidate> chapterCandidates(const ReelPlan& plan) {
+  std::vector<ChapterCandidate> candidates;
+  std::uint64_t frame = plan.cardFrames;  // after the opening card
+  for (std::size_t i = 0; i < plan.demos.size(); ++i) {
+    const ReelDemo& d = plan.demos[i];
+    const std::uint64_t cardStart = frame;
+    frame += plan.cardFrames;
+    for (std::size_t p = 0; p < d.phases.size(); ++p) {
+      ChapterCandidate c;
+      c.demo = i;
+      c.startFrame = p > 0 ? frame : i > 0 ? cardStart : 0;
+      c.demoTitle = demoChapterTitle(d.demo);
+      c.title = d.phases.size() == 1 ? c.demoTitle
+                                     : "Demo " + std::to_string(d.demo.number) + " (" + static_cast<char>('a' + p % 26) +
+                                           "): " + phaseCaption(d.phases[p].scene().title);
+      candidates.push_back(std::move(c));
+      frame += frameCount(d.phases[p]);
+    }
+  }
+  return candidates;
+}
+
+std::vector<ReelChapter> mergeChapters(const std::vector<ChapterCandidate>& candidates, std::uint64_t totalFrames,
+                                       int fps, double minSeconds) {
+  if (fps <= 0) throw InputError("", "fps", "expected a positive frame rate");
+  const auto second = [&](std::uint64_t frame) {
+    return static_cast<int>((frame + static_cast<std::uint64_t>(fps) - 1) / static_cast<std::uint64_t>(fps));
+  };
+  const double videoSeconds = static_cast<double>(totalFrames) / fps;
+  // Lengths as YouTube counts them: whole-second start to the next whole-second start.
+  const auto lengths = [&](const std::vector<ReelChapter>& list) {
+    std::vector<double> out;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      out.push_back((i + 1 < list.size() ? list[i + 1].startSecond : videoSeconds) - list[i].startSecond);
+    }
+    return out;
+  };
+  // Per phase, for every demo; then a demo with a phase too short becomes one chapter.
+  std::vector<ReelChapter> perPhase;
+  for (const ChapterCandidate& c : candidates) perPhase.push_back({c.startFrame, 0, c.title, second(c.startFrame)});
+  const std::vector<double> phaseLengths = lengths(perPhase);
+  std::vector<ReelChapter> chapters;
+  for (std::size_t i = 0; i < candidates.size();) {
+    std::size_t j = i;
+    bool longEnough = true;
+    for (; j < candidates.size() && candidates[j].demo == candidates[i].demo; ++j) {
+      longEnough = longEnough && phaseLengths[j] >= minSeconds;
+    }
+    if (longEnough) {
+      chapters.insert(chapters.end(), perPhase.begin() + static_cast<std::ptrdiff_t>(i),
+                      perPhase.begin() + static_cast<std::ptrdiff_t>(j));
+    } else {
+      chapters.push_back({candidates[i].startFrame, 0, candidates[i].demoTitle, second(candidates[i].startFrame)});
+    }
+    i = j;
+  }
+  // A demo still too short joins its neighbour: the one before, or for the first the one after.
+  for (;;) {
+    const std::vector<double> length = lengths(chapters);
+    std::size_t k = 0;
+    while (k < chapters.size() && length[k] >= minSeconds) ++k;
+    if (k == chapters.size() || chapters.size() < 2) break;
+    const std::size_t into = k == 0 ? 0 : k - 1;
+    chapters[into].title += " / " + chapters[into + 1].title;
+    chapters.erase(chapters.begin() + static_cast<std::ptrdiff_t>(into + 1));
+  }
+  for (std::size_t i = 0; i < chapters.size(); ++i) {
+    chapters[i].endFrame = i + 1 < chapters.size() ? chapters[i + 1].startFrame : totalFrames;
+  }
+  return chapters;
+}
+
+std::vector<ReelChapter> reelChapters(const ReelPlan& plan, const ReelOptions& options) {
+  return mergeChapters(chapterCandidates(plan), plan.totalFrames, options.fps, options.minChapterSeconds);
+}
+
+std::string youtubeChapters(const std::vector<ReelChapter>& chapters) {
+  std::string text;
+  for (const ReelChapter& c : chapters) text += formatClock(c.startSecond) + " " + c.title + "\n";
+  return text;
+}
 
 ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options) {
   if (options.cardSeconds <= 0.0) throw InputError("", "card seconds", "expected a positive time");
@@ -200,7 +295,19 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
                              fileSize(run.videoPath)});
   }
   for (const std::unique_ptr<render::FrameSink>& sink : clips) sink->finish();
-  render::concatVideos(parts, reelPath);
+  // Chapters from the frame plan, the frames just rendered: no probing of what ffmpeg wrote.
+  result.chapters = reelChapters(plan, options);
+  std::vector<render::VideoChapter> muxed;
+  for (const ReelChapter& c : result.chapters) {
+    muxed.push_back({frameMs(c.startFrame, options.fps), frameMs(c.endFrame, options.fps), c.title});
+  }
+  render::concatVideos(parts, reelPath, muxed);
+  result.chaptersPath = options.videoDir / options.chaptersFile;
+  render::CheckedFile chaptersFile;
+  if (!chaptersFile.open(result.chaptersPath) || !chaptersFile.write(youtubeChapters(result.chapters)) ||
+      !chaptersFile.close()) {
+    throw render::RenderError("could not write " + result.chaptersPath.string() + ": " + chaptersFile.error());
+  }
   report(true);
   meter.finish();
   result.videos.push_back({reelPath, done, static_cast<double>(done) / options.fps, fileSize(reelPath)});
@@ -213,6 +320,15 @@ void printReelSummary(const ReelResult& result, const ReelOptions& options) {
   for (const VideoReport& v : result.videos) {
     std::printf("%-28s %7.2f s  %6llu frames  %6.1f MB\n", v.path.string().c_str(), v.seconds,
                 static_cast<unsigned long long>(v.frames), static_cast<double>(v.bytes) / 1e6);
+  }
+  if (!result.chaptersPath.empty()) {
+    std::printf("chapters: %s (YouTube's format, also in the reel's MP4):\n", result.chaptersPath.string().c_str());
+    for (const ReelChapter& c : result.chapters) {
+      std::printf("  %s %s\n", formatClock(c.startSecond).c_str(), c.title.c_str());
+    }
+    if (result.chapters.size() < 3) {
+      std::printf("  (YouTube shows chapters only from 3 on, each at least 10 s long)\n");
+    }
   }
   if (!result.cardImages.empty()) std::printf("title cards: %s\n", result.cardImages.front().parent_path().string().c_str());
   std::printf("frames: %s/<name>/\n", options.framesBase.string().c_str());

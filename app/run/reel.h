@@ -23,6 +23,13 @@ struct ReelOptions {
   std::filesystem::path framesBase = "build/frames";  // demo <name>'s PNGs go to framesBase/<name>/
   std::filesystem::path videoDir = "videos";          // <name>.mp4 and the reel go here
   std::string reelFile = "rbsim-demos.mp4";
+  // The reel's chapters in YouTube's description format ("0:00 Title" a line), beside the reel;
+  // the same chapters are muxed into the reel's MP4.
+  std::string chaptersFile = "chapters.txt";
+  // YouTube shows a video's chapters only if each lasts at least 10 s (and there are at least
+  // three, the first at 0:00; YouTube Help, "Video chapters"): shorter ones are merged
+  // (mergeChapters). Minus infinity keeps every phase's chapter, however short.
+  double minChapterSeconds = 10.0;
   int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames (--png-level)
   render::GlBackend glBackend = render::defaultGlBackend();  // --gl
   bool quiet = false;  // no progress and no summary
@@ -44,6 +51,43 @@ struct ReelPlan {
 // checks them against output_budget.h's limits.
 ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options);
 
+// A chapter of the reel: frames [startFrame, endFrame) of the frame plan.
+struct ReelChapter {
+  std::uint64_t startFrame = 0;
+  std::uint64_t endFrame = 0;
+  std::string title;
+  // As chapters.txt writes it: the first whole second at or after startFrame, so that a click on
+  // the chapter lands inside it (in its title card), not in the end of the one before.
+  int startSecond = 0;
+};
+
+// A place where a chapter may start, in frame-plan order: each demo phase (the first one with its
+// demo's title card before it, the very first with the opening card too, so it starts at 0).
+struct ChapterCandidate {
+  std::size_t demo = 0;  // index into the plan's demos
+  std::uint64_t startFrame = 0;
+  std::string title;       // the phase's chapter title
+  std::string demoTitle;   // the title of its demo's chapter, if its phases are merged
+};
+
+// The candidates of a plan: the same order and frame counts renderReel plays.
+std::vector<ChapterCandidate> chapterCandidates(const ReelPlan& plan);
+
+// Chapters from candidates, each at least minSeconds long in whole seconds as chapters.txt and
+// YouTube count them (from its start second to the next one's, the last to totalFrames / fps):
+// a demo gets a chapter per phase if every one of them is long enough, else one chapter (its
+// demoTitle); a demo chapter still too short is merged into the one before it (the first into the
+// one after), the titles joined by " / ".
+std::vector<ReelChapter> mergeChapters(const std::vector<ChapterCandidate>& candidates, std::uint64_t totalFrames,
+                                       int fps, double minSeconds);
+
+// The chapters of a plan: mergeChapters(chapterCandidates(plan), ...).
+std::vector<ReelChapter> reelChapters(const ReelPlan& plan, const ReelOptions& options);
+
+// chapters.txt's text: "M:SS Title" (H:MM:SS from an hour on) a line, as YouTube reads chapters
+// from a video's description.
+std::string youtubeChapters(const std::vector<ReelChapter>& chapters);
+
 struct VideoReport {
   std::filesystem::path path;
   std::uint64_t frames = 0;
@@ -54,6 +98,8 @@ struct VideoReport {
 struct ReelResult {
   std::vector<VideoReport> videos;  // each demo's, in order, then the reel
   std::vector<std::filesystem::path> cardImages;  // one PNG still of each title card
+  std::vector<ReelChapter> chapters;              // in chapters.txt and in the reel's MP4
+  std::filesystem::path chaptersPath;
   double wallSeconds = 0.0;
 };
 
