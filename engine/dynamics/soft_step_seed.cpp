@@ -20,30 +20,7 @@ void SoftStepSolver::solveSeed(double inverseH, const Settings& settings, bool u
     Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
     const Vec3& n = c.normal;
     bool sticking = true;
-    for (std::size_t k = 0; k < c.pointCount; ++k) {
-      Point& p = points_[c.firstPoint + k];
-      const double s = p.separation;
-      double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-      if (s > 0.0) {
-        bias = s * inverseH;
-      } else if (useBias) {
-        bias = std::max(c.softness.biasRate * s, -settings.contactPushSpeed);
-        massScale = c.softness.massScale;
-        impulseScale = c.softness.impulseScale;
-      }
-      const double vn = n.dot(vB - vA) + p.crossB.dot(wB) - p.crossA.dot(wA);
-      if (lastRelax && c.pointCount == 1 && s > 0.0 && c.restitution > 0.0 && -vn > settings.restitutionThreshold) continue;
-      const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-      const double total = std::max(p.normalImpulse + impulse, 0.0);
-      const double delta = total - p.normalImpulse;
-      p.normalImpulse = total;
-      p.totalNormalImpulse += delta;
-      if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
-      vA -= (mA * delta) * n;
-      wA -= delta * p.angularA;
-      vB += (mB * delta) * n;
-      wB += delta * p.angularB;
-    }
+    solveNormals(c, inverseH, settings, useBias, lastRelax, vA, wA, vB, wB);
     for (std::size_t k = 0; k < c.pointCount; ++k) {
       Point& p = points_[c.firstPoint + k];
       const Vec3 u = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);  // u_rel, body 1 = B

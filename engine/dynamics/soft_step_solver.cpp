@@ -203,6 +203,46 @@ void SoftStepSolver::warmStart() {
   }
 }
 
+// The normal rows of one constraint, point by point, on the pair's velocities (both sweeps, the
+// cone's and seed 000's friction, share them).
+void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings& settings, bool useBias, bool lastRelax,
+                                  Vec3& vA, Vec3& wA, Vec3& vB, Vec3& wB) {
+  const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+  const Vec3& n = c.normal;
+  for (std::size_t k = 0; k < c.pointCount; ++k) {
+    Point& p = points_[c.firstPoint + k];
+    const double s = p.separation;
+    double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+    if (s > 0.0) {
+      bias = s * inverseH;  // speculative: the gap may close within the substep, no further
+    } else if (useBias) {
+      bias = std::max(c.softness.biasRate * s, -settings.contactPushSpeed);
+      massScale = c.softness.massScale;
+      impulseScale = c.softness.impulseScale;
+    }
+    const double vn = n.dot(vB - vA) + p.crossB.dot(wB) - p.crossA.dot(wA);
+    // A bouncing approach still short of the surface when the step ends keeps its speed: the
+    // next step's first substep holds it to the gap all the same, and by then its prepare has
+    // taken the speed at the touch for restitution. Held here, a ball dropped at dt = 1/60 s
+    // reached the ground at 3.15 of its 4.42 m/s and rebounded to half the height e = 1 asks
+    // for (examples/python/restitution_sweep.py).
+    if (lastRelax && c.pointCount == 1 && s > 0.0 && c.restitution > 0.0 && -vn > settings.restitutionThreshold) continue;
+    const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
+    // Accumulated and kept repulsive (seed 001: f_i >= 0).
+    const double total = std::max(p.normalImpulse + impulse, 0.0);
+    const double delta = total - p.normalImpulse;
+    p.normalImpulse = total;
+    p.totalNormalImpulse += delta;
+    // Pushing within the slop of touching: the surfaces met (a speculative point lands a body
+    // at s = 0 up to rounding, so s <= 0 alone can miss it).
+    if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
+    vA -= (mA * delta) * n;
+    wA -= delta * p.angularA;
+    vB += (mB * delta) * n;
+    wB += delta * p.angularB;
+  }
+}
+
 void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
   for (Constraint& c : constraints_) {
     SolverState& A = states_[c.a];
@@ -211,38 +251,7 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
     Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
     const Vec3& n = c.normal;
     // Non-penetration first, friction with the new normal impulses after (Box2D v3's order).
-    for (std::size_t k = 0; k < c.pointCount; ++k) {
-      Point& p = points_[c.firstPoint + k];
-      const double s = p.separation;
-      double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-      if (s > 0.0) {
-        bias = s * inverseH;  // speculative: the gap may close within the substep, no further
-      } else if (useBias) {
-        bias = std::max(c.softness.biasRate * s, -settings.contactPushSpeed);
-        massScale = c.softness.massScale;
-        impulseScale = c.softness.impulseScale;
-      }
-      const double vn = n.dot(vB - vA) + p.crossB.dot(wB) - p.crossA.dot(wA);
-      // A bouncing approach still short of the surface when the step ends keeps its speed: the
-      // next step's first substep holds it to the gap all the same, and by then its prepare has
-      // taken the speed at the touch for restitution. Held here, a ball dropped at dt = 1/60 s
-      // reached the ground at 3.15 of its 4.42 m/s and rebounded to half the height e = 1 asks
-      // for (examples/python/restitution_sweep.py).
-      if (lastRelax && c.pointCount == 1 && s > 0.0 && c.restitution > 0.0 && -vn > settings.restitutionThreshold) continue;
-      const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-      // Accumulated and kept repulsive (seed 001: f_i >= 0).
-      const double total = std::max(p.normalImpulse + impulse, 0.0);
-      const double delta = total - p.normalImpulse;
-      p.normalImpulse = total;
-      p.totalNormalImpulse += delta;
-      // Pushing within the slop of touching: the surfaces met (a speculative point lands a body
-      // at s = 0 up to rounding, so s <= 0 alone can miss it).
-      if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
-      vA -= (mA * delta) * n;
-      wA -= delta * p.angularA;
-      vB += (mB * delta) * n;
-      wB += delta * p.angularB;
-    }
+    solveNormals(c, inverseH, settings, useBias, lastRelax, vA, wA, vB, wB);
     const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
     for (std::size_t k = 0; k < c.pointCount; ++k) {
       Point& p = points_[c.firstPoint + k];

@@ -149,6 +149,9 @@ class SoftStepSolver {
   void integrateVelocities(double h);
   void warmStart();
   void solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
+  // The normal impulses of one constraint on the pair's velocities, shared by both sweeps.
+  void solveNormals(Constraint& c, double inverseH, const Settings& settings, bool useBias, bool lastRelax, Vec3& vA,
+                    Vec3& wA, Vec3& vB, Vec3& wB);
   // solve with Settings::FrictionModel::Seed000 (soft_step_seed.cpp).
   void solveSeed(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
   void sweep(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
