@@ -1,0 +1,342 @@
+#!/usr/bin/env python3
+# Writes four of Box3D's benchmark scenes as rbsim scene files, next to this script:
+#
+#   large_pyramid.json    CreateLargePyramid: a 2D pyramid of 100 rows, 5050 unit cubes
+#   many_pyramids.json    CreateManyPyramids + CreateSmallPyramid: 14 x 14 pyramids of 10 rows, 10780 cubes
+#   joint_grid.json       CreateJointGrid: 100 x 100 spheres joined by ball joints, top row static
+#   convex_pile.json      CreateConvexPile: 8 x 8 x 80 copies of one 32-point hull (+ convex_pile_hull.obj)
+#
+# Layouts follow Box3D (github.com/erincatto/box3d) at commit
+# 30c67b5e6d0a3a66f0f506c69ce9e9e0587e3b7c, shared/benchmarks.c: CreateLargePyramid,
+# CreateSmallPyramid, CreateManyPyramids, CreateJointGrid, CreateConvexPile (its point generator
+# NextConvexPileRandom, ConvexPileRandomFloat, UnitRandomPoint, emulated here in float32), with the
+# release sizes (BENCHMARK_DEBUG == 0). dt = 1/60 s, gravity -10 m/s^2 and friction 0.6 are
+# Box3D's (benchmark/main.c, src/types.c); the solver runs with rbsim's own defaults (Box3D's are
+# 4 substeps and 30 Hz contacts: --set world.substeps=4 --set world.contact_hertz=30), density
+# 1000 unless the benchmark sets its own, and each file runs the benchmark's step count.
+#
+# What rbsim's format cannot say the same way (see also the "caption" of each file):
+#  - Box3D's ground is a static box whose top face is y = 0; here it is the plane y = 0 (infinite).
+#  - A body's "position" in rbsim is its centre of mass: the hull's bodies are placed at Box3D's
+#    body origin plus the hull's centre of mass (the OBJ keeps Box3D's points as they are).
+#  - Joint grid: Box3D's filter (category 2, mask ~2) keeps every sphere from touching every
+#    other, and there is nothing else in that world, so collisions are off ("collisions": false).
+#    Box3D also joins the static top row's neighbours to each other (99 joints between two static
+#    bodies, which do nothing); rbsim wants a dynamic body_a, so those are left out.
+#  - Box3D's sleep test is |v| + |omega| * extent < 0.05 m/s for 0.5 s; rbsim tests |v| and |omega|
+#    apart, so the convex pile asks for 0.05 m/s and 0.05 / 2 rad/s (the hull's radius is 2 m).
+#
+# Standard library only. Run: python3 make_box3d_scenes.py
+import itertools
+import json
+import math
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+BOX3D_COMMIT = "30c67b5e6d0a3a66f0f506c69ce9e9e0587e3b7c"
+FRICTION = 0.6  # b3DefaultSurfaceMaterial: one Coulomb coefficient, so mu_s = mu_k
+
+
+def f32(x):
+    """x rounded to the nearest float32 (every Box3D value is a float)."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def num(x, digits=6):
+    """A short JSON number: an int when whole, else rounded to `digits` decimals."""
+    x = round(float(x), digits)
+    if x == 0.0:
+        return 0
+    return int(x) if x == int(x) else x
+
+
+def vec(v, digits=6):
+    return [num(c, digits) for c in v]
+
+
+def world_block(steps, sleep, **extra):
+    w = {"gravity": [0, -10, 0], "dt": 1.0 / 60.0, "steps": steps,
+         "sleep": sleep}
+    w.update(extra)
+    return w
+
+
+# rbsim's renderer clips at a fixed far plane 200 m deep (app/render/frame_data.h, Camera::farPlane;
+# no scene key sets it): every camera below keeps the scene within 190 m of depth, widening fov_deg
+# where 45 degrees would need a farther eye. The convex pile's 320 m column cannot fit (see there).
+def view_block(eye, target, caption, fov=45, **extra):
+    v = {"camera": {"eye": eye, "target": target, "fov_deg": fov}, "size": [1280, 720], "fps": 60,
+         "axes": False, "overlay": False, "caption": caption}
+    v.update(extra)
+    return v
+
+
+def ground_plane():
+    return {"normal": [0, 1, 0], "point": [0, 0, 0], "friction_static": FRICTION, "friction_kinetic": FRICTION}
+
+
+def write_scene(name, head, bodies, joints=None):
+    """One key per line for the head, one body (and one joint) per line."""
+    dump = lambda o: json.dumps(o, separators=(", ", ": "))
+    lines = ["{"]
+    for key, value in head.items():
+        lines.append('  "%s": %s,' % (key, dump(value)))
+    lines.append('  "bodies": [')
+    lines.append(",\n".join("    " + dump(b) for b in bodies))
+    if joints:
+        lines.append("  ],")
+        lines.append('  "joints": [')
+        lines.append(",\n".join("    " + dump(j) for j in joints))
+    lines.append("  ]")
+    lines.append("}")
+    path = os.path.join(HERE, name)
+    with open(path, "w") as out:
+        out.write("\n".join(lines) + "\n")
+    print("wrote %s: %d bodies, %d joints, %d bytes" % (name, len(bodies), len(joints or []), os.path.getsize(path)))
+
+
+def cube(position, color=None):
+    b = {"shape": {"type": "box", "extents": [1, 1, 1]}, "density": 100,
+         "friction_static": FRICTION, "friction_kinetic": FRICTION, "position": vec(position)}
+    if color:
+        b["color"] = color
+    return b
+
+
+ROW_COLORS = [[0.85, 0.45, 0.25], [0.3, 0.55, 0.9]]
+
+
+# ---------------------------------------------------------------------------------------------
+# CreateLargePyramid: baseCount = 100, h = 0.5, shift = h; density 100; sleep off.
+def large_pyramid():
+    base_count, h = 100, 0.5
+    shift = 1.0 * h
+    bodies = []
+    for i in range(base_count):
+        y = (2.0 * i + 1.0) * shift
+        for j in range(i, base_count):
+            x = (i + 1.0) * shift + 2.0 * (j - i) * shift - h * base_count
+            bodies.append(cube((x, y, 0.0), ROW_COLORS[i % 2]))
+    assert len(bodies) == 5050
+    head = {
+        "title": "Box3D benchmark large_pyramid: a pyramid of 100 rows, 5050 unit cubes",
+        "world": world_block(200, False),
+        "view": view_block([30, 55, 150], [0, 48, 0],
+                           "Box3D %s shared/benchmarks.c CreateLargePyramid (baseCount 100): 5050 cubes of half "
+                           "extent 0.5, density 100, friction 0.6, dt 1/60 s, sleep off, 200 steps; "
+                           "ground: the plane y = 0 (Box3D: a static box 800 x 2 x 800 m, top at y = 0)" % BOX3D_COMMIT[:7]),
+        "planes": [ground_plane()],
+    }
+    write_scene("large_pyramid.json", head, bodies)
+
+
+# ---------------------------------------------------------------------------------------------
+# CreateManyPyramids: baseCount 10, extent 0.5, 14 x 14; each CreateSmallPyramid; density 100;
+# bodyDef.enableSleep = false on every cube (sleep off).
+def many_pyramids():
+    base_count, extent, row_count, column_count = 10, f32(0.5), 14, 14
+    ground_extent = f32(extent * column_count * (base_count + 1.0))  # 77
+    base_width = f32(2.0 * extent * base_count)                      # 10
+    base_z = f32(-ground_extent + 2.0 * extent)                      # -76
+    delta_z = f32(f32(2.0 * f32(ground_extent - 2.0 * extent)) / f32(row_count - 1.0))  # 152 / 13 in float32
+    bodies = []
+    for i in range(row_count):
+        for j in range(column_count):
+            center_x = f32(-ground_extent + j * (base_width + 2.0 * extent) + 2.0 * extent)
+            # CreateSmallPyramid( worldId, baseCount, extent, centerX, baseZ )
+            for r in range(base_count):
+                y = (2.0 * r + 1.0) * extent
+                for c in range(r, base_count):
+                    x = (r + 1.0) * extent + 2.0 * (c - r) * extent + center_x - 0.5
+                    bodies.append(cube((x, y, base_z), ROW_COLORS[(i + j) % 2]))
+        base_z = f32(base_z + delta_z)  # Box3D accumulates baseZ += deltaZ in float
+    assert len(bodies) == 10780
+    head = {
+        "title": "Box3D benchmark many_pyramids: 14 x 14 pyramids of 10 rows, 10780 unit cubes",
+        "world": world_block(100, False),
+        "view": view_block([0, 120, 85], [0, 0, 20],
+                           "Box3D %s shared/benchmarks.c CreateManyPyramids (14 x 14 CreateSmallPyramid, baseCount 10): "
+                           "10780 cubes of half extent 0.5, density 100, friction 0.6, dt 1/60 s, "
+                           "sleep off, 100 steps; ground: the plane y = 0 (Box3D: a static box 154 x 2 x 154 m, "
+                           "top at y = 0)" % BOX3D_COMMIT[:7], fov=60),
+        "planes": [ground_plane()],
+    }
+    write_scene("many_pyramids.json", head, bodies)
+
+
+# ---------------------------------------------------------------------------------------------
+# CreateJointGrid: n = 100; spheres of radius 0.4, density 1000 (b3DefaultShapeDef); body (k, i)
+# at (k, -i, 0), static when i == 0; a spherical joint to the body above (local anchors
+# (0, -0.5, 0) on it, (0, 0.5, 0) on this one) and to the body on the left ((0.5, 0, 0) on it,
+# (-0.5, 0, 0) on this one). Both local anchors meet at one world point, rbsim's "anchor".
+def joint_grid():
+    n = 100
+    name = lambda k, i: "s%d_%d" % (k, i)
+    bodies, joints = [], []
+    skipped = 0
+    for k in range(n):
+        for i in range(n):
+            b = {"name": name(k, i), "shape": {"type": "sphere", "radius": 0.4}, "density": 1000,
+                 "friction_static": FRICTION, "friction_kinetic": FRICTION, "position": vec((k, -i, 0))}
+            if i == 0:
+                b["static"] = True
+                b["color"] = [0.45, 0.45, 0.5]
+            bodies.append(b)
+            if i > 0:
+                # body A = (k, i - 1), body B = (k, i): A's (0,-0.5,0) and B's (0,0.5,0) meet here.
+                anchor_a = (k + 0.0, -(i - 1) - 0.5, 0.0)
+                anchor_b = (k + 0.0, -i + 0.5, 0.0)
+                assert anchor_a == anchor_b
+                # rbsim's body_a must be dynamic: this body (i > 0) is; Box3D's A (the one above) may be static.
+                joints.append({"type": "ball", "body_a": name(k, i), "body_b": name(k, i - 1), "anchor": vec(anchor_b)})
+            if k > 0:
+                anchor_a = (k - 1 + 0.5, -i + 0.0, 0.0)
+                anchor_b = (k - 0.5, -i + 0.0, 0.0)
+                assert anchor_a == anchor_b
+                if i == 0:
+                    skipped += 1  # between two static bodies: does nothing in Box3D, refused by rbsim
+                else:
+                    joints.append({"type": "ball", "body_a": name(k, i), "body_b": name(k - 1, i), "anchor": vec(anchor_b)})
+    assert len(bodies) == n * n and len(joints) + skipped == 2 * n * (n - 1) and skipped == n - 1
+    head = {
+        "title": "Box3D benchmark joint_grid: 100 x 100 spheres joined by 19701 ball joints",
+        # Box3D's filter (category 2, mask ~2) stops every sphere-sphere contact, and the world has
+        # nothing else: no contact can occur, so collision detection is off.
+        "world": world_block(100, False, collisions=False),
+        "view": view_block([49.5, -45, 135], [49.5, -50, 0],
+                           "Box3D %s shared/benchmarks.c CreateJointGrid (n = 100): spheres r = 0.4 at (k, -i, 0), "
+                           "density 1000, row i = 0 static, ball joints up and left (the 99 joints between two static "
+                           "bodies left out), no contacts (Box3D filters them all), dt 1/60 s, sleep off, "
+                           "100 steps" % BOX3D_COMMIT[:7], grid=False),
+    }
+    write_scene("joint_grid.json", head, bodies, joints)
+
+
+# ---------------------------------------------------------------------------------------------
+# CreateConvexPile: the hull of 32 points of PEEL's BasicRandom (seed 42) on a sphere of radius 2,
+# 8 x 8 x 80 bodies, default shape (density 1000, friction 0.6), sleep on.
+def convex_pile_points(point_count=32, amplitude=2.0, seed=42):
+    state = [seed]
+
+    def next_random():  # NextConvexPileRandom: unsigned 32-bit LCG
+        state[0] = (state[0] * 2147001325 + 715136305) & 0xFFFFFFFF
+        return state[0]
+
+    def random_float():  # ConvexPileRandomFloat: in [-0.5, 0.5]
+        return f32(f32((next_random() & 0xFFFF) / 65535.0) - 0.5)
+
+    def unit_random_point():  # UnitRandomPoint: rejection sampled, then b3Normalize
+        while True:
+            p = [random_float(), random_float(), random_float()]
+            length_sq = f32(f32(f32(p[0] * p[0]) + f32(p[1] * p[1])) + f32(p[2] * p[2]))  # b3Dot
+            if not length_sq > 0.25:
+                break
+        s = f32(1.0 / f32(math.sqrt(length_sq)))
+        return [f32(s * c) for c in p]
+
+    return [[f32(amplitude * c) for c in unit_random_point()] for _ in range(point_count)]
+
+
+def sub(a, b):
+    return [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def convex_hull(points):
+    """Triangles (i, j, k), wound counter-clockwise seen from outside, of the convex hull of
+    points in general position (no four on a plane): a triple is a face when every other point
+    lies strictly on one side of its plane. O(n^4), instant for 32 points."""
+    n = len(points)
+    size = max(max(abs(c) for c in p) for p in points)
+    eps = 1e-9 * size
+    faces = []
+    for i, j, k in itertools.combinations(range(n), 3):
+        normal = cross(sub(points[j], points[i]), sub(points[k], points[i]))
+        length = math.sqrt(dot(normal, normal))
+        sides = [dot(normal, sub(points[m], points[i])) / length for m in range(n) if m not in (i, j, k)]
+        if all(s < -eps for s in sides):
+            faces.append((i, j, k))
+        elif all(s > eps for s in sides):
+            faces.append((i, k, j))
+        else:
+            assert not (all(s <= eps for s in sides) or all(s >= -eps for s in sides)), \
+                "four points on one face plane: this hull needs a general hull builder"
+    return faces
+
+
+def volume_and_centroid(points, faces):
+    volume, moment = 0.0, [0.0, 0.0, 0.0]
+    for i, j, k in faces:
+        a, b, c = points[i], points[j], points[k]
+        v = dot(a, cross(b, c)) / 6.0  # tetrahedron (origin, a, b, c)
+        volume += v
+        for axis in range(3):
+            moment[axis] += v * (a[axis] + b[axis] + c[axis]) / 4.0
+    return volume, [m / volume for m in moment]
+
+
+def convex_pile():
+    points = convex_pile_points()
+    faces = convex_hull(points)
+    used = sorted({v for f in faces for v in f})
+    assert used == list(range(32)) and len(faces) == 2 * 32 - 4, (len(used), len(faces))
+    volume, centroid = volume_and_centroid(points, faces)
+    assert volume > 0.0
+
+    obj = os.path.join(HERE, "convex_pile_hull.obj")
+    with open(obj, "w") as out:
+        out.write("# Box3D %s shared/benchmarks.c CreateConvexPile: the convex hull of 32 points on a\n"
+                  "# sphere of radius 2 (PEEL's BasicRandom, seed 42), as Box3D computes them in float32\n"
+                  "# (printed with 9 digits: exact). %d triangles, wound outward; volume %.6f m^3, centre of\n"
+                  "# mass (%.6f, %.6f, %.6f). Written by make_box3d_scenes.py.\n"
+                  % (BOX3D_COMMIT[:7], len(faces), volume, *centroid))
+        for p in points:
+            out.write("v %.9g %.9g %.9g\n" % tuple(p))
+        for f in faces:
+            out.write("f %d %d %d\n" % (f[0] + 1, f[1] + 1, f[2] + 1))
+    print("wrote convex_pile_hull.obj: %d vertices, %d triangles, volume %.6f, centre of mass %s"
+          % (len(points), len(faces), volume, vec(centroid)))
+
+    count_x, count_z, layers, amplitude = 8, 8, 80, 2.0
+    scatter = 2.0 * amplitude
+    bodies = []
+    colors = [[0.85, 0.55, 0.25], [0.35, 0.6, 0.85], [0.5, 0.75, 0.4]]
+    for layer in range(layers):
+        for z in range(count_z):
+            for x in range(count_x):
+                origin = ((x - 0.5 * count_x) * scatter, amplitude + 2.0 * amplitude * layer, (z - 0.5 * count_z) * scatter)
+                # rbsim places the centre of mass: Box3D's body origin plus the hull's centroid.
+                com = [origin[a] + centroid[a] for a in range(3)]
+                bodies.append({"shape": {"type": "mesh", "file": "convex_pile_hull.obj"}, "density": 1000,
+                               "friction_static": FRICTION, "friction_kinetic": FRICTION, "position": vec(com),
+                               "color": colors[layer % 3]})
+    assert len(bodies) == 5120
+    head = {
+        "title": "Box3D benchmark convex_pile: 5120 copies of a 32-point hull falling into a pile",
+        "world": world_block(500, True, sleep_linear_speed=0.05, sleep_angular_speed=0.025, time_to_sleep=0.5),
+        "view": view_block([120, 70, 120], [-2, 72, -2],
+                           "Box3D %s shared/benchmarks.c CreateConvexPile: 8 x 8 x 80 hulls of 32 points on a sphere "
+                           "of radius 2 (convex_pile_hull.obj), spaced 4 m, density 1000, friction 0.6, dt 1/60 s, "
+                           "sleep on, 500 steps; ground: the plane y = 0 (Box3D: a static box "
+                           "500 x 2 x 500 m, top at y = 0); the camera frames the column's lowest 150 m, where the pile "
+                           "forms (the renderer's 200 m far plane cannot hold the whole 320 m column)" % BOX3D_COMMIT[:7],
+                           fov=60),
+        "planes": [ground_plane()],
+    }
+    write_scene("convex_pile.json", head, bodies)
+    return points, faces, centroid
+
+
+if __name__ == "__main__":
+    large_pyramid()
+    many_pyramids()
+    joint_grid()
+    convex_pile()

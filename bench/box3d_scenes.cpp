@@ -1,0 +1,144 @@
+// Box3D's own benchmark scenes (erincatto/box3d shared/benchmarks.c, commit 30c67b5), written as
+// rbsim scene files in assets/scenes/box3d/ (issue 34): large_pyramid, many_pyramids, joint_grid
+// and convex_pile, each run for the steps Box3D's `benchmark` program runs it. Prints per scene:
+// the load time (scene file to World), wall and CPU ms per step (median and mean), each stage's
+// share, and the end state: the fastest body, the top body's drift and sink, the deepest
+// penetration and the bodies awake. Not a Google Benchmark: one long run per scene is the
+// measurement, as in Box3D's program.
+//   usage: box3d_scenes [--scenes a,b] [--steps N] [--seconds S] [--threads N] [--set key=value]...
+//   --steps overrides every scene's step count; --seconds runs S simulated seconds instead (the
+//   rest check: large_pyramid for 10 s).
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rbsim/scene/scene.h"
+#include "rbsim/world/world.h"
+
+using namespace rbsim;
+
+namespace {
+
+struct SceneCase {
+  const char* name;
+  int steps;  // Box3D's benchmark program's step count for the scene
+};
+
+// The step counts of issue 34's table (Box3D's `benchmark` runs).
+const SceneCase kScenes[] = {{"large_pyramid", 200}, {"many_pyramids", 100}, {"joint_grid", 100}, {"convex_pile", 500}};
+
+double cpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  return out;
+}
+
+void run(const SceneCase& scene, int steps, double seconds, const std::vector<std::string>& overrides) {
+  const std::string path = std::string(RBSIM_SOURCE_DIR) + "/assets/scenes/box3d/" + scene.name + ".json";
+  const auto loadStart = std::chrono::steady_clock::now();
+  const Scene loaded = loadScene(path, overrides);
+  World world = buildWorld(loaded);
+  const double loadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loadStart).count();
+  if (seconds > 0.0) steps = static_cast<int>(std::lround(seconds / world.settings().timeStep));
+
+  std::vector<Vec3> start;
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) {
+    start.push_back(world.bodies()[i].position());
+    if (world.bodies()[i].isDynamic() && start[i].y() > start[top].y()) top = i;
+  }
+  std::vector<double> ms;
+  ms.reserve(static_cast<std::size_t>(steps));
+  const double cpu0 = cpuSeconds();
+  const auto wall0 = std::chrono::steady_clock::now();
+  for (int s = 0; s < steps; ++s) {
+    const auto t0 = std::chrono::steady_clock::now();
+    world.step();
+    ms.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const double cpu = cpuSeconds() - cpu0;
+
+  double fastest = 0.0, deepest = 0.0;
+  std::size_t awake = 0, dynamic = 0;
+  for (const RigidBody& b : world.bodies()) {
+    if (!b.isDynamic()) continue;
+    ++dynamic;
+    fastest = std::max(fastest, b.velocity().norm());
+    if (b.awake()) ++awake;
+  }
+  for (const Contact& c : world.contacts()) deepest = std::max(deepest, c.manifold.maxDepth());
+  const Vec3 topNow = world.bodies()[top].position();
+  const double drift = std::hypot(topNow.x() - start[top].x(), topNow.z() - start[top].z());
+  const double sink = start[top].y() - topNow.y();
+  std::vector<double> sorted = ms;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  std::printf("%-14s %6zu bodies %5zu joints  load %7.3f s  %5d steps  wall %8.2f ms/step (median %8.2f)  cpu %8.2f "
+              "ms/step  threads %d\n",
+              scene.name, dynamic, world.joints().size(), loadSeconds, steps, 1e3 * wall / steps,
+              sorted[sorted.size() / 2], 1e3 * cpu / steps, world.settings().threads);
+  std::printf("%-14s end: fastest %.4f m/s  top drift %.4f m  top sink %.4f m  deepest %.4f m  awake %zu  contacts %zu\n",
+              scene.name, fastest, drift, sink, deepest, awake, world.contacts().size());
+  double total = 0.0;
+  for (int s = 0; s < static_cast<int>(Stage::Count); ++s) total += world.stageStats(static_cast<Stage>(s)).seconds;
+  std::printf("%-14s stages:", scene.name);
+  for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {
+    const StageStats& st = world.stageStats(static_cast<Stage>(s));
+    if (st.seconds > 0.005 * total) std::printf("  %s %.0f%%", stageName(static_cast<Stage>(s)), 100.0 * st.seconds / total);
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> names;
+  std::vector<std::string> overrides;
+  int steps = 0;
+  double seconds = 0.0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "box3d_scenes: %s needs a value\n", arg.c_str());
+      return 2;
+    }
+    const std::string value = argv[++i];
+    if (arg == "--scenes") names = split(value);
+    else if (arg == "--steps") steps = std::atoi(value.c_str());
+    else if (arg == "--seconds") seconds = std::atof(value.c_str());
+    else if (arg == "--threads") overrides.push_back("world.threads=" + value);
+    else if (arg == "--set") overrides.push_back(value);
+    else {
+      std::fprintf(stderr, "box3d_scenes: unknown option %s\n", arg.c_str());
+      return 2;
+    }
+  }
+  try {
+    for (const SceneCase& scene : kScenes) {
+      if (!names.empty() && std::find(names.begin(), names.end(), scene.name) == names.end()) continue;
+      run(scene, steps > 0 ? steps : scene.steps, seconds, overrides);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "box3d_scenes: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
