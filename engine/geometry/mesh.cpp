@@ -1,6 +1,7 @@
 #include "rbsim/geometry/mesh.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -36,6 +37,13 @@ Mesh makeBox(const Vec3& extents) {
                    {0, 4, 7}, {0, 7, 3},   // -x
                    {1, 2, 6}, {1, 6, 5}};  // +x
   return box;
+}
+
+double convexityTolerance(const Mesh& mesh) {
+  if (mesh.vertices.empty()) return 0.0;
+  const Vec3 lo = mesh.boundsMin(), hi = mesh.boundsMax();
+  const double magnitude = lo.cwiseAbs().cwiseMax(hi.cwiseAbs()).sum();  // sum_i max |p_i| [m]
+  return std::max(kConvexRelativeTolerance * (hi - lo).norm(), kConvexFloatTolerance * FLT_EPSILON * magnitude);
 }
 
 MeshCheck checkMesh(const Mesh& mesh) {

@@ -58,6 +58,30 @@ bool isConvexSurface(const Mesh& mesh, double tolerance);
 inline constexpr double kConvexityWorkPerTriangle = 64.0;  // [evaluations / triangle]
 inline constexpr double kMaxConvexityWork = 1e8;           // [evaluations], ~0.1 s
 
+// The tolerance a mesh's convexity is judged with (isConvexSurface), from its coordinates as
+// written, before any re-centring: the larger of a fraction of its size and the rounding of
+// coordinates stored in single precision (issue 34). A dent shallower than this is rounding or a
+// hull builder's merged faces, and the body collides as its convex hull; a deeper one gets a grid.
+//
+// Float rounding: a coordinate stored as a float is off by up to |p_i| 2^-24, and a plane through
+// three such vertices inherits a few times that. Gregorius ("Implementing QuickHull", GDC 2014)
+// bounds the error of a plane distance from float vertices by 3 (sum_i max |p_i|) FLT_EPSILON (the
+// coplanarity distance of Box3D's hull.c, b3HullBuilder_ComputeTolerance, and of Jolt's
+// ConvexHullBuilder::DetermineCoplanarDistance), and Box3D's builder adds a point to a hull only
+// when it lies more than 8 such distances outside (minOutside = 2 minRadius = 8 tolerance): a hull
+// built in float may leave its own input that far outside its faces.
+inline constexpr double kConvexFloatTolerance = 24.0;  // [1]: x FLT_EPSILON x sum_i max |p_i| [m]
+// Size: such a builder also merges nearly coplanar faces into one polygon, and a triangulation of
+// that polygon puts a vertex off a triangle's plane by a multiple of the merge distance that the
+// triangles' shapes set: Box3D's convex pile hull (32 points on a sphere of radius 2, 6.44 m
+// across) with one nearly planar quad split along its other diagonal has a vertex 7.7e-5 m, 1.2e-5
+// of its size, outside a face. 1e-4 of the size keeps 8 times that, and stays below a 1 mm notch
+// in a 1 m body (5.8e-4 of its 1.73 m diagonal) and 1/30 of the 5 mm contact slop on such a body.
+inline constexpr double kConvexRelativeTolerance = 1e-4;  // [1] of the bounding box's diagonal
+// max(kConvexRelativeTolerance x diagonal, kConvexFloatTolerance x FLT_EPSILON x sum_i max |p_i|)
+// [m], over `mesh`'s vertices; 0 for a mesh without vertices.
+double convexityTolerance(const Mesh& mesh);
+
 // Moves every vertex by -offset (used to re-centre a mesh on its centre of mass).
 void translateMesh(Mesh& mesh, const Vec3& offset);
 

@@ -27,10 +27,6 @@ namespace {
 // Why a coordinate may not exceed kMaxCoordinate, for messages.
 constexpr const char* kFarFromOrigin = "beyond it a double cannot resolve the contact tolerances";
 
-// A mesh is treated as convex when no vertex lies outside a face plane by more than this
-// fraction of its size: rounding in an OBJ file's 6 digits, not a dent.
-constexpr double kConvexTolerance = 1e-6;  // [1]
-
 Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
   const std::string name = o.string(key, fallback == Frame::Body ? "body" : "world");
   if (name == "body") return Frame::Body;
@@ -138,7 +134,10 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
     // An open mesh (accepted with the cube inertia) has no inside to grid: it stays convex.
     const MeshCheck check = checkMesh(mesh);
     const bool solid = check.closed && check.consistentlyOriented && check.degenerateTriangles == 0;
-    if (!solid || isConvexSurface(mesh, kConvexTolerance * (mesh.boundsMax() - mesh.boundsMin()).norm())) return;
+    // Judged with the tolerance of the coordinates as the file gave them (geometry/mesh.h): their
+    // float rounding grows with their distance from the file's origin, not the centre of mass.
+    const Mesh& given = def.fileFrame.mesh ? *def.fileFrame.mesh : mesh;
+    if (!solid || isConvexSurface(mesh, convexityTolerance(given))) return;
   }
   const JsonObject o = b.has("sdf") ? b.object("sdf", {"resolution", "sample_spacing"}) : b;
   SdfGridOptions options;
@@ -175,6 +174,21 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
   def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(surfaceSamples(mesh, spacing));
 }
 
+// The keys a body's shape is built from, as one string (ShapeCache): the "shape" object with a
+// mesh file's name replaced by its resolved path, "mass", "density", "sdf" and the inertia method.
+// Empty when there is no "shape" object (parseShape reports it).
+std::string shapeKey(const JsonObject& b, const std::string& baseDir, InertiaMethod method) {
+  if (!b.has("shape") || !b.raw("shape").is_object()) return "";
+  nlohmann::json shape = b.raw("shape");
+  const auto type = shape.find("type"), file = shape.find("file");
+  if (type != shape.end() && *type == "mesh" && file != shape.end() && file->is_string()) {
+    *file = (std::filesystem::path(baseDir) / file->get<std::string>()).lexically_normal().string();
+  }
+  const auto dumpOf = [&](const char* key) { return b.has(key) ? b.raw(key).dump() : std::string("-"); };
+  return std::string(inertiaMethodName(method)) + "\n" + shape.dump() + "\n" + dumpOf("mass") + "\n" +
+         dumpOf("density") + "\n" + dumpOf("sdf");
+}
+
 double nonNegative(const JsonObject& o, const char* key, double fallback, const char* unit) {
   const double value = o.number(key, fallback);
   if (value < 0.0) o.fail(key, std::string("expected a value >= 0 ") + unit);
@@ -206,6 +220,13 @@ void checkMassScale(const JsonObject& b, const BodyDef& def) {
 
 }  // namespace
 
+const BodyDef* ShapeCache::find(const std::string& key) const {
+  const auto it = built_.find(key);
+  return it == built_.end() ? nullptr : &it->second;
+}
+
+void ShapeCache::add(const std::string& key, const BodyDef& built) { built_.emplace(key, built); }
+
 Quat toBodyOrientation(const BodyDef& def, const Quat& fileOrientation) {
   if (def.fileFrame.axes == Mat3::Identity()) return fileOrientation;  // exactly as typed
   return (fileOrientation * Quat(def.fileFrame.axes)).normalized();
@@ -230,29 +251,45 @@ std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, co
   o.fail(key, "no body is named \"" + name + "\"");
 }
 
-void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene) {
+void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
   BodyDef def;
   def.name = b.string("name", "body" + std::to_string(scene.bodies.size()));
   InertiaMethod method = scene.settings.inertia;
   if (b.has("inertia") && !parseInertiaMethod(b.string("inertia", ""), method)) {
     b.fail("inertia", "expected \"cube\" or \"exact\"");
   }
-  std::optional<ImplicitShape> implicit;
-  Mesh mesh = parseShape(b, baseDir, def, implicit);
-  if (b.has("mass")) b.positiveNumber("mass", 1.0);  // type and sign errors name the field
-  if (b.has("density")) b.positiveNumber("density", 1.0);
-  try {
-    const MassModel model = buildMassModel(std::move(mesh), b.optionalPositive("mass"),
-                                           b.optionalPositive("density"), method, def.shape ? &*def.shape : nullptr);
-    def.mesh = model.mesh;
-    def.mass = model.mass;
-    def.inertiaBody = model.inertiaBody;
-    def.fileFrame = {model.principalAxes, model.centerOffset, model.fileMesh};
-  } catch (const InputError& e) {
-    throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
+  const std::string key = shapes != nullptr ? shapeKey(b, baseDir, method) : std::string();
+  if (const BodyDef* built = key.empty() ? nullptr : shapes->find(key)) {
+    // The same keys were built and checked before: share what they made (pointers, not copies).
+    def.mesh = built->mesh;
+    def.fileFrame = built->fileFrame;
+    def.mass = built->mass;
+    def.inertiaBody = built->inertiaBody;
+    def.shape = built->shape;
+    def.sdf = built->sdf;
+    def.surfaceSamples = built->surfaceSamples;
+  } else {
+    std::optional<ImplicitShape> implicit;
+    Mesh mesh = parseShape(b, baseDir, def, implicit);
+    if (b.has("mass")) b.positiveNumber("mass", 1.0);  // type and sign errors name the field
+    if (b.has("density")) b.positiveNumber("density", 1.0);
+    try {
+      const MassModel model = buildMassModel(std::move(mesh), b.optionalPositive("mass"),
+                                             b.optionalPositive("density"), method, def.shape ? &*def.shape : nullptr);
+      def.mesh = model.mesh;
+      def.mass = model.mass;
+      def.inertiaBody = model.inertiaBody;
+      def.fileFrame = {model.principalAxes, model.centerOffset, model.fileMesh};
+    } catch (const InputError& e) {
+      throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
+    }
+    checkMassScale(b, def);
+    parseCollisionShape(b, def, implicit);
+    // The collision shape RigidBody would derive from the mesh (shapeOfMesh), made here once so
+    // that every body of this shape holds the same hull rather than building its own.
+    if (!def.shape) def.shape = shapeOfMesh(*def.mesh, def.sdf != nullptr);
+    if (!key.empty()) shapes->add(key, def);
   }
-  checkMassScale(b, def);
-  parseCollisionShape(b, def, implicit);
   def.position = b.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
   // The file gives the orientation of the file's axes; the body's are its principal axes.
   def.orientation = toBodyOrientation(def, b.optionalOrientation("orientation").value_or(Quat::Identity()));

@@ -1,7 +1,9 @@
 #pragma once
 // Scene-file parsing of bodies and what hangs on them (scripted forces, pose events, springs),
 // of planes, and of spawn blocks that create many bodies from one template. Internal to scene/.
+#include <cstddef>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
 #include "rbsim/scene/json_fields.h"
@@ -21,8 +23,26 @@ Material parseMaterial(const JsonObject& o);
 // The body's orientation for an orientation of the file's axes: q_file E (mass/mass_model.h).
 Quat toBodyOrientation(const BodyDef& def, const Quat& fileOrientation);
 
-// Appends the body described by `b` to scene.bodies (and its inertia method name).
-void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene);
+// The shapes built so far in one scene load (issue 34), so that bodies of the same shape share one
+// of each thing a shape costs: the mesh (and the file's), the collision shape with its hull, the
+// signed distance grid and its surface samples, and one mass-property computation. Two bodies
+// share when their "shape" (a mesh file by its resolved path), "mass", "density", inertia method
+// and "sdf" are the same JSON; everything else (pose, material, fracture, scripts) stays per body.
+// One cache lives for one load (parseScene's), so a file edited between loads is read again.
+class ShapeCache {
+ public:
+  // The body an earlier parseBody built from the same shape keys, or null.
+  const BodyDef* find(const std::string& key) const;
+  void add(const std::string& key, const BodyDef& built);
+  std::size_t size() const { return built_.size(); }
+
+ private:
+  std::unordered_map<std::string, BodyDef> built_;
+};
+
+// Appends the body described by `b` to scene.bodies (and its inertia method name). With `shapes`,
+// a body whose shape keys match an earlier one's takes that body's shape instead of building it.
+void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
 inline constexpr std::initializer_list<const char*> kForceKeys = {"force", "point", "force_frame", "point_frame", "start",
                                                                  "end"};
 // One entry of a body's "forces", on body `index` whose file axes are `fileAxes`; without "end"
@@ -40,6 +60,7 @@ std::pair<Plane, Material> parsePlane(const JsonObject& p);
 void parsePlanes(const JsonObject& root, Scene& scene);
 // "spawn": [{"count", "seed", "name", "body": {...}, "region": {"min", "max"}, "speed": [lo, hi],
 //            "angular_speed": [lo, hi]}, ...]
-void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene);
+// Each block's template is parsed once (through `shapes`, when given) and its bodies copy it.
+void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
 
 }  // namespace rbsim::scene_detail

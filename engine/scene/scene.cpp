@@ -65,9 +65,10 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
   if (root.has("world")) parseWorldBlock(root.object("world", kWorldKeys), scene);
   const std::vector<JsonObject> bodies = root.objectArray("bodies", scene_detail::kBodyKeys);
-  for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene);
+  scene_detail::ShapeCache shapes;  // bodies of one shape share it (issue 34)
+  for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene, &shapes);
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
-  scene_detail::parseSpawns(root, baseDir, scene);
+  scene_detail::parseSpawns(root, baseDir, scene, &shapes);
   const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };
   if (scene.bodies.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies") && !root.has("planar")) {
     throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, particles, soft bodies or a planar world)");

@@ -38,7 +38,7 @@ std::pair<double, double> range(const JsonObject& o, const char* key, const char
 
 }  // namespace
 
-void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene) {
+void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
   double spawnedVertices = 0.0;  // over every block so far
   for (const JsonObject& s : root.objectArray("spawn", {"count", "seed", "name", "body", "region", "speed",
                                                         "angular_speed", "random_orientation"})) {
@@ -65,7 +65,7 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs",
                                                "restitution", "friction_static", "friction_kinetic", "fracture", "sdf"});
     const std::size_t first = scene.bodies.size();
-    parseBody(body, baseDir, scene);
+    parseBody(body, baseDir, scene, shapes);
     parseScripts(body, first, scene);
     const BodyDef prototype = scene.bodies[first];
     spawnedVertices += static_cast<double>(count) * static_cast<double>(prototype.mesh->vertices.size());
