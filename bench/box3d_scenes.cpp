@@ -6,6 +6,7 @@
 // penetration and the bodies awake. Not a Google Benchmark: one long run per scene is the
 // measurement, as in Box3D's program.
 //   usage: box3d_scenes [--scenes a,b] [--steps N] [--seconds S] [--threads N] [--set key=value]...
+//   A name ending in .json is any scene file, run the same way (200 steps unless told).
 //   --steps overrides every scene's step count; --seconds runs S simulated seconds instead (the
 //   rest check: large_pyramid for 10 s).
 #include <sys/resource.h>
@@ -29,8 +30,8 @@ using namespace rbsim;
 namespace {
 
 struct SceneCase {
-  const char* name;
-  int steps;  // Box3D's benchmark program's step count for the scene
+  std::string name;  // in assets/scenes/box3d, or a path to any scene file (ending in .json)
+  int steps;         // Box3D's benchmark program's step count for the scene
 };
 
 // The step counts of issue 34's table (Box3D's `benchmark` runs).
@@ -51,7 +52,8 @@ std::vector<std::string> split(const std::string& list) {
 }
 
 void run(const SceneCase& scene, int steps, double seconds, const std::vector<std::string>& overrides) {
-  const std::string path = std::string(RBSIM_SOURCE_DIR) + "/assets/scenes/box3d/" + scene.name + ".json";
+  const bool file = scene.name.size() > 5 && scene.name.compare(scene.name.size() - 5, 5, ".json") == 0;
+  const std::string path = file ? scene.name : std::string(RBSIM_SOURCE_DIR) + "/assets/scenes/box3d/" + scene.name + ".json";
   const auto loadStart = std::chrono::steady_clock::now();
   const Scene loaded = loadScene(path, overrides);
   World world = buildWorld(loaded);
@@ -92,13 +94,13 @@ void run(const SceneCase& scene, int steps, double seconds, const std::vector<st
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   std::printf("%-14s %6zu bodies %5zu joints  load %7.3f s  %5d steps  wall %8.2f ms/step (median %8.2f)  cpu %8.2f "
               "ms/step  threads %d\n",
-              scene.name, dynamic, world.joints().size(), loadSeconds, steps, 1e3 * wall / steps,
+              scene.name.c_str(), dynamic, world.joints().size(), loadSeconds, steps, 1e3 * wall / steps,
               sorted[sorted.size() / 2], 1e3 * cpu / steps, world.settings().threads);
   std::printf("%-14s end: fastest %.4f m/s  top drift %.4f m  top sink %.4f m  deepest %.4f m  awake %zu  contacts %zu\n",
-              scene.name, fastest, drift, sink, deepest, awake, world.contacts().size());
+              scene.name.c_str(), fastest, drift, sink, deepest, awake, world.contacts().size());
   double total = 0.0;
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) total += world.stageStats(static_cast<Stage>(s)).seconds;
-  std::printf("%-14s stages:", scene.name);
+  std::printf("%-14s stages:", scene.name.c_str());
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {
     const StageStats& st = world.stageStats(static_cast<Stage>(s));
     if (st.seconds > 0.005 * total) std::printf("  %s %.0f%%", stageName(static_cast<Stage>(s)), 100.0 * st.seconds / total);
@@ -135,6 +137,9 @@ int main(int argc, char** argv) {
     for (const SceneCase& scene : kScenes) {
       if (!names.empty() && std::find(names.begin(), names.end(), scene.name) == names.end()) continue;
       run(scene, steps > 0 ? steps : scene.steps, seconds, overrides);
+    }
+    for (const std::string& name : names) {  // scene files named by path: the steps or seconds asked for, else 200
+      if (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0) run({name, 200}, steps > 0 ? steps : 200, seconds, overrides);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "box3d_scenes: %s\n", e.what());

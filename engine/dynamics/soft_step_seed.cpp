@@ -10,8 +10,10 @@
 
 namespace rbsim {
 
-void SoftStepSolver::solveSeed(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
-  for (Constraint& c : constraints_) {
+void SoftStepSolver::solveSeed(std::size_t island, double inverseH, const Settings& settings, bool useBias,
+                               bool lastRelax) {
+  islands_.forContacts(island, [&](std::size_t index) {
+    Constraint& c = constraints_[index];
     SolverState& A = states_[c.a];
     SolverState& B = states_[c.b];
     const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
@@ -57,7 +59,7 @@ void SoftStepSolver::solveSeed(double inverseH, const Settings& settings, bool u
       B.linearVelocity = vB;
       B.angularVelocity = wB;
     }
-  }
+  });
 }
 
 }  // namespace rbsim

@@ -166,20 +166,23 @@ void SoftStepSolver::updateJacobians(const Constraint& c, Point& p) const {
 }
 
 void SoftStepSolver::updateJacobians() {
-  for (const Constraint& c : constraints_) {
+  parallelFor(constraints_.size(), threads_, [&](std::size_t i) {
+    const Constraint& c = constraints_[i];
     for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) updateJacobians(c, points_[j]);
-  }
+  });
 }
 
 void SoftStepSolver::integrateVelocities(double h) {
-  for (std::size_t i = 1; i < states_.size(); ++i) {
+  parallelFor(states_.size() - 1, threads_, [&](std::size_t k) {
+    const std::size_t i = k + 1;
     states_[i].linearVelocity += h * sims_[i].acceleration;
     states_[i].angularVelocity += h * (sims_[i].inverseInertiaNow * sims_[i].torque);
-  }
+  });
 }
 
-void SoftStepSolver::warmStart() {
-  for (const Constraint& c : constraints_) {
+void SoftStepSolver::warmStart(std::size_t island) {
+  islands_.forContacts(island, [&](std::size_t index) {
+    const Constraint& c = constraints_[index];
     SolverState& A = states_[c.a];
     SolverState& B = states_[c.b];
     const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
@@ -200,7 +203,7 @@ void SoftStepSolver::warmStart() {
       p.totalNormalImpulse += p.normalImpulse;
       p.totalFriction += friction;
     }
-  }
+  });
 }
 
 // The normal rows of one constraint, point by point, on the pair's velocities (both sweeps, the
@@ -243,8 +246,9 @@ void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings
   }
 }
 
-void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
-  for (Constraint& c : constraints_) {
+void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
+  islands_.forContacts(island, [&](std::size_t index) {
+    Constraint& c = constraints_[index];
     SolverState& A = states_[c.a];
     SolverState& B = states_[c.b];
     const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
@@ -297,17 +301,18 @@ void SoftStepSolver::solve(double inverseH, const Settings& settings, bool useBi
       B.linearVelocity = vB;
       B.angularVelocity = wB;
     }
-  }
+  });
 }
 
 void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, double h) {
-  for (std::size_t i = 1; i < states_.size(); ++i) {
+  parallelFor(states_.size() - 1, threads_, [&](std::size_t k) {
+    const std::size_t i = k + 1;
     SolverState& s = states_[i];
     const RigidBody& body = bodies[sims_[i].body];
     s.deltaPosition += h * s.linearVelocity;
     if (sims_[i].kinematic) {  // turns at its prescribed omega, which no impulse changes
       s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
-      continue;
+      return;
     }
     // The rotation by angle |omega| h (seed 004's alternative), with L = I omega carried over:
     // free rotation keeps L, so omega follows the new orientation (the gyroscopic term of
@@ -318,7 +323,7 @@ void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, do
     const Mat3 next = s.orientation.toRotationMatrix();
     sims_[i].inverseInertiaNow = next * body.inverseInertiaBody() * next.transpose();
     s.angularVelocity = sims_[i].inverseInertiaNow * L;
-  }
+  });
 }
 
 void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
@@ -360,18 +365,28 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     prepare(bodies, contact, i, material, settings);
   }
 
+  threads_ = settings.threads;
+  islands_.build(
+      states_.size(), constraints_.size(), [&](std::size_t i) { return constraints_[i].a; },
+      [&](std::size_t i) { return constraints_[i].b; }, joints_.size(), [&](std::size_t i) { return joints_[i].base; },
+      [&](std::size_t i) { return joints_[i].moving; });
   collide(settings);
   const double inverseH = 1.0 / h;
   for (int substep = 0; substep < settings.substeps; ++substep) {
+    const bool last = substep == settings.substeps - 1;
     integrateVelocities(h);
-    warmStartJoints();
-    warmStart();  // the last substep's impulses (at the first, the last step's, when kept)
-    solveJoints(h, /*useBias=*/true);
-    sweep(inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
+    forEachIsland([&](std::size_t island) {
+      warmStartJoints(island);
+      warmStart(island);  // the last substep's impulses (at the first, the last step's, when kept)
+      solveJoints(island, h, /*useBias=*/true);
+      sweep(island, inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
+    });
     integratePositions(bodies, h);
     updateJacobians();  // for the relax, and the next substep's warm start and solve
-    solveJoints(h, /*useBias=*/false);
-    sweep(inverseH, settings, /*useBias=*/false, /*lastRelax=*/substep == settings.substeps - 1);
+    forEachIsland([&](std::size_t island) {
+      solveJoints(island, h, /*useBias=*/false);
+      sweep(island, inverseH, settings, /*useBias=*/false, /*lastRelax=*/last);
+    });
   }
   applyRestitution(settings);
   finish(bodies, contacts);

@@ -30,7 +30,9 @@
 #include "rbsim/dynamics/joint.h"
 #include "rbsim/dynamics/softness.h"
 #include "rbsim/dynamics/solved_contact_point.h"
+#include "rbsim/dynamics/solver_islands.h"
 #include "rbsim/collision/contact.h"
+#include "rbsim/math/parallel.h"
 #include "rbsim/settings/settings.h"
 
 namespace rbsim {
@@ -147,19 +149,26 @@ class SoftStepSolver {
   void updateJacobians(const Constraint& c, Point& p) const;
   void updateJacobians();
   void integrateVelocities(double h);
-  void warmStart();
-  void solve(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
+  // Island k's share of a substep (solver_islands.h): the sweeps below run island by island.
+  void warmStart(std::size_t island);
+  void solve(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax);
   // The normal impulses of one constraint on the pair's velocities, shared by both sweeps.
   void solveNormals(Constraint& c, double inverseH, const Settings& settings, bool useBias, bool lastRelax, Vec3& vA,
                     Vec3& wA, Vec3& vB, Vec3& wB);
   // solve with Settings::FrictionModel::Seed000 (soft_step_seed.cpp).
-  void solveSeed(double inverseH, const Settings& settings, bool useBias, bool lastRelax);
-  void sweep(double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
+  void solveSeed(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax);
+  void sweep(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
     if (settings.friction == Settings::FrictionModel::Seed000) {
-      solveSeed(inverseH, settings, useBias, lastRelax);
+      solveSeed(island, inverseH, settings, useBias, lastRelax);
     } else {
-      solve(inverseH, settings, useBias, lastRelax);
+      solve(island, inverseH, settings, useBias, lastRelax);
     }
+  }
+  // f(k) for every island k, on Settings::threads threads when the step is large enough to pay
+  // for waking them.
+  template <typename F>
+  void forEachIsland(F&& f) const {
+    parallelForUneven(islands_.count(), threads_, constraints_.size() + joints_.size() >= kMinParallelItems, f);
   }
   void integratePositions(const std::vector<RigidBody>& bodies, double h);
   void collide(const Settings& settings);  // single-point collisions, before the substeps
@@ -169,8 +178,8 @@ class SoftStepSolver {
   void slotJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints, const Settings& settings,
                   bool addGravity);
   void prepareJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints, const Settings& settings);
-  void warmStartJoints();
-  void solveJoints(double h, bool useBias);
+  void warmStartJoints(std::size_t island);
+  void solveJoints(std::size_t island, double h, bool useBias);
 
   std::vector<SolverState> states_;  // per slot
   std::vector<BodySim> sims_;      // per slot
@@ -184,6 +193,8 @@ class SoftStepSolver {
   Softness softness_;  // of every contact this step
   std::vector<JointConstraint> joints_;
   Softness jointSoftness_;  // of every joint this step
+  SolverIslands islands_;
+  int threads_ = 1;  // Settings::threads of this step
 };
 
 }  // namespace rbsim

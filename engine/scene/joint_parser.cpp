@@ -12,9 +12,10 @@ namespace {
 
 std::size_t bodyNamed(const JsonObject& j, const char* key, const JointBodies& bodies) {
   const std::string name = j.requiredString(key);
-  for (std::size_t i = 0; i < bodies.names.size(); ++i) {
-    if (bodies.names[i] == name) return i;
+  if (bodies.first.empty()) {
+    for (std::size_t i = bodies.names.size(); i-- > 0;) bodies.first[bodies.names[i]] = i;
   }
+  if (const auto it = bodies.first.find(name); it != bodies.first.end()) return it->second;
   j.fail(key, "no body is named \"" + name + "\"");
 }
 

@@ -2,6 +2,7 @@
 // Scene-file parsing of the "joints" array into JointDef (keys in README.md, "Joints"). Internal
 // to scene/; bodies and the world block must be parsed first.
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "rbsim/dynamics/joint.h"
@@ -18,6 +19,9 @@ inline constexpr std::initializer_list<const char*> kJointKeys = {
 struct JointBodies {
   std::vector<std::string> names;
   std::vector<char> dynamic;
+  // The first body of each name, filled on the first look-up: a joint finds its bodies by hashing,
+  // not by scanning every name (a 100 x 100 joint grid has 19701 joints and 10000 bodies).
+  mutable std::unordered_map<std::string, std::size_t> first;
 };
 
 // One entry of "joints"; `solver` refuses joints under PGS, which does not solve them.

@@ -58,6 +58,13 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
     return static_cast<int>(x);
   };
   s.substeps = integer("substeps", s.substeps);
+  if (w.has("threads")) {
+    const double threads = w.number("threads", s.threads);
+    if (threads != std::floor(threads) || !(threads >= 1.0 && threads <= kMaxThreads)) {
+      w.fail("threads", "expected a whole number of threads in [1, " + std::to_string(kMaxThreads) + "]");
+    }
+    s.threads = static_cast<int>(threads);
+  }
   s.contactHertz = w.number("contact_hertz", s.contactHertz);
   s.contactDampingRatio = w.number("contact_damping_ratio", s.contactDampingRatio);
   s.contactPushSpeed = w.number("contact_push_speed", s.contactPushSpeed);

@@ -19,7 +19,7 @@ inline constexpr std::initializer_list<const char*> kWorldKeys = {
     "sleep_angular_speed", "time_to_sleep", "collisions", "ccd", "ccd_motion_fraction", "broad_phase",
     "contact_margin", "solver", "friction", "substeps", "contact_hertz", "contact_damping_ratio", "contact_push_speed",
     "velocity_iterations", "position_iterations", "restitution_threshold", "contact_slop", "position_correction",
-    "warm_starting", "warm_start_distance", "response", "log_queries", "query_log_capacity", "skip_idle_stages",
+    "warm_starting", "warm_start_distance", "response", "log_queries", "query_log_capacity", "skip_idle_stages", "threads",
     "particle_integrator"};
 
 // The "world" block into scene.settings, scene.duration and scene.particleIntegrator.

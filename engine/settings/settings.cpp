@@ -1,9 +1,16 @@
 #include "rbsim/settings/settings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <thread>
 
 namespace rbsim {
+
+int machineThreads() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores == 0 ? 1 : static_cast<int>(std::min<unsigned>(cores, kMaxThreads));
+}
 
 namespace {
 
@@ -40,6 +47,9 @@ SettingsProblem checkSettings(const Settings& s) {
   }
   if (s.queryLogCapacity < 1 || s.queryLogCapacity > kMaxQueryLogCapacity) {
     return {"query_log_capacity", "expected 1 to " + std::to_string(kMaxQueryLogCapacity) + " records"};
+  }
+  if (s.threads < 1 || s.threads > kMaxThreads) {
+    return {"threads", "expected a whole number of threads in [1, " + std::to_string(kMaxThreads) + "]"};
   }
   if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
     return {"substeps", "expected a positive integer in [1, " + std::to_string(kMaxSubsteps) + "] substeps"};

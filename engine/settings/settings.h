@@ -20,6 +20,13 @@ inline constexpr int kMaxSubsteps = 64;  // [substeps]
 // PGS sweeps per step: a hundred times the defaults of Box2D v2 (8) and Bullet (10). Each sweep
 // visits every contact point, so 1e9 sweeps of one box on a plane already take minutes a step.
 inline constexpr int kMaxSolverIterations = 1000;  // [sweeps]
+// Worker threads of one World: far above any machine's cores today; more threads than cores still
+// work (they share the cores), a thousand would only cost their stacks and their start.
+inline constexpr int kMaxThreads = 256;  // [threads]
+
+// The machine's cores (std::thread::hardware_concurrency), 1 when it cannot tell: Settings::threads'
+// default.
+int machineThreads();
 
 struct Settings {
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);      // [m/s^2], y is up
@@ -69,8 +76,11 @@ struct Settings {
   // Soft step: substeps per step, each one solve sweep with bias and one relax sweep without.
   // Box2D v3 runs 4 with 30 Hz contacts; at dt = 1/60 s that sinks a column of 20 unit boxes
   // 2.8 cm into itself (a spring of f Hz sags F / (m omega^2) per contact) and topples one of 40.
-  // 8 substeps carry contacts of 120 Hz: 7 mm lost by 20 boxes, 40 stand (bench/contact_scenes).
-  int substeps = 8;  // [substeps]
+  // 8 substeps carry contacts of 120 Hz: 7 mm lost by 20 boxes, 40 stand (bench/contact_scenes);
+  // but Box3D's 100-row pyramid (bench/box3d_scenes, 10 s at 1/60 s) never rests at 120 Hz on 8
+  // (0.77 m/s at the end), rests sinking 17 cm at 60 Hz on 8, 7 cm at 100 Hz on 8, and rests
+  // sinking 4.8 cm at 120 Hz on 10 (0.003 m/s; 12 substeps: 4.5 cm, 20 % more time).
+  int substeps = 10;  // [substeps]
   // Soft step: the contact spring's natural frequency, capped at a quarter of the substep rate
   // (Box2D v3's cap); its damping ratio (Box2D v3's 10: heavily over-damped, so nothing bounces
   // off the spring); and the fastest a penetration is pushed out (Box2D v3's contactSpeed).
@@ -100,6 +110,11 @@ struct Settings {
   // lies within this distance of last step's (Bullet's contact breaking threshold is 2 cm).
   bool warmStarting = true;
   double warmStartDistance = 0.02;  // [m]
+
+  // Threads that share a step's loops over bodies, pairs and graph colours (OpenMP). Every loop
+  // splits its work into the same pieces whatever the count, and each piece writes only its own
+  // slots, so a step gives bit-identical results for any number of threads.
+  int threads = machineThreads();  // [threads], in [1, kMaxThreads]
 
   // false runs every stage of World::step every step, needed or not: it exists to measure what
   // skipping saves (bench/stage_skip_bench.cpp), never to change results.

@@ -13,6 +13,7 @@
 #include "rbsim/collision/narrowphase/shape_pairs.h"
 #include "rbsim/world/continuous_collision.h"
 #include "rbsim/integrate/simulation_error.h"
+#include "rbsim/math/parallel.h"
 
 namespace rbsim {
 
@@ -191,14 +192,18 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
 }
 
 void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (!bodies[i].awake()) continue;
+  // Each awake body's box on any thread, then into the broad phase in body order.
+  parallelFor(bodies.size(), settings_.threads, [&](std::size_t i) {
+    if (!bodies[i].awake()) return;
     Aabb box = boundsOf(bodies[i]);
     if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
     const double dt = settings_.timeStep;
     reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
                       dt * settings_.gravity.norm());
     boxes_[i] = box.inflated(settings_.contactMargin + reach_[i]);
+  });
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].awake()) continue;
     // A finite state can still have a box that is not (a vertex R p + x or a reach dt |v|
     // overflows): that is the body diverging, reported as such rather than as a broad-phase fault.
     if (!boxes_[i].min.allFinite() || !boxes_[i].max.allFinite()) {
@@ -219,70 +224,115 @@ void CollisionPipeline::setIgnoredPairs(const std::vector<std::pair<std::size_t,
     ignored_.push_back((std::uint64_t{a} << 32) | std::uint64_t{b});
   }
   std::sort(ignored_.begin(), ignored_.end());
+  ignoredSorted_ = true;
+}
+
+void CollisionPipeline::ignorePair(std::size_t a, std::size_t b) {
+  if (a > b) std::swap(a, b);
+  ignored_.push_back((std::uint64_t{a} << 32) | std::uint64_t{b});
+  ignoredSorted_ = false;
+}
+
+bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
+                                    const std::vector<BodyShape>& shapes, double time, Contact& out) {
+  out.manifold.count = 0;
+  // Body indices, the lower first (a destroyed body's index goes to the last body, whose proxy id
+  // stays as it was).
+  ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
+  if (pair.a > pair.b) std::swap(pair.a, pair.b);
+  if (!ignored_.empty() &&
+      std::binary_search(ignored_.begin(), ignored_.end(), (std::uint64_t{pair.a} << 32) | std::uint64_t{pair.b})) {
+    return false;
+  }
+  const RigidBody& a = bodies[pair.a];
+  const RigidBody& b = bodies[pair.b];
+  if (!a.awake() && !b.awake()) return false;
+  // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
+  // K = 0), so no impulse could separate them.
+  if (!a.isDynamic() && !b.isDynamic()) return false;
+  if (shapes[pair.a].sdf || shapes[pair.b].sdf) return true;
+  const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+  if (a.shape().isRound() || b.shape().isRound()) {
+    const ContactManifold m = collideRoundPair(posed(a), posed(b), margin);
+    if (settings_.logQueries) log_.record(summarize(QueryKind::Round, pair.a, pair.b, m, 0.0, time));
+    out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, m};
+    return false;
+  }
+  std::optional<OrientedBox> boxA, boxB;
+  if (a.shape().type == ShapeType::Box && b.shape().type == ShapeType::Box) {
+    boxA = OrientedBox{a.position(), a.rotation(), a.shape().halfExtents};
+    boxB = OrientedBox{b.position(), b.rotation(), b.shape().halfExtents};
+  }
+  ConvexContact c;
+  if (!boxA && (climbs(a) || climbs(b))) {
+    const PosedHullSupport hullA(posed(a)), hullB(posed(b));
+    const PointSetSupport pointsA(a.worldVertices()), pointsB(b.worldVertices());
+    c = collideConvex(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(),
+                      climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), margin);
+  } else {
+    c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr, boxB ? &*boxB : nullptr);
+  }
+  if (settings_.logQueries) {
+    log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold, c.distance, time));
+  }
+  out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold};
+  return false;
 }
 
 void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                                     const std::vector<Plane>& planes, double time) {
   contacts_.clear();
-  for (const ProxyPair& proxies : broad_->pairs()) {
-    // Body indices, the lower first (a destroyed body's index goes to the last body, whose
-    // proxy id stays as it was).
-    ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
-    if (pair.a > pair.b) std::swap(pair.a, pair.b);
-    if (!ignored_.empty() && std::binary_search(ignored_.begin(), ignored_.end(),
-                                                (std::uint64_t{pair.a} << 32) | std::uint64_t{pair.b})) {
-      continue;
-    }
-    const RigidBody& a = bodies[pair.a];
-    const RigidBody& b = bodies[pair.b];
-    if (!a.awake() && !b.awake()) continue;
-    // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
-    // K = 0), so no impulse could separate them.
-    if (!a.isDynamic() && !b.isDynamic()) continue;
-    const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
-    if (shapes[pair.a].sdf || shapes[pair.b].sdf) {
-      const std::vector<ContactManifold> manifolds = collideSdf(a, shapes[pair.a], b, shapes[pair.b], margin);
-      for (std::size_t k = 0; k < manifolds.size(); ++k) {
-        if (settings_.logQueries) log_.record(summarize(QueryKind::Sdf, pair.a, pair.b, manifolds[k], 0.0, time));
-        contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, static_cast<std::uint8_t>(k), manifolds[k]});
-      }
-      continue;
-    }
-    if (a.shape().isRound() || b.shape().isRound()) {
-      const ContactManifold m = collideRoundPair(posed(a), posed(b), margin);
-      if (settings_.logQueries) log_.record(summarize(QueryKind::Round, pair.a, pair.b, m, 0.0, time));
-      if (m.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, 0, m});
-      continue;
-    }
-    std::optional<OrientedBox> boxA, boxB;
-    if (a.shape().type == ShapeType::Box && b.shape().type == ShapeType::Box) {
-      boxA = OrientedBox{a.position(), a.rotation(), a.shape().halfExtents};
-      boxB = OrientedBox{b.position(), b.rotation(), b.shape().halfExtents};
-    }
-    ConvexContact c;
-    if (!boxA && (climbs(a) || climbs(b))) {
-      const PosedHullSupport hullA(posed(a)), hullB(posed(b));
-      const PointSetSupport pointsA(a.worldVertices()), pointsB(b.worldVertices());
-      c = collideConvex(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(),
-                        climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), margin);
-    } else {
-      c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr, boxB ? &*boxB : nullptr);
-    }
-    if (settings_.logQueries) log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold,
-                          c.distance, time));
-    if (c.manifold.count > 0) contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold});
+  if (!ignoredSorted_) {
+    std::sort(ignored_.begin(), ignored_.end());
+    ignoredSorted_ = true;
   }
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-      if (!bodies[i].isDynamic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) continue;
-      const double margin = settings_.contactMargin + reach_[i];
-      const bool round = bodies[i].shape().isRound();
-      const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
-                                      : collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin,
-                                                           reach_[i] + kPlaneSupportSlack);
-      if (settings_.logQueries) log_.record(summarize(round ? QueryKind::PlaneRound : QueryKind::PlaneConvex, static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(i), m, 0.0, time));
-      if (m.count > 0) contacts_.push_back({Contact::Kind::PlaneBody, p, i, 0, m});
+  // The query log is one ring buffer: a logged step collides on the calling thread alone.
+  const int threads = settings_.logQueries ? 1 : settings_.threads;
+  // RigidBody::worldVertices() fills its body's cache on first use: filled here, one body per
+  // item, so that the pairs below, which share bodies across threads, only read it.
+  parallelFor(bodies.size(), threads, [&](std::size_t i) {
+    if (!bodies[i].shape().isRound()) bodies[i].worldVertices();
+  });
+  const std::vector<ProxyPair>& pairs = broad_->pairs();
+  pairSlots_.resize(pairs.size());
+  sdfPair_.assign(pairs.size(), 0);
+  parallelFor(pairs.size(), threads, [&](std::size_t k) {
+    sdfPair_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k]) ? 1 : 0;
+  });
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (!sdfPair_[k]) {
+      if (pairSlots_[k].manifold.count > 0) contacts_.push_back(pairSlots_[k]);
+      continue;
     }
+    ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[pairs[k].a]), static_cast<ProxyId>(bodyOfProxy_[pairs[k].b])};
+    if (pair.a > pair.b) std::swap(pair.a, pair.b);
+    const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+    const std::vector<ContactManifold> manifolds = collideSdf(bodies[pair.a], shapes[pair.a], bodies[pair.b], shapes[pair.b], margin);
+    for (std::size_t m = 0; m < manifolds.size(); ++m) {
+      if (settings_.logQueries) log_.record(summarize(QueryKind::Sdf, pair.a, pair.b, manifolds[m], 0.0, time));
+      contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, static_cast<std::uint8_t>(m), manifolds[m]});
+    }
+  }
+  const std::size_t n = bodies.size();
+  planeSlots_.resize(planes.size() * n);
+  parallelFor(planes.size() * n, threads, [&](std::size_t k) {
+    const std::size_t p = k / n, i = k % n;
+    Contact& out = planeSlots_[k];
+    out.manifold.count = 0;
+    if (!bodies[i].isDynamic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
+    const double margin = settings_.contactMargin + reach_[i];
+    const bool round = bodies[i].shape().isRound();
+    const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
+                                    : collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin,
+                                                         reach_[i] + kPlaneSupportSlack);
+    if (settings_.logQueries) {
+      log_.record(summarize(round ? QueryKind::PlaneRound : QueryKind::PlaneConvex, static_cast<std::uint32_t>(p),
+                            static_cast<std::uint32_t>(i), m, 0.0, time));
+    }
+    out = {Contact::Kind::PlaneBody, p, i, 0, m};
+  });
+  for (const Contact& c : planeSlots_) {
+    if (c.manifold.count > 0) contacts_.push_back(c);
   }
 }
 

@@ -42,6 +42,9 @@ class CollisionPipeline {
   // Pairs of bodies that never collide (jointed bodies without collide_connected): body indices,
   // either order. The narrow phase skips them.
   void setIgnoredPairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
+  // One more pair that must not collide; sorted in with the others before the next narrow phase,
+  // so adding n joints costs n log n, not n^2 (a 100 x 100 joint grid loaded in 5 s).
+  void ignorePair(std::size_t a, std::size_t b);
 
   // The state of every body before Integrate, kept for the continuous stage.
   void rememberStart(const std::vector<RigidBody>& bodies);
@@ -72,6 +75,10 @@ class CollisionPipeline {
 
  private:
   bool isFast(std::size_t body) const;
+  // The convex or round contact of candidate pair `proxies` into `out` (count 0: none, or a pair
+  // to skip); true when the pair has a grid and is left to collideSdfPair.
+  bool collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+                   double time, Contact& out);
   void measure(std::size_t index, const RigidBody& body);  // radius_, thickness_, boxes_ of a body
 
   Settings settings_;
@@ -96,7 +103,13 @@ class CollisionPipeline {
   bool haveStart_ = false;              // start_ holds this step's start (rememberStart ran)
   std::vector<Aabb> boxes_;
   std::vector<std::uint64_t> ignored_;  // sorted keys (lower index << 32 | higher index)
+  bool ignoredSorted_ = true;           // false after ignorePair until the next narrow phase
   std::vector<Contact> contacts_;
+  // Per candidate pair and per (plane, body): this step's contact, computed on any thread into its
+  // own slot and gathered in order (manifold.count 0: none). sdfPair_ marks pairs with a grid,
+  // which may give several manifolds and are collided on the calling thread.
+  std::vector<Contact> pairSlots_, planeSlots_;
+  std::vector<char> sdfPair_;
   std::vector<Impact> impacts_;
   QueryLog log_;
 };

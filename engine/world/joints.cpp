@@ -44,7 +44,7 @@ std::size_t World::addJoint(const JointDef& def) {
   joints_.push_back(joint);
   bodies_[def.bodyA].wake();
   if (!world) bodies_[def.bodyB].wake();
-  updateJointFilter();
+  if (!world && !def.collideConnected) collision_.ignorePair(def.bodyA, def.bodyB);
   return joints_.size() - 1;
 }
 

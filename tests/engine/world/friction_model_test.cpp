@@ -81,8 +81,8 @@ class RestitutionLaw : public testing::TestWithParam<Case> {};
 // Seed 000 and 001: the body leaves at c_R times its speed at the touch, sqrt(2 g h), measured
 // from its energy after the bounce (friction_cases.h): within 2.5 %. Two kinds of case miss it,
 // and are held to what they measure so that a change shows: soft step's box from 1 m at 1/60 s
-// leaves 20 % slow (the last relax sweep holds a patch's approach to the gap one substep closes,
-// a step before the touch); PGS's c_R = 0.3 from 1 cm leaves 58-137 % fast (it reverses the
+// leaves 7 % slow (20 % at 8 substeps; the last relax sweep holds a patch's approach to the gap
+// one substep closes, a step before the touch); PGS's c_R = 0.3 from 1 cm leaves 58-137 % fast (it reverses the
 // approach up to |u| dt above the ground, higher than that bounce rises).
 TEST_P(RestitutionLaw, TheBodyLeavesAtCrTimesItsImpactSpeed) {
   const Settings s = bench::restitutionSettings(GetParam().solver, GetParam().dt);
@@ -95,7 +95,7 @@ TEST_P(RestitutionLaw, TheBodyLeavesAtCrTimesItsImpactSpeed) {
         const std::string where = std::string(ball ? "ball" : "box") + ", c_R " + std::to_string(restitution) +
                                   ", from " + std::to_string(height) + " m";
         if (soft && coarse && !ball && height == 1.0) {
-          EXPECT_NEAR(ratio, 0.80, 0.02) << where;
+          EXPECT_NEAR(ratio, 0.93, 0.02) << where;
         } else if (!soft && restitution == 0.3 && height == 0.01) {
           EXPECT_GT(ratio, 1.0) << where;
           EXPECT_LT(ratio, coarse ? 2.5 : 1.7) << where;
