@@ -5,7 +5,6 @@
 // the axis's 2 x 2 are inverted exactly, so a single joint is satisfied in one sweep.
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 #include "rbsim/dynamics/contact_key.h"
 #include "rbsim/dynamics/soft_step_solver.h"
@@ -162,31 +161,51 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
       }
     }
 
-    // The point (rows 0-2) and, for a hinge, the axes held aligned (rows 3-4), as one block:
+    if (def.type == JointDef::Type::Ball) {
+      // The point's three rows alone, written out (the block below, for R = 3, with its zero
+      // blocks left out): K = (mA + mB) 1 + [rA] iA [rA]^T + [rB] iB [rB]^T,
+      // Cdot = (vB + wB x rB) - (vA + wA x rA); the impulse acts +lambda at B's anchor and
+      // -lambda at A's. A third of the block's work on Box3D's 19701-joint grid.
+      const Mat3 sA = skew(rA), sB = skew(rB);
+      const Mat3 K = (mA + mB) * Mat3::Identity() + sA * iA * sA.transpose() + sB * iB * sB.transpose();
+      const Vec3 cdot = (vB + wB.cross(rB)) - (vA + wA.cross(rA));
+      const Vec3 error = (xB + rB) - (xA + rA);
+      const Vec3 lambda = -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error) - soft.impulseScale * joint.linearImpulse;
+      joint.linearImpulse += lambda;
+      if (c.base != 0) {
+        A.linearVelocity = vA - mA * lambda;
+        A.angularVelocity = wA - iA * rA.cross(lambda);
+      }
+      if (c.moving != 0) {
+        B.linearVelocity = vB + mB * lambda;
+        B.angularVelocity = wB + iB * rB.cross(lambda);
+      }
+      return;
+    }
+
+    // A hinge: the point (rows 0-2) and the axes held aligned (rows 3-4), as one block:
     //   C = [(xB + rB) - (xA + rA);  t_k . (a_base x a_moving)],  Cdot = J_A u_A + J_B u_B,
     //   J_A = [-1  [rA]; 0  -t_k^T],  J_B = [1  -[rB]; 0  t_k^T],  K = J M^-1 J^T
     // for the two unit t_k perpendicular to the base's axis (seed 000's K of a contact point,
-    // extended by the angular rows), solved exactly, so one joint alone needs one sweep.
-    const int rows = def.type == JointDef::Type::Hinge ? 5 : 3;
+    // extended by the angular rows), solved exactly, so one joint alone needs one sweep. Fixed
+    // sizes: no allocation.
     Eigen::Matrix<double, 5, 6> jA = Eigen::Matrix<double, 5, 6>::Zero(), jB = Eigen::Matrix<double, 5, 6>::Zero();
-    Eigen::Matrix<double, 5, 1> error = Eigen::Matrix<double, 5, 1>::Zero(), accumulated = error;
+    Eigen::Matrix<double, 5, 1> error, accumulated;
     jA.block<3, 3>(0, 0) = -Mat3::Identity();
     jA.block<3, 3>(0, 3) = skew(rA);
     jB.block<3, 3>(0, 0) = Mat3::Identity();
     jB.block<3, 3>(0, 3) = -skew(rB);
     error.head<3>() = (xB + rB) - (xA + rA);
     accumulated.head<3>() = joint.linearImpulse;
-    Vec3 tangents[2] = {Vec3::UnitX(), Vec3::UnitY()};
-    if (rows == 5) {
-      const Vec3 axis = (A.orientation * c.localAxisBase).normalized();
-      tangentBasis(axis, tangents[0], tangents[1]);
-      const Vec3 misalignment = axis.cross((B.orientation * c.localAxisMoving).normalized());
-      for (int k = 0; k < 2; ++k) {
-        jA.block<1, 3>(3 + k, 3) = -tangents[k].transpose();
-        jB.block<1, 3>(3 + k, 3) = tangents[k].transpose();
-        error(3 + k) = tangents[k].dot(misalignment);
-        accumulated(3 + k) = tangents[k].dot(joint.angularImpulse);
-      }
+    Vec3 tangents[2];
+    const Vec3 axis = (A.orientation * c.localAxisBase).normalized();
+    tangentBasis(axis, tangents[0], tangents[1]);
+    const Vec3 misalignment = axis.cross((B.orientation * c.localAxisMoving).normalized());
+    for (int k = 0; k < 2; ++k) {
+      jA.block<1, 3>(3 + k, 3) = -tangents[k].transpose();
+      jB.block<1, 3>(3 + k, 3) = tangents[k].transpose();
+      error(3 + k) = tangents[k].dot(misalignment);
+      accumulated(3 + k) = tangents[k].dot(joint.angularImpulse);
     }
     Eigen::Matrix<double, 6, 6> inverseMassA = Eigen::Matrix<double, 6, 6>::Zero(), inverseMassB = inverseMassA;
     inverseMassA.block<3, 3>(0, 0) = mA * Mat3::Identity();
@@ -196,35 +215,19 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
     Eigen::Matrix<double, 6, 1> uA, uB;
     uA << vA, wA;
     uB << vB, wB;
-    // Fixed-size blocks of 3 (ball) or 5 (hinge) rows: no allocation, 16x fewer cycles than
-    // dynamic matrices on the 19701 ball joints of Box3D's joint grid.
-    Eigen::Matrix<double, 5, 1> impulse = Eigen::Matrix<double, 5, 1>::Zero();
-    const auto solveRows = [&](auto rowsConstant) {
-      constexpr int R = decltype(rowsConstant)::value;
-      const Eigen::Matrix<double, R, 6> jacobianA = jA.topRows<R>(), jacobianB = jB.topRows<R>();
-      const Eigen::Matrix<double, R, R> K = jacobianA * inverseMassA * jacobianA.transpose() +
-                                            jacobianB * inverseMassB * jacobianB.transpose();
-      const Eigen::Matrix<double, R, 1> cdot = jacobianA * uA + jacobianB * uB;
-      const Eigen::Matrix<double, R, 1> lambda = -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error.head<R>()) -
-                                                 soft.impulseScale * accumulated.head<R>();
-      uA += inverseMassA * jacobianA.transpose() * lambda;
-      uB += inverseMassB * jacobianB.transpose() * lambda;
-      impulse.head<R>() = lambda;
-    };
-    if (rows == 5) {
-      solveRows(std::integral_constant<int, 5>{});
-    } else {
-      solveRows(std::integral_constant<int, 3>{});
-    }
+    const Eigen::Matrix<double, 5, 5> K = jA * inverseMassA * jA.transpose() + jB * inverseMassB * jB.transpose();
+    const Eigen::Matrix<double, 5, 1> cdot = jA * uA + jB * uB;
+    const Eigen::Matrix<double, 5, 1> impulse =
+        -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error) - soft.impulseScale * accumulated;
+    uA += inverseMassA * jA.transpose() * impulse;
+    uB += inverseMassB * jB.transpose() * impulse;
     vA = uA.head<3>();
     wA = uA.tail<3>();
     vB = uB.head<3>();
     wB = uB.tail<3>();
     joint.linearImpulse += impulse.head<3>();
-    if (rows == 5) {
-      const Eigen::Vector2d total = accumulated.segment<2>(3) + impulse.segment<2>(3);
-      joint.angularImpulse = total.x() * tangents[0] + total.y() * tangents[1];
-    }
+    const Eigen::Vector2d total = accumulated.segment<2>(3) + impulse.segment<2>(3);
+    joint.angularImpulse = total.x() * tangents[0] + total.y() * tangents[1];
 
     if (c.base != 0) {
       A.linearVelocity = vA;
