@@ -13,6 +13,7 @@
 #include "rbsim/body/shape_body.h"
 #include "rbsim/dynamics/solver_islands.h"
 #include "rbsim/math/parallel.h"
+#include "../../sanitized_build.h"
 #include "test_util.h"
 #include "rbsim/world/world.h"
 
@@ -116,22 +117,26 @@ std::uint64_t jointGridHash(int threads, int n, int steps) {
   return stateHash(world);
 }
 
+// Under the sanitizers a few steps: each still runs every parallel loop (the sanitized suite's
+// time is CI's longest part).
+const int kStepScale = test::kSanitizedBuild ? 1 : 3;
+
 TEST(Threads, APyramidEndsBitForBitTheSameOnOneTwoAndFourThreads) {
-  const std::uint64_t one = pyramidHash(1, 40, 30);
-  EXPECT_EQ(pyramidHash(2, 40, 30), one);
-  EXPECT_EQ(pyramidHash(4, 40, 30), one);
+  const std::uint64_t one = pyramidHash(1, 40, 10 * kStepScale);
+  EXPECT_EQ(pyramidHash(2, 40, 10 * kStepScale), one);
+  EXPECT_EQ(pyramidHash(4, 40, 10 * kStepScale), one);
 }
 
 TEST(Threads, AJointGridEndsBitForBitTheSameOnOneTwoAndFourThreads) {
-  const std::uint64_t one = jointGridHash(1, 40, 20);
-  EXPECT_EQ(jointGridHash(2, 40, 20), one);
-  EXPECT_EQ(jointGridHash(4, 40, 20), one);
+  const std::uint64_t one = jointGridHash(1, 40, 7 * kStepScale);
+  EXPECT_EQ(jointGridHash(2, 40, 7 * kStepScale), one);
+  EXPECT_EQ(jointGridHash(4, 40, 7 * kStepScale), one);
 }
 
 TEST(Threads, AHundredStacksEndBitForBitTheSameOnOneTwoAndFourThreads) {
-  const std::uint64_t one = stacksHash(1, 100, 6, 60);
-  EXPECT_EQ(stacksHash(2, 100, 6, 60), one);
-  EXPECT_EQ(stacksHash(4, 100, 6, 60), one);
+  const std::uint64_t one = stacksHash(1, 100, 6, 20 * kStepScale);
+  EXPECT_EQ(stacksHash(2, 100, 6, 20 * kStepScale), one);
+  EXPECT_EQ(stacksHash(4, 100, 6, 20 * kStepScale), one);
 }
 
 // The hash sees a change: one body nudged by 1e-12 m changes it (the test above cannot pass by
