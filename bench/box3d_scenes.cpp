@@ -9,7 +9,6 @@
 //   A name ending in .json is any scene file, run the same way (200 steps unless told).
 //   --steps overrides every scene's step count; --seconds runs S simulated seconds instead (the
 //   rest check: large_pyramid for 10 s).
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "box3d_cases.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/world.h"
 
@@ -33,23 +33,6 @@ struct SceneCase {
   std::string name;  // in assets/scenes/box3d, or a path to any scene file (ending in .json)
   int steps;         // Box3D's benchmark program's step count for the scene
 };
-
-// The step counts of issue 34's table (Box3D's `benchmark` runs).
-const SceneCase kScenes[] = {{"large_pyramid", 200}, {"many_pyramids", 100}, {"joint_grid", 100}, {"convex_pile", 500}};
-
-double cpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-std::vector<std::string> split(const std::string& list) {
-  std::vector<std::string> out;
-  std::stringstream in(list);
-  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
-  return out;
-}
 
 void run(const SceneCase& scene, int steps, double seconds, const std::vector<std::string>& overrides) {
   const bool file = scene.name.size() > 5 && scene.name.compare(scene.name.size() - 5, 5, ".json") == 0;
@@ -68,7 +51,7 @@ void run(const SceneCase& scene, int steps, double seconds, const std::vector<st
   }
   std::vector<double> ms;
   ms.reserve(static_cast<std::size_t>(steps));
-  const double cpu0 = cpuSeconds();
+  const double cpu0 = bench::processCpuSeconds();
   const auto wall0 = std::chrono::steady_clock::now();
   for (int s = 0; s < steps; ++s) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -76,7 +59,7 @@ void run(const SceneCase& scene, int steps, double seconds, const std::vector<st
     ms.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  const double cpu = cpuSeconds() - cpu0;
+  const double cpu = bench::processCpuSeconds() - cpu0;
 
   double fastest = 0.0, deepest = 0.0;
   std::size_t awake = 0, dynamic = 0;
@@ -123,7 +106,7 @@ int main(int argc, char** argv) {
       return 2;
     }
     const std::string value = argv[++i];
-    if (arg == "--scenes") names = split(value);
+    if (arg == "--scenes") names = bench::splitCommas(value);
     else if (arg == "--steps") steps = std::atoi(value.c_str());
     else if (arg == "--seconds") seconds = std::atof(value.c_str());
     else if (arg == "--threads") overrides.push_back("world.threads=" + value);
@@ -133,10 +116,18 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  for (const std::string& name : names) {
+    const bool file = name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0;
+    if (!file && std::none_of(std::begin(bench::kBox3dScenes), std::end(bench::kBox3dScenes),
+                              [&](const bench::Box3dScene& s) { return name == s.name; })) {
+      std::fprintf(stderr, "box3d_scenes: --scenes: no scene \"%s\"; expected large_pyramid, many_pyramids, joint_grid, convex_pile or a .json file\n", name.c_str());
+      return 2;
+    }
+  }
   try {
-    for (const SceneCase& scene : kScenes) {
+    for (const bench::Box3dScene& scene : bench::kBox3dScenes) {
       if (!names.empty() && std::find(names.begin(), names.end(), scene.name) == names.end()) continue;
-      run(scene, steps > 0 ? steps : scene.steps, seconds, overrides);
+      run({scene.name, scene.steps}, steps > 0 ? steps : scene.steps, seconds, overrides);
     }
     for (const std::string& name : names) {  // scene files named by path: the steps or seconds asked for, else 200
       if (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0) run({name, 200}, steps > 0 ? steps : 200, seconds, overrides);

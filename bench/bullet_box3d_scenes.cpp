@@ -34,7 +34,6 @@
 //    |v| and |omega| apart, as rbsim does) and time_to_sleep is gDeactivationTime; Bullet puts an
 //    island to sleep when all its bodies are slow.
 #include <btBulletDynamicsCommon.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <array>
@@ -54,34 +53,13 @@
 #include <string>
 #include <vector>
 
+#include "box3d_cases.h"
 #include "bullet_world.h"
 
 using rbsim::bench::BulletWorld;
 using Json = nlohmann::json;
 
 namespace {
-
-struct SceneCase {
-  const char* name;
-  int steps;  // Box3D's benchmark program's step count for the scene
-};
-
-// The step counts of issue 34's table (Box3D's `benchmark` runs), as in box3d_scenes.
-const SceneCase kScenes[] = {{"large_pyramid", 200}, {"many_pyramids", 100}, {"joint_grid", 100}, {"convex_pile", 500}};
-
-double cpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-std::vector<std::string> split(const std::string& list) {
-  std::vector<std::string> out;
-  std::stringstream in(list);
-  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
-  return out;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Bullet's stages: its BT_PROFILE zones call btEnterProfileZone / btLeaveProfileZone even in
@@ -331,7 +309,7 @@ struct BulletScene {
   }
 };
 
-void run(const SceneCase& scene, int steps, double seconds, bool stages) {
+void run(const rbsim::bench::Box3dScene& scene, int steps, double seconds, bool stages) {
   const std::string path = std::string(RBSIM_SOURCE_DIR) + "/assets/scenes/box3d/" + scene.name + ".json";
   const auto loadStart = Clock::now();
   BulletScene bs;
@@ -359,7 +337,7 @@ void run(const SceneCase& scene, int steps, double seconds, bool stages) {
   }
   std::vector<double> ms;
   ms.reserve(static_cast<std::size_t>(steps));
-  const double cpu0 = cpuSeconds();
+  const double cpu0 = rbsim::bench::processCpuSeconds();
   const auto wall0 = Clock::now();
   for (int s = 0; s < steps; ++s) {
     const auto t0 = Clock::now();
@@ -367,7 +345,7 @@ void run(const SceneCase& scene, int steps, double seconds, bool stages) {
     ms.push_back(1e3 * std::chrono::duration<double>(Clock::now() - t0).count());
   }
   const double wall = std::chrono::duration<double>(Clock::now() - wall0).count();
-  const double cpu = cpuSeconds() - cpu0;
+  const double cpu = rbsim::bench::processCpuSeconds() - cpu0;
   btSetCustomEnterProfileZoneFunc(oldEnter);
   btSetCustomLeaveProfileZoneFunc(oldLeave);
 
@@ -439,7 +417,7 @@ int main(int argc, char** argv) {
       return 2;
     }
     const std::string value = argv[++i];
-    if (arg == "--scenes") names = split(value);
+    if (arg == "--scenes") names = rbsim::bench::splitCommas(value);
     else if (arg == "--steps") steps = std::atoi(value.c_str());
     else if (arg == "--seconds") seconds = std::atof(value.c_str());
     else if (arg == "--stages") stages = value != "off";
@@ -449,13 +427,13 @@ int main(int argc, char** argv) {
     }
   }
   for (const std::string& name : names)
-    if (std::none_of(std::begin(kScenes), std::end(kScenes), [&](const SceneCase& s) { return name == s.name; })) {
+    if (std::none_of(std::begin(rbsim::bench::kBox3dScenes), std::end(rbsim::bench::kBox3dScenes), [&](const rbsim::bench::Box3dScene& s) { return name == s.name; })) {
       std::fprintf(stderr, "bullet_box3d_scenes: unknown scene %s\n", name.c_str());
       return 2;
     }
   std::printf("Bullet %d, %s precision\n", btGetVersion(), sizeof(btScalar) == 8 ? "double" : "float");
   try {
-    for (const SceneCase& scene : kScenes) {
+    for (const rbsim::bench::Box3dScene& scene : rbsim::bench::kBox3dScenes) {
       if (!names.empty() && std::find(names.begin(), names.end(), scene.name) == names.end()) continue;
       run(scene, steps > 0 ? steps : scene.steps, seconds, stages);
     }
