@@ -49,8 +49,8 @@ void SoftStepSolver::collide(const Settings& settings) {
       // energy of the gap (a ball dropped 1 cm left at 37 % of c_R u_c at 1/60 s, or not at all).
       if (p.separation > kTouchingGap) continue;
       const double impulse = -(1.0 + c.restitution) * vn * p.normalMass;
-      p.totalNormalImpulse += impulse;
-      p.impactSpeed = 0.0;  // it has bounced: applyRestitution must not bounce it again
+      reports_[c.firstPoint].totalNormalImpulse += impulse;
+      reports_[c.firstPoint].impactSpeed = 0.0;  // it has bounced: applyRestitution must not bounce it again
       if (c.a != 0) {
         A.linearVelocity -= (sims_[c.a].inverseMass * impulse) * n;
         A.angularVelocity -= impulse * p.angularA;
@@ -84,15 +84,16 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
         // Slower approaches are resting contact. Every point the step ends touching bounces,
         // not only those that pushed: in a Gauss-Seidel sweep the first point of a box landing
         // flat stops it alone, and bouncing that point alone would set the box spinning.
-        if (p.impactSpeed <= settings.restitutionThreshold || p.separation > settings.contactSlop) continue;
+        const PointReport& r = reports_[j];
+        if (r.impactSpeed <= settings.restitutionThreshold || p.separation > settings.contactSlop) continue;
         const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
                           p.crossA.dot(A.angularVelocity);
         // Seed 000: u_rel,N^new = c_R u_rel,N at the touch.
-        const double impulse = -p.normalMass * (vn - c.restitution * p.impactSpeed);
+        const double impulse = -p.normalMass * (vn - c.restitution * r.impactSpeed);
         const double total = std::max(p.normalImpulse + impulse, 0.0);
         const double delta = total - p.normalImpulse;
         p.normalImpulse = total;
-        p.totalNormalImpulse += delta;
+        reports_[j].totalNormalImpulse += delta;
         if (c.a != 0) {
           A.linearVelocity -= (mA * delta) * n;
           A.angularVelocity -= delta * p.angularA;
@@ -118,9 +119,10 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
       out.position = m.points[j].position;
       out.normal = c.normal;
       out.depth = m.points[j].depth;
-      out.normalImpulse = p.totalNormalImpulse;
-      out.frictionImpulse = p.totalFriction;
-      out.approachVelocity = p.relativeVelocity;
+      const PointReport& r = reports_[c.firstPoint + j];
+      out.normalImpulse = r.totalNormalImpulse;
+      out.frictionImpulse = r.totalFriction;
+      out.approachVelocity = r.relativeVelocity;
       out.normalVelocity = c.normal.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
                            p.crossA.dot(A.angularVelocity);
       out.sticking = c.sticking && !c.slipping;
@@ -131,9 +133,9 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
     cache.count = static_cast<int>(c.pointCount);
     for (std::size_t j = 0; j < c.pointCount; ++j) {
       const Point& p = points_[c.firstPoint + j];
-      cache.localPoints[j] = p.localB;
+      cache.localPoints[j] = frames_[c.firstPoint + j].localB;
       cache.normalImpulses[j] = p.normalImpulse;
-      cache.sliding[j] = p.sliding;
+      cache.sliding[j] = reports_[c.firstPoint + j].sliding;
       cache.frictionImpulses[j] = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
     }
     cache.sticking = !c.slipping;

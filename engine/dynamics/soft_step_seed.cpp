@@ -25,15 +25,15 @@ void SoftStepSolver::solveSeed(std::size_t island, double inverseH, const Settin
     solveNormals(c, inverseH, settings, useBias, lastRelax, vA, wA, vB, wB);
     for (std::size_t k = 0; k < c.pointCount; ++k) {
       Point& p = points_[c.firstPoint + k];
+      const PointReport& r = reports_[c.firstPoint + k];
       const Vec3 u = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);  // u_rel, body 1 = B
       const Mat3 factor = impulseFactor(mA, iA, p.anchorA) + impulseFactor(mB, iB, p.anchorB);
       const Vec3 accumulated = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
       const SeedFriction next = seedFriction(factor, u, c.tangent1, c.tangent2, accumulated, p.normalImpulse,
-                                             c.staticFriction, c.kineticFriction, p.sliding);
+                                             c.staticFriction, c.kineticFriction, r.sliding);
       sticking = sticking && next.sticking;
       const Vec3 delta = next.total - accumulated;
       p.tangentImpulse = {next.total.dot(c.tangent1), next.total.dot(c.tangent2)};
-      p.totalFriction += delta;
       vA -= mA * delta;
       wA -= iA * p.anchorA.cross(delta);
       vB += mB * delta;
@@ -43,10 +43,10 @@ void SoftStepSolver::solveSeed(std::size_t island, double inverseH, const Settin
       // Each point's regime for the next step (seed_friction.h), and the patch's for the report.
       double slip = 0.0;
       for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
-        Point& p = points_[j];
+        const Point& p = points_[j];
         const Vec3 v = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
         const double pointSlip = (v - v.dot(n) * n).norm();
-        p.sliding = pointSlip > kSeedSlidingSpeed;
+        reports_[j].sliding = pointSlip > kSeedSlidingSpeed;
         slip = std::max(slip, pointSlip);
       }
       c.slipping = !sticking && slip > kSeedSlidingSpeed;

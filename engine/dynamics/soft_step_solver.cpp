@@ -87,6 +87,8 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   const double normalAcceleration = n.dot(simB.acceleration - simA.acceleration);
   for (int i = 0; i < m.count; ++i) {
     Point p;
+    PointFrame f;
+    PointReport r;
     const Vec3& position = m.points[i].position;
     const double separation = -m.points[i].depth;
     // A round side's surface point lies r - depth / 2 from its core along the normal
@@ -96,36 +98,38 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
       const Shape& shape = bodies[sims_[slot].body].shape();
       return shape.isRound() ? shape.radius + 0.5 * separation : 0.0;
     };
-    p.roundA = roundOffset(c.a) * n;
-    p.roundB = -roundOffset(c.b) * n;
+    f.roundA = roundOffset(c.a) * n;
+    f.roundB = -roundOffset(c.b) * n;
     // The ground's slot never moves, so its anchors are their own body-frame coordinates.
-    p.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - p.roundA - xA));
-    p.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - p.roundB - xB));
-    p.baseSeparation = separation - n.dot((position - xB) - (position - xA));
-    updateJacobians(c, p);
-    p.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + p.crossB.dot(stateB.angularVelocity) -
+    f.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - f.roundA - xA));
+    f.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - f.roundB - xB));
+    f.baseSeparation = separation - n.dot((position - xB) - (position - xA));
+    updateJacobians(c, f, p);
+    r.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + p.crossB.dot(stateB.angularVelocity) -
                          p.crossA.dot(stateA.angularVelocity);
     // Energy of the normal motion from the step's start to the touch: u^2 = u0^2 - 2 a_n s0.
-    if (p.relativeVelocity < 0.0) {
-      const double squared = p.relativeVelocity * p.relativeVelocity - 2.0 * normalAcceleration * std::max(separation, 0.0);
-      p.impactSpeed = std::sqrt(std::max(squared, 0.0));
+    if (r.relativeVelocity < 0.0) {
+      const double squared = r.relativeVelocity * r.relativeVelocity - 2.0 * normalAcceleration * std::max(separation, 0.0);
+      r.impactSpeed = std::sqrt(std::max(squared, 0.0));
     }
     if (old != nullptr) {
       for (int j = 0; j < old->count; ++j) {
-        if ((old->localPoints[j] - p.localB).norm() <= settings.warmStartDistance) {
+        if ((old->localPoints[j] - f.localB).norm() <= settings.warmStartDistance) {
           p.normalImpulse = old->normalImpulses[j];
           p.tangentImpulse = {tangents[0].dot(old->frictionImpulses[j]), tangents[1].dot(old->frictionImpulses[j])};
-          p.sliding = old->sliding[j];
+          r.sliding = old->sliding[j];
           break;
         }
       }
     }
     points_.push_back(p);
+    frames_.push_back(f);
+    reports_.push_back(r);
   }
   constraints_.push_back(c);
 }
 
-void SoftStepSolver::updateJacobians(const Constraint& c, Point& p) const {
+void SoftStepSolver::updateJacobians(const Constraint& c, const PointFrame& f, Point& p) const {
   // Both bodies' impulses act at one world point, midway between where each body now carries its
   // anchor, with the inverse inertia of the current orientation: then every impulse changes
   // x x P + L of the pair by (p - p) x j = 0, and angular momentum is exchanged exactly (fixed
@@ -133,18 +137,18 @@ void SoftStepSolver::updateJacobians(const Constraint& c, Point& p) const {
   const SolverState& A = states_[c.a];
   const SolverState& B = states_[c.b];
   const Vec3 xA = sims_[c.a].position0 + A.deltaPosition, xB = sims_[c.b].position0 + B.deltaPosition;
-  const Vec3 onA = A.orientation * p.localA + p.roundA, onB = B.orientation * p.localB + p.roundB;
+  const Vec3 onA = A.orientation * f.localA + f.roundA, onB = B.orientation * f.localB + f.roundB;
   // A round body against the ground (a plane or a static body, which never moves) takes the
   // impulse where it carries the point: the ground's copy stays where the step began, and
   // halfway to it would put the force behind a ball rolling on, a torque that is not there.
   // (Other shapes keep the midpoint, whose lag of half a step's slide the box suites are
   // measured with.)
   Vec3 point = 0.5 * (xA + onA + xB + onB);
-  if (c.a == 0 && !p.roundB.isZero(0.0)) point = xB + onB;
-  if (c.b == 0 && !p.roundA.isZero(0.0)) point = xA + onA;
+  if (c.a == 0 && !f.roundB.isZero(0.0)) point = xB + onB;
+  if (c.b == 0 && !f.roundA.isZero(0.0)) point = xA + onA;
   // The separation now, from the anchors carried by the bodies (no collision detection); the
   // poses change only in integratePositions, after which this runs again.
-  p.separation = p.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
+  p.separation = f.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
   p.anchorA = point - xA;
   p.anchorB = point - xB;
   const Mat3& iA = sims_[c.a].inverseInertiaNow;
@@ -168,7 +172,7 @@ void SoftStepSolver::updateJacobians(const Constraint& c, Point& p) const {
 void SoftStepSolver::updateJacobians() {
   parallelFor(constraints_.size(), threads_, [&](std::size_t i) {
     const Constraint& c = constraints_[i];
-    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) updateJacobians(c, points_[j]);
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) updateJacobians(c, frames_[j], points_[j]);
   });
 }
 
@@ -200,8 +204,6 @@ void SoftStepSolver::warmStart(std::size_t island) {
         B.linearVelocity += mB * impulse;
         B.angularVelocity += angularB;
       }
-      p.totalNormalImpulse += p.normalImpulse;
-      p.totalFriction += friction;
     }
   });
 }
@@ -235,7 +237,6 @@ void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings
     const double total = std::max(p.normalImpulse + impulse, 0.0);
     const double delta = total - p.normalImpulse;
     p.normalImpulse = total;
-    p.totalNormalImpulse += delta;
     // Pushing within the slop of touching: the surfaces met (a speculative point lands a body
     // at s = 0 up to rounding, so s <= 0 alone can miss it).
     if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
@@ -274,7 +275,6 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
       const double d0 = candidate[0] - p.tangentImpulse[0], d1 = candidate[1] - p.tangentImpulse[1];
       p.tangentImpulse = {candidate[0], candidate[1]};
       const Vec3 impulse = d0 * c.tangent1 + d1 * c.tangent2;
-      p.totalFriction += impulse;
       vA -= mA * impulse;
       wA -= d0 * p.frictionA[0] + d1 * p.frictionA[1];
       vB += mB * impulse;
@@ -300,6 +300,17 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
     if (c.b != 0) {
       B.linearVelocity = vB;
       B.angularVelocity = wB;
+    }
+  });
+}
+
+void SoftStepSolver::addTotals(std::size_t island) {
+  islands_.forContacts(island, [&](std::size_t index) {
+    const Constraint& c = constraints_[index];
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+      const Point& p = points_[j];
+      reports_[j].totalNormalImpulse += p.normalImpulse;
+      reports_[j].totalFriction += p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
     }
   });
 }
@@ -336,6 +347,8 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
   sims_.assign(1, BodySim{});
   constraints_.clear();
   points_.clear();
+  frames_.clear();
+  reports_.clear();
   solved_.clear();
   joints_.clear();
 

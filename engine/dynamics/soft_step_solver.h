@@ -83,8 +83,22 @@ class SoftStepSolver {
     Vec3 torque = Vec3::Zero();              // tau about x [N m]
     bool kinematic = false;                  // moves as prescribed, infinite mass (zero inverses)
   };
-  struct Point {  // one manifold point
+  // One manifold point, in three arrays indexed alike, so that each pass streams only what it
+  // reads (Box2D v3 keeps its solver points apart from the manifold the same way): the sweeps of
+  // every substep read and write Point; updateJacobians, once a substep, reads PointFrame; the
+  // step's start and end (prepare, restitution, the report) use PointReport.
+  struct Point {  // 296 bytes
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // the point from each centre of mass, world [m]
+    Vec3 crossA = Vec3::Zero(), crossB = Vec3::Zero();      // r x n [m]
+    Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
+    std::array<Vec3, 2> frictionA{}, frictionB{};          // I^-1 (r x t_k)
+    double separation = 0.0;         // s at the current poses [m]
+    double normalMass = 0.0;         // 1 / (n^T K n) [kg]
+    std::array<double, 2> tangentMass{};  // 1 / (t_k^T K t_k) [kg]
+    double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
+    std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
+  };
+  struct PointFrame {
     // The point as each body carries it, body frame [m]; for a sphere or capsule, the point of
     // its core (centre or axis) under the contact, and the surface point is roundA / roundB
     // beyond it in world frame: turning a ball about its centre does not move its surface, so
@@ -92,19 +106,16 @@ class SoftStepSolver {
     // ground within a substep, and friction then brakes it).
     Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();
     Vec3 roundA = Vec3::Zero(), roundB = Vec3::Zero();  // world [m]; zero for other shapes
-    Vec3 crossA = Vec3::Zero(), crossB = Vec3::Zero();      // r x n [m]
-    Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
-    std::array<Vec3, 2> frictionA{}, frictionB{};          // I^-1 (r x t_k)
     double baseSeparation = 0.0;     // s0 - n . (r_B - r_A) [m]
-    double separation = 0.0;         // s at the current poses [m]
-    double normalMass = 0.0;         // 1 / (n^T K n) [kg]
-    std::array<double, 2> tangentMass{};  // 1 / (t_k^T K t_k) [kg]
+  };
+  struct PointReport {
     double relativeVelocity = 0.0;   // u_rel,N before the step [m/s]
     double impactSpeed = 0.0;        // |u_rel,N| when the surfaces meet (restitution) [m/s]
-    double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
-    std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
-    double totalNormalImpulse = 0.0;  // applied over the step [N s]
-    Vec3 totalFriction = Vec3::Zero();  // applied over the step, world [N s]
+    // Applied over the step: the impulses a substep applies add up to the accumulated ones it
+    // ends with (the warm start applies the last substep's, each sweep its change), so they are
+    // added once a substep, after the relax sweep, plus the collision and restitution passes.
+    double totalNormalImpulse = 0.0;  // [N s]
+    Vec3 totalFriction = Vec3::Zero();  // world [N s]
     bool sliding = false;  // seed000: slipping at the end of the last step (seed_friction.h)
   };
   struct Constraint {  // one manifold
@@ -146,7 +157,7 @@ class SoftStepSolver {
   void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
                const Settings& settings);
   const Cached* cached(std::uint64_t key) const;
-  void updateJacobians(const Constraint& c, Point& p) const;
+  void updateJacobians(const Constraint& c, const PointFrame& f, Point& p) const;
   void updateJacobians();
   void integrateVelocities(double h);
   // Island k's share of a substep (solver_islands.h): the sweeps below run island by island.
@@ -163,7 +174,10 @@ class SoftStepSolver {
     } else {
       solve(island, inverseH, settings, useBias, lastRelax);
     }
+    if (!useBias) addTotals(island);
   }
+  // Adds what island k's points applied over a substep to their reports (PointReport).
+  void addTotals(std::size_t island);
   // f(k) for every island k, on Settings::threads threads when the step is large enough to pay
   // for waking them.
   template <typename F>
@@ -185,6 +199,8 @@ class SoftStepSolver {
   std::vector<BodySim> sims_;      // per slot
   std::vector<Constraint> constraints_;
   std::vector<Point> points_;
+  std::vector<PointFrame> frames_;    // per point
+  std::vector<PointReport> reports_;  // per point
   std::vector<int> slotOfBody_;    // per World body: its slot, or 0
   std::vector<char> advanced_;     // per World body
   std::vector<std::size_t> advancedList_;
