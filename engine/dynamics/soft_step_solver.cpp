@@ -359,9 +359,14 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& contact = contacts[i];
     const bool plane = contact.kind == Contact::Kind::PlaneBody;
-    // A sleeping pair receives nothing (World wakes the sleeping side of a pair with an awake one).
+    // A sleeping pair receives nothing (World wakes an island an awake body touches), and keeps
+    // its impulses for the step it wakes, as Box2D's sleeping solver sets keep theirs.
     const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
-    if (contact.manifold.count == 0 || !awake) continue;
+    if (contact.manifold.count == 0) continue;
+    if (!awake) {
+      if (const Cached* old = cached(pairKey(contact))) nextCache_.push_back(*old);
+      continue;
+    }
     slot(bodies, contact.b, settings, addGravity);
     if (!plane) slot(bodies, contact.a, settings, addGravity);
   }

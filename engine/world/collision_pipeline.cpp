@@ -128,7 +128,18 @@ void CollisionPipeline::removeBody(std::size_t index) {
   swapRemove(fast_, index);
   swapRemove(hasGrid_, index);
   swapRemove(boxes_, index);
-  contacts_.clear();
+  // The contacts follow the bodies to their new indices (World::destroyBody forgets the solver's
+  // reports of them): the removed body's go and the last body's take its index, so that sleeping
+  // pairs keep theirs.
+  const auto names = [&](const Contact& c, std::size_t body) {
+    return c.b == body || (c.kind == Contact::Kind::BodyBody && c.a == body);
+  };
+  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), [&](const Contact& c) { return names(c, index); }),
+                  contacts_.end());
+  for (Contact& c : contacts_) {
+    if (c.b == last) c.b = index;
+    if (c.kind == Contact::Kind::BodyBody && c.a == last) c.a = index;
+  }
   impacts_.clear();
 }
 
@@ -246,7 +257,14 @@ bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<
   }
   const RigidBody& a = bodies[pair.a];
   const RigidBody& b = bodies[pair.b];
-  if (!a.awake() && !b.awake()) return false;
+  if (!a.awake() && !b.awake()) {
+    // Both asleep: the contact they fell asleep with (Box2D keeps a sleeping set's contacts,
+    // solver_set.c), so that an island woken this step has its inner contacts in place; without
+    // them each body it woke fell a step unsupported, and a 4000-box pile never came to rest.
+    const bool grid = shapes[pair.a].sdf || shapes[pair.b].sdf;  // several manifolds: left out, as before
+    if (!grid) kept(Contact::Kind::BodyBody, pair.a, pair.b, out);
+    return false;
+  }
   // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
   // K = 0), so no impulse could separate them.
   if (!a.isDynamic() && !b.isDynamic()) return false;
@@ -279,9 +297,29 @@ bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<
   return false;
 }
 
+std::uint64_t CollisionPipeline::keptKey(Contact::Kind kind, std::size_t a, std::size_t b) {
+  // Either order for two bodies: a body renumbered by removeBody may now come first.
+  if (kind == Contact::Kind::BodyBody && a > b) std::swap(a, b);
+  return (std::uint64_t{kind == Contact::Kind::PlaneBody} << 63) | (std::uint64_t{a} << 32) | std::uint64_t{b};
+}
+
+void CollisionPipeline::kept(Contact::Kind kind, std::size_t a, std::size_t b, Contact& out) const {
+  const std::uint64_t key = keptKey(kind, a, b);
+  const auto it = std::lower_bound(asleep_.begin(), asleep_.end(), std::make_pair(key, std::uint32_t{0}));
+  if (it != asleep_.end() && it->first == key) out = previous_[it->second];
+}
+
 void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                                     const std::vector<Plane>& planes, double time) {
+  previous_.swap(contacts_);
   contacts_.clear();
+  asleep_.clear();
+  for (std::size_t i = 0; i < previous_.size(); ++i) {
+    const Contact& c = previous_[i];
+    const bool plane = c.kind == Contact::Kind::PlaneBody;
+    if (c.part == 0 && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) asleep_.emplace_back(keptKey(c.kind, c.a, c.b), static_cast<std::uint32_t>(i));
+  }
+  std::sort(asleep_.begin(), asleep_.end());
   if (!ignoredSorted_) {
     std::sort(ignored_.begin(), ignored_.end());
     ignoredSorted_ = true;
@@ -319,7 +357,12 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     const std::size_t p = k / n, i = k % n;
     Contact& out = planeSlots_[k];
     out.manifold.count = 0;
-    if (!bodies[i].isDynamic() || !aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
+    if (!bodies[i].isDynamic()) return;
+    if (!bodies[i].awake()) {  // the contact it fell asleep with, as for two sleeping bodies
+      kept(Contact::Kind::PlaneBody, p, i, out);
+      return;
+    }
+    if (!aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
     const double margin = settings_.contactMargin + reach_[i];
     const bool round = bodies[i].shape().isRound();
     const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)

@@ -32,8 +32,8 @@ class CollisionPipeline {
   // Bodies are added in World order (each the last of the World's bodies). `hasGrid`: the body's
   // shape has a signed distance grid (BodyShape::sdf), so its convex hull is not its shape.
   void addBody(const RigidBody& body, bool hasGrid);
-  // Body `index` was destroyed and the last body moved into its index (World::destroyBody). The
-  // contacts and impacts of the last step are forgotten: they name bodies by their old indices.
+  // Body `index` was destroyed and the last body moved into its index (World::destroyBody). Its
+  // contacts go, the last body's are renumbered, and the last step's impacts are forgotten.
   void removeBody(std::size_t index);
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
@@ -57,7 +57,9 @@ class CollisionPipeline {
   // Stage BroadPhase: every moved body's AABB (inflated by the contact margin; swept for fast
   // bodies) into the broad phase, then the candidate pairs.
   void broadPhase(const std::vector<RigidBody>& bodies);
-  // Stage NarrowPhase: contacts of candidate pairs and of bodies against planes.
+  // Stage NarrowPhase: contacts of candidate pairs and of bodies against planes. Sleeping bodies
+  // are not collided with each other or with planes: they keep the contacts they had (nothing
+  // of theirs has moved since).
   // `shapes` are per body (World::bodyShapes): pairs with a signed distance grid use them.
   void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                    const std::vector<Plane>& planes, double time);
@@ -80,6 +82,10 @@ class CollisionPipeline {
   bool collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
                    double time, Contact& out);
   void measure(std::size_t index, const RigidBody& body);  // radius_, thickness_, boxes_ of a body
+  // The last step's contact of a sleeping pair (body and body, or plane and body) into `out`, if
+  // it had one; asleep_ is keyed by keptKey.
+  static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
+  void kept(Contact::Kind kind, std::size_t a, std::size_t b, Contact& out) const;
 
   Settings settings_;
   std::unique_ptr<BroadPhase> broad_;
@@ -105,6 +111,10 @@ class CollisionPipeline {
   std::vector<std::uint64_t> ignored_;  // sorted keys (lower index << 32 | higher index)
   bool ignoredSorted_ = true;           // false after ignorePair until the next narrow phase
   std::vector<Contact> contacts_;
+  // The last step's contacts, and the (keptKey, index) of those whose bodies are asleep, sorted:
+  // a sleeping pair keeps its contact instead of being collided again.
+  std::vector<Contact> previous_;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> asleep_;
   // Per candidate pair and per (plane, body): this step's contact, computed on any thread into its
   // own slot and gathered in order (manifold.count 0: none). sdfPair_ marks pairs with a grid,
   // which may give several manifolds and are collided on the calling thread.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rbsim/world/islands.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {
@@ -60,18 +61,34 @@ void World::stepPgs(bool withGravity, bool awake, bool collides) {
   });
 }
 
-void World::solveContacts(bool withGravity) {
-  // A body at rest touched by an awake one takes part again (its island wakes layer by layer).
-  for (const Contact& contact : collision_.contacts()) {
-    if (contact.kind == Contact::Kind::BodyBody) {
-      RigidBody& a = bodies_[contact.a];
-      RigidBody& b = bodies_[contact.b];
-      if (a.awake() != b.awake()) {
-        a.wake();
-        b.wake();
-      }
-    }
+void World::wakeTouchedIslands() {
+  // A sleeping island touched by an awake body wakes whole, in the step of the touch (Box2D's
+  // b2WakeSolverSet). Its bodies kept their contacts while asleep (CollisionPipeline::narrowPhase),
+  // so it wakes standing on them. Woken one layer a step, each newly woken body fell a step with
+  // nothing under it, and woke the next.
+  const auto dynamicPair = [&](const Contact& c) {
+    return c.kind == Contact::Kind::BodyBody && !bodies_[c.a].isStatic() && !bodies_[c.b].isStatic();
+  };
+  const std::vector<Contact>& contacts = collision_.contacts();
+  const bool touched = std::any_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
+    return dynamicPair(c) && bodies_[c.a].awake() != bodies_[c.b].awake();
+  });
+  if (!touched) return;
+  Islands islands(bodies_.size());
+  for (const Contact& c : contacts) {
+    if (dynamicPair(c)) islands.link(c.a, c.b);
   }
+  std::vector<char> woken(bodies_.size(), 0);  // per island root
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].awake()) woken[islands.find(i)] = 1;
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!bodies_[i].awake() && woken[islands.find(i)]) bodies_[i].wake();
+  }
+}
+
+void World::solveContacts(bool withGravity) {
+  wakeTouchedIslands();
   if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
     contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
     return;

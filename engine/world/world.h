@@ -161,6 +161,7 @@ class World {
   void stepSoft(bool withGravity, bool awake, bool collides);  // the middle of step() with soft step
   void stepPgs(bool withGravity, bool awake, bool collides);   // ... and with PGS
   void solveContacts(bool withGravity);
+  void wakeTouchedIslands();  // a sleeping island touched by an awake body wakes whole
   void wakeJointed();         // a joint's sleeping side wakes with its awake one
   void updateJointFilter();   // the pairs that must not collide, after joints or indices changed
   void checkFinite(const std::vector<std::size_t>& bodies) const;  // after the soft step

@@ -1,0 +1,162 @@
+// world/world with sleeping islands (issue 34): a sleeping island is not collided, moved or
+// written by a step while something else in the world moves, and keeps its contacts and its
+// warm-start impulses; a touch wakes the island whole, in the step of the touch, standing on the
+// contacts it fell asleep with (Box2D v3's sleeping solver sets, solver_set.c).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "test_util.h"
+#include "rbsim/world/world.h"
+
+namespace rbsim {
+namespace {
+
+using test::boxDef;
+
+constexpr int kStackHeight = 4;
+constexpr double kBoxMass = 1.0;  // [kg]
+
+Settings sleepySettings(double dt) {
+  Settings s;
+  s.timeStep = dt;
+  s.gravity = Vec3(0.0, -9.81, 0.0);
+  s.logQueries = true;
+  s.queryLogCapacity = 4096;
+  return s;
+}
+
+// A column of unit boxes on the ground plane, bodies 0 .. kStackHeight - 1, bottom first.
+void addStack(World& world) {
+  world.addPlane(Plane{}, Material{0.0, 0.6, 0.6});
+  for (int i = 0; i < kStackHeight; ++i) {
+    BodyDef def = boxDef(Vec3::Ones(), kBoxMass);
+    def.shape = Shape::box(Vec3::Constant(0.5));
+    def.material = Material{0.0, 0.6, 0.6};
+    def.position = Vec3(0.0, 0.5 + i, 0.0);
+    world.addBody(def);
+  }
+}
+
+bool stackAsleep(const World& world) {
+  for (int i = 0; i < kStackHeight; ++i) {
+    if (world.bodies()[i].awake()) return false;
+  }
+  return true;
+}
+
+// Steps until the stack sleeps; fails the test if it does not within 10 s.
+void settle(World& world) {
+  const int limit = static_cast<int>(10.0 / world.settings().timeStep);
+  for (int s = 0; s < limit && !stackAsleep(world); ++s) world.step();
+  ASSERT_TRUE(stackAsleep(world)) << "the stack never fell asleep";
+}
+
+bool sameBits(const BodyState& a, const BodyState& b) {
+  return std::memcmp(a.position.data(), b.position.data(), 3 * sizeof(double)) == 0 &&
+         std::memcmp(a.orientation.coeffs().data(), b.orientation.coeffs().data(), 4 * sizeof(double)) == 0 &&
+         std::memcmp(a.linearMomentum.data(), b.linearMomentum.data(), 3 * sizeof(double)) == 0 &&
+         std::memcmp(a.angularMomentum.data(), b.angularMomentum.data(), 3 * sizeof(double)) == 0;
+}
+
+std::size_t stackContacts(const World& world) {
+  return static_cast<std::size_t>(std::count_if(world.contacts().begin(), world.contacts().end(), [](const Contact& c) {
+    return c.b < static_cast<std::size_t>(kStackHeight) && c.manifold.count > 0;
+  }));
+}
+
+class SleepingIslands : public ::testing::TestWithParam<double> {};
+
+TEST_P(SleepingIslands, AreNotCollidedMovedOrWrittenWhileAnotherBodyMoves) {
+  World world(sleepySettings(GetParam()));
+  addStack(world);
+  settle(world);
+  // A kinematic box far away keeps the world awake: it moves, so it never sleeps.
+  BodyDef mover = boxDef(Vec3::Ones(), kBoxMass);
+  mover.shape = Shape::box(Vec3::Constant(0.5));
+  mover.isKinematic = true;
+  mover.position = Vec3(50.0, 3.0, 0.0);
+  mover.velocity = Vec3(0.0, 0.0, 1.0);
+  world.addBody(mover);
+  std::vector<BodyState> before;
+  for (int i = 0; i < kStackHeight; ++i) before.push_back(world.bodies()[i].state());
+  const std::size_t contactsBefore = stackContacts(world);
+  ASSERT_EQ(contactsBefore, static_cast<std::size_t>(kStackHeight)) << "one plane contact, three box-box contacts";
+  const std::uint64_t queriesBefore = world.collision().queryLog().total();
+  const std::uint64_t narrowRuns = world.stageStats(Stage::NarrowPhase).runs;
+  const int steps = static_cast<int>(std::lround(2.0 / GetParam()));  // 2 s
+  for (int s = 0; s < steps; ++s) world.step();
+  EXPECT_GT(world.stageStats(Stage::NarrowPhase).runs, narrowRuns) << "the narrow phase ran for the moving body";
+  // The counter: every narrow-phase query is logged, and none was asked for the sleeping stack.
+  EXPECT_EQ(world.collision().queryLog().total(), queriesBefore);
+  EXPECT_TRUE(stackAsleep(world));
+  for (int i = 0; i < kStackHeight; ++i) EXPECT_TRUE(sameBits(world.bodies()[i].state(), before[i])) << "box " << i;
+  EXPECT_EQ(stackContacts(world), contactsBefore) << "the sleeping island keeps its contacts";
+  EXPECT_GT(world.bodies()[kStackHeight].position().z(), 1.9);
+}
+
+TEST_P(SleepingIslands, WakeWholeInTheStepOfTheTouchAndStandOnTheirContacts) {
+  World world(sleepySettings(GetParam()));
+  addStack(world);
+  settle(world);
+  // A light box set down 1 mm above the top box, at rest: the touch must not shake the stack.
+  BodyDef light = boxDef(Vec3::Ones(), 0.01 * kBoxMass);
+  light.shape = Shape::box(Vec3::Constant(0.5));
+  light.material = Material{0.0, 0.6, 0.6};
+  light.position = Vec3(0.0, 0.5 + kStackHeight + 0.001, 0.0);
+  world.addBody(light);
+  int woken = -1;
+  double fastest = 0.0;  // of the stack's boxes, once woken [m/s]
+  for (int s = 0; s < 30; ++s) {
+    world.step();
+    int awake = 0;
+    for (int i = 0; i < kStackHeight; ++i) awake += world.bodies()[i].awake() ? 1 : 0;
+    if (awake > 0 && woken < 0) {
+      woken = s;
+      EXPECT_EQ(awake, kStackHeight) << "the island wakes whole, not one layer a step";
+    }
+    if (woken >= 0) {
+      for (int i = 0; i < kStackHeight; ++i) fastest = std::max(fastest, world.bodies()[i].velocity().norm());
+    }
+  }
+  ASSERT_GE(woken, 0) << "the touch woke nothing";
+  // Woken a layer a step, each box fell a step with nothing under it: g dt = 0.16 m/s at 1/60 s.
+  // Woken whole, the 10 g box's landing moves the stack far less.
+  EXPECT_LT(fastest, 0.02) << "woken at step " << woken;
+}
+
+TEST_P(SleepingIslands, KeepTheirContactsWhenAnotherBodyIsDestroyed) {
+  World world(sleepySettings(GetParam()));
+  addStack(world);
+  settle(world);
+  // Two kinematic boxes far away; destroying the first moves the second into its index.
+  BodyId first;
+  for (int k = 0; k < 2; ++k) {
+    BodyDef mover = boxDef(Vec3::Ones(), kBoxMass);
+    mover.shape = Shape::box(Vec3::Constant(0.5));
+    mover.isKinematic = true;
+    mover.position = Vec3(50.0 + 5.0 * k, 3.0, 0.0);
+    mover.velocity = Vec3(0.0, 0.0, 1.0);
+    const BodyId id = world.addBody(mover);
+    if (k == 0) first = id;
+  }
+  world.step();
+  world.destroyBody(first);
+  EXPECT_EQ(stackContacts(world), static_cast<std::size_t>(kStackHeight));
+  const std::uint64_t queriesBefore = world.collision().queryLog().total();
+  for (int s = 0; s < 30; ++s) world.step();
+  EXPECT_TRUE(stackAsleep(world));
+  EXPECT_EQ(world.collision().queryLog().total(), queriesBefore) << "the sleeping stack is still not collided";
+  EXPECT_EQ(stackContacts(world), static_cast<std::size_t>(kStackHeight)) << "and still has its contacts";
+}
+
+INSTANTIATE_TEST_SUITE_P(TimeSteps, SleepingIslands, ::testing::Values(1.0 / 60.0, 1.0 / 240.0),
+                         [](const ::testing::TestParamInfo<double>& info) {
+                           return "dt_1_over_" + std::to_string(static_cast<int>(std::lround(1.0 / info.param)));
+                         });
+
+}  // namespace
+}  // namespace rbsim
