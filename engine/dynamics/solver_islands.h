@@ -49,7 +49,10 @@ class SolverIslands {
     for (std::size_t i = 0; i < joints; ++i) jointIsland_[i] = islandOf(jointA(i), jointB(i));
     rank_.resize(sizes_.size());
     for (std::size_t k = 0; k < rank_.size(); ++k) rank_[k] = static_cast<std::uint32_t>(k);
-    std::stable_sort(rank_.begin(), rank_.end(), [&](std::uint32_t x, std::uint32_t y) { return sizes_[x] > sizes_[y]; });
+    // Largest first, ties in island order: a stable sort's order, without its buffer.
+    std::sort(rank_.begin(), rank_.end(), [&](std::uint32_t x, std::uint32_t y) {
+      return sizes_[x] > sizes_[y] || (sizes_[x] == sizes_[y] && x < y);
+    });
     position_.resize(rank_.size());
     for (std::size_t k = 0; k < rank_.size(); ++k) position_[rank_[k]] = static_cast<std::uint32_t>(k);
     bucket(contactIsland_, contactStart_, contactOrder_);

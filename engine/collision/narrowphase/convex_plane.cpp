@@ -9,7 +9,11 @@ namespace rbsim {
 
 ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& vertices, double margin,
                                    double supportSlab) {
-  std::vector<ContactPoint> candidates;
+  // Scratch kept per thread (the narrow phase collides on several): a step collides every body
+  // near a plane, and allocating here was most of a settled pyramid's allocations per step.
+  thread_local std::vector<ContactPoint> candidates, visible;
+  candidates.clear();
+  visible.clear();
   double deepest = -std::numeric_limits<double>::infinity();
   for (const Vec3& p : vertices) {
     const double s = plane.signedDistance(p);
@@ -25,7 +29,6 @@ ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& 
   // projection only, so without this it may keep the top corner of a thin plate (within the
   // margin, at the same place seen from above) and drop the bottom corner under it, which then
   // sinks unopposed.
-  std::vector<ContactPoint> visible;
   for (const ContactPoint& c : candidates) {
     const bool shadowed = std::any_of(candidates.begin(), candidates.end(), [&](const ContactPoint& d) {
       const Vec3 beside = d.position - c.position - plane.normal * plane.normal.dot(d.position - c.position);

@@ -6,24 +6,24 @@
 
 namespace rbsim {
 
-ContactManifold reduceContacts(const std::vector<ContactPoint>& candidates, const Vec3& normal) {
+ContactManifold reduceContacts(const ContactPoint* candidates, std::size_t count, const Vec3& normal) {
   ContactManifold m;
   m.normal = normal;
-  if (candidates.empty()) return m;
+  if (count == 0) return m;
   const auto at = [&](std::size_t i) { return candidates[i].position; };
   // Twice the signed area of (a, b, c) seen along the normal (positive counter-clockwise).
   const auto area2 = [&](const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a).dot(normal); };
   const auto inPlane = [&](const Vec3& d) { return d - normal * normal.dot(d); };
 
   std::size_t i0 = 0;
-  for (std::size_t i = 1; i < candidates.size(); ++i) {
+  for (std::size_t i = 1; i < count; ++i) {
     if (candidates[i].depth > candidates[i0].depth) i0 = i;
   }
   m.add(at(i0), candidates[i0].depth);
 
   std::size_t i1 = i0;
   double far = 0.0;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     const double d = inPlane(at(i) - at(i0)).norm();
     if (d > far) {
       far = d;
@@ -34,7 +34,7 @@ ContactManifold reduceContacts(const std::vector<ContactPoint>& candidates, cons
 
   std::size_t i2 = i0;
   double big = 0.0;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     const double a = std::abs(area2(at(i0), at(i1), at(i)));
     if (a > big) {
       big = a;
@@ -53,7 +53,7 @@ ContactManifold reduceContacts(const std::vector<ContactPoint>& candidates, cons
   const std::size_t tri[3] = {i0, i1, i2};
   std::size_t i3 = i0;
   double added = 0.0, edgeLength = 0.0;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     for (int e = 0; e < 3; ++e) {
       const Vec3& a = at(tri[e]);
       const Vec3& b = at(tri[(e + 1) % 3]);

@@ -3,6 +3,7 @@
 // "Robust Contact Creation for Physics Simulations", GDC 2015): keep the deepest point, then the
 // point farthest from it, then the one maximising the triangle's area, then the one adding the
 // most area to that triangle. Areas and distances are measured in the contact plane.
+#include <cstddef>
 #include <vector>
 
 #include "rbsim/collision/contact.h"
@@ -16,6 +17,9 @@ namespace rbsim {
 inline constexpr double kReductionTolerance = 1e-9;
 
 // The manifold (normal = `normal`, unit, from A to B) of at most 4 of the candidates.
-ContactManifold reduceContacts(const std::vector<ContactPoint>& candidates, const Vec3& normal);
+ContactManifold reduceContacts(const ContactPoint* candidates, std::size_t count, const Vec3& normal);
+inline ContactManifold reduceContacts(const std::vector<ContactPoint>& candidates, const Vec3& normal) {
+  return reduceContacts(candidates.data(), candidates.size(), normal);
+}
 
 }  // namespace rbsim

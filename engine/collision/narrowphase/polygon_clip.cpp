@@ -12,31 +12,36 @@ void planeBasis(const Vec3& n, Vec3& u, Vec3& v) {
   v = n.cross(u);
 }
 
-std::vector<Vec3> clipByHalfSpace(const std::vector<Vec3>& polygon, const Vec3& normal, double offset) {
-  std::vector<Vec3> out;
-  const std::size_t n = polygon.size();
-  if (n == 0) return out;
+std::size_t clipByHalfSpace(const Vec3* polygon, std::size_t n, const Vec3& normal, double offset, Vec3* out) {
+  std::size_t written = 0;
+  if (n == 0) return 0;
   if (n == 1) {
-    if (normal.dot(polygon[0]) <= offset) out.push_back(polygon[0]);
-    return out;
+    if (normal.dot(polygon[0]) <= offset) out[written++] = polygon[0];
+    return written;
   }
   // A segment is its own closed loop of two edges; clip it directly so no vertex is doubled.
   if (n == 2) {
     const double d0 = normal.dot(polygon[0]) - offset, d1 = normal.dot(polygon[1]) - offset;
-    if (d0 > 0.0 && d1 > 0.0) return out;
+    if (d0 > 0.0 && d1 > 0.0) return 0;
     const Vec3 cut = (d0 > 0.0) != (d1 > 0.0) ? polygon[0] + (polygon[1] - polygon[0]) * (d0 / (d0 - d1)) : Vec3();
-    out.push_back(d0 > 0.0 ? cut : polygon[0]);
-    out.push_back(d1 > 0.0 ? cut : polygon[1]);
-    return out;
+    out[written++] = d0 > 0.0 ? cut : polygon[0];
+    out[written++] = d1 > 0.0 ? cut : polygon[1];
+    return written;
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3& prev = polygon[(i + n - 1) % n];
     const Vec3& cur = polygon[i];
     const double dp = normal.dot(prev) - offset, dc = normal.dot(cur) - offset;
     // The edge prev -> cur: emit the crossing where it changes side, and cur when it is inside.
-    if ((dc <= 0.0) != (dp <= 0.0)) out.push_back(prev + (cur - prev) * (dp / (dp - dc)));
-    if (dc <= 0.0) out.push_back(cur);
+    if ((dc <= 0.0) != (dp <= 0.0)) out[written++] = prev + (cur - prev) * (dp / (dp - dc));
+    if (dc <= 0.0) out[written++] = cur;
   }
+  return written;
+}
+
+std::vector<Vec3> clipByHalfSpace(const std::vector<Vec3>& polygon, const Vec3& normal, double offset) {
+  std::vector<Vec3> out(polygon.size() + 1);
+  out.resize(clipByHalfSpace(polygon.data(), polygon.size(), normal, offset, out.data()));
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "rbsim/collision/narrowphase/shape_pairs.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "rbsim/collision/narrowphase/convex_convex.h"
@@ -18,15 +19,27 @@ constexpr double kParallelAxisSine = 1e-3;  // [1]
 constexpr double kMinStretch = 1e-9;  // [m]
 
 // The core a round shape is grown from: its centre, or its segment's two ends, in world frame.
-std::vector<Vec3> coreOf(const PosedShape& s) {
-  if (s.shape->type == ShapeType::Sphere) return {s.position};
+// On the stack: spheres and capsules collide with each other and the ground every step.
+struct Core {
+  std::array<Vec3, 2> points;
+  std::size_t count = 1;
+  std::size_t size() const { return count; }
+  const Vec3& operator[](std::size_t i) const { return points[i]; }
+  const Vec3& front() const { return points[0]; }
+  const Vec3& back() const { return points[count - 1]; }
+  const Vec3* begin() const { return points.data(); }
+  const Vec3* end() const { return points.data() + count; }
+};
+
+Core coreOf(const PosedShape& s) {
+  if (s.shape->type == ShapeType::Sphere) return {{s.position, s.position}, 1};
   const auto [lo, hi] = s.shape->segment();
-  return {s.rotation * lo + s.position, s.rotation * hi + s.position};
+  return {{s.rotation * lo + s.position, s.rotation * hi + s.position}, 2};
 }
 
 // Two round shapes: the closest points of their cores, pushed apart along n by the radii.
 ContactManifold roundRound(const PosedShape& a, const PosedShape& b, double margin) {
-  const std::vector<Vec3> ca = coreOf(a), cb = coreOf(b);
+  const Core ca = coreOf(a), cb = coreOf(b);
   const double ra = a.shape->radius, rb = b.shape->radius;
   Vec3 pa = ca[0], pb = cb[0];
   if (ca.size() == 2 || cb.size() == 2) {
@@ -69,7 +82,8 @@ ContactManifold roundRound(const PosedShape& a, const PosedShape& b, double marg
 // point's depth grown by the radius and moved out to midway between the surfaces.
 ContactManifold roundConvex(const PosedShape& round, const PosedShape& convex, bool roundIsA, double margin) {
   const double r = round.shape->radius;
-  const std::vector<Vec3> core = coreOf(round), hull = worldHullVertices(convex);
+  const Core roundCore = coreOf(round);
+  const std::vector<Vec3> core(roundCore.begin(), roundCore.end()), hull = worldHullVertices(convex);
   const ConvexContact c = roundIsA ? collideConvex(core, hull, margin + r) : collideConvex(hull, core, margin + r);
   ContactManifold m;
   m.normal = c.manifold.normal;
@@ -95,7 +109,10 @@ std::vector<Vec3> worldHullVertices(const PosedShape& body) {
     }
     return out;
   }
-  if (body.shape->isRound()) return coreOf(body);
+  if (body.shape->isRound()) {
+    const Core core = coreOf(body);
+    return {core.begin(), core.end()};
+  }
   out.reserve(body.shape->hull->vertices.size());
   for (const Vec3& p : body.shape->hull->vertices) out.push_back(body.rotation * p + body.position);
   return out;
