@@ -55,7 +55,11 @@ check() {  # prints every violation; returns 3 if there is one
   for entry in "${expected[@]}"; do
     local heading=${entry%:*} want=${entry##*:} found=""
     for ((page = 1; page <= pages; page++)); do
-      if pdftotext -f "$page" -l "$page" "$pdf" - | grep -qxF "$heading"; then found=$page; break; fi
+      # The page's text first, then the search: piped into grep -q, which exits at the first match,
+      # pdftotext could die of SIGPIPE while still writing, and pipefail then failed the match.
+      local text
+      text=$(pdftotext -f "$page" -l "$page" "$pdf" -)
+      if grep -qxF "$heading" <<< "$text"; then found=$page; break; fi
     done
     if [ -z "$found" ]; then
       echo "heading \"$heading\" is not in the PDF"; bad=1

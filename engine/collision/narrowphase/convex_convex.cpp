@@ -1,6 +1,7 @@
 #include "rbsim/collision/narrowphase/convex_convex.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -25,14 +26,17 @@ struct Feature {
   std::vector<Vec3> hull;
 };
 
-Feature supportFeature(const std::vector<Vec3>& points, const Vec3& dir, const Vec3& n, double tolerance) {
+// The buffers below are kept per thread (the narrow phase collides on several threads), so that a
+// steady step of a pile of hulls allocates nothing; none of these functions calls itself.
+void supportFeature(const std::vector<Vec3>& points, const Vec3& dir, const Vec3& n, double tolerance, Feature& out) {
   double extreme = -std::numeric_limits<double>::infinity();
   for (const Vec3& p : points) extreme = std::max(extreme, dir.dot(p));
-  std::vector<Vec3> near;
+  thread_local std::vector<Vec3> near;
+  near.clear();
   for (const Vec3& p : points) {
     if (dir.dot(p) >= extreme - tolerance) near.push_back(p);
   }
-  return {planarConvexHull(near, n, kFeatureHullTolerance)};
+  planarConvexHull(near, n, kFeatureHullTolerance, out.hull);
 }
 
 // Height along n of the feature's surface above the point p (p moved along n onto the feature).
@@ -62,19 +66,22 @@ double heightAt(const Feature& f, const Vec3& p, const Vec3& n) {
 }
 
 // The part of `subject` inside the prism of the convex polygon `ref` (>= 3 vertices,
-// counter-clockwise about n) along n.
-std::vector<Vec3> clipToPrism(std::vector<Vec3> subject, const std::vector<Vec3>& ref, const Vec3& n) {
-  for (std::size_t i = 0; i < ref.size() && !subject.empty(); ++i) {
+// counter-clockwise about n) along n, into `out`.
+void clipToPrism(const std::vector<Vec3>& subject, const std::vector<Vec3>& ref, const Vec3& n, std::vector<Vec3>& out) {
+  thread_local std::vector<Vec3> other;
+  out.assign(subject.begin(), subject.end());
+  for (std::size_t i = 0; i < ref.size() && !out.empty(); ++i) {
     const Vec3 outward = (ref[(i + 1) % ref.size()] - ref[i]).cross(n).normalized();
-    subject = clipByHalfSpace(subject, outward, outward.dot(ref[i]));
+    other.resize(out.size() + 1);
+    other.resize(clipByHalfSpace(out.data(), out.size(), outward, outward.dot(ref[i]), other.data()));
+    out.swap(other);
   }
-  return subject;
 }
 
 // Contact candidates from the two features: points of one feature's surface over the other's,
 // each placed midway between the surfaces with depth = height of A - height of B.
-std::vector<ContactPoint> featureContacts(const Feature& fa, const Feature& fb, const Vec3& n) {
-  std::vector<ContactPoint> out;
+void featureContacts(const Feature& fa, const Feature& fb, const Vec3& n, std::vector<ContactPoint>& out) {
+  out.clear();
   const auto emit = [&](const Vec3& p, double ha, double hb) {
     out.push_back({p + n * (0.5 * (ha + hb) - n.dot(p)), ha - hb});
   };
@@ -82,7 +89,9 @@ std::vector<ContactPoint> featureContacts(const Feature& fa, const Feature& fb, 
   if (na >= 3 || nb >= 3) {
     const bool refIsA = na >= 3;
     const Feature& ref = refIsA ? fa : fb;
-    for (const Vec3& p : clipToPrism(refIsA ? fb.hull : fa.hull, ref.hull, n)) {
+    thread_local std::vector<Vec3> clipped;
+    clipToPrism(refIsA ? fb.hull : fa.hull, ref.hull, n, clipped);
+    for (const Vec3& p : clipped) {
       const double own = n.dot(p), other = heightAt(ref, p, n);
       if (refIsA) emit(p, other, own);
       else emit(p, own, other);
@@ -100,19 +109,21 @@ std::vector<ContactPoint> featureContacts(const Feature& fa, const Feature& fb, 
     } else {
       // Parallel edges: the stretch of B's edge within the slab of A's edge.
       const Vec3 e = (da - n * n.dot(da)).normalized();
-      std::vector<Vec3> part = clipByHalfSpace(fb.hull, e, e.dot(fa.hull[1]));
-      part = clipByHalfSpace(part, -e, -e.dot(fa.hull[0]));
-      for (const Vec3& p : part) emit(p, heightAt(fa, p, n), n.dot(p));
+      std::array<Vec3, 4> half, part;  // a segment clipped twice: at most two points each time
+      const std::size_t kept = clipByHalfSpace(fb.hull.data(), fb.hull.size(), e, e.dot(fa.hull[1]), half.data());
+      const std::size_t count = clipByHalfSpace(half.data(), kept, -e, -e.dot(fa.hull[0]), part.data());
+      for (std::size_t i = 0; i < count; ++i) emit(part[i], heightAt(fa, part[i], n), n.dot(part[i]));
     }
   }
-  return out;
 }
 
 ContactManifold featureManifold(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& n,
                                 double margin, double tolerance) {
-  const Feature fa = supportFeature(a, n, n, tolerance);
-  const Feature fb = supportFeature(b, -n, n, tolerance);
-  std::vector<ContactPoint> candidates = featureContacts(fa, fb, n);
+  thread_local Feature fa, fb;
+  thread_local std::vector<ContactPoint> candidates;
+  supportFeature(a, n, n, tolerance, fa);
+  supportFeature(b, -n, n, tolerance, fb);
+  featureContacts(fa, fb, n, candidates);
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                   [&](const ContactPoint& c) { return c.depth < -margin; }),
                    candidates.end());

@@ -126,10 +126,15 @@ EpaResult epa(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const GjkS
 EpaResult epa(const SupportMap& a, const SupportMap& b, const GjkSimplex& start) {
   EpaResult result;
   if (start.size < 1) return result;
-  std::vector<SupportPoint> verts;
+  // Scratch kept per thread (the narrow phase collides on several), so that a steady step of a
+  // pile of hulls allocates nothing; epa does not call itself.
+  thread_local std::vector<SupportPoint> verts;
+  thread_local std::vector<Face> faces;
+  thread_local std::vector<int> stack, removed;
+  thread_local std::vector<HorizonEdge> horizon;
+  faces.clear();
   if (!buildTetrahedron(a, b, start, verts)) return result;
 
-  std::vector<Face> faces;
   static constexpr int kTetra[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
   for (const auto& t : kTetra) {
     Face f{{t[0], t[1], t[2]}, {-1, -1, -1}, Vec3::Zero(), 0.0, true};
@@ -147,8 +152,6 @@ EpaResult epa(const SupportMap& a, const SupportMap& b, const GjkSimplex& start)
   }
 
   int best = 0;
-  std::vector<int> stack, removed;
-  std::vector<HorizonEdge> horizon;
   while (true) {
     best = -1;
     for (std::size_t f = 0; f < faces.size(); ++f) {

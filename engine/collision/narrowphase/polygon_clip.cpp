@@ -45,13 +45,19 @@ std::vector<Vec3> clipByHalfSpace(const std::vector<Vec3>& polygon, const Vec3& 
   return out;
 }
 
-std::vector<Vec3> planarConvexHull(const std::vector<Vec3>& points, const Vec3& axis, double tolerance) {
-  if (points.size() <= 1) return points;
+void planarConvexHull(const std::vector<Vec3>& points, const Vec3& axis, double tolerance, std::vector<Vec3>& out) {
+  out.clear();
+  if (points.size() <= 1) {
+    out.assign(points.begin(), points.end());
+    return;
+  }
   Vec3 u, v;
   planeBasis(axis, u, v);
-  std::vector<Eigen::Vector2d> q(points.size());
+  thread_local std::vector<Eigen::Vector2d> q;
+  thread_local std::vector<std::size_t> order, hull, kept;
+  q.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) q[i] = {u.dot(points[i]), v.dot(points[i])};
-  std::vector<std::size_t> order(points.size());
+  order.resize(points.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
     return q[i].x() < q[j].x() || (q[i].x() == q[j].x() && q[i].y() < q[j].y());
@@ -62,7 +68,7 @@ std::vector<Vec3> planarConvexHull(const std::vector<Vec3>& points, const Vec3& 
     const double cross = e.x() * f.y() - e.y() * f.x();
     return cross > tolerance * std::max(e.norm(), f.norm());
   };
-  std::vector<std::size_t> hull(2 * points.size());
+  hull.resize(2 * points.size());
   std::size_t k = 0;
   for (std::size_t i : order) {  // lower chain
     while (k >= 2 && !leftTurn(hull[k - 2], hull[k - 1], i)) --k;
@@ -75,7 +81,7 @@ std::vector<Vec3> planarConvexHull(const std::vector<Vec3>& points, const Vec3& 
   }
   hull.resize(k - 1);  // the last point repeats the first
   // Drop vertices within tolerance of the previous one (the chains only remove turns).
-  std::vector<std::size_t> kept;
+  kept.clear();
   for (std::size_t i : hull) {
     if (kept.empty() || (q[i] - q[kept.back()]).norm() > tolerance) kept.push_back(i);
   }
@@ -83,12 +89,16 @@ std::vector<Vec3> planarConvexHull(const std::vector<Vec3>& points, const Vec3& 
   if (kept.empty()) kept.push_back(order.front());
   if (kept.size() == 2) {
     // Flat within tolerance: the two ends of the longest extent.
-    std::vector<Vec3> ends = {points[order.front()], points[order.back()]};
-    if ((q[order.back()] - q[order.front()]).norm() <= tolerance) ends.pop_back();
-    return ends;
+    out.push_back(points[order.front()]);
+    if ((q[order.back()] - q[order.front()]).norm() > tolerance) out.push_back(points[order.back()]);
+    return;
   }
-  std::vector<Vec3> out;
   for (std::size_t i : kept) out.push_back(points[i]);
+}
+
+std::vector<Vec3> planarConvexHull(const std::vector<Vec3>& points, const Vec3& axis, double tolerance) {
+  std::vector<Vec3> out;
+  planarConvexHull(points, axis, tolerance, out);
   return out;
 }
 

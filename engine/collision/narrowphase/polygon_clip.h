@@ -21,6 +21,9 @@ std::size_t clipByHalfSpace(const Vec3* polygon, std::size_t count, const Vec3& 
 // `tolerance` [m] of the line through their neighbours are dropped, so the result has 1 point
 // (all within tolerance of one point), 2 (all within tolerance of a segment) or at least 3.
 std::vector<Vec3> planarConvexHull(const std::vector<Vec3>& points, const Vec3& axis, double tolerance);
+// The same into `out` (not `points`), with the working arrays kept per thread: no allocation once
+// the buffers have grown.
+void planarConvexHull(const std::vector<Vec3>& points, const Vec3& axis, double tolerance, std::vector<Vec3>& out);
 
 // A unit vector perpendicular to unit n, and n x it: a right-handed basis of n's plane.
 void planeBasis(const Vec3& n, Vec3& u, Vec3& v);
