@@ -135,9 +135,11 @@ class alignas(64) RigidBody {
   void updateDerived();              // R, v, omega from the state; marks the world vertices stale
   void updateWorldVertices() const;  // p' = R p + x for every vertex
 
-  // Hot: what an Integrate pass over awake bodies reads and writes, in the first 384 bytes (6 cache
-  // lines, the class being aligned to a line). The flags lead, so a pass that only tests awake_
+  // Hot: what an Integrate pass over awake bodies reads and writes, in the first 408 bytes (the
+  // flags and m in 16, x q P L in 112 with q aligned to 16, the step's inputs in 280; the class is
+  // aligned to a 64-byte line, so 7 lines). The flags lead, so a pass that only tests awake_
   // touches one line per body.
+  static_assert(sizeof(BodyState) == 112 && sizeof(StepInputs) == 280, "the hot fields' size in the comment above");
   bool awake_ = true;
   bool isStatic_ = false;
   bool isKinematic_ = false;
@@ -147,7 +149,7 @@ class alignas(64) RigidBody {
   StepInputs inputs_{Vec3::Zero(), Vec3::Zero(), Mat3::Identity(), Vec3::Zero(), Vec3::Zero(),
                      1.0,          Mat3::Identity(), nullptr,   Vec3::Zero()};  // v, omega, R, F, tau, constants, tau_b
 
-  // The seventh line: what only UpdateSleep and the accessors above read.
+  // After them, from byte 408: what only UpdateSleep and the accessors above read.
   double restingTime_ = 0.0;
   std::shared_ptr<const ColdConstants> cold_;
   mutable std::vector<Vec3> worldVertices_;  // a cache, filled by worldVertices() on demand

@@ -172,14 +172,8 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
       const Vec3 error = (xB + rB) - (xA + rA);
       const Vec3 lambda = -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error) - soft.impulseScale * joint.linearImpulse;
       joint.linearImpulse += lambda;
-      if (c.base != 0) {
-        A.linearVelocity = vA - mA * lambda;
-        A.angularVelocity = wA - iA * rA.cross(lambda);
-      }
-      if (c.moving != 0) {
-        B.linearVelocity = vB + mB * lambda;
-        B.angularVelocity = wB + iB * rB.cross(lambda);
-      }
+      storeVelocities(c.base, vA - mA * lambda, wA - iA * rA.cross(lambda));
+      storeVelocities(c.moving, vB + mB * lambda, wB + iB * rB.cross(lambda));
       return;
     }
 
@@ -229,14 +223,8 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
     const Eigen::Vector2d total = accumulated.segment<2>(3) + impulse.segment<2>(3);
     joint.angularImpulse = total.x() * tangents[0] + total.y() * tangents[1];
 
-    if (c.base != 0) {
-      A.linearVelocity = vA;
-      A.angularVelocity = wA;
-    }
-    if (c.moving != 0) {
-      B.linearVelocity = vB;
-      B.angularVelocity = wB;
-    }
+    storeVelocities(c.base, vA, wA);
+    storeVelocities(c.moving, vB, wB);
   });
 }
 

@@ -51,14 +51,8 @@ void SoftStepSolver::solveSeed(std::size_t island, double inverseH, const Settin
       }
       c.slipping = !sticking && slip > kSeedSlidingSpeed;
     }
-    if (c.a != 0) {
-      A.linearVelocity = vA;
-      A.angularVelocity = wA;
-    }
-    if (c.b != 0) {
-      B.linearVelocity = vB;
-      B.angularVelocity = wB;
-    }
+    storeVelocities(c.a, vA, wA);
+    storeVelocities(c.b, vB, wB);
   });
 }
 

@@ -293,14 +293,8 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
       }
       c.slipping = slip > kStickingSlipSpeed;
     }
-    if (c.a != 0) {
-      A.linearVelocity = vA;
-      A.angularVelocity = wA;
-    }
-    if (c.b != 0) {
-      B.linearVelocity = vB;
-      B.angularVelocity = wB;
-    }
+    storeVelocities(c.a, vA, wA);
+    storeVelocities(c.b, vB, wB);
   });
 }
 

@@ -65,14 +65,16 @@ class SoftStepSolver {
   const std::vector<SolvedContactPoint>& points() const { return solved_; }
 
  private:
-  // Hot: what a substep reads and writes per body, 104 bytes (Box2D's b2BodyState). Slot 0 is
-  // the ground (planes and static bodies): it never moves and is never written.
+  // Hot: what a substep reads and writes per body, 112 bytes with q aligned to 16 (Box2D's
+  // b2BodyState). Slot 0 is the ground (planes and static bodies): it never moves and is never
+  // written.
   struct SolverState {
     Vec3 linearVelocity = Vec3::Zero();   // v [m/s]
     Vec3 angularVelocity = Vec3::Zero();  // omega [rad/s]
     Vec3 deltaPosition = Vec3::Zero();    // x - x0 [m]
     Quat orientation = Quat::Identity();  // q now
   };
+  static_assert(sizeof(SolverState) == 112, "the size the comment above states");
   // Per body and step, read once per substep at most.
   struct BodySim {
     std::size_t body = 0;                    // World index
@@ -98,6 +100,7 @@ class SoftStepSolver {
     double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
     std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
   };
+  static_assert(sizeof(Point) == 296, "the size the comment above states");
   struct PointFrame {
     // The point as each body carries it, body frame [m]; for a sphere or capsule, the point of
     // its core (centre or axis) under the contact, and the surface point is roundA / roundB
@@ -175,6 +178,13 @@ class SoftStepSolver {
       solve(island, inverseH, settings, useBias, lastRelax);
     }
     if (!useBias) addTotals(island);
+  }
+  // A sweep's velocities of slot `slot` written back, unless it is the ground (slot 0, never
+  // written): the one write-back of the contact sweeps and the joints.
+  void storeVelocities(int slot, const Vec3& v, const Vec3& w) {
+    if (slot == 0) return;
+    states_[slot].linearVelocity = v;
+    states_[slot].angularVelocity = w;
   }
   // Adds what island k's points applied over a substep to their reports (PointReport).
   void addTotals(std::size_t island);
