@@ -16,7 +16,7 @@
 #include "rbsim/integrate/integrator.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/particles/particle_def.h"
-#include "paths.h"
+#include "run/paths.h"
 #include "render/render_error.h"
 #include "window/interactive.h"
 #include "window/replay_window.h"

@@ -17,8 +17,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "rbsim/collision/broadphase/brute_force.h"
-#include "rbsim/collision/broadphase/sweep_and_prune.h"
+#include "collision/broadphase/brute_force.h"
+#include "collision/broadphase/sweep_and_prune.h"
 
 namespace {
 

@@ -8,9 +8,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "rbsim/collision/narrowphase/box_box.h"
-#include "rbsim/collision/narrowphase/convex_convex.h"
-#include "rbsim/collision/narrowphase/shape_pairs.h"
+#include "collision/narrowphase/box_box.h"
+#include "collision/narrowphase/convex_convex.h"
+#include "collision/narrowphase/shape_pairs.h"
 #include "rbsim/geometry/shapes.h"
 #include "rbsim/math/rotation.h"
 

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "rbsim/geometry/implicit_surface.h"
+#include "geometry/implicit_surface.h"
 #include "rbsim/geometry/shapes.h"
 #include "rbsim/geometry/signed_distance_grid.h"
 

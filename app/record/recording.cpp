@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "rbsim/io/input_error.h"
-#include "run/phase.h"
 
 namespace rbsim::app {
 
@@ -243,7 +242,7 @@ void RecordReader::restoreNext(std::size_t index, World& world) {
     std::uint16_t owner = 0;
     const std::size_t length = entryLength();
     std::memcpy(&owner, block_.data() + offset_, sizeof owner);
-    if (owner >= kMaxComparedWorlds) fail("an entry names world " + std::to_string(owner) + ": the file is damaged");
+    if (owner >= kMaxRecordedWorlds) fail("an entry names world " + std::to_string(owner) + ": the file is damaged");
     if (owner >= pending_.size()) pending_.resize(owner + 1);
     pending_[owner].emplace_back(block_.begin() + static_cast<std::ptrdiff_t>(offset_),
                                  block_.begin() + static_cast<std::ptrdiff_t>(offset_ + length));

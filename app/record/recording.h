@@ -23,6 +23,9 @@
 namespace rbsim::app {
 
 inline constexpr std::uint32_t kRecordingVersion = 1;
+// The worlds a recording's entries may name: a compared run's (run/phase.h kMaxComparedWorlds,
+// which run/runner.cpp asserts fits); an entry naming another is damage.
+inline constexpr std::size_t kMaxRecordedWorlds = 8;
 
 struct RecordedPhase {
   std::string file;     // as the run named it, for messages

@@ -4,8 +4,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "rbsim/collision/broadphase/brute_force.h"
-#include "rbsim/collision/narrowphase/convex_convex.h"
+#include "rbsim/world/queries.h"
 #include "render/debug_shapes.h"
 #include "run/format.h"
 #include "run/to_glm.h"
@@ -22,17 +21,15 @@ constexpr float kGhostOpacity = 0.3f;
 // compares sweep and prune with.
 void compareWithBruteForce(const World& world, render::OverlayData& overlay) {
   const CollisionPipeline& collision = world.collision();
-  BruteForce brute;
-  for (std::size_t i = 0; i < collision.boxes().size(); ++i) brute.add(collision.boxes()[i], world.bodies()[i].isStatic());
   const auto start = std::chrono::steady_clock::now();
-  brute.update();
+  const std::vector<ProxyPair> brute = bruteForcePairs(world);
   const double bruteMs = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const StageStats& sap = world.stageStats(Stage::BroadPhase);
   const double sapMs = sap.runs > 0 ? 1e3 * sap.seconds / static_cast<double>(sap.runs) : 0.0;
-  const bool same = brute.pairs() == collision.candidatePairs();
+  const bool same = brute == collision.candidatePairs();
   overlay.rows.push_back({"bodies", format("%.0f", static_cast<double>(world.bodies().size()))});
   overlay.rows.push_back({"pairs: sweep and prune", format("%.0f (%.3f ms per step, mean)", static_cast<double>(collision.candidatePairs().size()), sapMs)});
-  overlay.rows.push_back({"pairs: brute force", format("%.0f (%.3f ms, this frame)", static_cast<double>(brute.pairs().size()), bruteMs)});
+  overlay.rows.push_back({"pairs: brute force", format("%.0f (%.3f ms, this frame)", static_cast<double>(brute.size()), bruteMs)});
   overlay.rows.push_back({"pair sets equal", same ? "yes" : "NO"});
 }
 
@@ -120,12 +117,11 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
   }
 
   // Distance from the selected body to the nearest other body (GJK), drawn as a segment.
-  const RigidBody& selected = world.bodies()[view.selected];
   double nearest = std::numeric_limits<double>::infinity();
-  ConvexDistance best;
+  BodyDistance best;
   for (std::size_t j = 0; j < world.bodies().size(); ++j) {
     if (j == view.selected) continue;
-    const ConvexDistance d = convexDistance(selected.worldVertices(), world.bodies()[j].worldVertices());
+    const BodyDistance d = bodyDistance(world, world.idAt(view.selected), world.idAt(j));
     if (d.distance < nearest) {
       nearest = d.distance;
       best = d;

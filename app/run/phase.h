@@ -7,7 +7,7 @@
 //   "compare": {"key": "world.solver", "values": ["pgs", "soft-step"], "labels": ["PGS", "soft step"]}
 //
 // Each value is applied to the scene document exactly as `--set KEY=VALUE` would be
-// (engine/scene/override.cpp), after the command line's own --set assignments, so a compared
+// (engine/src/scene/override.cpp), after the command line's own --set assignments, so a compared
 // value is checked by the same code as the key written in the file.
 #include <cstdint>
 #include <string>

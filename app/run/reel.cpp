@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "rbsim/io/input_error.h"
-#include "paths.h"
+#include "run/paths.h"
 #include "render/checked_file.h"
 #include "render/frame_sink.h"
 #include "render/png_sequence_writer.h"

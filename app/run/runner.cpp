@@ -21,6 +21,8 @@
 
 namespace rbsim::app {
 
+static_assert(kMaxComparedWorlds <= kMaxRecordedWorlds, "a recording must hold every compared world");
+
 namespace {
 
 using Clock = std::chrono::steady_clock;

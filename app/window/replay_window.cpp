@@ -14,7 +14,7 @@
 #include "render/png_sequence_writer.h"
 #include "run/compare_view.h"
 #include "run/frame_builder.h"
-#include "record/replay_timeline.h"
+#include "window/replay_timeline.h"
 #include "window/orbit_camera.h"
 #include "window/x11_window.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // `rbsim replay FILE --window` (issue 24): a recording in an X11 window with a timeline to scrub
 // back and forth, play and pause, and step frame by frame; the orbit camera of window mode. Any
-// frame is drawn again by restoring its kept state (record/replay_timeline.h), without simulating.
+// frame is drawn again by restoring its kept state (window/replay_timeline.h), without simulating.
 #include <string>
 #include <vector>
 

@@ -53,7 +53,7 @@ def main():
     scene = {
         "title": "Demo 5 (c): PGS against soft step at dt = 1/60 s",
         "compare": {"key": "world.solver", "values": ["pgs", "soft-step"], "labels": ["PGS", "soft step"]},
-        # Each solver's settings written out (engine/world/settings.h's defaults today), so that
+        # Each solver's settings written out (engine/include/rbsim/settings/settings.h's defaults today), so that
         # the caption stays true if the defaults move.
         "world": {"dt": TIME_STEP, "duration": DURATION, "sleep": False, "velocity_iterations": 10,
                   "position_iterations": 4, "substeps": 8, "contact_hertz": 120},

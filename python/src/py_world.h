@@ -1,7 +1,7 @@
 #pragma once
 // rbsim.World: a World with the Scene it came from (the view, the looks and the per-body inertia
 // names a renderer reads), built from a scene file or from keyword arguments that are blocks of
-// the scene format (engine/scene/scene_parts.h), so Python meets the same keys and messages as
+// the scene format (engine/include/rbsim/scene/scene_parts.h), so Python meets the same keys and messages as
 // the command line.
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Python values as the JSON of a scene file, so keyword arguments go through the scene loader's
-// checks and messages (engine/scene/scene_parts.h) instead of a second set of rules.
+// checks and messages (engine/include/rbsim/scene/scene_parts.h) instead of a second set of rules.
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 

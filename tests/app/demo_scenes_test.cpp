@@ -14,7 +14,7 @@
 #include "../sanitized_build.h"
 #include "demos/demo.h"
 #include "rbsim/io/input_error.h"
-#include "paths.h"
+#include "run/paths.h"
 #include "render/pane_layout.h"
 #include "run/compare_view.h"
 #include "run/phase.h"
@@ -110,7 +110,7 @@ TEST(ComparedPhase, EachWorldGetsItsOwnSolverAndIsOtherwiseTheSame) {
 }
 
 // What README says the phase shows, over its full 10 s at dt = 1/60 s: the soft-step column of 20
-// stands, sagging by about the 7 mm engine/settings/settings.h quotes for 8 substeps of 120 Hz
+// stands, sagging by about the 7 mm engine/include/rbsim/settings/settings.h quotes for 8 substeps of 120 Hz
 // contacts, while the PGS column (10 sweeps) buckles and falls. A solver change that alters
 // either outcome fails here, so the demo's caption and README get revisited with it.
 TEST(ComparedPhase, TheSoftStepColumnStandsAndThePgsColumnFalls) {

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "paths.h"
+#include "run/paths.h"
 #include "rbsim/io/input_error.h"
 #include "record/recording.h"
 #include "run/phase.h"

@@ -1,4 +1,4 @@
-// The replay window's timeline (app/record/replay_timeline.h): any frame of a recording, shown in
+// The replay window's timeline (app/window/replay_timeline.h): any frame of a recording, shown in
 // any order, holds exactly the worlds a run stepped to that frame holds, and the plots the run
 // drew then; a recording larger than the timeline may keep is refused before the window opens.
 #include <cstdint>
@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "paths.h"
+#include "run/paths.h"
 #include "rbsim/io/input_error.h"
 #include "record/recording.h"
-#include "record/replay_timeline.h"
+#include "window/replay_timeline.h"
 #include "run/phase.h"
 #include "run/plot_history.h"
 #include "run/runner.h"

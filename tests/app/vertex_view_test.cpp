@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "paths.h"
+#include "run/paths.h"
 #include "render/offscreen_renderer.h"
 #include "render/projection.h"
 #include "render/scene_geometry.h"

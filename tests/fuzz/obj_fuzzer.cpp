@@ -6,9 +6,9 @@
 #include <string>
 
 #include "rbsim/geometry/signed_distance_grid.h"
-#include "rbsim/geometry/surface_samples.h"
+#include "geometry/surface_samples.h"
 #include "rbsim/io/input_error.h"
-#include "rbsim/io/obj_loader.h"
+#include "io/obj_loader.h"
 #include "rbsim/mass/mass_model.h"
 #include "rbsim/integrate/simulation_error.h"
 #include "rbsim/world/world.h"

@@ -1,4 +1,4 @@
-// Joints in the soft step (engine/dynamics/soft_step_joints.cpp): compound pendulums against
+// Joints in the soft step (engine/src/dynamics/soft_step_joints.cpp): compound pendulums against
 // their closed-form periods, the energy of a long swing, a hanging chain, the hinge's axis,
 // motor and limits, and a door pushed at its handle (seed 004: torque about the hinge).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The soft-step solver (engine/dynamics/soft_step_solver.h) on issue 18's scenes, at the time
+// The soft-step solver (engine/include/rbsim/dynamics/soft_step_solver.h) on issue 18's scenes, at the time
 // step users pick (1/60 s) and at 1/240 s, with its defaults: tall stacks and a pyramid stand,
 // mass ratios stand, a thin plate rests, bounces keep e^2 of their height and never gain energy
 // in the contact, free flight is untouched, and the solved impulses meet seed 001's conditions to

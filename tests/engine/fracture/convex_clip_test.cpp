@@ -1,11 +1,11 @@
-// Cutting convex meshes (engine/fracture/convex_clip.h, pieces.h): every piece is a closed,
+// Cutting convex meshes (engine/src/fracture/convex_clip.h, pieces.h): every piece is a closed,
 // outward-wound solid, and the pieces fill the body exactly: their volumes, first moments and
 // (by parallel axes) inertias sum to the body's.
-#include "rbsim/fracture/convex_clip.h"
+#include "fracture/convex_clip.h"
 
 #include <gtest/gtest.h>
 
-#include "rbsim/fracture/pieces.h"
+#include "fracture/pieces.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/mass/mass_properties.h"
 #include "rbsim/math/uniform_random.h"

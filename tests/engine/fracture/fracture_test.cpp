@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/fracture/pieces.h"
+#include "fracture/pieces.h"
 #include "rbsim/mass/mass_model.h"
 #include "rbsim/math/rotation.h"
 

@@ -1,6 +1,6 @@
 // geometry/csg: union min(a, b), intersection max(a, b) and difference max(a, -b) of the operands'
 // signed distances, operands placed by a rigid motion, and the bounds the grids are laid over.
-#include "rbsim/geometry/csg.h"
+#include "geometry/csg.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // geometry/distance: seed 004's point-point, point-edge and point-face distances and
 // segment-segment closest points, on hand-made cases and against independent references.
-#include "rbsim/geometry/distance.h"
+#include "geometry/distance.h"
 
 #include <cmath>
 #include <random>

@@ -1,6 +1,6 @@
 // geometry/implicit_primitives: the torus's, capsule's and cylinder's exact signed distances at
 // points whose nearest surface point is known by hand, and |grad phi| = 1 away from the medial axis.
-#include "rbsim/geometry/implicit_primitives.h"
+#include "geometry/implicit_primitives.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // geometry/implicit_surface: exact signed distances of the sphere and the box, the ellipsoid's
 // first-order distance against the true distance, and every gradient against finite differences.
-#include "rbsim/geometry/implicit_surface.h"
+#include "geometry/implicit_surface.h"
 
 #include <gtest/gtest.h>
 

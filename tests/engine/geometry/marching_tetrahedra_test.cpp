@@ -1,7 +1,7 @@
 // geometry/marching_tetrahedra: the mesh of a sampled function is closed, consistently wound
 // outwards and free of zero-area triangles, including when the surface runs through grid points
 // (a box's faces on grid planes), and it encloses the solid's volume to the grid's accuracy.
-#include "rbsim/geometry/marching_tetrahedra.h"
+#include "geometry/marching_tetrahedra.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <functional>
 #include <stdexcept>
 
-#include "rbsim/geometry/implicit_primitives.h"
-#include "rbsim/geometry/implicit_surface.h"
+#include "geometry/implicit_primitives.h"
+#include "geometry/implicit_surface.h"
 #include "rbsim/mass/mass_properties.h"
 
 namespace rbsim {

@@ -1,6 +1,6 @@
 // geometry/polygon_triangulation: ear clipping of OBJ faces keeps area and winding, and refuses
 // polygons that have no area or cross themselves instead of inventing triangles.
-#include "rbsim/geometry/polygon_triangulation.h"
+#include "geometry/polygon_triangulation.h"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "rbsim/geometry/surface_samples.h"
+#include "geometry/surface_samples.h"
 
 namespace rbsim {
 namespace {

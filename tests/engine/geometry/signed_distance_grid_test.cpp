@@ -11,9 +11,9 @@
 #include <random>
 #include <stdexcept>
 
-#include "rbsim/geometry/implicit_surface.h"
+#include "geometry/implicit_surface.h"
 #include "rbsim/geometry/shapes.h"
-#include "rbsim/geometry/surface_samples.h"
+#include "geometry/surface_samples.h"
 
 namespace rbsim {
 namespace {

@@ -1,6 +1,6 @@
 // geometry/triangle_bvh: closest points on a triangle against brute-force minimisation, and the
 // hierarchy's nearest, within-radius and segment answers against testing every triangle.
-#include "rbsim/geometry/triangle_bvh.h"
+#include "geometry/triangle_bvh.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <random>
 #include <set>
 
-#include "rbsim/geometry/distance.h"
+#include "geometry/distance.h"
 #include "rbsim/geometry/shapes.h"
 
 namespace rbsim {

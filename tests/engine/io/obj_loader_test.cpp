@@ -1,5 +1,5 @@
 // io/obj_loader: the hand-written OBJ files in tests/engine/data and the loader's input errors.
-#include "rbsim/io/obj_loader.h"
+#include "io/obj_loader.h"
 
 #include <filesystem>
 #include <fstream>

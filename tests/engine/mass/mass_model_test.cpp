@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "rbsim/io/input_error.h"
-#include "rbsim/io/obj_loader.h"
+#include "io/obj_loader.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/io/obj_loader.h"
+#include "io/obj_loader.h"
 #include "rbsim/math/rotation.h"
 #include "test_util.h"
 

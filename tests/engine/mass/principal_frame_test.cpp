@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/io/obj_loader.h"
+#include "io/obj_loader.h"
 #include "rbsim/math/rotation.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/world.h"

@@ -1,4 +1,4 @@
-// The "joints" array of a scene (engine/scene/joint_parser.cpp): read into JointDef, overridden
+// The "joints" array of a scene (engine/src/scene/joint_parser.cpp): read into JointDef, overridden
 // by name with --set, built into the World, and refused with the field named.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Every field of Settings (engine/settings/settings.h) is a "world" key of a scene and of
+// Every field of Settings (engine/include/rbsim/settings/settings.h) is a "world" key of a scene and of
 // `--set world.KEY=VALUE`, reaches the World, and a value out of range is refused by the one check
 // (checkSettings) with one message: "world.KEY: expected ...", from a file as from C++.
 #include <cstdio>

@@ -1,7 +1,7 @@
 // shapes/implicit_shape: a CSG cup's mesh, meshed by marching tetrahedra, converges to the
 // analytic volume pi (R^2 H - r^2 h) and centroid as the grid is refined; the body's grid holds
 // the exact CSG values (min / max of the operands) at its points; budgets and empty solids fail.
-#include "rbsim/shapes/implicit_shape.h"
+#include "shapes/implicit_shape.h"
 
 #include <gtest/gtest.h>
 

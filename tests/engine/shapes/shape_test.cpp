@@ -1,4 +1,4 @@
-// Shapes (engine/shapes/shape.h): support points against their definitions, hill climbing against
+// Shapes (engine/include/rbsim/shapes/shape.h): support points against their definitions, hill climbing against
 // a full scan, exact bounds, and the closed-form mass properties against the polyhedral integrals
 // of fine meshes of the same solids.
 #include <cmath>

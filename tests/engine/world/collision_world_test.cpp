@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "test_util.h"
-#include "rbsim/world/continuous_collision.h"
+#include "world/continuous_collision.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {

@@ -1,4 +1,4 @@
-// The World's side of joints (engine/world/joints.cpp): refused under PGS, no collision between
+// The World's side of joints (engine/src/world/joints.cpp): refused under PGS, no collision between
 // jointed bodies unless asked, one sleep island, and joints following destroyed bodies.
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include "rbsim/geometry/shapes.h"
 #include "rbsim/geometry/signed_distance_grid.h"
-#include "rbsim/geometry/surface_samples.h"
+#include "geometry/surface_samples.h"
 #include "rbsim/mass/mass_model.h"
 #include "test_util.h"
 #include "rbsim/world/world.h"

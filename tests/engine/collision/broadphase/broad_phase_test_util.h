@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/collision/broadphase/brute_force.h"
-#include "rbsim/collision/broadphase/sweep_and_prune.h"
+#include "collision/broadphase/brute_force.h"
+#include "collision/broadphase/sweep_and_prune.h"
 
 namespace rbsim {
 inline void PrintTo(const ProxyPair& p, std::ostream* os) { *os << "(" << p.a << "," << p.b << ")"; }

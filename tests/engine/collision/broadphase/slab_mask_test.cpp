@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/collision/broadphase/slab_mask.h"
+#include "collision/broadphase/slab_mask.h"
 
 namespace rbsim {
 namespace {

@@ -1,7 +1,7 @@
 // collision/narrowphase/box_box: SAT with face preference and clipped manifolds: separated,
 // penetrating and resting boxes with known points, edge-on-edge crossing boxes, speculative
 // margins, box recognition, and random pairs checked against the geometry.
-#include "rbsim/collision/narrowphase/box_box.h"
+#include "collision/narrowphase/box_box.h"
 
 #include <cmath>
 #include <random>

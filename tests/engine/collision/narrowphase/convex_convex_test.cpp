@@ -1,15 +1,15 @@
 // collision/narrowphase/convex_convex: the World's pair function. Known boxes and a tetrahedron
 // through GJK + EPA + feature clipping, agreement with the box SAT path, speculative margins,
 // and random pairs checked against the geometry.
-#include "rbsim/collision/narrowphase/convex_convex.h"
+#include "collision/narrowphase/convex_convex.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "rbsim/collision/narrowphase/epa.h"
-#include "rbsim/collision/narrowphase/gjk.h"
+#include "collision/narrowphase/epa.h"
+#include "collision/narrowphase/gjk.h"
 #include "narrowphase_test_util.h"
 #include "test_util.h"
 

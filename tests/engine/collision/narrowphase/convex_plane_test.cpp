@@ -1,6 +1,6 @@
 // collision/narrowphase/convex_plane: a box on the ground flat (4 points), tilted onto an edge (2)
 // and onto a corner (1), speculative contacts, a tilted plane, and reduction of many points.
-#include "rbsim/collision/narrowphase/convex_plane.h"
+#include "collision/narrowphase/convex_plane.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // collision/narrowphase/epa: penetration normal and depth from GJK's simplex: boxes with known
 // answers, start simplices of 1 to 3 points, random boxes against the exact SAT depth, and random
 // point sets against the support function (no direction separates with less translation).
-#include "rbsim/collision/narrowphase/epa.h"
+#include "collision/narrowphase/epa.h"
 
 #include <cmath>
 #include <random>

@@ -1,13 +1,13 @@
 // collision/narrowphase/gjk: distances and overlap of convex vertex sets, on boxes with known
 // answers, degenerate sets, and random sets against a brute-force feature-pair minimum.
-#include "rbsim/collision/narrowphase/gjk.h"
+#include "collision/narrowphase/gjk.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "rbsim/geometry/distance.h"
+#include "geometry/distance.h"
 #include "narrowphase_test_util.h"
 #include "test_util.h"
 

@@ -1,6 +1,6 @@
 // collision/narrowphase/manifold_reduction: deepest, farthest, largest triangle, largest added
 // area; duplicates and collinear extras dropped.
-#include "rbsim/collision/narrowphase/manifold_reduction.h"
+#include "collision/narrowphase/manifold_reduction.h"
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "rbsim/collision/narrowphase/box_box.h"
+#include "collision/narrowphase/box_box.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim::test {

@@ -1,5 +1,5 @@
 // collision/narrowphase/polygon_clip: Sutherland-Hodgman half-space clipping and the planar hull.
-#include "rbsim/collision/narrowphase/polygon_clip.h"
+#include "collision/narrowphase/polygon_clip.h"
 
 #include <gtest/gtest.h>
 

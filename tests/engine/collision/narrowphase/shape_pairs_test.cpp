@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/collision/narrowphase/shape_pairs.h"
+#include "collision/narrowphase/shape_pairs.h"
 
 #include <random>
 
-#include "rbsim/collision/narrowphase/convex_convex.h"
+#include "collision/narrowphase/convex_convex.h"
 #include "rbsim/geometry/shapes.h"
 #include "rbsim/math/rotation.h"
 

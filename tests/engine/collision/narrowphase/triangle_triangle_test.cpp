@@ -1,13 +1,13 @@
 // collision/narrowphase/triangle_triangle: Moller's test (seed 004 "Triangle intersection") on
 // hand-made cases, and against an independent edge-through-triangle check on random triangles.
-#include "rbsim/collision/narrowphase/triangle_triangle.h"
+#include "collision/narrowphase/triangle_triangle.h"
 
 #include <array>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "rbsim/geometry/distance.h"
+#include "geometry/distance.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -1,0 +1,59 @@
+#pragma once
+// The narrow phase for a pair of convex vertex sets (each standing for its convex hull, as in
+// GJK): GJK separation, EPA penetration normal and depth, then a manifold from the two support
+// features (the vertices of A within a tolerance of A's extreme along n, those of B within it of
+// B's extreme along -n) clipped against each other in the contact plane (Sutherland-Hodgman), the
+// points midway between the two surfaces, reduced to at most 4. Box pairs may go to the SAT of
+// box_box.h instead. Also the plain GJK distance, for demos and continuous collision detection.
+#include <vector>
+
+#include "rbsim/collision/contact.h"
+#include "collision/narrowphase/box_box.h"
+#include "collision/narrowphase/gjk.h"
+#include "rbsim/math/types.h"
+
+namespace rbsim {
+
+// Vertices this close [m] to their set's extreme along the normal belong to the support feature
+// (face, edge or vertex). It absorbs EPA's normal error and decides how tilted a resting face
+// may be and still give a face contact; the depths are computed from the geometry, not from it.
+inline constexpr double kSupportFeatureTolerance = 1e-3;
+
+struct ConvexContact {
+  ContactManifold manifold;  // normal from A to B; count 0 when apart by more than the margin
+  bool overlap = false;      // the hulls touch or intersect
+  // [m] when apart, GJK's distance; for box pairs (usedBoxSat) the SAT separation, the largest
+  // gap along the 15 axes: exact when the closest features are a face or two edges, a lower
+  // bound when they are vertices. 0 when overlapping.
+  double distance = 0.0;
+  double depth = 0.0;        // [m] penetration depth (EPA, or SAT for boxes) when overlapping
+  // Closest points when apart (GJK only), deepest points (pointA - pointB = depth n) when
+  // overlapping [m].
+  Vec3 pointA = Vec3::Zero();
+  Vec3 pointB = Vec3::Zero();
+  bool usedBoxSat = false;  // both boxes were given, so collideBoxes made the manifold
+};
+
+// `margin` [m] >= 0: pairs apart by up to this get speculative contacts (depth < 0). When both
+// boxes are given (their poses must match the vertex sets) the SAT of collideBoxes is used.
+ConvexContact collideConvex(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double margin = 0.0,
+                            const OrientedBox* boxA = nullptr, const OrientedBox* boxB = nullptr,
+                            double featureTolerance = kSupportFeatureTolerance);
+
+// The same with GJK and EPA on the sets' own support mappings (a hill climb over a large hull's
+// vertex graph instead of a scan); a and b are still the vertex sets, for the feature manifold.
+ConvexContact collideConvex(const SupportMap& supportA, const std::vector<Vec3>& a, const SupportMap& supportB,
+                            const std::vector<Vec3>& b, double margin = 0.0,
+                            double featureTolerance = kSupportFeatureTolerance);
+
+struct ConvexDistance {
+  bool overlap = false;
+  double distance = 0.0;       // [m], 0 when overlapping
+  Vec3 pointA = Vec3::Zero();  // closest point of hull A [m]
+  Vec3 pointB = Vec3::Zero();  // closest point of hull B [m]
+};
+
+// The distance between the convex hulls of a and b and their closest points (GJK).
+ConvexDistance convexDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
+
+}  // namespace rbsim

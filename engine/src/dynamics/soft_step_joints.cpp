@@ -1,0 +1,231 @@
+// Joints in the soft step (soft_step_solver.h): a ball joint's point constraint and a hinge's
+// two angular rows, motor and limits, in 3D after Box2D v3's src/revolute_joint.c (warm start,
+// then per sweep motor, limits, point) and src/solver.c (joint softness, soft with bias and
+// rigid in the relax). Each joint is solved as one block: the point's 3 x 3 effective mass and
+// the axis's 2 x 2 are inverted exactly, so a single joint is satisfied in one sweep.
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/contact_key.h"
+#include "rbsim/dynamics/soft_step_solver.h"
+
+namespace rbsim {
+
+namespace {
+
+// The stiffness and damping ratio of the joints' soft constraints in the biased solve, capped
+// like the contacts at a quarter of the substep rate (Box2D v3's solver.c). Box2D v3.0's
+// b2DefaultWorldDef has 60 Hz and 2; stiffer and less damped, a pendulum keeps more of its
+// energy (tests/engine/dynamics/joint_test.cpp, 1e4 swings at dt = 1/60 s: 60 Hz, 2: 75 % of the
+// swing energy lost; 120 Hz, 0.5: 16 %; 120 Hz, 0: 8 %) and a chain of ten links holds its
+// joints within 1 mm (2 mm at 60 Hz). 0.5 keeps some damping against ringing in long chains.
+constexpr double kJointHertz = 120.0;                // [Hz]
+constexpr double kJointDampingRatio = 0.5;           // [1]
+constexpr double kMaxJointHertzPerSubstepRate = 0.25;  // [1]
+
+Mat3 skew(const Vec3& r) {
+  Mat3 m;
+  m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  return m;
+}
+
+}  // namespace
+
+void SoftStepSolver::slotJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints,
+                                const Settings& settings, bool addGravity) {
+  for (const Joint& joint : joints) {
+    const std::size_t a = joint.def.bodyA, b = joint.def.bodyB;
+    const bool awake = bodies[a].awake() || (b != kWorldAnchor && bodies[b].awake());
+    if (!awake) continue;
+    slot(bodies, a, settings, addGravity);
+    if (b != kWorldAnchor) slot(bodies, b, settings, addGravity);
+  }
+}
+
+void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints,
+                                   const Settings& settings) {
+  const double h = settings.timeStep / settings.substeps;
+  jointSoftness_ = makeSoftness(std::min(kJointHertz, kMaxJointHertzPerSubstepRate / h), kJointDampingRatio, h);
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    Joint& joint = joints[i];
+    const std::size_t a = joint.def.bodyA, b = joint.def.bodyB;
+    JointConstraint c;
+    c.joint = i;
+    c.data = &joint;
+    c.moving = slotOfBody_[a];
+    c.base = b == kWorldAnchor ? 0 : slotOfBody_[b];
+    // Body A is dynamic (scene/joint_parser.cpp, World::addJoint), and the World wakes both
+    // sides of a joint together: without a slot, A is asleep with its base.
+    if (c.moving == 0) continue;
+    if (sims_[c.moving].inverseMass == 0.0) continue;  // kinematic on both sides: nothing to solve
+    c.localAnchorMoving = joint.localAnchorMoving;
+    c.localAxisMoving = joint.localAxisMoving;
+    // A base without a slot (the world, or a static body) never moves: its anchor and axis are
+    // taken into world frame once, which is the ground slot's frame.
+    c.localAnchorBase = joint.localAnchorBase;
+    c.localAxisBase = joint.localAxisBase;
+    c.baseOrientation = Quat::Identity();
+    if (c.base == 0 && b != kWorldAnchor) {
+      c.localAnchorBase = bodies[b].position() + bodies[b].rotation() * joint.localAnchorBase;
+      c.localAxisBase = bodies[b].rotation() * joint.localAxisBase;
+      c.baseOrientation = bodies[b].orientation();
+    }
+    if (!settings.warmStarting) {
+      joint.linearImpulse.setZero();
+      joint.angularImpulse.setZero();
+      joint.motorImpulse = joint.lowerImpulse = joint.upperImpulse = 0.0;
+    }
+    if (!joint.def.motor) joint.motorImpulse = 0.0;
+    if (!joint.def.limits) joint.lowerImpulse = joint.upperImpulse = 0.0;
+    joints_.push_back(c);
+  }
+}
+
+void SoftStepSolver::warmStartJoints(std::size_t island) {
+  islands_.forJoints(island, [&](std::size_t index) {
+    const JointConstraint& c = joints_[index];
+    const Joint& joint = *c.data;
+    SolverState& A = states_[c.base];
+    SolverState& B = states_[c.moving];
+    const Vec3 rA = A.orientation * c.localAnchorBase;
+    const Vec3 rB = B.orientation * c.localAnchorMoving;
+    const Vec3 axis = A.orientation * c.localAxisBase;
+    const Vec3 angular = joint.angularImpulse + (joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse) * axis;
+    if (c.base != 0) {
+      A.linearVelocity -= sims_[c.base].inverseMass * joint.linearImpulse;
+      A.angularVelocity -= sims_[c.base].inverseInertiaNow * (rA.cross(joint.linearImpulse) + angular);
+    }
+    if (c.moving != 0) {
+      B.linearVelocity += sims_[c.moving].inverseMass * joint.linearImpulse;
+      B.angularVelocity += sims_[c.moving].inverseInertiaNow * (rB.cross(joint.linearImpulse) + angular);
+    }
+  });
+}
+
+void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
+  const double inverseH = 1.0 / h;
+  islands_.forJoints(island, [&](std::size_t index) {
+    const JointConstraint& c = joints_[index];
+    Joint& joint = *c.data;
+    const JointDef& def = joint.def;
+    SolverState& A = states_[c.base];
+    SolverState& B = states_[c.moving];
+    const double mA = sims_[c.base].inverseMass, mB = sims_[c.moving].inverseMass;
+    const Mat3& iA = sims_[c.base].inverseInertiaNow;
+    const Mat3& iB = sims_[c.moving].inverseInertiaNow;
+    Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
+    // The ground slot's orientation is the identity and its position zero, so its "local"
+    // anchor and axis are world ones.
+    const Vec3 xA = sims_[c.base].position0 + A.deltaPosition, xB = sims_[c.moving].position0 + B.deltaPosition;
+    const Vec3 rA = A.orientation * c.localAnchorBase, rB = B.orientation * c.localAnchorMoving;
+    const Softness soft = useBias ? jointSoftness_ : Softness{};
+
+    if (def.type == JointDef::Type::Hinge) {
+      const Vec3 axis = (A.orientation * c.localAxisBase).normalized();
+      const double axialInverse = axis.dot((iA + iB) * axis);
+      const double axialMass = axialInverse > 0.0 ? 1.0 / axialInverse : 0.0;
+      const auto applyAxial = [&](double impulse) {
+        wA -= impulse * (iA * axis);
+        wB += impulse * (iB * axis);
+      };
+      if (def.motor && axialMass > 0.0) {  // revolute_joint.c: Cdot = wB - wA - speed, |lambda| <= h tau_max
+        const double cdot = axis.dot(wB - wA) - def.motorSpeed;
+        const double old = joint.motorImpulse;
+        const double maxImpulse = h * def.maxMotorTorque;
+        joint.motorImpulse = std::clamp(old - axialMass * cdot, -maxImpulse, maxImpulse);
+        applyAxial(joint.motorImpulse - old);
+      }
+      if (def.limits && axialMass > 0.0) {
+        const Quat baseNow = c.base == 0 ? c.baseOrientation : A.orientation;
+        const double angle = hingeAngle(joint, baseNow, B.orientation);
+        // Lower: C = angle - lower >= 0; upper: C = upper - angle >= 0, signs flipped so that
+        // both impulses are >= 0. A limit not reached is speculative (the gap may close within
+        // the substep, no further); a reached one is soft with bias, rigid in the relax.
+        for (int side = 0; side < 2; ++side) {
+          const double sign = side == 0 ? 1.0 : -1.0;
+          const double C = side == 0 ? angle - def.lowerAngle : def.upperAngle - angle;
+          double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+          if (C > 0.0) {
+            bias = C * inverseH;
+          } else if (useBias) {
+            bias = soft.biasRate * C;
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+          }
+          double& accumulated = side == 0 ? joint.lowerImpulse : joint.upperImpulse;
+          const double cdot = sign * axis.dot(wB - wA);
+          const double old = accumulated;
+          accumulated = std::max(old - massScale * axialMass * (cdot + bias) - impulseScale * old, 0.0);
+          applyAxial(sign * (accumulated - old));
+        }
+      }
+    }
+
+    if (def.type == JointDef::Type::Ball) {
+      // The point's three rows alone, written out (the block below, for R = 3, with its zero
+      // blocks left out): K = (mA + mB) 1 + [rA] iA [rA]^T + [rB] iB [rB]^T,
+      // Cdot = (vB + wB x rB) - (vA + wA x rA); the impulse acts +lambda at B's anchor and
+      // -lambda at A's. A third of the block's work on Box3D's 19701-joint grid.
+      const Mat3 sA = skew(rA), sB = skew(rB);
+      const Mat3 K = (mA + mB) * Mat3::Identity() + sA * iA * sA.transpose() + sB * iB * sB.transpose();
+      const Vec3 cdot = (vB + wB.cross(rB)) - (vA + wA.cross(rA));
+      const Vec3 error = (xB + rB) - (xA + rA);
+      const Vec3 lambda = -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error) - soft.impulseScale * joint.linearImpulse;
+      joint.linearImpulse += lambda;
+      storeVelocities(c.base, vA - mA * lambda, wA - iA * rA.cross(lambda));
+      storeVelocities(c.moving, vB + mB * lambda, wB + iB * rB.cross(lambda));
+      return;
+    }
+
+    // A hinge: the point (rows 0-2) and the axes held aligned (rows 3-4), as one block:
+    //   C = [(xB + rB) - (xA + rA);  t_k . (a_base x a_moving)],  Cdot = J_A u_A + J_B u_B,
+    //   J_A = [-1  [rA]; 0  -t_k^T],  J_B = [1  -[rB]; 0  t_k^T],  K = J M^-1 J^T
+    // for the two unit t_k perpendicular to the base's axis (seed 000's K of a contact point,
+    // extended by the angular rows), solved exactly, so one joint alone needs one sweep. Fixed
+    // sizes: no allocation.
+    Eigen::Matrix<double, 5, 6> jA = Eigen::Matrix<double, 5, 6>::Zero(), jB = Eigen::Matrix<double, 5, 6>::Zero();
+    Eigen::Matrix<double, 5, 1> error, accumulated;
+    jA.block<3, 3>(0, 0) = -Mat3::Identity();
+    jA.block<3, 3>(0, 3) = skew(rA);
+    jB.block<3, 3>(0, 0) = Mat3::Identity();
+    jB.block<3, 3>(0, 3) = -skew(rB);
+    error.head<3>() = (xB + rB) - (xA + rA);
+    accumulated.head<3>() = joint.linearImpulse;
+    Vec3 tangents[2];
+    const Vec3 axis = (A.orientation * c.localAxisBase).normalized();
+    tangentBasis(axis, tangents[0], tangents[1]);
+    const Vec3 misalignment = axis.cross((B.orientation * c.localAxisMoving).normalized());
+    for (int k = 0; k < 2; ++k) {
+      jA.block<1, 3>(3 + k, 3) = -tangents[k].transpose();
+      jB.block<1, 3>(3 + k, 3) = tangents[k].transpose();
+      error(3 + k) = tangents[k].dot(misalignment);
+      accumulated(3 + k) = tangents[k].dot(joint.angularImpulse);
+    }
+    Eigen::Matrix<double, 6, 6> inverseMassA = Eigen::Matrix<double, 6, 6>::Zero(), inverseMassB = inverseMassA;
+    inverseMassA.block<3, 3>(0, 0) = mA * Mat3::Identity();
+    inverseMassA.block<3, 3>(3, 3) = iA;
+    inverseMassB.block<3, 3>(0, 0) = mB * Mat3::Identity();
+    inverseMassB.block<3, 3>(3, 3) = iB;
+    Eigen::Matrix<double, 6, 1> uA, uB;
+    uA << vA, wA;
+    uB << vB, wB;
+    const Eigen::Matrix<double, 5, 5> K = jA * inverseMassA * jA.transpose() + jB * inverseMassB * jB.transpose();
+    const Eigen::Matrix<double, 5, 1> cdot = jA * uA + jB * uB;
+    const Eigen::Matrix<double, 5, 1> impulse =
+        -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error) - soft.impulseScale * accumulated;
+    uA += inverseMassA * jA.transpose() * impulse;
+    uB += inverseMassB * jB.transpose() * impulse;
+    vA = uA.head<3>();
+    wA = uA.tail<3>();
+    vB = uB.head<3>();
+    wB = uB.tail<3>();
+    joint.linearImpulse += impulse.head<3>();
+    const Eigen::Vector2d total = accumulated.segment<2>(3) + impulse.segment<2>(3);
+    joint.angularImpulse = total.x() * tangents[0] + total.y() * tangents[1];
+
+    storeVelocities(c.base, vA, wA);
+    storeVelocities(c.moving, vB, wB);
+  });
+}
+
+}  // namespace rbsim

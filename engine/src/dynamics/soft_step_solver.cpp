@@ -1,0 +1,407 @@
+#include "rbsim/dynamics/soft_step_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/contact_key.h"
+#include "rbsim/integrate/integrator.h"
+
+namespace rbsim {
+
+namespace {
+
+// The stiffness of the contact spring is capped at this fraction of the substep rate: an implicit
+// spring much stiffer than the substep can resolve only adds error (Box2D v3's solver.c caps
+// contactHertz at a quarter of the substep rate).
+constexpr double kMaxHertzPerSubstepRate = 0.25;  // [1]
+
+// A patch whose points slip slower than this at the end of a step sticks in the next one (static
+// friction, mu_s); faster, it slides (mu_k). The scale of Box2D's b2_linearSleepTolerance: a
+// contact that slow is at rest for every purpose a user sees.
+constexpr double kStickingSlipSpeed = 0.01;  // [m/s]
+
+}  // namespace
+
+int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings,
+                         bool addGravity) {
+  const RigidBody& b = bodies[body];
+  if (b.isStatic()) return 0;
+  int& s = slotOfBody_[body];
+  if (s != 0) return s;
+  BodySim sim;
+  sim.body = body;
+  sim.position0 = b.position();
+  sim.kinematic = b.isKinematic();
+  if (!sim.kinematic) {  // a kinematic body keeps infinite mass and its prescribed velocities
+    sim.inverseMass = 1.0 / b.mass();
+    sim.inverseInertiaNow = b.inverseInertiaWorld();
+    sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
+    sim.torque = b.torque() + b.rotation() * b.bodyTorque();  // the substeps hold both over the step
+  }
+  sims_.push_back(sim);
+  states_.push_back(SolverState{b.velocity(), b.angularVelocity(), Vec3::Zero(), b.orientation()});
+  s = static_cast<int>(sims_.size() - 1);
+  advanced_[body] = 1;
+  advancedList_.push_back(body);
+  return s;
+}
+
+const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {
+  const auto it = std::lower_bound(cache_.begin(), cache_.end(), key,
+                                   [](const Cached& c, std::uint64_t k) { return c.key < k; });
+  return it != cache_.end() && it->key == key ? &*it : nullptr;
+}
+
+void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
+                             const Material& material, const Settings& settings) {
+  const bool plane = contact.kind == Contact::Kind::PlaneBody;
+  const ContactManifold& m = contact.manifold;
+  Constraint c;
+  c.a = plane ? 0 : slotOfBody_[contact.a];
+  c.b = slotOfBody_[contact.b];
+  c.normal = m.normal;
+  tangentBasis(c.normal, c.tangent1, c.tangent2);
+  c.restitution = material.restitution;
+  c.softness = softness_;
+  c.firstPoint = points_.size();
+  c.pointCount = static_cast<std::size_t>(m.count);
+  c.contact = index;
+  c.key = pairKey(contact);
+  const Cached* old = settings.warmStarting ? cached(c.key) : nullptr;
+  // A new manifold first assumes sticking (seed 000); a known one keeps the regime its last step
+  // ended in: sliding when friction reached the cone, sticking again when it stayed inside.
+  c.sticking = old == nullptr || old->sticking;
+  c.friction = c.sticking ? material.staticFriction : material.kineticFriction;
+  c.staticFriction = material.staticFriction;
+  c.kineticFriction = material.kineticFriction;
+
+  const Vec3 xA = sims_[c.a].position0, xB = sims_[c.b].position0;
+  const BodySim& simA = sims_[c.a];
+  const BodySim& simB = sims_[c.b];
+  const SolverState& stateA = states_[c.a];
+  const SolverState& stateB = states_[c.b];
+  const Vec3& n = c.normal;
+  const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
+  // The normal acceleration the applied forces give the pair, for the speed at which the
+  // surfaces meet within the step (restitution).
+  const double normalAcceleration = n.dot(simB.acceleration - simA.acceleration);
+  for (int i = 0; i < m.count; ++i) {
+    Point p;
+    PointFrame f;
+    PointReport r;
+    const Vec3& position = m.points[i].position;
+    const double separation = -m.points[i].depth;
+    // A round side's surface point lies r - depth / 2 from its core along the normal
+    // (collision/narrowphase/shape_pairs.h puts the point midway between the surfaces).
+    const auto roundOffset = [&](int slot) {
+      if (slot == 0) return 0.0;
+      const Shape& shape = bodies[sims_[slot].body].shape();
+      return shape.isRound() ? shape.radius + 0.5 * separation : 0.0;
+    };
+    f.roundA = roundOffset(c.a) * n;
+    f.roundB = -roundOffset(c.b) * n;
+    // The ground's slot never moves, so its anchors are their own body-frame coordinates.
+    f.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - f.roundA - xA));
+    f.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - f.roundB - xB));
+    f.baseSeparation = separation - n.dot((position - xB) - (position - xA));
+    updateJacobians(c, f, p);
+    r.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + p.crossB.dot(stateB.angularVelocity) -
+                         p.crossA.dot(stateA.angularVelocity);
+    // Energy of the normal motion from the step's start to the touch: u^2 = u0^2 - 2 a_n s0.
+    if (r.relativeVelocity < 0.0) {
+      const double squared = r.relativeVelocity * r.relativeVelocity - 2.0 * normalAcceleration * std::max(separation, 0.0);
+      r.impactSpeed = std::sqrt(std::max(squared, 0.0));
+    }
+    if (old != nullptr) {
+      for (int j = 0; j < old->count; ++j) {
+        if ((old->localPoints[j] - f.localB).norm() <= settings.warmStartDistance) {
+          p.normalImpulse = old->normalImpulses[j];
+          p.tangentImpulse = {tangents[0].dot(old->frictionImpulses[j]), tangents[1].dot(old->frictionImpulses[j])};
+          r.sliding = old->sliding[j];
+          break;
+        }
+      }
+    }
+    points_.push_back(p);
+    frames_.push_back(f);
+    reports_.push_back(r);
+  }
+  constraints_.push_back(c);
+}
+
+void SoftStepSolver::updateJacobians(const Constraint& c, const PointFrame& f, Point& p) const {
+  // Both bodies' impulses act at one world point, midway between where each body now carries its
+  // anchor, with the inverse inertia of the current orientation: then every impulse changes
+  // x x P + L of the pair by (p - p) x j = 0, and angular momentum is exchanged exactly (fixed
+  // anchors from the step's start, as Box2D keeps them, would lose (dx_B - dx_A) x j).
+  const SolverState& A = states_[c.a];
+  const SolverState& B = states_[c.b];
+  const Vec3 xA = sims_[c.a].position0 + A.deltaPosition, xB = sims_[c.b].position0 + B.deltaPosition;
+  const Vec3 onA = A.orientation * f.localA + f.roundA, onB = B.orientation * f.localB + f.roundB;
+  // A round body against the ground (a plane or a static body, which never moves) takes the
+  // impulse where it carries the point: the ground's copy stays where the step began, and
+  // halfway to it would put the force behind a ball rolling on, a torque that is not there.
+  // (Other shapes keep the midpoint, whose lag of half a step's slide the box suites are
+  // measured with.)
+  Vec3 point = 0.5 * (xA + onA + xB + onB);
+  if (c.a == 0 && !f.roundB.isZero(0.0)) point = xB + onB;
+  if (c.b == 0 && !f.roundA.isZero(0.0)) point = xA + onA;
+  // The separation now, from the anchors carried by the bodies (no collision detection); the
+  // poses change only in integratePositions, after which this runs again.
+  p.separation = f.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
+  p.anchorA = point - xA;
+  p.anchorB = point - xB;
+  const Mat3& iA = sims_[c.a].inverseInertiaNow;
+  const Mat3& iB = sims_[c.b].inverseInertiaNow;
+  const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+  p.crossA = p.anchorA.cross(c.normal);
+  p.crossB = p.anchorB.cross(c.normal);
+  p.angularA = iA * p.crossA;
+  p.angularB = iB * p.crossB;
+  // n^T K n with K = (1/m) 1 + r*^T I^-1 r* summed over the pair (seed 000).
+  p.normalMass = 1.0 / (mA + mB + p.crossA.dot(p.angularA) + p.crossB.dot(p.angularB));
+  const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 tA = p.anchorA.cross(tangents[k]), tB = p.anchorB.cross(tangents[k]);
+    p.frictionA[k] = iA * tA;
+    p.frictionB[k] = iB * tB;
+    p.tangentMass[k] = 1.0 / (mA + mB + tA.dot(p.frictionA[k]) + tB.dot(p.frictionB[k]));
+  }
+}
+
+void SoftStepSolver::updateJacobians() {
+  parallelFor(constraints_.size(), threads_, [&](std::size_t i) {
+    const Constraint& c = constraints_[i];
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) updateJacobians(c, frames_[j], points_[j]);
+  });
+}
+
+void SoftStepSolver::integrateVelocities(double h) {
+  parallelFor(states_.size() - 1, threads_, [&](std::size_t k) {
+    const std::size_t i = k + 1;
+    states_[i].linearVelocity += h * sims_[i].acceleration;
+    states_[i].angularVelocity += h * (sims_[i].inverseInertiaNow * sims_[i].torque);
+  });
+}
+
+void SoftStepSolver::warmStart(std::size_t island) {
+  islands_.forContacts(island, [&](std::size_t index) {
+    const Constraint& c = constraints_[index];
+    SolverState& A = states_[c.a];
+    SolverState& B = states_[c.b];
+    const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+      Point& p = points_[j];
+      const Vec3 friction = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+      const Vec3 impulse = p.normalImpulse * c.normal + friction;
+      const Vec3 angularA = p.normalImpulse * p.angularA + p.tangentImpulse[0] * p.frictionA[0] + p.tangentImpulse[1] * p.frictionA[1];
+      const Vec3 angularB = p.normalImpulse * p.angularB + p.tangentImpulse[0] * p.frictionB[0] + p.tangentImpulse[1] * p.frictionB[1];
+      if (c.a != 0) {
+        A.linearVelocity -= mA * impulse;
+        A.angularVelocity -= angularA;
+      }
+      if (c.b != 0) {
+        B.linearVelocity += mB * impulse;
+        B.angularVelocity += angularB;
+      }
+    }
+  });
+}
+
+// The normal rows of one constraint, point by point, on the pair's velocities (both sweeps, the
+// cone's and seed 000's friction, share them).
+void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings& settings, bool useBias, bool lastRelax,
+                                  Vec3& vA, Vec3& wA, Vec3& vB, Vec3& wB) {
+  const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+  const Vec3& n = c.normal;
+  for (std::size_t k = 0; k < c.pointCount; ++k) {
+    Point& p = points_[c.firstPoint + k];
+    const double s = p.separation;
+    double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+    if (s > 0.0) {
+      bias = s * inverseH;  // speculative: the gap may close within the substep, no further
+    } else if (useBias) {
+      bias = std::max(c.softness.biasRate * s, -settings.contactPushSpeed);
+      massScale = c.softness.massScale;
+      impulseScale = c.softness.impulseScale;
+    }
+    const double vn = n.dot(vB - vA) + p.crossB.dot(wB) - p.crossA.dot(wA);
+    // A bouncing approach still short of the surface when the step ends keeps its speed: the
+    // next step's first substep holds it to the gap all the same, and by then its prepare has
+    // taken the speed at the touch for restitution. Held here, a ball dropped at dt = 1/60 s
+    // reached the ground at 3.15 of its 4.42 m/s and rebounded to half the height e = 1 asks
+    // for (examples/python/restitution_sweep.py).
+    if (lastRelax && c.pointCount == 1 && s > 0.0 && c.restitution > 0.0 && -vn > settings.restitutionThreshold) continue;
+    const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
+    // Accumulated and kept repulsive (seed 001: f_i >= 0).
+    const double total = std::max(p.normalImpulse + impulse, 0.0);
+    const double delta = total - p.normalImpulse;
+    p.normalImpulse = total;
+    // Pushing within the slop of touching: the surfaces met (a speculative point lands a body
+    // at s = 0 up to rounding, so s <= 0 alone can miss it).
+    if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
+    vA -= (mA * delta) * n;
+    wA -= delta * p.angularA;
+    vB += (mB * delta) * n;
+    wB += delta * p.angularB;
+  }
+}
+
+void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
+  islands_.forContacts(island, [&](std::size_t index) {
+    Constraint& c = constraints_[index];
+    SolverState& A = states_[c.a];
+    SolverState& B = states_[c.b];
+    const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+    Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
+    const Vec3& n = c.normal;
+    // Non-penetration first, friction with the new normal impulses after (Box2D v3's order).
+    solveNormals(c, inverseH, settings, useBias, lastRelax, vA, wA, vB, wB);
+    const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
+    for (std::size_t k = 0; k < c.pointCount; ++k) {
+      Point& p = points_[c.firstPoint + k];
+      const Vec3 slip = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
+      // The impulse that stops the slip, then onto the friction cone of this point's normal
+      // impulse (seed 000: sticking inside mu j_N, sliding on its boundary).
+      double candidate[2];
+      for (int k = 0; k < 2; ++k) candidate[k] = p.tangentImpulse[k] - p.tangentMass[k] * tangents[k].dot(slip);
+      const double limit = c.friction * p.normalImpulse;
+      const double squared = candidate[0] * candidate[0] + candidate[1] * candidate[1];
+      if (squared > limit * limit) {
+        const double scale = limit / std::sqrt(squared);
+        candidate[0] *= scale;
+        candidate[1] *= scale;
+      }
+      const double d0 = candidate[0] - p.tangentImpulse[0], d1 = candidate[1] - p.tangentImpulse[1];
+      p.tangentImpulse = {candidate[0], candidate[1]};
+      const Vec3 impulse = d0 * c.tangent1 + d1 * c.tangent2;
+      vA -= mA * impulse;
+      wA -= d0 * p.frictionA[0] + d1 * p.frictionA[1];
+      vB += mB * impulse;
+      wB += d0 * p.frictionB[0] + d1 * p.frictionB[1];
+    }
+    if (lastRelax) {
+      // Seed 000's regimes decided by the slip the step ends with: a patch slipping faster than
+      // kStickingSlipSpeed slides (mu_k) next step, a slower one sticks (mu_s). Deciding by
+      // which points reached their cone would flip a patch that sticks as a whole to sliding
+      // whenever the load is uneven across its points.
+      double slip = 0.0;
+      for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+        const Point& p = points_[j];
+        const Vec3 v = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
+        slip = std::max(slip, (v - v.dot(n) * n).norm());
+      }
+      c.slipping = slip > kStickingSlipSpeed;
+    }
+    storeVelocities(c.a, vA, wA);
+    storeVelocities(c.b, vB, wB);
+  });
+}
+
+void SoftStepSolver::addTotals(std::size_t island) {
+  islands_.forContacts(island, [&](std::size_t index) {
+    const Constraint& c = constraints_[index];
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+      const Point& p = points_[j];
+      reports_[j].totalNormalImpulse += p.normalImpulse;
+      reports_[j].totalFriction += p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+    }
+  });
+}
+
+void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, double h) {
+  parallelFor(states_.size() - 1, threads_, [&](std::size_t k) {
+    const std::size_t i = k + 1;
+    SolverState& s = states_[i];
+    const RigidBody& body = bodies[sims_[i].body];
+    s.deltaPosition += h * s.linearVelocity;
+    if (sims_[i].kinematic) {  // turns at its prescribed omega, which no impulse changes
+      s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
+      return;
+    }
+    // The rotation by angle |omega| h (seed 004's alternative), with L = I omega carried over:
+    // free rotation keeps L, so omega follows the new orientation (the gyroscopic term of
+    // Euler's equations, which a fixed omega would drop).
+    const Mat3 R = s.orientation.toRotationMatrix();
+    const Vec3 L = R * (body.inertiaBody() * (R.transpose() * s.angularVelocity));
+    s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
+    const Mat3 next = s.orientation.toRotationMatrix();
+    sims_[i].inverseInertiaNow = next * body.inverseInertiaBody() * next.transpose();
+    s.angularVelocity = sims_[i].inverseInertiaNow * L;
+  });
+}
+
+void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
+                          std::vector<Joint>& joints, const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
+                          const Settings& settings, bool addGravity) {
+  clearAdvanced();
+  advanced_.resize(bodies.size(), 0);
+  slotOfBody_.resize(bodies.size(), 0);
+  states_.assign(1, SolverState{});
+  sims_.assign(1, BodySim{});
+  constraints_.clear();
+  points_.clear();
+  frames_.clear();
+  reports_.clear();
+  solved_.clear();
+  joints_.clear();
+
+  const double h = settings.timeStep / settings.substeps;
+  const double hertz = std::min(settings.contactHertz, kMaxHertzPerSubstepRate / h);
+  softness_ = makeSoftness(hertz, settings.contactDampingRatio, h);
+
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& contact = contacts[i];
+    const bool plane = contact.kind == Contact::Kind::PlaneBody;
+    // A sleeping pair receives nothing (World wakes an island an awake body touches), and keeps
+    // its impulses for the step it wakes, as Box2D's sleeping solver sets keep theirs.
+    const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
+    if (contact.manifold.count == 0) continue;
+    if (!awake) {
+      if (const Cached* old = cached(pairKey(contact))) nextCache_.push_back(*old);
+      continue;
+    }
+    slot(bodies, contact.b, settings, addGravity);
+    if (!plane) slot(bodies, contact.a, settings, addGravity);
+  }
+  slotJoints(bodies, joints, settings, addGravity);
+  prepareJoints(bodies, joints, settings);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& contact = contacts[i];
+    const bool plane = contact.kind == Contact::Kind::PlaneBody;
+    if (contact.manifold.count == 0) continue;
+    const int b = slotOfBody_[contact.b], a = plane ? 0 : slotOfBody_[contact.a];
+    if (a == 0 && b == 0) continue;  // asleep, or static against static
+    if (sims_[a].inverseMass == 0.0 && sims_[b].inverseMass == 0.0) continue;  // kinematic against static
+    const Material material = combine(bodyMaterials[contact.b], plane ? planeMaterials[contact.a] : bodyMaterials[contact.a]);
+    prepare(bodies, contact, i, material, settings);
+  }
+
+  threads_ = settings.threads;
+  islands_.build(
+      states_.size(), constraints_.size(), [&](std::size_t i) { return constraints_[i].a; },
+      [&](std::size_t i) { return constraints_[i].b; }, joints_.size(), [&](std::size_t i) { return joints_[i].base; },
+      [&](std::size_t i) { return joints_[i].moving; });
+  collide(settings);
+  const double inverseH = 1.0 / h;
+  for (int substep = 0; substep < settings.substeps; ++substep) {
+    const bool last = substep == settings.substeps - 1;
+    integrateVelocities(h);
+    forEachIsland([&](std::size_t island) {
+      warmStartJoints(island);
+      warmStart(island);  // the last substep's impulses (at the first, the last step's, when kept)
+      solveJoints(island, h, /*useBias=*/true);
+      sweep(island, inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
+    });
+    integratePositions(bodies, h);
+    updateJacobians();  // for the relax, and the next substep's warm start and solve
+    forEachIsland([&](std::size_t island) {
+      solveJoints(island, h, /*useBias=*/false);
+      sweep(island, inverseH, settings, /*useBias=*/false, /*lastRelax=*/last);
+    });
+  }
+  applyRestitution(settings);
+  finish(bodies, contacts);
+}
+
+}  // namespace rbsim

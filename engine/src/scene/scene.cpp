@@ -1,0 +1,129 @@
+#include "rbsim/scene/scene.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include "rbsim/io/input_error.h"
+#include "io/obj_loader.h"
+#include "io/read_file.h"
+#include "rbsim/mass/mass_model.h"
+#include "scene/body_parser.h"
+#include "scene/input_ranges.h"
+#include "scene/joint_parser.h"
+#include "rbsim/scene/json_fields.h"
+#include "scene/particle_parser.h"
+#include "scene/planar_parser.h"
+#include "rbsim/scene/scene_parts.h"
+#include "scene/soft_parser.h"
+#include "rbsim/scene/strict_json.h"
+
+namespace rbsim {
+
+namespace {
+
+// A scene is a page of JSON: 64 MiB holds hundreds of thousands of bodies' keys. Checked before
+// reading (io/read_file.h), so /dev/zero or a file of gigabytes ends in a message, not in bad_alloc.
+constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{64} << 20;  // [bytes]
+// A run's work is bounded as well as its step count: a 1000-box pile costs about 10 us per body
+// and step with soft step (REPORT.md section 5, 9.6 ms a step), so 1e10 body-steps is about a
+// day of computing, beyond what anyone waits for without meaning to.
+constexpr double kMaxBodySteps = 1e10;      // [bodies x steps]
+constexpr double kSecondsPerBodyStep = 1e-5;  // [s], the pile's measured cost, for the estimate
+
+void parseView(const JsonObject& root, Scene& scene) {
+  if (!root.has("view")) return;
+  const JsonObject v = root.object("view", kViewKeys);
+  parseViewFields(v, scene.view);
+  if (v.has("selected")) scene.view.selected = scene_detail::findBody(scene.bodies, v, "selected");
+}
+
+void checkWorkBudget(const JsonObject& root, const Scene& scene) {
+  const double work = static_cast<double>(scene.bodies.size()) * static_cast<double>(scene.stepCount());
+  if (work <= kMaxBodySteps) return;
+  std::ostringstream problem;
+  problem << scene.bodies.size() << " bodies x " << scene.stepCount() << " steps = " << work
+          << " body-steps, about " << work * kSecondsPerBodyStep / 3600.0 << " hours at the "
+          << kSecondsPerBodyStep * 1e6 << " us a body-step a pile of boxes costs; the limit is " << kMaxBodySteps
+          << " (about a day): expected fewer steps or bodies";
+  const bool bySteps = root.has("world") && root.raw("world").contains("steps");
+  throw InputError(root.file(), bySteps ? "world.steps" : "world.duration", problem.str());
+}
+
+}  // namespace
+
+std::uint64_t Scene::stepCount() const {
+  return static_cast<std::uint64_t>(std::llround(duration / settings.timeStep));
+}
+
+Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles", "soft_bodies", "planar", "joints"});
+  Scene scene;
+  scene.file = file;
+  scene.title = root.string("title", std::filesystem::path(file).stem().string());
+  if (root.has("world")) parseWorldBlock(root.object("world", kWorldKeys), scene);
+  const std::vector<JsonObject> bodies = root.objectArray("bodies", scene_detail::kBodyKeys);
+  scene_detail::ShapeCache shapes;  // bodies of one shape share it (issue 34)
+  for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene, &shapes);
+  for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
+  scene_detail::parseSpawns(root, baseDir, scene, &shapes);
+  const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };
+  if (scene.bodies.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies") && !root.has("planar")) {
+    throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, particles, soft bodies or a planar world)");
+  }
+  std::unordered_map<std::string, std::size_t> names;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (!names.emplace(scene.bodies[i].name, i).second) {
+      const std::string problem = "duplicate body name \"" + scene.bodies[i].name + "\"";
+      if (i < bodies.size()) bodies[i].fail("name", problem);
+      throw InputError(file, "spawn", problem + " (spawned names are NAME_k)");
+    }
+  }
+  checkWorkBudget(root, scene);
+  scene_detail::parsePlanes(root, scene);
+  scene_detail::parseJoints(root, scene);
+  scene_detail::parseParticleSystems(root, scene);
+  scene_detail::parseSoftBodies(root, scene);
+  scene_detail::parsePlanar(root, scene);
+  parseView(root, scene);
+  return scene;
+}
+
+std::string readSceneFile(const std::string& path) {
+  return readTextFile(path, kMaxSceneBytes, "", "a scene file (JSON)");
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  return parseSceneText(readSceneFile(path), path, std::filesystem::path(path).parent_path().string(), overrides);
+}
+
+Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,
+                     const std::vector<std::string>& overrides) {
+  nlohmann::json document = parseStrictJson(text, file);
+  for (const std::string& assignment : overrides) {
+    try {
+      applyOverride(document, assignment);
+    } catch (const InputError& e) {
+      throw InputError(file, "--set " + assignment, e.problem());
+    }
+  }
+  return parseScene(document, file, baseDir);
+}
+
+World buildWorld(const Scene& scene) {
+  World world(scene.settings);
+  for (const BodyDef& def : scene.bodies) world.addBody(def);
+  for (const ScriptedForce& f : scene.forces) world.addForce(f);
+  for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
+  for (const Spring& s : scene.springs) world.addSpring(s);
+  for (const JointDef& j : scene.joints) world.addJoint(j);
+  for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
+  for (const ParticleSystemDef& def : scene.particleSystems) world.addParticleSystem(def);
+  for (const SoftBodyDef& def : scene.softBodies) world.addSoftBody(def);
+  if (scene.planar) world.setPlanarWorld(*scene.planar);
+  return world;
+}
+
+}  // namespace rbsim

@@ -1,0 +1,113 @@
+// "spawn" blocks: many bodies from one template, with positions, velocities and orientations
+// drawn from a seeded generator so that a scene file describes a reproducible crowd.
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <string>
+
+#include "rbsim/math/uniform_random.h"
+#include "scene/body_parser.h"
+#include "scene/input_ranges.h"
+
+namespace rbsim::scene_detail {
+
+namespace {
+
+// More bodies than this in one block is almost certainly a typo for a smaller number.
+constexpr int kMaxSpawnCount = 100000;
+// Vertices of all spawned bodies together: each body keeps its world-frame vertices (24 B each)
+// and its collision shape, so this is ~0.5 GB of per-body geometry; the template's mesh is shared.
+constexpr double kMaxSpawnedVertices = 2e7;  // [vertices]
+
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;  // 6 significant digits
+  return out.str();
+}
+
+// [lo, hi] with 0 <= lo <= hi.
+std::pair<double, double> range(const JsonObject& o, const char* key, const char* unit) {
+  if (!o.has(key)) return {0.0, 0.0};
+  const nlohmann::json& r = o.raw(key);
+  if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() || !(r[0].get<double>() >= 0.0) ||
+      !(r[1].get<double>() >= r[0].get<double>()) || !std::isfinite(r[1].get<double>())) {
+    o.fail(key, std::string("expected [low, high] with 0 <= low <= high, in ") + unit);
+  }
+  return {r[0].get<double>(), r[1].get<double>()};
+}
+
+}  // namespace
+
+void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
+  double spawnedVertices = 0.0;  // over every block so far
+  for (const JsonObject& s : root.objectArray("spawn", {"count", "seed", "name", "body", "region", "speed",
+                                                        "angular_speed", "random_orientation"})) {
+    const int count = s.positiveInt("count", 1);
+    if (count > kMaxSpawnCount) s.fail("count", "expected at most " + std::to_string(kMaxSpawnCount) + " bodies per block");
+    const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
+    const std::string prefix = s.string("name", "spawn");
+    const JsonObject region = s.object("region", {"min", "max"});
+    const Vec3 lo = region.boundedVec3("min", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start"),
+               hi = region.boundedVec3("max", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start");
+    if ((hi.array() < lo.array()).any()) region.fail("max", "expected every component >= min's");
+    // Positions are drawn as min + (max - min) u: the extent itself must be a finite number.
+    const Vec3 extent = hi - lo;
+    if (!extent.allFinite()) {
+      region.fail("max", "the region's extent max - min overflows (" + shortNumber(extent.maxCoeff()) +
+                             " m); expected a finite size along every axis");
+    }
+    const auto [speedLo, speedHi] = range(s, "speed", "m/s");
+    if (speedHi > kMaxSpeed) s.fail("speed", "expected speeds below the speed of light, 299792458 m/s");
+    const auto [spinLo, spinHi] = range(s, "angular_speed", "rad/s");
+    const bool randomOrientation = s.boolean("random_orientation", true);
+
+    // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
+    const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs",
+                                               "restitution", "friction_static", "friction_kinetic", "fracture", "sdf"});
+    const std::size_t first = scene.bodies.size();
+    parseBody(body, baseDir, scene, shapes);
+    parseScripts(body, first, scene);
+    const BodyDef prototype = scene.bodies[first];
+    spawnedVertices += static_cast<double>(count) * static_cast<double>(prototype.mesh->vertices.size());
+    if (spawnedVertices > kMaxSpawnedVertices) {
+      s.fail("count", std::to_string(count) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
+                          " vertices bring the spawned bodies to " + shortNumber(spawnedVertices) +
+                          " vertices (each body keeps its own world-frame copy); the limit is " +
+                          shortNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
+    }
+    // The fastest spin a draw can give keeps the surface below light speed, as for a body's own
+    // angular_velocity; with the template's mass within kMaxMassScale, m v and I omega stay finite.
+    const double radius = 0.5 * (prototype.mesh->boundsMax() - prototype.mesh->boundsMin()).norm();
+    if (!(spinHi * radius <= kMaxSpeed)) {
+      s.fail("angular_speed", "a body's surface would move at |omega| r = " + shortNumber(spinHi) + " rad/s x " +
+                                  shortNumber(radius) + " m, faster than light; expected a smaller spin");
+    }
+    const std::string inertia = scene.inertiaMethods[first];
+    const std::size_t springsOfPrototype = scene.springs.size();
+    scene.bodies.pop_back();
+    scene.inertiaMethods.pop_back();
+
+    UniformRandom random(static_cast<std::uint64_t>(seed));
+    for (int k = 0; k < count; ++k) {
+      BodyDef def = prototype;
+      def.name = prefix + "_" + std::to_string(k);
+      def.position = Vec3(random.between(lo.x(), hi.x()), random.between(lo.y(), hi.y()), random.between(lo.z(), hi.z()));
+      if (randomOrientation) def.orientation = random.rotation() * prototype.orientation;
+      def.velocity = random.between(speedLo, speedHi) * random.direction();
+      def.angularVelocity = random.between(spinLo, spinHi) * random.direction();
+      const std::size_t index = scene.bodies.size();
+      scene.bodies.push_back(def);
+      scene.inertiaMethods.push_back(inertia);
+      if (k > 0) {
+        for (std::size_t i = 0; i < springsOfPrototype; ++i) {
+          if (scene.springs[i].body != first) continue;
+          Spring copy = scene.springs[i];
+          copy.body = index;
+          scene.springs.push_back(copy);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace rbsim::scene_detail

@@ -1,0 +1,114 @@
+#include "shapes/implicit_shape.h"
+
+#include <cmath>
+#include <ctime>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace rbsim {
+
+namespace {
+
+double secondsSince(std::clock_t start) { return double(std::clock() - start) / CLOCKS_PER_SEC; }
+
+void requireResolution(const ImplicitShape& shape) {
+  if (shape.resolution < kMinSdfResolution || shape.resolution > kMaxSdfResolution) {
+    throw std::invalid_argument("implicit shape: resolution is " + std::to_string(shape.resolution) + ", expected " +
+                                std::to_string(kMinSdfResolution) + " to " + std::to_string(kMaxSdfResolution));
+  }
+}
+
+std::vector<double> sample(const ImplicitFunction& f, const GridShape& grid, const Mat3& axes, const Vec3& centre) {
+  std::vector<double> values(grid.pointCount());
+  for (int k = 0; k < grid.dims.z(); ++k) {
+    for (int j = 0; j < grid.dims.y(); ++j) {
+      for (int i = 0; i < grid.dims.x(); ++i) values[grid.index(i, j, k)] = f.phi(axes * grid.point(i, j, k) + centre);
+    }
+  }
+  return values;
+}
+
+}  // namespace
+
+GridShape implicitGridShape(const ImplicitShape& shape) {
+  const ImplicitBounds b = shape.function->bounds();
+  GridShape grid;
+  if (b.empty()) return grid;
+  grid.cellSize = (b.hi - b.lo).maxCoeff() / shape.resolution;
+  for (int axis = 0; axis < 3; ++axis) {
+    double cells = std::ceil((b.hi[axis] - b.lo[axis]) / grid.cellSize - 1e-9);
+    if (!(cells >= 1.0)) cells = 1.0;
+    grid.dims[axis] = static_cast<int>(std::min(cells, double(shape.resolution))) + 2 * kImplicitPaddingCells + 1;
+  }
+  grid.origin = 0.5 * (b.lo + b.hi) - 0.5 * grid.cellSize * (grid.dims - Vec3i::Ones()).cast<double>();
+  return grid;
+}
+
+std::string implicitBudgetProblem(const ImplicitShape& shape) {
+  const GridShape grid = implicitGridShape(shape);
+  const double points = grid.dims.cast<double>().prod();
+  const double evaluations = points * shape.function->primitiveCount();
+  std::ostringstream problem;
+  problem << std::setprecision(3) << "resolution " << shape.resolution << " lays a " << grid.dims.x() << " x "
+          << grid.dims.y() << " x " << grid.dims.z() << " grid (" << points << " points, ~"
+          << std::setprecision(2) << points * kSdfBytesPerPoint / 1e9 << " GB)";
+  if (points > kMaxSdfGridPoints) {
+    problem << std::setprecision(3) << "; the limit is " << kMaxSdfGridPoints << " points (~"
+            << kMaxSdfGridPoints * kSdfBytesPerPoint / 1e9 << " GB)";
+    return problem.str();
+  }
+  if (evaluations > kMaxImplicitEvaluations) {
+    problem << std::setprecision(3) << " of " << shape.function->primitiveCount() << " primitives: " << evaluations
+            << " evaluations; the limit is " << kMaxImplicitEvaluations;
+    return problem.str();
+  }
+  return "";
+}
+
+ImplicitMeshing meshImplicitShape(const ImplicitShape& shape) {
+  requireResolution(shape);
+  if (shape.function->bounds().empty()) {
+    throw std::invalid_argument("the solid is empty: its operands' bounds do not overlap");
+  }
+  const std::string overBudget = implicitBudgetProblem(shape);
+  if (!overBudget.empty()) throw std::invalid_argument(overBudget);
+  ImplicitMeshing out;
+  out.grid = implicitGridShape(shape);
+  std::clock_t start = std::clock();
+  const std::vector<double> values = sample(*shape.function, out.grid, Mat3::Identity(), Vec3::Zero());
+  out.sampleSeconds = secondsSince(start);
+  start = std::clock();
+  out.mesh = marchingTetrahedra(out.grid, values, &out.stats);
+  out.meshSeconds = secondsSince(start);
+  if (out.mesh.triangles.empty()) {
+    std::ostringstream problem;
+    problem << std::setprecision(3) << "the solid is empty: no point of the " << out.grid.dims.x() << " x "
+            << out.grid.dims.y() << " x " << out.grid.dims.z() << " grid (cell " << out.grid.cellSize
+            << " m) is inside (phi < 0), so it has no volume";
+    throw std::invalid_argument(problem.str());
+  }
+  if (out.mesh.triangles.size() > kMaxMeshTriangles || out.mesh.vertices.size() > kMaxMeshVertices) {
+    std::ostringstream problem;
+    problem << "resolution " << shape.resolution << " meshes the surface into " << out.mesh.triangles.size()
+            << " triangles and " << out.mesh.vertices.size() << " vertices; the limit is " << kMaxMeshTriangles
+            << " triangles and " << kMaxMeshVertices << " vertices (as for a mesh file)";
+    throw std::invalid_argument(problem.str());
+  }
+  return out;
+}
+
+SignedDistanceGrid implicitBodyGrid(const ImplicitShape& shape, const Mesh& bodyMesh, const Mat3& axes,
+                                    const Vec3& centre) {
+  requireResolution(shape);
+  SdfGridOptions options;
+  options.resolution = shape.resolution;
+  const GridShape grid = sdfGridShape(bodyMesh, options);
+  if (grid.dims.cast<double>().prod() > kMaxSdfGridPoints) {
+    throw std::invalid_argument("implicit shape: the body's grid of resolution " + std::to_string(shape.resolution) +
+                                " exceeds " + std::to_string(static_cast<long long>(kMaxSdfGridPoints)) + " points");
+  }
+  return SignedDistanceGrid::fromValues(grid, sample(*shape.function, grid, axes, centre));
+}
+
+}  // namespace rbsim

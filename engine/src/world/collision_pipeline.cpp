@@ -1,0 +1,384 @@
+#include "rbsim/world/collision_pipeline.h"
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+#include "collision/broadphase/brute_force.h"
+#include "collision/broadphase/sweep_and_prune.h"
+#include "collision/narrowphase/box_box.h"
+#include "collision/narrowphase/convex_convex.h"
+#include "collision/narrowphase/convex_plane.h"
+#include "collision/narrowphase/sdf_contact.h"
+#include "collision/narrowphase/shape_pairs.h"
+#include "world/continuous_collision.h"
+#include "rbsim/integrate/simulation_error.h"
+#include "rbsim/math/parallel.h"
+
+namespace rbsim {
+
+namespace {
+
+// A plane's manifold is taken from the vertices within the body's reach in the step (|v| dt +
+// |omega| r dt + |g| dt^2) of the deepest, plus this [m]: above a resting face's rounding and
+// solver noise (0.1 mm), below a grid bevel's rise (half a cell, centimetres).
+constexpr double kPlaneSupportSlack = 1e-3;
+
+std::unique_ptr<BroadPhase> makeBroadPhase(Settings::BroadPhaseMethod method) {
+  if (method == Settings::BroadPhaseMethod::BruteForce) return std::make_unique<BruteForce>();
+  return std::make_unique<SweepAndPrune>();
+}
+
+// The lowest point of a box along -n is its support point: the box is below the plane's
+// margin band exactly when that point is.
+bool aabbNearPlane(const Aabb& box, const Plane& plane, double margin) {
+  const Vec3 lowest((plane.normal.x() > 0.0 ? box.min : box.max).x(), (plane.normal.y() > 0.0 ? box.min : box.max).y(),
+                    (plane.normal.z() > 0.0 ? box.min : box.max).z());
+  return plane.signedDistance(lowest) <= margin;
+}
+
+// The body's bounding box where it is: a round shape's exact one (its display mesh is inscribed
+// in it), the vertices' for the others, whose shape is the hull of those vertices.
+Aabb boundsOf(const RigidBody& body) {
+  if (!body.shape().isRound()) return Aabb::of(body.worldVertices());
+  const auto [lo, hi] = body.shape().worldBounds(body.rotation(), body.position());
+  return {lo, hi};
+}
+
+PosedShape posed(const RigidBody& body) { return {&body.shape(), body.rotation(), body.position()}; }
+
+// A hull large enough that GJK climbs its vertex graph rather than scanning it.
+bool climbs(const RigidBody& body) {
+  const Shape& s = body.shape();
+  return s.type == ShapeType::ConvexHull && s.hull->vertices.size() > kHillClimbMinVertices;
+}
+
+SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) {
+  return SweptBody{&body.mesh().vertices, start, body.state(), radius};
+}
+
+}  // namespace
+
+CollisionPipeline::CollisionPipeline(const Settings& settings)
+    : settings_(settings), broad_(makeBroadPhase(settings.broadPhase)), log_(settings.queryLogCapacity) {}
+
+void CollisionPipeline::measure(std::size_t index, const RigidBody& body) {
+  double radius = 0.0;
+  Aabb local;
+  for (const Vec3& p : body.mesh().vertices) {
+    radius = std::max(radius, p.norm());
+    local.grow(p);
+  }
+  if (body.shape().isRound()) {
+    radius = body.shape().boundingRadius();
+    local = {-Vec3::Constant(body.shape().radius), Vec3::Constant(body.shape().radius)};
+  }
+  radius_[index] = radius;
+  thickness_[index] = local.extents().minCoeff();
+  boxes_[index] = boundsOf(body).inflated(settings_.contactMargin);
+}
+
+void CollisionPipeline::addBody(const RigidBody& body, bool hasGrid) {
+  const std::size_t index = proxies_.size();
+  radius_.push_back(0.0);
+  thickness_.push_back(0.0);
+  reach_.push_back(0.0);
+  boxes_.emplace_back();
+  measure(index, body);
+  proxies_.push_back(broad_->add(boxes_[index], body.isStatic()));
+  if (bodyOfProxy_.size() <= proxies_.back()) bodyOfProxy_.resize(proxies_.back() + 1);
+  bodyOfProxy_[proxies_.back()] = index;
+  start_.push_back(body.state());
+  fast_.push_back(0);
+  hasGrid_.push_back(hasGrid ? 1 : 0);
+}
+
+void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, bool hasGrid) {
+  measure(index, body);
+  // Removed and added again, since the piece may be dynamic where the body was static; the pool
+  // hands back the smallest free id, which is this one.
+  broad_->remove(proxies_[index]);
+  proxies_[index] = broad_->add(boxes_[index], body.isStatic());
+  if (bodyOfProxy_.size() <= proxies_[index]) bodyOfProxy_.resize(proxies_[index] + 1);
+  bodyOfProxy_[proxies_[index]] = index;
+  start_[index] = body.state();
+  fast_[index] = 0;
+  hasGrid_[index] = hasGrid ? 1 : 0;
+}
+
+namespace {
+
+template <typename T>
+void swapRemove(std::vector<T>& items, std::size_t index) {
+  if (index + 1 != items.size()) items[index] = items.back();
+  items.pop_back();
+}
+
+}  // namespace
+
+void CollisionPipeline::removeBody(std::size_t index) {
+  broad_->remove(proxies_[index]);
+  const std::size_t last = proxies_.size() - 1;
+  if (index != last) bodyOfProxy_[proxies_[last]] = index;
+  swapRemove(proxies_, index);
+  swapRemove(radius_, index);
+  swapRemove(thickness_, index);
+  swapRemove(reach_, index);
+  swapRemove(start_, index);
+  swapRemove(fast_, index);
+  swapRemove(hasGrid_, index);
+  swapRemove(boxes_, index);
+  // The contacts follow the bodies to their new indices (World::destroyBody forgets the solver's
+  // reports of them): the removed body's go and the last body's take its index, so that sleeping
+  // pairs keep theirs.
+  const auto names = [&](const Contact& c, std::size_t body) {
+    return c.b == body || (c.kind == Contact::Kind::BodyBody && c.a == body);
+  };
+  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), [&](const Contact& c) { return names(c, index); }),
+                  contacts_.end());
+  for (Contact& c : contacts_) {
+    if (c.b == last) c.b = index;
+    if (c.kind == Contact::Kind::BodyBody && c.a == last) c.a = index;
+  }
+  impacts_.clear();
+}
+
+bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const {
+  if (bodies.size() < 2 && planes.empty()) return false;
+  return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.awake(); });
+}
+
+void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) start_[i] = bodies[i].state();
+  haveStart_ = true;
+}
+
+bool CollisionPipeline::isFast(std::size_t body) const { return fast_[body] != 0; }
+
+void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes,
+                                   const std::vector<char>* solved) {
+  impacts_.clear();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const RigidBody& body = bodies[i];
+    fast_[i] = 0;
+    // A kinematic body goes where it is told, through anything: it is never stopped.
+    if (!body.awake() || !haveStart_ || hasGrid_[i] || body.isKinematic()) continue;
+    // Stopping a body the solver moved would undo its speculative contacts, which already hold
+    // it at the surfaces it can reach this step (and hold it still, again, every step after).
+    if (solved != nullptr && i < solved->size() && (*solved)[i] != 0) continue;
+    const double motion = motionBound(sweptOf(body, start_[i], radius_[i]));
+    fast_[i] = motion > settings_.ccdMotionFraction * thickness_[i] ? 1 : 0;
+  }
+  if (std::none_of(fast_.begin(), fast_.end(), [](char f) { return f != 0; })) {
+    haveStart_ = false;
+    return;
+  }
+  // Each body's box over its whole step (last step's box, which covers the start pose, grown by
+  // the end pose), computed once: a contact during the step lies inside both bodies' boxes.
+  std::vector<Aabb> stepBoxes(bodies.size());
+  for (std::size_t j = 0; j < bodies.size(); ++j) {
+    stepBoxes[j] = boxes_[j];
+    if (bodies[j].awake()) stepBoxes[j].grow(Aabb::of(bodies[j].worldVertices()));
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!isFast(i)) continue;
+    const SweptBody swept = sweptOf(bodies[i], start_[i], radius_[i]);
+    double first = 1.0;
+    for (const Plane& plane : planes) {
+      if (const auto s = timeOfImpact(swept, plane)) first = std::min(first, *s);
+    }
+    Aabb sweep = Aabb::of(worldVerticesAt(swept, 0.0));
+    sweep.grow(Aabb::of(bodies[i].worldVertices()));
+    for (std::size_t j = 0; j < bodies.size(); ++j) {
+      if (j == i || hasGrid_[j] || !sweep.overlaps(stepBoxes[j])) continue;
+      const SweptBody partner = sweptOf(bodies[j], start_[j], radius_[j]);
+      if (const auto s = timeOfImpact(swept, partner)) first = std::min(first, *s);
+    }
+    if (first < 1.0) {
+      impacts_.push_back({i, first, bodies[i].position(), bodies[i].orientation()});
+      bodies[i].setState(poseAt(swept, first));  // momenta kept: the response is the solver's
+    }
+  }
+  haveStart_ = false;
+}
+
+void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
+  // Each awake body's box on any thread, then into the broad phase in body order.
+  parallelFor(bodies.size(), settings_.threads, [&](std::size_t i) {
+    if (!bodies[i].awake()) return;
+    Aabb box = boundsOf(bodies[i]);
+    if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
+    const double dt = settings_.timeStep;
+    reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
+                      dt * settings_.gravity.norm());
+    boxes_[i] = box.inflated(settings_.contactMargin + reach_[i]);
+  });
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].awake()) continue;
+    // A finite state can still have a box that is not (a vertex R p + x or a reach dt |v|
+    // overflows): that is the body diverging, reported as such rather than as a broad-phase fault.
+    if (!boxes_[i].min.allFinite() || !boxes_[i].max.allFinite()) {
+      std::ostringstream message;
+      message << "body '" << bodies[i].name() << "': its bounding box stopped being finite (|x| = "
+              << bodies[i].position().stableNorm() << " m, |v| = " << bodies[i].velocity().stableNorm() << " m/s)";
+      throw SimulationError(message.str());
+    }
+    broad_->move(proxies_[i], boxes_[i]);
+  }
+  broad_->update();
+}
+
+void CollisionPipeline::setIgnoredPairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+  ignored_.clear();
+  for (auto [a, b] : pairs) {
+    if (a > b) std::swap(a, b);
+    ignored_.push_back((std::uint64_t{a} << 32) | std::uint64_t{b});
+  }
+  std::sort(ignored_.begin(), ignored_.end());
+  ignoredSorted_ = true;
+}
+
+void CollisionPipeline::ignorePair(std::size_t a, std::size_t b) {
+  if (a > b) std::swap(a, b);
+  ignored_.push_back((std::uint64_t{a} << 32) | std::uint64_t{b});
+  ignoredSorted_ = false;
+}
+
+bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
+                                    const std::vector<BodyShape>& shapes, double time, Contact& out) {
+  out.manifold.count = 0;
+  // Body indices, the lower first (a destroyed body's index goes to the last body, whose proxy id
+  // stays as it was).
+  ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
+  if (pair.a > pair.b) std::swap(pair.a, pair.b);
+  if (!ignored_.empty() &&
+      std::binary_search(ignored_.begin(), ignored_.end(), (std::uint64_t{pair.a} << 32) | std::uint64_t{pair.b})) {
+    return false;
+  }
+  const RigidBody& a = bodies[pair.a];
+  const RigidBody& b = bodies[pair.b];
+  if (!a.awake() && !b.awake()) {
+    // Both asleep: the contact they fell asleep with (Box2D keeps a sleeping set's contacts,
+    // solver_set.c), so that an island woken this step has its inner contacts in place; without
+    // them each body it woke fell a step unsupported, and sleep cost a 4000-box pile time.
+    const bool grid = shapes[pair.a].sdf || shapes[pair.b].sdf;  // several manifolds: left out, as before
+    if (!grid) kept(Contact::Kind::BodyBody, pair.a, pair.b, out);
+    return false;
+  }
+  // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
+  // K = 0), so no impulse could separate them.
+  if (!a.isDynamic() && !b.isDynamic()) return false;
+  if (shapes[pair.a].sdf || shapes[pair.b].sdf) return true;
+  const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+  if (a.shape().isRound() || b.shape().isRound()) {
+    const ContactManifold m = collideRoundPair(posed(a), posed(b), margin);
+    if (settings_.logQueries) log_.record(summarize(QueryKind::Round, pair.a, pair.b, m, 0.0, time));
+    out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, m};
+    return false;
+  }
+  std::optional<OrientedBox> boxA, boxB;
+  if (a.shape().type == ShapeType::Box && b.shape().type == ShapeType::Box) {
+    boxA = OrientedBox{a.position(), a.rotation(), a.shape().halfExtents};
+    boxB = OrientedBox{b.position(), b.rotation(), b.shape().halfExtents};
+  }
+  ConvexContact c;
+  if (!boxA && (climbs(a) || climbs(b))) {
+    const PosedHullSupport hullA(posed(a)), hullB(posed(b));
+    const PointSetSupport pointsA(a.worldVertices()), pointsB(b.worldVertices());
+    c = collideConvex(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(),
+                      climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), margin);
+  } else {
+    c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr, boxB ? &*boxB : nullptr);
+  }
+  if (settings_.logQueries) {
+    log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold, c.distance, time));
+  }
+  out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold};
+  return false;
+}
+
+std::uint64_t CollisionPipeline::keptKey(Contact::Kind kind, std::size_t a, std::size_t b) {
+  // Either order for two bodies: a body renumbered by removeBody may now come first.
+  if (kind == Contact::Kind::BodyBody && a > b) std::swap(a, b);
+  return (std::uint64_t{kind == Contact::Kind::PlaneBody} << 63) | (std::uint64_t{a} << 32) | std::uint64_t{b};
+}
+
+void CollisionPipeline::kept(Contact::Kind kind, std::size_t a, std::size_t b, Contact& out) const {
+  const std::uint64_t key = keptKey(kind, a, b);
+  const auto it = std::lower_bound(asleep_.begin(), asleep_.end(), std::make_pair(key, std::uint32_t{0}));
+  if (it != asleep_.end() && it->first == key) out = previous_[it->second];
+}
+
+void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+                                    const std::vector<Plane>& planes, double time) {
+  previous_.swap(contacts_);
+  contacts_.clear();
+  asleep_.clear();
+  for (std::size_t i = 0; i < previous_.size(); ++i) {
+    const Contact& c = previous_[i];
+    const bool plane = c.kind == Contact::Kind::PlaneBody;
+    if (c.part == 0 && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
+      asleep_.emplace_back(keptKey(c.kind, c.a, c.b), static_cast<std::uint32_t>(i));
+    }
+  }
+  std::sort(asleep_.begin(), asleep_.end());
+  if (!ignoredSorted_) {
+    std::sort(ignored_.begin(), ignored_.end());
+    ignoredSorted_ = true;
+  }
+  // The query log is one ring buffer: a logged step collides on the calling thread alone.
+  const int threads = settings_.logQueries ? 1 : settings_.threads;
+  // RigidBody::worldVertices() fills its body's cache on first use: filled here, one body per
+  // item, so that the pairs below, which share bodies across threads, only read it.
+  parallelFor(bodies.size(), threads, [&](std::size_t i) {
+    if (!bodies[i].shape().isRound()) bodies[i].worldVertices();
+  });
+  const std::vector<ProxyPair>& pairs = broad_->pairs();
+  pairSlots_.resize(pairs.size());
+  sdfPair_.assign(pairs.size(), 0);
+  parallelFor(pairs.size(), threads, [&](std::size_t k) {
+    sdfPair_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k]) ? 1 : 0;
+  });
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (!sdfPair_[k]) {
+      if (pairSlots_[k].manifold.count > 0) contacts_.push_back(pairSlots_[k]);
+      continue;
+    }
+    ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[pairs[k].a]), static_cast<ProxyId>(bodyOfProxy_[pairs[k].b])};
+    if (pair.a > pair.b) std::swap(pair.a, pair.b);
+    const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+    const std::vector<ContactManifold> manifolds = collideSdf(bodies[pair.a], shapes[pair.a], bodies[pair.b], shapes[pair.b], margin);
+    for (std::size_t m = 0; m < manifolds.size(); ++m) {
+      if (settings_.logQueries) log_.record(summarize(QueryKind::Sdf, pair.a, pair.b, manifolds[m], 0.0, time));
+      contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, static_cast<std::uint8_t>(m), manifolds[m]});
+    }
+  }
+  const std::size_t n = bodies.size();
+  planeSlots_.resize(planes.size() * n);
+  parallelFor(planes.size() * n, threads, [&](std::size_t k) {
+    const std::size_t p = k / n, i = k % n;
+    Contact& out = planeSlots_[k];
+    out.manifold.count = 0;
+    if (!bodies[i].isDynamic()) return;
+    if (!bodies[i].awake()) {  // the contact it fell asleep with, as for two sleeping bodies
+      kept(Contact::Kind::PlaneBody, p, i, out);
+      return;
+    }
+    if (!aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
+    const double margin = settings_.contactMargin + reach_[i];
+    const bool round = bodies[i].shape().isRound();
+    const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
+                                    : collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin,
+                                                         reach_[i] + kPlaneSupportSlack);
+    if (settings_.logQueries) {
+      log_.record(summarize(round ? QueryKind::PlaneRound : QueryKind::PlaneConvex, static_cast<std::uint32_t>(p),
+                            static_cast<std::uint32_t>(i), m, 0.0, time));
+    }
+    out = {Contact::Kind::PlaneBody, p, i, 0, m};
+  });
+  for (const Contact& c : planeSlots_) {
+    if (c.manifold.count > 0) contacts_.push_back(c);
+  }
+}
+
+}  // namespace rbsim

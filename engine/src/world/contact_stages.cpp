@@ -1,0 +1,109 @@
+// The contact stages of World::step: the two orders of the pipeline (soft step collides first and
+// lets the solver advance the bodies it finds in contact; PGS integrates first and answers the
+// contacts of the new poses) and the SolveContacts stage itself.
+#include <algorithm>
+#include <cmath>
+
+#include "world/islands.h"
+#include "rbsim/world/world.h"
+
+namespace rbsim {
+
+namespace {
+
+bool isFinite(const BodyState& s) {
+  return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
+         s.angularMomentum.allFinite();
+}
+
+}  // namespace
+
+void World::stepSoft(bool withGravity, bool awake, bool collides) {
+  // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
+  // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
+  // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
+  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  });
+  runStage(Stage::NarrowPhase, collides && awake, [&] {
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+  });
+  const bool sweeping = settings_.continuousCollision && collides && awake;
+  if (sweeping) collision_.rememberStart(bodies_);
+  softStep_.clearAdvanced();
+  // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
+  // are contacts between sleeping bodies, which receive nothing.
+  // Joints are solved with the contacts, so a scene with joints runs the stage every awake step.
+  const bool contactsToSolve = !collision_.contacts().empty() && settings_.respondToContacts;
+  runStage(Stage::SolveContacts, awake && (contactsToSolve || !joints_.empty()), [&] {
+    if (contactsToSolve || !joints_.empty()) solveContacts(withGravity);
+  });
+  runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_, &softStep_.advancedFlags()); });
+}
+
+void World::stepPgs(bool withGravity, bool awake, bool collides) {
+  // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
+  const bool sweeping = settings_.continuousCollision && collides && awake;
+  runStage(Stage::Integrate, awake, [&] {
+    if (sweeping) collision_.rememberStart(bodies_);
+    integrateBodies(withGravity);
+  });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
+  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  });
+  runStage(Stage::NarrowPhase, collides && awake, [&] {
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+  });
+  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+    if (settings_.respondToContacts) solveContacts(withGravity);
+  });
+}
+
+void World::wakeTouchedIslands() {
+  // A sleeping island touched by an awake body wakes whole, in the step of the touch (Box2D's
+  // b2WakeSolverSet). Its bodies kept their contacts while asleep (CollisionPipeline::narrowPhase),
+  // so it wakes standing on them. Woken one layer a step, each newly woken body fell a step with
+  // nothing under it, and woke the next.
+  const auto dynamicPair = [&](const Contact& c) {
+    return c.kind == Contact::Kind::BodyBody && !bodies_[c.a].isStatic() && !bodies_[c.b].isStatic();
+  };
+  const std::vector<Contact>& contacts = collision_.contacts();
+  const bool touched = std::any_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
+    return dynamicPair(c) && bodies_[c.a].awake() != bodies_[c.b].awake();
+  });
+  if (!touched) return;
+  Islands islands(bodies_.size());
+  for (const Contact& c : contacts) {
+    if (dynamicPair(c)) islands.link(c.a, c.b);
+  }
+  std::vector<char> woken(bodies_.size(), 0);  // per island root
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].awake()) woken[islands.find(i)] = 1;
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!bodies_[i].awake() && woken[islands.find(i)]) bodies_[i].wake();
+  }
+}
+
+void World::solveContacts(bool withGravity) {
+  wakeTouchedIslands();
+  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
+    contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
+    return;
+  }
+  wakeJointed();
+  static const std::vector<Contact> kNoContacts;
+  const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_.contacts() : kNoContacts;
+  softStep_.step(bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity);
+  checkFinite(softStep_.advancedBodies());
+}
+
+void World::checkFinite(const std::vector<std::size_t>& bodies) const {
+  for (std::size_t i : bodies) {
+    if (!isFinite(bodies_[i].state())) reportDivergence(bodies_[i], bodies_[i].state());
+  }
+}
+
+}  // namespace rbsim
