@@ -21,6 +21,7 @@
 #include "run/particle_view.h"
 #include "memory_bound.h"
 #include "rbsim/world/world.h"
+#include "rbsim/world/systems.h"
 
 namespace {
 
@@ -72,8 +73,8 @@ World particleWorld(int count) {
   def.dragLinear = 1e-4;
   def.dragQuadratic = 1e-5;
   def.collision.restitution = 0.5;
-  world.addParticleSystem(def);
-  ParticleStore& p = world.particleSystems()[0].particles();
+  addParticleSystem(world, def);
+  ParticleStore& p = particleSystems(world)[0].particles();
   UniformRandom random(kSeed);
   for (int i = 0; i < count; ++i) {
     const std::size_t k = p.add();
@@ -104,7 +105,7 @@ void stepParticles(benchmark::State& state) {
       state.ResumeTiming();
     }
     world.step();
-    benchmark::DoNotOptimize(world.particleSystems()[0].particles().position.back());
+    benchmark::DoNotOptimize(particleSystems(world)[0].particles().position.back());
   }
   state.SetItemsProcessed(state.iterations() * count);
   state.counters["bytes_per_particle_step"] = static_cast<double>(bytesPerParticleStep());

@@ -7,6 +7,7 @@
 #include <libdeflate.h>
 #include <nlohmann/json.hpp>
 
+#include "rbsim/world/systems.h"
 #include "rbsim/io/input_error.h"
 
 namespace rbsim::app {
@@ -86,8 +87,8 @@ void RecordWriter::write(std::size_t world, const World& state) {
     appendVec(raw_, s.angularMomentum);
     append(raw_, static_cast<std::uint8_t>(b.awake() ? 1 : 0));
   }
-  append(raw_, static_cast<std::uint32_t>(state.particleSystems().size()));
-  for (const ParticleSystem& system : state.particleSystems()) {
+  append(raw_, static_cast<std::uint32_t>(particleSystems(state).size()));
+  for (const ParticleSystem& system : particleSystems(state)) {
     const ParticleStore& p = system.particles();
     append(raw_, static_cast<std::uint32_t>(p.count()));
     for (std::size_t i = 0; i < p.count(); ++i) {
@@ -100,8 +101,8 @@ void RecordWriter::write(std::size_t world, const World& state) {
       append(raw_, p.size[i]);
     }
   }
-  append(raw_, static_cast<std::uint32_t>(state.softBodies().size()));
-  for (const SoftBody& soft : state.softBodies()) {
+  append(raw_, static_cast<std::uint32_t>(softBodies(state).size()));
+  for (const SoftBody& soft : softBodies(state)) {
     append(raw_, static_cast<std::uint32_t>(soft.positions().size()));
     for (const Vec3& x : soft.positions()) appendVec(raw_, x);
     for (const Vec3& v : soft.velocities()) appendVec(raw_, v);
@@ -294,8 +295,8 @@ void RecordReader::restoreEntry(std::size_t index, World& world, bool nextStep) 
   world.restore(step, states_, awake_);
   std::uint32_t systems = 0;
   get(systems);
-  if (systems != world.particleSystems().size()) fail("an entry's particle systems do not match the scene's");
-  for (ParticleSystem& system : world.particleSystems()) {
+  if (systems != particleSystems(world).size()) fail("an entry's particle systems do not match the scene's");
+  for (ParticleSystem& system : particleSystems(world)) {
     ParticleStore& p = system.particles();
     std::uint32_t count = 0;
     get(count);
@@ -311,10 +312,10 @@ void RecordReader::restoreEntry(std::size_t index, World& world, bool nextStep) 
       get(p.size[i]);
     }
   }
-  std::uint32_t softBodies = 0;
-  get(softBodies);
-  if (softBodies != world.softBodies().size()) fail("an entry's soft bodies do not match the scene's");
-  for (SoftBody& soft : world.softBodies()) {
+  std::uint32_t softCount = 0;
+  get(softCount);
+  if (softCount != softBodies(world).size()) fail("an entry's soft bodies do not match the scene's");
+  for (SoftBody& soft : softBodies(world)) {
     std::uint32_t nodes = 0;
     get(nodes);
     if (nodes != soft.positions().size()) fail("an entry's soft body nodes do not match the scene's");

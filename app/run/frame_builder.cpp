@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "rbsim/world/systems.h"
 #include "run/collision_view.h"
 #include "run/particle_view.h"
 #include "run/planar_view.h"
@@ -148,9 +149,9 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
     });
     if (freeFlight != nullptr) overlay.rows.push_back({"vs exact spin", formatFreeFlightError(freeFlight->read(world))});
   }
-  if (!world.particleSystems().empty()) addParticleView(world, scene, frame);
-  if (!world.softBodies().empty()) addSoftView(world, frame);
-  if (world.planarWorld() != nullptr) addPlanarView(world, scene, frame);
+  if (!particleSystems(world).empty()) addParticleView(world, scene, frame);
+  if (!softBodies(world).empty()) addSoftView(world, frame);
+  if (planarWorld(world) != nullptr) addPlanarView(world, scene, frame);
   if (view.aabbs || view.contacts) addCollisionView(world, scene, frame);
   if (!world.joints().empty()) addJointLines(world, frame);
   return frame;

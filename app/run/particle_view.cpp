@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "rbsim/world/systems.h"
 #include "run/to_glm.h"
 
 namespace rbsim::app {
@@ -55,7 +56,7 @@ render::BodyView clothOf(const ParticleSystem& system) {
 }  // namespace
 
 void addParticleView(const World& world, const Scene& scene, render::FrameData& frame) {
-  const auto& systems = world.particleSystems();
+  const auto& systems = particleSystems(world);
   for (std::size_t k = 0; k < systems.size(); ++k) {
     const ParticleSystem& system = systems[k];
     const ParticleLook look = k < scene.particleLooks.size() ? scene.particleLooks[k] : ParticleLook{};

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <map>
 
+#include "rbsim/world/systems.h"
+
 namespace rbsim::app {
 
 namespace {
@@ -32,7 +34,7 @@ const Triangles& prismTriangles(std::size_t n) {
 }  // namespace
 
 void addPlanarView(const World& world, const Scene& scene, render::FrameData& frame) {
-  const PlanarWorld* planar = world.planarWorld();
+  const PlanarWorld* planar = planarWorld(world);
   if (planar == nullptr) return;
   const float half = static_cast<float>(0.5 * scene.planarDepth);
   for (std::size_t b = 0; b < planar->bodies().size(); ++b) {

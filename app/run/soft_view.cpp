@@ -3,13 +3,14 @@
 #include <cstdio>
 #include <string>
 
+#include "rbsim/world/systems.h"
 #include "run/format.h"
 #include "run/to_glm.h"
 
 namespace rbsim::app {
 
 void addSoftView(const World& world, render::FrameData& frame) {
-  for (const SoftBody& soft : world.softBodies()) {
+  for (const SoftBody& soft : softBodies(world)) {
     render::BodyView view;
     view.worldVertices.reserve(soft.positions().size());
     Vec3 centre = Vec3::Zero();
@@ -24,8 +25,8 @@ void addSoftView(const World& world, render::FrameData& frame) {
     view.smooth = true;
     frame.bodies.push_back(std::move(view));
   }
-  if (world.softBodies().empty()) return;
-  const SoftBody& soft = world.softBodies().front();
+  if (softBodies(world).empty()) return;
+  const SoftBody& soft = softBodies(world).front();
   std::vector<std::pair<std::string, std::string>>& rows = frame.overlay.rows;
   rows.push_back({"soft body", soft.name() + format(" (%.0f tetrahedra, %.3g kg)", static_cast<double>(soft.tetCount()), soft.mass())});
   rows.push_back({"model", constitutiveModelName(soft.elasticity().model)});

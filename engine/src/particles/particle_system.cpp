@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "math/fnv.h"
 #include "particles/cloth.h"
 #include "rbsim/integrate/simulation_error.h"
 
@@ -144,14 +145,7 @@ void ParticleSystem::checkFinite(double t, double dt) const {
 }
 
 std::uint64_t ParticleSystem::hashState(std::uint64_t hash) const {
-  const auto mix = [&hash](double value) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    for (int i = 0; i < 8; ++i) {
-      hash ^= (bits >> (8 * i)) & 0xffu;
-      hash *= 1099511628211ull;  // FNV-1a 64-bit prime
-    }
-  };
+  const auto mix = [&hash](double value) { hash = fnvMix(hash, value); };
   mix(static_cast<double>(store_.count()));
   for (std::size_t i = 0; i < store_.count(); ++i) {
     for (int k = 0; k < 3; ++k) mix(store_.position[i][k]);

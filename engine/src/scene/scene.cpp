@@ -1,3 +1,4 @@
+#include "rbsim/world/systems.h"
 #include "rbsim/scene/scene.h"
 
 #include <cmath>
@@ -120,9 +121,9 @@ World buildWorld(const Scene& scene) {
   for (const Spring& s : scene.springs) world.addSpring(s);
   for (const JointDef& j : scene.joints) world.addJoint(j);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
-  for (const ParticleSystemDef& def : scene.particleSystems) world.addParticleSystem(def);
-  for (const SoftBodyDef& def : scene.softBodies) world.addSoftBody(def);
-  if (scene.planar) world.setPlanarWorld(*scene.planar);
+  for (const ParticleSystemDef& def : scene.particleSystems) addParticleSystem(world, def);
+  for (const SoftBodyDef& def : scene.softBodies) addSoftBody(world, def);
+  if (scene.planar) setPlanarWorld(world, *scene.planar);
   return world;
 }
 

@@ -8,6 +8,8 @@
 
 #include "rbsim/world/world.h"
 
+#include "rbsim/fracture/fracture.h"
+
 namespace rbsim {
 
 namespace {
@@ -108,7 +110,7 @@ void World::destroyBody(BodyId id) {
     if (joint.def.bodyA == last) joint.def.bodyA = removed;
     if (joint.def.bodyB == last) joint.def.bodyB = removed;
   }
-  for (ParticleSystem& system : particleSystems_) system.bodyRemoved(removed, last, removed);
+  for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(removed, last, removed);
   if (fracturePatterns_[removed]) --breakableBodies_;
   swapRemove(bodies_, removed);
   swapRemove(bodyMaterials_, removed);

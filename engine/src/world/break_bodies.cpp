@@ -6,6 +6,8 @@
 
 #include "rbsim/world/world.h"
 
+#include "rbsim/fracture/fracture.h"
+
 namespace rbsim {
 
 void World::breakBodies() {

@@ -10,7 +10,8 @@
 #include <string>
 
 #include "rbsim/integrate/integrator.h"
-#include "soft/soft_contact.h"
+#include "math/fnv.h"
+#include "rbsim/fracture/fracture.h"
 #include "world/islands.h"
 #include "rbsim/integrate/simulation_error.h"
 
@@ -70,9 +71,7 @@ const char* stageName(Stage stage) {
     case Stage::SolveContacts: return "solve-contacts";
     case Stage::BreakBodies: return "break-bodies";
     case Stage::UpdateSleep: return "update-sleep";
-    case Stage::StepParticles: return "step-particles";
-    case Stage::StepSoftBodies: return "step-soft-bodies";
-    case Stage::StepPlanar: return "step-planar";
+    case Stage::StepSystems: return "step-systems";
     case Stage::Count: break;
   }
   return "unknown";
@@ -134,23 +133,10 @@ void World::addPlane(const Plane& plane, const Material& material) {
   planeMaterials_.push_back(material);
 }
 
-void World::setPlanarWorld(const PlanarWorld& planar) {
-  PlanarSettings settings = planar.settings();
-  settings.timeStep = settings_.timeStep;
-  settings.gravity = Vec2(settings_.gravity.x(), settings_.gravity.y());
-  planar_.emplace(settings);
-  for (const PlanarBody& body : planar.bodies()) planar_->addBody(body);
-  for (const PlanarLine& line : planar.lines()) planar_->addLine(line);
-}
-
-std::size_t World::addSoftBody(const SoftBodyDef& def) {
-  softBodies_.emplace_back(def);
-  return softBodies_.size() - 1;
-}
-
-std::size_t World::addParticleSystem(const ParticleSystemDef& def) {
-  particleSystems_.emplace_back(def, bodies_);
-  return particleSystems_.size() - 1;
+StepListener& World::addStepListener(std::unique_ptr<StepListener> listener) {
+  if (!listener) throw std::invalid_argument("addStepListener: no listener");
+  listeners_.push_back(std::move(listener));
+  return *listeners_.back();
 }
 
 void World::addPoseEvent(const PoseEvent& event) {
@@ -188,23 +174,10 @@ void World::step() {
     if (breakableBodies_ > 0 && solved && settings_.respondToContacts) breakBodies();
   });
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
-  runStage(Stage::StepParticles, !particleSystems_.empty(), [&] {
-    for (ParticleSystem& system : particleSystems_) system.step(t, settings_.timeStep, settings_.gravity, bodies_, bodyShapes_, planes_);
-  });
-  runStage(Stage::StepSoftBodies, !softBodies_.empty(), [&] {
-    for (SoftBody& soft : softBodies_) {
-      try {
-        soft.step(settings_.timeStep, settings_.gravity, planes_, planeMaterials_);
-      } catch (const std::domain_error& e) {  // non-finite nodes, or an inverted neo-Hookean element
-        const std::string what = e.what();
-        const std::string who = what.find(soft.name()) == std::string::npos ? "soft body '" + soft.name() + "': " : "";
-        throw SimulationError("step " + std::to_string(stepCount_) + ": " + who + what);
-      }
-      if (settings_.detectCollisions) collideSoftWithRigid(soft, bodies_, bodyShapes_, bodyMaterials_, soft.material());
-    }
-  });
-  runStage(Stage::StepPlanar, planar_.has_value(), [&] {
-    if (planar_) planar_->step();  // skipIdleStages = false runs every stage, needed or not
+  const bool systemsBusy = std::any_of(listeners_.begin(), listeners_.end(), [](const auto& l) { return !l->idle(); });
+  runStage(Stage::StepSystems, systemsBusy, [&] {
+    const StepContext context{t, stepCount_, settings_, bodies_, bodyShapes_, bodyMaterials_, planes_, planeMaterials_};
+    for (const std::unique_ptr<StepListener>& listener : listeners_) listener->step(context);
   });
   ++stepCount_;
 }
@@ -339,15 +312,8 @@ std::size_t World::awakeCount() const {
 }
 
 std::uint64_t World::stateHash() const {
-  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
-  auto mix = [&hash](double value) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    for (int i = 0; i < 8; ++i) {
-      hash ^= (bits >> (8 * i)) & 0xffu;
-      hash *= 1099511628211ull;  // FNV-1a 64-bit prime
-    }
-  };
+  std::uint64_t hash = kFnvOffsetBasis;
+  auto mix = [&hash](double value) { hash = fnvMix(hash, value); };
   for (const RigidBody& body : bodies_) {
     const BodyState& s = body.state();
     for (int i = 0; i < 3; ++i) mix(s.position[i]);
@@ -355,23 +321,7 @@ std::uint64_t World::stateHash() const {
     for (int i = 0; i < 3; ++i) mix(s.linearMomentum[i]);
     for (int i = 0; i < 3; ++i) mix(s.angularMomentum[i]);
   }
-  for (const ParticleSystem& system : particleSystems_) hash = system.hashState(hash);
-  if (planar_) {
-    for (const PlanarBody& b : planar_->bodies()) {
-      const PlanarState& s = b.state();
-      for (double value : {s.position.x(), s.position.y(), s.angle, s.linearMomentum.x(), s.linearMomentum.y(), s.angularMomentum}) {
-        mix(value);
-      }
-    }
-  }
-  for (const SoftBody& soft : softBodies_) {
-    for (const Vec3& x : soft.positions()) {
-      for (int i = 0; i < 3; ++i) mix(x[i]);
-    }
-    for (const Vec3& v : soft.velocities()) {
-      for (int i = 0; i < 3; ++i) mix(v[i]);
-    }
-  }
+  for (const std::unique_ptr<StepListener>& listener : listeners_) hash = listener->hashState(hash);
   return hash;
 }
 

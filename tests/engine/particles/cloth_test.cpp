@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rbsim/world/systems.h"
 #include "rbsim/math/uniform_random.h"
 #include "rbsim/integrate/simulation_error.h"
 #include "particle_test_util.h"
@@ -38,8 +39,8 @@ ParticleSystemDef freeCloth(ParticleIntegrator integrator) {
 // Every node gets a random velocity: the springs stretch and swing, and the momentum must stay.
 World shakenCloth(ParticleIntegrator integrator) {
   World world(particleSettings(1.0 / 240.0, Vec3::Zero()));
-  world.addParticleSystem(freeCloth(integrator));
-  ParticleStore& p = world.particleSystems()[0].particles();
+  addParticleSystem(world, freeCloth(integrator));
+  ParticleStore& p = particleSystems(world)[0].particles();
   UniformRandom random(42);
   for (std::size_t i = 0; i < p.count(); ++i) p.velocity[i] = random.between(0.0, 1.5) * random.direction();
   return world;
@@ -47,8 +48,8 @@ World shakenCloth(ParticleIntegrator integrator) {
 
 TEST(Cloth, BuildsTheGridItsDefinitionAsksFor) {
   World world(particleSettings(1.0 / 240.0, Vec3::Zero()));
-  world.addParticleSystem(freeCloth(ParticleIntegrator::SemiImplicitEuler));
-  const ParticleSystem& cloth = world.particleSystems()[0];
+  addParticleSystem(world, freeCloth(ParticleIntegrator::SemiImplicitEuler));
+  const ParticleSystem& cloth = particleSystems(world)[0];
   EXPECT_EQ(cloth.particles().count(), 108u);
   EXPECT_EQ(cloth.clothTriangles().size(), 2u * 11u * 8u);
   // Structural 11*9 + 12*8, shear 2*11*8, bend 10*9 + 12*7.
@@ -68,7 +69,7 @@ TEST(Cloth, ConservesLinearMomentumWithoutExternalForces) {
   for (const auto& [integrator, steps] : {std::pair{ParticleIntegrator::SemiImplicitEuler, 480},
                                           std::pair{ParticleIntegrator::ExplicitEuler, 24}}) {
     World world = shakenCloth(integrator);
-    const ParticleStore& p = world.particleSystems()[0].particles();
+    const ParticleStore& p = particleSystems(world)[0].particles();
     const Vec3 before = p.momentum();
     const Vec3 start = p.position[0];
     stepN(world, steps);
@@ -92,19 +93,19 @@ double energy(const ParticleSystem& cloth) {
 TEST(Cloth, ExplicitEulerGainsEnergySemiImplicitEulerDoesNot) {
   World semi = shakenCloth(ParticleIntegrator::SemiImplicitEuler);
   World explicitEuler = shakenCloth(ParticleIntegrator::ExplicitEuler);
-  const double before = energy(semi.particleSystems()[0]);
+  const double before = energy(particleSystems(semi)[0]);
   stepN(semi, 240);
   stepN(explicitEuler, 240);
-  EXPECT_LT(energy(semi.particleSystems()[0]), before) << "damped springs lose energy";
-  EXPECT_GT(energy(explicitEuler.particleSystems()[0]), 100.0 * before);
+  EXPECT_LT(energy(particleSystems(semi)[0]), before) << "damped springs lose energy";
+  EXPECT_GT(energy(particleSystems(explicitEuler)[0]), 100.0 * before);
 }
 
 TEST(Cloth, AStretchedSpringPullsItsEndsTogether) {
   World world(particleSettings(1e-3, Vec3::Zero()));
   ParticleSystemDef def = freeCloth(ParticleIntegrator::SemiImplicitEuler);
   def.cloth.nu = def.cloth.nv = 2;
-  world.addParticleSystem(def);
-  ParticleStore& p = world.particleSystems()[0].particles();
+  addParticleSystem(world, def);
+  ParticleStore& p = particleSystems(world)[0].particles();
   p.position[1].x() += 0.5;  // node (1, 0) pulled away along +x
   world.step();
   EXPECT_LT(p.velocity[1].x(), 0.0);
@@ -116,8 +117,8 @@ TEST(Cloth, PinnedNodesStayWhereTheyAre) {
   ParticleSystemDef def = freeCloth(ParticleIntegrator::SemiImplicitEuler);
   def.cloth.pinned = {{0, 0}, {11, 0}};
   def.substeps = 4;
-  world.addParticleSystem(def);
-  const ParticleStore& p = world.particleSystems()[0].particles();
+  addParticleSystem(world, def);
+  const ParticleStore& p = particleSystems(world)[0].particles();
   const Vec3 corner = p.position[11];
   const double y50 = p.position[50].y();
   stepN(world, 240);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rbsim/world/systems.h"
 #include "particle_test_util.h"
 
 namespace rbsim {
@@ -36,13 +37,13 @@ TEST(Emitter, RateTimesLifetimeGivesTheLiveCount) {
   for (const auto& [rate, lifetime] : {std::pair{100.0, 1.0}, std::pair{1000.0, 0.5}, std::pair{37.0, 2.5}}) {
     World world(particleSettings(dt, Vec3(0.0, -9.81, 0.0)));
     world.addPlane(Plane{});
-    world.addParticleSystem(fountain(rate, lifetime));
+    addParticleSystem(world, fountain(rate, lifetime));
     const int steps = static_cast<int>(std::ceil(1.5 * lifetime / dt));
     stepN(world, steps);
-    const double live = static_cast<double>(world.particleSystems()[0].particles().count());
+    const double live = static_cast<double>(particleSystems(world)[0].particles().count());
     // Births in the last `lifetime` seconds, within one step's births of R L.
     EXPECT_NEAR(live, rate * lifetime, rate * dt + 1.0) << rate << " /s, " << lifetime << " s";
-    EXPECT_NEAR(static_cast<double>(world.particleSystems()[0].emitted()), rate * steps * dt, 1.0);
+    EXPECT_NEAR(static_cast<double>(particleSystems(world)[0].emitted()), rate * steps * dt, 1.0);
   }
 }
 
@@ -50,14 +51,14 @@ TEST(Emitter, AFullStoreRefusesBirthsAndCountsThem) {
   World world(particleSettings(0.01, Vec3::Zero()));
   ParticleSystemDef def = fountain(1000.0, 10.0);
   def.capacity = 50;
-  world.addParticleSystem(def);
-  const ParticleStore& p = world.particleSystems()[0].particles();
+  addParticleSystem(world, def);
+  const ParticleStore& p = particleSystems(world)[0].particles();
   const Vec3* storage = p.position.data();
   stepN(world, 10);  // 100 due
   EXPECT_EQ(p.count(), 50u);
-  EXPECT_EQ(world.particleSystems()[0].emitted(), 50u);
+  EXPECT_EQ(particleSystems(world)[0].emitted(), 50u);
   // Of the 100 due, 10 a step (rate dt accumulated in floating point: 99 or 100).
-  EXPECT_NEAR(static_cast<double>(world.particleSystems()[0].lost()), 50.0, 1.0);
+  EXPECT_NEAR(static_cast<double>(particleSystems(world)[0].lost()), 50.0, 1.0);
   EXPECT_EQ(p.position.data(), storage) << "no reallocation";
 }
 
@@ -70,9 +71,9 @@ TEST(Emitter, SamplesLieInTheirShapesAndCone) {
   e.direction = Vec3(1.0, 1.0, 0.0).normalized();
   e.position = Vec3(1.0, 2.0, 3.0);
   e.speedMin = e.speedMax = 0.0;  // stay where born
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   world.step();
-  const ParticleStore& p = world.particleSystems()[0].particles();
+  const ParticleStore& p = particleSystems(world)[0].particles();
   ASSERT_EQ(p.count(), 2000u);
   double farthest = 0.0;
   for (std::size_t i = 0; i < p.count(); ++i) {
@@ -97,9 +98,9 @@ TEST(Emitter, SamplesLieInTheirShapesAndCone) {
   meshDef.emitters[0].spreadDegrees = 0.0;
   meshDef.emitters[0].speedMin = meshDef.emitters[0].speedMax = 1.0;
   meshDef.collision.bodies = false;
-  boxWorld.addParticleSystem(meshDef);
+  addParticleSystem(boxWorld, meshDef);
   boxWorld.step();
-  const ParticleStore& q = boxWorld.particleSystems()[0].particles();
+  const ParticleStore& q = particleSystems(boxWorld)[0].particles();
   const RigidBody& body = boxWorld.bodies()[0];
   for (std::size_t i = 0; i < q.count(); ++i) {
     const Vec3 local = body.rotation().transpose() * (q.position[i] - dt * q.velocity[i]);  // where born
@@ -120,7 +121,7 @@ TEST(Emitter, AFixedSeedGivesIdenticalRunsAndAnotherSeedDoesNot) {
     def.dragLinear = 0.002;
     def.wind.velocity = Vec3(1.0, 0.0, 0.0);
     def.wind.turbulence = 2.0;
-    world.addParticleSystem(def);
+    addParticleSystem(world, def);
     stepN(world, 400);
     return world.stateHash();
   };

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "particle_test_util.h"
+#include "rbsim/world/systems.h"
 #include "rbsim/particles/particle_collision.h"
 
 namespace rbsim {
@@ -42,8 +43,8 @@ TEST(ParticleCollision, NeverLeavesAParticleBelowAPlane) {
     World world(particleSettings(1.0 / 240.0, Vec3(0.0, -9.81, 0.0)));
     world.addPlane(Plane{Vec3::UnitY(), 0.0});
     world.addPlane(Plane{Vec3(1.0, 1.0, 0.0).normalized(), -0.5});  // a slope through the spray
-    world.addParticleSystem(spray(radius));
-    const ParticleStore& p = world.particleSystems()[0].particles();
+    addParticleSystem(world, spray(radius));
+    const ParticleStore& p = particleSystems(world)[0].particles();
     double lowest = std::numeric_limits<double>::infinity();
     std::size_t checked = 0;
     for (int s = 0; s < 480; ++s) {
@@ -64,9 +65,9 @@ TEST(ParticleCollision, WithoutCollisionsTheSameSprayFallsThrough) {
   world.addPlane(Plane{Vec3::UnitY(), 0.0});
   ParticleSystemDef def = spray(0.0);
   def.collision.planes = false;
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   stepN(world, 120);
-  const ParticleStore& p = world.particleSystems()[0].particles();
+  const ParticleStore& p = particleSystems(world)[0].particles();
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.count(); ++i) lowest = std::min(lowest, p.position[i].y());
   EXPECT_LT(lowest, -1.0);
@@ -82,10 +83,10 @@ TEST(ParticleCollision, NeverLeavesAParticleInsideARigidBox) {
   box.orientation = Quat(Eigen::AngleAxisd(0.4, Vec3::UnitY()));
   world.addBody(box);
   world.addPlane(Plane{Vec3::UnitY(), 0.0});
-  world.addParticleSystem(spray(0.0));
+  addParticleSystem(world, spray(0.0));
   const ConvexShape shape = convexShapeOf(world.bodies()[0].mesh());
   ASSERT_EQ(shape.normals.size(), 6u);
-  const ParticleStore& p = world.particleSystems()[0].particles();
+  const ParticleStore& p = particleSystems(world)[0].particles();
   const RigidBody& body = world.bodies()[0];
   double deepest = -std::numeric_limits<double>::infinity();  // most negative signed distance, negated
   for (int s = 0; s < 360; ++s) {
@@ -125,10 +126,10 @@ TEST(ParticleCollision, AMovingBodyThrowsAParticleAlong) {
   ParticleSystemDef def = singleParticle(0.01, Vec3(0.55, 0.0, 0.0), Vec3::Zero());
   def.collision.bodies = true;
   def.collision.restitution = 1.0;
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   stepN(world, 100);
   // An elastic hit by a wall at 2 m/s leaves at 4 m/s (relative velocity reversed).
-  EXPECT_NEAR(world.particleSystems()[0].particles().velocity[0].x(), 4.0, 1e-9);
+  EXPECT_NEAR(particleSystems(world)[0].particles().velocity[0].x(), 4.0, 1e-9);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rbsim/world/systems.h"
 #include "particle_test_util.h"
 
 namespace rbsim {
@@ -25,9 +26,9 @@ Flight fly(ParticleIntegrator integrator, double dt, int steps, const Vec3& x0, 
   World world(particleSettings(dt, kGravity));
   ParticleSystemDef def = singleParticle(0.2, x0, v0);
   def.integrator = integrator;
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   stepN(world, steps);
-  const ParticleStore& p = world.particleSystems()[0].particles();
+  const ParticleStore& p = particleSystems(world)[0].particles();
   EXPECT_EQ(p.count(), 1u);
   return {p.position[0], p.velocity[0]};
 }
@@ -71,9 +72,9 @@ TEST(Drag, LinearDragReachesTerminalVelocityMgOverK) {
   World world(particleSettings(1e-3, kGravity));
   ParticleSystemDef def = singleParticle(m, Vec3(0.0, 100.0, 0.0), Vec3(4.0, 0.0, 0.0));
   def.dragLinear = k;
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   stepN(world, 10000);  // 40 time constants
-  const Vec3 v = world.particleSystems()[0].particles().velocity[0];
+  const Vec3 v = particleSystems(world)[0].particles().velocity[0];
   const Vec3 terminal = m * kGravity / k;  // 2.4525 m/s down
   EXPECT_NEAR((v - terminal).norm(), 0.0, 1e-9 * terminal.norm());
 }
@@ -83,9 +84,9 @@ TEST(Drag, QuadraticDragReachesTerminalSpeedSqrtMgOverK) {
   World world(particleSettings(1e-3, kGravity));
   ParticleSystemDef def = singleParticle(m, Vec3::Zero(), Vec3::Zero());
   def.dragQuadratic = k2;
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   stepN(world, 20000);
-  const Vec3 v = world.particleSystems()[0].particles().velocity[0];
+  const Vec3 v = particleSystems(world)[0].particles().velocity[0];
   EXPECT_NEAR(v.y(), -std::sqrt(m * kGravity.norm() / k2), 1e-6);
 }
 
@@ -94,9 +95,9 @@ TEST(Drag, WindCarriesAParticleAtTheWindSpeed) {
   ParticleSystemDef def = singleParticle(0.01, Vec3::Zero(), Vec3::Zero());
   def.dragLinear = 0.1;  // time constant 0.1 s
   def.wind.velocity = Vec3(3.0, 0.0, 1.0);
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   stepN(world, 3000);
-  EXPECT_NEAR((world.particleSystems()[0].particles().velocity[0] - def.wind.velocity).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((particleSystems(world)[0].particles().velocity[0] - def.wind.velocity).norm(), 0.0, 1e-9);
 }
 
 TEST(Attractor, PullsAParticleIntoAnOrbitThatKeepsItsEnergy) {
@@ -105,9 +106,9 @@ TEST(Attractor, PullsAParticleIntoAnOrbitThatKeepsItsEnergy) {
   World world(particleSettings(1e-4, Vec3::Zero()));
   ParticleSystemDef def = singleParticle(m, Vec3(r, 0.0, 0.0), Vec3(0.0, 0.0, std::sqrt(s / (m * r))));
   def.attractors.push_back({Vec3::Zero(), s, 1e-6});
-  world.addParticleSystem(def);
+  addParticleSystem(world, def);
   stepN(world, 20000);  // 2 s, about half an orbit (period 2 pi r / v = 8.9 s)
-  const Vec3 x = world.particleSystems()[0].particles().position[0];
+  const Vec3 x = particleSystems(world)[0].particles().position[0];
   EXPECT_NEAR(x.norm(), r, 1e-3);
   EXPECT_GT(std::abs(x.z()), 1.0) << "it moved round, not along a line";
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "rbsim/world/systems.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
 
@@ -67,9 +68,9 @@ TEST(ParticleScene, EveryKeyReachesTheDefinition) {
 
   World world = buildWorld(scene);
   for (int i = 0; i < 100; ++i) world.step();
-  EXPECT_GT(world.particleSystems()[0].particles().count(), 50u);
-  EXPECT_EQ(world.particleSystems()[1].particles().count(), 30u);
-  EXPECT_EQ(world.particleSystems()[2].particles().count(), 40u);
+  EXPECT_GT(particleSystems(world)[0].particles().count(), 50u);
+  EXPECT_EQ(particleSystems(world)[1].particles().count(), 30u);
+  EXPECT_EQ(particleSystems(world)[2].particles().count(), 40u);
 }
 
 TEST(ParticleScene, WorldParticleIntegratorIsTheDefaultASystemMayOverride) {
@@ -92,7 +93,7 @@ TEST(ParticleScene, TheReadmeExampleParsesAndRuns) {
   ASSERT_EQ(scene.particleSystems.size(), 1u);
   World world = buildWorld(scene);
   for (int i = 0; i < 24; ++i) world.step();
-  EXPECT_GT(world.particleSystems()[0].particles().count(), 0u);
+  EXPECT_GT(particleSystems(world)[0].particles().count(), 0u);
 }
 
 TEST(ParticleScene, AParticleOnlySceneNeedsNoBodies) {

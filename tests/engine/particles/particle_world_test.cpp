@@ -1,4 +1,4 @@
-// Particles in the World: stepped by the StepParticles stage only when there are any, and never
+// Particles in the World: stepped by the StepSystems stage (the step hook) only when there are any, and never
 // changing a rigid body (the coupling is one-way).
 #include <memory>
 
@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "particle_test_util.h"
+#include "rbsim/world/systems.h"
 #include "rbsim/scene/scene.h"
 
 namespace rbsim {
@@ -33,7 +34,7 @@ World boxes(bool withParticles) {
     e.rate = 2000.0;
     e.lifetimeMin = e.lifetimeMax = 1.0;
     def.emitters.push_back(e);
-    world.addParticleSystem(def);
+    addParticleSystem(world, def);
   }
   return world;
 }
@@ -41,9 +42,9 @@ World boxes(bool withParticles) {
 TEST(ParticleWorld, TheStageIsSkippedWithoutParticles) {
   World world = boxes(false);
   stepN(world, 50);
-  EXPECT_EQ(world.stageStats(Stage::StepParticles).runs, 0u);
-  EXPECT_EQ(world.stageStats(Stage::StepParticles).skipped, 50u);
-  EXPECT_STREQ(stageName(Stage::StepParticles), "step-particles");
+  EXPECT_EQ(world.stageStats(Stage::StepSystems).runs, 0u);
+  EXPECT_EQ(world.stageStats(Stage::StepSystems).skipped, 50u);
+  EXPECT_STREQ(stageName(Stage::StepSystems), "step-systems");
 }
 
 TEST(ParticleWorld, ParticlesNeverChangeTheRigidBodies) {
@@ -51,8 +52,8 @@ TEST(ParticleWorld, ParticlesNeverChangeTheRigidBodies) {
   World sprayed = boxes(true);
   stepN(plain, 480);
   stepN(sprayed, 480);
-  EXPECT_EQ(sprayed.stageStats(Stage::StepParticles).runs, 480u);
-  EXPECT_GT(sprayed.particleSystems()[0].particles().count(), 1000u);
+  EXPECT_EQ(sprayed.stageStats(Stage::StepSystems).runs, 480u);
+  EXPECT_GT(particleSystems(sprayed)[0].particles().count(), 1000u);
   for (std::size_t b = 0; b < plain.bodies().size(); ++b) {
     const BodyState& a = plain.bodies()[b].state();
     const BodyState& c = sprayed.bodies()[b].state();
@@ -71,7 +72,7 @@ TEST(ParticleWorld, ABadDefinitionIsRefusedNamingTheField) {
   def.emitters[0].shape = EmitterShape::MeshSurface;
   def.emitters[0].body = 7;
   try {
-    world.addParticleSystem(def);
+    addParticleSystem(world, def);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("emitters[0].body"), std::string::npos) << e.what();
@@ -100,13 +101,13 @@ TEST(ParticleWorld, AMeshEmitterStopsWhenItsBodyBreaks) {
   std::uint64_t emittedAtBreak = 0;
   for (int s = 0; s < 200 && world.fractureEvents().empty(); ++s) world.step();
   ASSERT_EQ(world.fractureEvents().size(), 1u) << "the block must break the wall";
-  emittedAtBreak = world.particleSystems()[0].emitted();
+  emittedAtBreak = particleSystems(world)[0].emitted();
   EXPECT_GT(emittedAtBreak, 0u) << "the intact wall smoked";
   EXPECT_NE(world.bodies()[0].mesh().triangles.size(), scene.bodies[0].mesh->triangles.size());
   for (int s = 0; s < 100; ++s) world.step();  // the pieces fall and tumble
-  EXPECT_EQ(world.particleSystems()[0].emitted(), emittedAtBreak)
+  EXPECT_EQ(particleSystems(world)[0].emitted(), emittedAtBreak)
       << "the wall's surface is gone: its emitter emits nothing from the pieces";
-  EXPECT_EQ(world.particleSystems()[0].lost(), 0u);
+  EXPECT_EQ(particleSystems(world)[0].lost(), 0u);
 }
 
 }  // namespace

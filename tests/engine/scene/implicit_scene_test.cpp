@@ -8,6 +8,7 @@
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/world.h"
+#include "rbsim/world/systems.h"
 
 namespace rbsim {
 namespace {
@@ -153,7 +154,7 @@ TEST(ImplicitScene, TheDemoMugKeepsEveryBoxAndGrainInside) {
     EXPECT_GT(b.position().y(), floorTop) << b.name();
     EXPECT_LT(b.velocity().norm(), 0.05) << b.name();
   }
-  const ParticleStore& sand = world.particleSystems().at(0).particles();
+  const ParticleStore& sand = particleSystems(world).at(0).particles();
   ASSERT_GT(sand.count(), 10000u);
   std::size_t outside = 0;
   for (std::size_t i = 0; i < sand.count(); ++i) {

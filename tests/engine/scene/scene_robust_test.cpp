@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rbsim/world/systems.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/integrate/simulation_error.h"
@@ -74,7 +75,7 @@ TEST(SceneRobust, ATinySoftBlockPinsOneFaceOnly) {
 TEST(SceneRobust, ASoftBodyWhoseForcesStopBeingFiniteStopsTheRun) {
   Scene scene = parseScene(softScene(), "test.json", ".");
   World world = buildWorld(scene);
-  world.softBodies()[0].positions()[3].x() = std::nan("");
+  softBodies(world)[0].positions()[3].x() = std::nan("");
   try {
     world.step();
     FAIL() << "expected a SimulationError";
@@ -214,8 +215,8 @@ TEST(SceneRobust, ParticleQuantitiesDerivedFromFiniteNumbersMustBeFinite) {
 TEST(SceneRobust, AParticleThatDivergesStopsTheRunInThatStep) {
   World world = buildWorld(parseScene(particleScene(), "test.json", "."));
   world.step();
-  ASSERT_GT(world.particleSystems()[0].particles().count(), 0u);
-  world.particleSystems()[0].particles().velocity[0].y() = INFINITY;
+  ASSERT_GT(particleSystems(world)[0].particles().count(), 0u);
+  particleSystems(world)[0].particles().velocity[0].y() = INFINITY;
   try {
     world.step();  // step 1, long before the interval check of step 16
     FAIL() << "expected a SimulationError";

@@ -7,6 +7,7 @@
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/mass/mass_properties.h"
 #include "rbsim/world/world.h"
+#include "rbsim/world/systems.h"
 
 namespace rbsim {
 namespace {
@@ -29,16 +30,16 @@ TEST(SoftContact, RigidBoxAndSoftBlockExchangeMomentumExactly) {
   soft.density = 100.0;
   soft.youngsModulus = 2e4;
   soft.damping = 5.0;
-  world.addSoftBody(soft);
-  const auto total = [&] { return Vec3(world.bodies()[0].state().linearMomentum + world.softBodies()[0].linearMomentum()); };
+  addSoftBody(world, soft);
+  const auto total = [&] { return Vec3(world.bodies()[0].state().linearMomentum + softBodies(world)[0].linearMomentum()); };
   const Vec3 before = total();
   for (int step = 0; step < 240; ++step) world.step();
   EXPECT_LT((total() - before).norm(), 1e-9 * before.norm()) << "momentum exchanged, not created";
   EXPECT_LT(world.bodies()[0].velocity().x(), 2.5) << "the block slowed the box";
-  EXPECT_GT(world.softBodies()[0].linearMomentum().x(), 5.0) << "and was pushed";
+  EXPECT_GT(softBodies(world)[0].linearMomentum().x(), 5.0) << "and was pushed";
   // No node is left inside the box.
   const RigidBody& b = world.bodies()[0];
-  for (const Vec3& x : world.softBodies()[0].positions()) {
+  for (const Vec3& x : softBodies(world)[0].positions()) {
     const Vec3 local = b.rotation().transpose() * (x - b.position());
     EXPECT_GT(local.cwiseAbs().maxCoeff(), 0.2 - 1e-9);
   }

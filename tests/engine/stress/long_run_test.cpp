@@ -18,6 +18,7 @@
 #include "stress/stress_length.h"
 #include "test_util.h"
 #include "rbsim/world/world.h"
+#include "rbsim/world/systems.h"
 
 namespace rbsim {
 namespace {
@@ -185,8 +186,8 @@ TEST(LongRun, ParticleFountainStaysFiniteBoundedAndKeepsFlatMemory) {
   fountain.spreadDegrees = 20.0;
   fountain.lifetimeMin = fountain.lifetimeMax = 2.0;
   def.emitters.push_back(fountain);
-  world.addParticleSystem(def);
-  const ParticleSystem& system = world.particleSystems()[0];
+  addParticleSystem(world, def);
+  const ParticleSystem& system = particleSystems(world)[0];
   const double energyCeiling = 0.5 * fountain.speedMax * fountain.speedMax * (1.0 + 1e-9);  // [J/kg]
   double energyMax = 0.0, lowest = 0.0;
   std::size_t mostAlive = 0;

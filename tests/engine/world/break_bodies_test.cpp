@@ -2,6 +2,7 @@
 // pieces within the step, the system's momentum unchanged; hit gently, it stays whole.
 #include <gtest/gtest.h>
 
+#include "rbsim/fracture/fracture.h"
 #include "fracture/pieces.h"
 #include "test_util.h"
 #include "rbsim/world/world.h"

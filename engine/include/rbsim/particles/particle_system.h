@@ -1,8 +1,8 @@
 #pragma once
 // One particle system: its particles (structure of arrays), emitters, springs and the step that
 // moves them by F = ma (seed 000's homework: "Build a particle system based either on F = ma or
-// procedural simulation"). Lives in the World next to the rigid bodies and is stepped by the
-// World's StepParticles stage after the bodies have moved, so particles meet bodies where they are.
+// procedural simulation"). Lives in the World next to the rigid bodies (world/systems.h) and is
+// stepped by its StepSystems stage after the bodies have moved, so particles meet bodies where they are.
 #include <cstdint>
 #include <vector>
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
-#include <optional>
+#include <memory>
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
@@ -14,11 +14,7 @@
 #include "rbsim/dynamics/joint.h"
 #include "rbsim/body/material.h"
 #include "rbsim/dynamics/soft_step_solver.h"
-#include "rbsim/fracture/fracture.h"
-#include "rbsim/particles/particle_collision.h"
-#include "rbsim/particles/particle_system.h"
-#include "rbsim/planar/planar_world.h"
-#include "rbsim/soft/soft_body.h"
+#include "rbsim/dynamics/step_listener.h"
 #include "rbsim/world/body_id.h"
 #include "rbsim/world/collision_pipeline.h"
 #include "rbsim/world/scripts.h"
@@ -26,6 +22,8 @@
 #include "rbsim/settings/settings.h"
 
 namespace rbsim {
+
+struct FracturePattern;  // fracture/fracture.h: a body's pieces, kept per body
 
 // Stages of World::step, in order (as Box2D v3's b2SolverStageType): names for timing and for
 // skipping.
@@ -43,11 +41,8 @@ enum class Stage : int {
   BreakBodies,       // bodies whose contact impulses this step exceed their fracture threshold
                      // break into their pieces (seed 000 "Fracture"); skipped when none can
   UpdateSleep,       // islands of touching bodies, all slow for Settings::timeToSleep, fall asleep
-  StepParticles,     // particle systems: emit, forces, integrate, collide with planes and the
-                     // bodies where they now are, age; skipped when the World has none
-  StepSoftBodies,    // FEM soft bodies: elastic forces, integrate, nodes against planes and rigid
-                     // bodies (both ways); skipped when the World has none
-  StepPlanar,        // the 2D world of polygons (engine/planar), seed 002's 2D rigid bodies
+  StepSystems,       // the step hook: systems beside the rigid bodies (particles, soft bodies,
+                     // the 2D world; world/systems.h), in the order added; skipped when all idle
   Count
 };
 const char* stageName(Stage stage);
@@ -100,17 +95,16 @@ class World {
   std::pair<Vec3, Vec3> springForce(std::size_t spring) const;
   // Static and infinite; throws unless the normal is unit and the material valid.
   void addPlane(const Plane& plane, const Material& material = {});
-  // Throws std::invalid_argument when checkParticleSystemDef finds a problem.
-  std::size_t addParticleSystem(const ParticleSystemDef& def);
-  // Throws std::invalid_argument on a bad definition (SoftBody's constructor).
-  std::size_t addSoftBody(const SoftBodyDef& def);
+  // The step hook (Jolt's PhysicsStepListener): a system stepped after the rigid bodies each
+  // step, in the order added (stage StepSystems). world/systems.h adds particles, soft bodies and
+  // the 2D world this way.
+  StepListener& addStepListener(std::unique_ptr<StepListener> listener);
+  const std::vector<std::unique_ptr<StepListener>>& stepListeners() const { return listeners_; }
   // A ball or hinge joint between def.bodyA (dynamic) and def.bodyB (any body, or kWorldAnchor)
   // at the bodies' poses now (world/joints.cpp). Throws std::invalid_argument on a bad def, and
   // under the PGS solver, which does not solve joints.
   std::size_t addJoint(const JointDef& def);
   const std::vector<Joint>& joints() const { return joints_; }
-  // A 2D world stepped with this World's dt and the x, y components of its gravity.
-  void setPlanarWorld(const PlanarWorld& planar);
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
   void step();
@@ -127,11 +121,6 @@ class World {
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
   const std::vector<Spring>& springs() const { return springs_; }
   const std::vector<Plane>& planes() const { return planes_; }
-  const std::vector<ParticleSystem>& particleSystems() const { return particleSystems_; }
-  std::vector<ParticleSystem>& particleSystems() { return particleSystems_; }
-  const std::vector<SoftBody>& softBodies() const { return softBodies_; }
-  std::vector<SoftBody>& softBodies() { return softBodies_; }
-  const PlanarWorld* planarWorld() const { return planar_ ? &*planar_ : nullptr; }
   std::size_t awakeCount() const;
   const CollisionPipeline& collision() const { return collision_; }
   const std::vector<Contact>& contacts() const { return collision_.contacts(); }
@@ -150,8 +139,8 @@ class World {
   // Used by stage AccumulateForces and by renderers that draw force arrows.
   std::vector<std::pair<Vec3, Vec3>> activeForces(std::size_t body, double t) const;
 
-  // FNV-1a over the bit patterns of every body's state, then of every particle's (when there are
-  // any, so a scene without particles hashes as it always has): equal hashes mean identical runs.
+  // FNV-1a over the bit patterns of every body's state, then of each step listener's (particles,
+  // soft nodes, 2D bodies; nothing when there are none): equal hashes mean identical runs.
   std::uint64_t stateHash() const;
 
  private:
@@ -189,9 +178,7 @@ class World {
   std::vector<Plane> planes_;
   std::vector<Material> bodyMaterials_;   // per body
   std::vector<Material> planeMaterials_;  // per plane
-  std::vector<ParticleSystem> particleSystems_;
-  std::vector<SoftBody> softBodies_;
-  std::optional<PlanarWorld> planar_;
+  std::vector<std::unique_ptr<StepListener>> listeners_;
   std::vector<BodyShape> bodyShapes_;     // per body
   std::vector<std::shared_ptr<const FracturePattern>> fracturePatterns_;  // per body; null: unbreakable
   std::size_t breakableBodies_ = 0;      // bodies with a pattern that have not broken yet
