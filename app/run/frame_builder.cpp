@@ -55,11 +55,11 @@ const glm::vec3 kHingeAxisColor(0.2f, 1.0f, 0.9f);
 
 void addJointLines(const World& world, render::FrameData& frame) {
   for (const Joint& joint : world.joints()) {
-    const RigidBody& a = world.bodies()[joint.def.bodyA];
+    const RigidBody& a = world.bodies()[joint.a];
     const Vec3 onA = a.bodyToWorld(joint.localAnchorMoving);
     frame.lines.push_back({toGlm(a.position()), toGlm(onA), kJointColor, true});
-    if (joint.def.bodyB != kWorldAnchor) {
-      const RigidBody& b = world.bodies()[joint.def.bodyB];
+    if (joint.b != kWorldIndex) {
+      const RigidBody& b = world.bodies()[joint.b];
       frame.lines.push_back({toGlm(b.position()), toGlm(b.bodyToWorld(joint.localAnchorBase)), kJointColor, true});
     }
     if (joint.def.type == JointDef::Type::Hinge) {
@@ -73,7 +73,7 @@ void addJointLines(const World& world, render::FrameData& frame) {
 
 std::string restitutionThresholdRow(const World& world) {
   bool bouncy = false;
-  for (std::size_t i = 0; i < world.bodies().size(); ++i) bouncy = bouncy || world.bodyMaterial(i).restitution > 0.0;
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) bouncy = bouncy || world.bodyMaterial(world.idAt(i)).restitution > 0.0;
   if (!bouncy) return {};
   const double threshold = world.settings().restitutionThreshold;
   if (threshold == 0.0) return "off: every approach bounces (seed 000's law)";
@@ -111,7 +111,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
       for (const glm::vec3& p : bv.worldVertices) frame.points.push_back({p, render::kDebugVertexColor, kVertexDotPixels});
     }
     frame.bodies.push_back(std::move(bv));
-    for (const auto& [point, force] : world.activeForces(i, t)) {
+    for (const auto& [point, force] : world.activeForces(world.idAt(i), t)) {
       frame.forces.push_back({toGlm(point), toGlm(force)});
     }
   }

@@ -49,6 +49,12 @@ Phase parsePhaseText(const std::string& text, const std::string& file, const std
 // A phase of one plain, already parsed scene.
 Phase singleWorldPhase(Scene scene);
 
+// The id of a world's selected body (view.selected, an index into its scene's bodies), or no
+// body's when the scene has none: what FreeFlightError watches.
+inline BodyId selectedBodyId(const World& world, std::size_t selected) {
+  return selected < world.bodies().size() ? world.idAt(selected) : BodyId{};
+}
+
 // Frames a phase renders: those of its longest world (runner.h's frameCount).
 std::uint64_t frameCount(const Phase& phase);
 

@@ -186,7 +186,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     // The overlay's error against the exact spin, of each world's selected body.
     std::vector<FreeFlightError> freeFlight;
     for (std::size_t k = 0; k < worlds.size(); ++k) {
-      freeFlight.emplace_back(phase.worlds[k].scene.view.selected);
+      freeFlight.emplace_back(selectedBodyId(worlds[k], phase.worlds[k].scene.view.selected));
       if (renderer) freeFlight.back().observe(worlds[k]);
     }
     TimePlots plots(phase);

@@ -215,7 +215,7 @@ class Session {
     const RigidBody& body = world_->bodies()[pick->body];
     if (body.isStatic()) return;
     Spring spring;
-    spring.body = pick->body;
+    spring.body = world_->idAt(pick->body);
     spring.anchor = pick->point;
     spring.point = body.rotation().transpose() * (pick->point - body.position());
     spring.stiffness = kDragStiffnessPerKg * body.mass();
@@ -234,7 +234,7 @@ class Session {
     if (orbit_) f.camera = orbit_->camera();
     if (drag_) {
       const auto [point, force] = world_->springForce(drag_->spring);
-      const RigidBody& body = world_->bodies()[world_->springs()[drag_->spring].body];
+      const RigidBody& body = world_->body(world_->springs()[drag_->spring].body);
       const double gravity = world_->settings().gravity.norm() > 0.0 ? world_->settings().gravity.norm() : kStandardGravity;
       const double weight = body.mass() * gravity;  // [N]
       const Vec3 torque = (point - body.position()).cross(force);
@@ -313,7 +313,7 @@ class Session {
         scene_ = std::move(scene);
         restart();
       } else {
-        const bool watched = freeFlight_->body() == scene.view.selected && scene_.view.plots == scene.view.plots &&
+        const bool watched = freeFlight_->body() == selectedBodyId(*world_, scene.view.selected) && scene_.view.plots == scene.view.plots &&
                              scene_.view.plotSelected == scene.view.plotSelected;
         scene_.view = scene.view;
         if (!watched) watchFreeFlight();
@@ -381,7 +381,7 @@ class Session {
   std::optional<TimePlots> plots_;           // view.plots, from the selected body's watch on
 
   void watchFreeFlight() {
-    freeFlight_.emplace(scene_.view.selected);
+    freeFlight_.emplace(selectedBodyId(*world_, scene_.view.selected));
     freeFlight_->observe(*world_);
     plots_.emplace(singleWorldPhase(scene_));
   }

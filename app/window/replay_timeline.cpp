@@ -16,7 +16,7 @@ ReplayTimeline::ReplayTimeline(const std::vector<Phase>& phases, RecordReader& r
     for (const PhaseWorld& w : phase.worlds) worlds.push_back(buildWorld(w.scene));
     std::vector<FreeFlightError> freeFlight;  // for the error plot, as the run had it
     for (std::size_t k = 0; k < worlds.size(); ++k) {
-      freeFlight.emplace_back(phase.worlds[k].scene.view.selected);
+      freeFlight.emplace_back(selectedBodyId(worlds[k], phase.worlds[k].scene.view.selected));
       freeFlight.back().observe(worlds[k]);
     }
     std::vector<std::vector<std::uint8_t>> latest(worlds.size());

@@ -71,9 +71,20 @@ BodyId PyWorld::addBody(const py::kwargs& body) {
   const BodyId id = world_.addBody(block.def);
   names_.insert(block.def.name);
   scene_.inertiaMethods.push_back(block.inertiaMethod);
-  for (const ScriptedForce& f : block.forces) world_.addForce(f);
-  for (const PoseEvent& e : block.poseEvents) world_.addPoseEvent(e);
-  for (const Spring& s : block.springs) world_.addSpring(s);
+  // The block names its body as a scene's body `index` would be named; in this World, where
+  // bodies may have been removed, the body has the id addBody gave it.
+  for (ScriptedForce f : block.forces) {
+    f.body = id;
+    world_.addForce(f);
+  }
+  for (PoseEvent e : block.poseEvents) {
+    e.body = id;
+    world_.addPoseEvent(e);
+  }
+  for (Spring s : block.springs) {
+    s.body = id;
+    world_.addSpring(s);
+  }
   return id;
 }
 
@@ -99,7 +110,9 @@ void PyWorld::addForce(BodyId id, const py::kwargs& force) {
     throw InputError(kForceCall, "body", "\"" + body.name() + "\" is " + (body.isStatic() ? "static" : "kinematic") +
                                              ": forces act on dynamic bodies only");
   }
-  world_.addForce(parseForceBlock(toJson(force, kForceCall, ""), kForceCall, "", i, body.fileFrame().axes));
+  ScriptedForce f = parseForceBlock(toJson(force, kForceCall, ""), kForceCall, "", i, body.fileFrame().axes);
+  f.body = id;
+  world_.addForce(f);
 }
 
 std::size_t PyWorld::addJoint(const py::kwargs& joint) {
@@ -113,7 +126,8 @@ std::size_t PyWorld::addJoint(const py::kwargs& joint) {
 
 void PyWorld::setPose(BodyId id, const py::object& position, const py::object& orientation,
                       const py::object& velocity, const py::object& angularVelocity) {
-  RigidBody& body = world_.body(index(id));
+  index(id);  // a stale id is an input error, not an invalid_argument
+  RigidBody& body = world_.body(id);
   if (!body.isDynamic() && !body.isKinematic() && (!velocity.is_none() || !angularVelocity.is_none())) {
     throw InputError(kPoseCall, "velocity", "a static body cannot move");
   }

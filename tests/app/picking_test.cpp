@@ -71,7 +71,7 @@ TEST(Picking, EmptySkyAndTheNearerBodyWin) {
   const render::Camera camera = frontCamera();
   EXPECT_FALSE(pickBody(world, pixelRay(camera, kWidth, kHeight, 5.0, 5.0)).has_value());
   // Put the far box right behind the near one: the near one is picked.
-  world.body(std::size_t{1}).setPosition(Vec3(-1.0, 0.5, -3.0));
+  world.body(world.idAt(1)).setPosition(Vec3(-1.0, 0.5, -3.0));
   const auto [x, y] = project(camera, Vec3(-1.0, 0.5, 0.0));
   const std::optional<Pick> pick = pickBody(world, pixelRay(camera, kWidth, kHeight, x, y));
   ASSERT_TRUE(pick.has_value());

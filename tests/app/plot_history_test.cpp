@@ -53,7 +53,7 @@ TEST(PlotQuantity, EachQuantityIsItsDefinition) {
 
 TEST(PlotQuantity, TheErrorIsTheFreeFlightComparison) {
   World world = twoBodies();
-  FreeFlightError error(0);
+  FreeFlightError error(world.idAt(0));
   error.observe(world);
   for (int i = 0; i < 100; ++i) {
     world.step();

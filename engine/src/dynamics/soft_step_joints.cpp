@@ -34,11 +34,11 @@ Mat3 skew(const Vec3& r) {
 void SoftStepSolver::slotJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints,
                                 const Settings& settings, bool addGravity) {
   for (const Joint& joint : joints) {
-    const std::size_t a = joint.def.bodyA, b = joint.def.bodyB;
-    const bool awake = bodies[a].awake() || (b != kWorldAnchor && bodies[b].awake());
+    const std::size_t a = joint.a, b = joint.b;
+    const bool awake = bodies[a].awake() || (b != kWorldIndex && bodies[b].awake());
     if (!awake) continue;
     slot(bodies, a, settings, addGravity);
-    if (b != kWorldAnchor) slot(bodies, b, settings, addGravity);
+    if (b != kWorldIndex) slot(bodies, b, settings, addGravity);
   }
 }
 
@@ -48,12 +48,12 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
   jointSoftness_ = makeSoftness(std::min(kJointHertz, kMaxJointHertzPerSubstepRate / h), kJointDampingRatio, h);
   for (std::size_t i = 0; i < joints.size(); ++i) {
     Joint& joint = joints[i];
-    const std::size_t a = joint.def.bodyA, b = joint.def.bodyB;
+    const std::size_t a = joint.a, b = joint.b;
     JointConstraint c;
     c.joint = i;
     c.data = &joint;
     c.moving = slotOfBody_[a];
-    c.base = b == kWorldAnchor ? 0 : slotOfBody_[b];
+    c.base = b == kWorldIndex ? 0 : slotOfBody_[b];
     // Body A is dynamic (scene/joint_parser.cpp, World::addJoint), and the World wakes both
     // sides of a joint together: without a slot, A is asleep with its base.
     if (c.moving == 0) continue;
@@ -65,7 +65,7 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
     c.localAnchorBase = joint.localAnchorBase;
     c.localAxisBase = joint.localAxisBase;
     c.baseOrientation = Quat::Identity();
-    if (c.base == 0 && b != kWorldAnchor) {
+    if (c.base == 0 && b != kWorldIndex) {
       c.localAnchorBase = bodies[b].position() + bodies[b].rotation() * joint.localAnchorBase;
       c.localAxisBase = bodies[b].rotation() * joint.localAxisBase;
       c.baseOrientation = bodies[b].orientation();

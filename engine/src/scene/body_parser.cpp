@@ -316,7 +316,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
 
 ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fileAxes, double duration) {
   ScriptedForce force;
-  force.body = index;
+  force.body = sceneBodyId(index);
   force.force = f.vec3("force", Vec3::Zero());
   force.point = f.vec3("point", Vec3::Zero());
   force.forceFrame = parseFrame(f, "force_frame", Frame::World);
@@ -343,7 +343,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
   }
   for (const JsonObject& p : b.objectArray("set_pose", {"time", "position", "orientation", "velocity", "angular_velocity"})) {
     PoseEvent event;
-    event.body = index;
+    event.body = sceneBodyId(index);
     event.time = p.requiredNumber("time");
     if (event.time < 0.0) p.fail("time", "expected a time >= 0 s");
     if (p.has("position")) event.position = p.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
@@ -357,7 +357,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
   for (const JsonObject& s : b.objectArray("springs", {"anchor", "point", "stiffness", "rest_length", "damping"})) {
     if (forcesIgnored) b.fail("springs", ignoredBecause);
     Spring spring;
-    spring.body = index;
+    spring.body = sceneBodyId(index);
     spring.anchor = s.boundedVec3("anchor", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     spring.point = scene.bodies[index].fileFrame.axes.transpose() * s.vec3("point", Vec3::Zero());
     spring.stiffness = s.positiveNumber("stiffness", 1.0);

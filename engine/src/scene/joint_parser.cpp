@@ -58,12 +58,13 @@ JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settin
   if (settings.solver == Settings::ContactSolverMethod::Pgs) {
     j.fail("type", "joints need world.solver \"soft-step\"; the PGS solver does not solve joints");
   }
-  def.bodyA = bodyNamed(j, "body_a", bodies);
-  if (!bodies.dynamic[def.bodyA]) {
-    j.fail("body_a", "\"" + bodies.names[def.bodyA] + "\" is static or kinematic; expected a dynamic body (body_b may be any body)");
+  const std::size_t a = bodyNamed(j, "body_a", bodies);
+  def.bodyA = bodies.ids[a];
+  if (!bodies.dynamic[a]) {
+    j.fail("body_a", "\"" + bodies.names[a] + "\" is static or kinematic; expected a dynamic body (body_b may be any body)");
   }
   if (j.has("body_b")) {
-    def.bodyB = bodyNamed(j, "body_b", bodies);
+    def.bodyB = bodies.ids[bodyNamed(j, "body_b", bodies)];
     if (def.bodyB == def.bodyA) j.fail("body_b", "names body_a again; expected another body, or no body_b for the world");
   }
   if (!j.has("anchor")) j.fail("anchor", "missing; the joint's world point at t = 0 in m is required");
@@ -86,6 +87,7 @@ void parseJoints(const JsonObject& root, Scene& scene) {
   for (const BodyDef& b : scene.bodies) {
     bodies.names.push_back(b.name);
     bodies.dynamic.push_back(!b.isStatic && !b.isKinematic);
+    bodies.ids.push_back(sceneBodyId(bodies.ids.size()));
   }
   for (const JsonObject& j : root.objectArray("joints", kJointKeys)) scene.joints.push_back(parseJoint(j, bodies, scene.settings));
 }

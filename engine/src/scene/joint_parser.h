@@ -19,6 +19,7 @@ inline constexpr std::initializer_list<const char*> kJointKeys = {
 struct JointBodies {
   std::vector<std::string> names;
   std::vector<char> dynamic;
+  std::vector<BodyId> ids;  // what the joint names them by: sceneBodyId(i) in a scene, the World's own ids in a World
   // The first body of each name, filled on the first look-up: a joint finds its bodies by hashing,
   // not by scanning every name (a 100 x 100 joint grid has 19701 joints and 10000 bodies).
   mutable std::unordered_map<std::string, std::size_t> first;

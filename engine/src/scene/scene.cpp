@@ -1,6 +1,7 @@
 #include "rbsim/world/systems.h"
 #include "rbsim/scene/scene.h"
 
+#include <stdexcept>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -115,7 +116,9 @@ Scene parseSceneText(const std::string& text, const std::string& file, const std
 
 World buildWorld(const Scene& scene) {
   World world(scene.settings);
-  for (const BodyDef& def : scene.bodies) world.addBody(def);
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (world.addBody(scene.bodies[i]) != sceneBodyId(i)) throw std::logic_error("buildWorld: a fresh World numbered its bodies out of order");
+  }
   for (const ScriptedForce& f : scene.forces) world.addForce(f);
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
   for (const Spring& s : scene.springs) world.addSpring(s);

@@ -182,9 +182,9 @@ BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, co
   scene_detail::parseBody(b, baseDir, scene);
   scene_detail::parseScripts(b, 0, scene);
   BodyBlock block{scene.bodies.front(), scene.inertiaMethods.front(), std::move(scene.forces), std::move(scene.poseEvents), std::move(scene.springs)};
-  for (ScriptedForce& f : block.forces) f.body = index;
-  for (PoseEvent& e : block.poseEvents) e.body = index;
-  for (Spring& s : block.springs) s.body = index;
+  for (ScriptedForce& f : block.forces) f.body = sceneBodyId(index);
+  for (PoseEvent& e : block.poseEvents) e.body = sceneBodyId(index);
+  for (Spring& s : block.springs) s.body = sceneBodyId(index);
   return block;
 }
 
@@ -207,6 +207,7 @@ JointDef parseJointBlock(const nlohmann::json& joint, const std::string& file, c
   for (const RigidBody& b : world.bodies()) {
     bodies.names.push_back(b.name());
     bodies.dynamic.push_back(b.isDynamic());
+    bodies.ids.push_back(world.idAt(bodies.ids.size()));
   }
   return scene_detail::parseJoint(JsonObject(joint, file, path, scene_detail::kJointKeys), bodies, world.settings());
 }

@@ -100,9 +100,9 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
       scene.inertiaMethods.push_back(inertia);
       if (k > 0) {
         for (std::size_t i = 0; i < springsOfPrototype; ++i) {
-          if (scene.springs[i].body != first) continue;
+          if (scene.springs[i].body != sceneBodyId(first)) continue;
           Spring copy = scene.springs[i];
-          copy.body = index;
+          copy.body = sceneBodyId(index);
           scene.springs.push_back(copy);
         }
       }

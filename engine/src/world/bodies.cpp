@@ -1,4 +1,4 @@
-// World's bodies as a dense array with ids of a generation (world/body_id.h, as Box2D v3's
+// World's bodies as a dense array with ids of a generation (body/body_id.h, as Box2D v3's
 // b2BodyId): adding and destroying bodies, and keeping every per-body array in step with
 // bodies_ (the materials, shapes, fracture patterns, the collision pipeline's data, and the
 // scripts, springs and emitters that name a body by its index).
@@ -16,14 +16,11 @@ namespace {
 
 constexpr std::uint32_t kNoSlot = UINT32_MAX;
 
-// Removes the entries naming `removed` and renames those naming `from` to `to`.
+// Removes the entries naming the body `removed`; the others name theirs by id, which stays.
 template <typename T>
-void renumber(std::vector<T>& items, std::size_t removed, std::size_t from, std::size_t to) {
+void removeNaming(std::vector<T>& items, BodyId removed) {
   items.erase(std::remove_if(items.begin(), items.end(), [&](const T& item) { return item.body == removed; }),
               items.end());
-  for (T& item : items) {
-    if (item.body == from) item.body = to;
-  }
 }
 
 // Moves element `from` (the last) onto `to` and drops the last.
@@ -79,11 +76,6 @@ BodyId World::idAt(std::size_t index) const {
   return {slot, slots_[slot].generation};
 }
 
-RigidBody& World::body(std::size_t index) {
-  if (index >= bodies_.size()) throw std::invalid_argument("body: no body at index " + std::to_string(index));
-  return bodies_[index];
-}
-
 void World::destroyBody(BodyId id) {
   const std::size_t removed = indexOf(id);
   const std::size_t last = bodies_.size() - 1;
@@ -93,22 +85,22 @@ void World::destroyBody(BodyId id) {
     if (c.a == removed) bodies_[c.b].wake();
     if (c.b == removed) bodies_[c.a].wake();
   }
-  // What names the body goes with it; what names the last body follows it to its new index.
-  renumber(forces_, removed, last, removed);
-  renumber(springs_, removed, last, removed);
-  renumber(pendingEvents_, removed, last, removed);
+  // What names the body goes with it.
+  removeNaming(forces_, id);
+  removeNaming(springs_, id);
+  removeNaming(pendingEvents_, id);
   // A joint goes with either of its bodies; its other body wakes to fall free.
   for (const Joint& joint : joints_) {
-    const bool names = joint.def.bodyA == removed || joint.def.bodyB == removed;
-    if (names && joint.def.bodyA != removed) bodies_[joint.def.bodyA].wake();
-    if (names && joint.def.bodyB != removed && joint.def.bodyB != kWorldAnchor) bodies_[joint.def.bodyB].wake();
+    const bool names = joint.a == removed || joint.b == removed;
+    if (names && joint.a != removed) bodies_[joint.a].wake();
+    if (names && joint.b != removed && joint.b != kWorldIndex) bodies_[joint.b].wake();
   }
   joints_.erase(std::remove_if(joints_.begin(), joints_.end(),
-                               [&](const Joint& j) { return j.def.bodyA == removed || j.def.bodyB == removed; }),
+                               [&](const Joint& j) { return j.a == removed || j.b == removed; }),
                 joints_.end());
   for (Joint& joint : joints_) {
-    if (joint.def.bodyA == last) joint.def.bodyA = removed;
-    if (joint.def.bodyB == last) joint.def.bodyB = removed;
+    if (joint.a == last) joint.a = removed;
+    if (joint.b == last) joint.b = removed;
   }
   for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(removed, last, removed);
   if (fracturePatterns_[removed]) --breakableBodies_;

@@ -31,14 +31,14 @@ void World::breakBody(std::size_t body, double impulse) {
   --breakableBodies_;
   // The pieces start from the state the solver left: the impulse that broke the body is in it.
   std::vector<BodyDef> pieces = fracturePieces(bodies_[body], *pattern, bodyMaterials_[body]);
-  FractureEvent event{time(), body, bodies_.size(), pieces.size() - 1, impulse};
+  FractureEvent event{time(), idAt(body), {}, impulse};
   bodies_[body] = RigidBody(pieces.front());
   bodyShapes_[body] = bodyShapeOf(pieces.front());
   collision_.replaceBody(body, bodies_[body], bodyShapes_[body].sdf != nullptr);
-  for (std::size_t k = 1; k < pieces.size(); ++k) addBody(pieces[k]);
+  for (std::size_t k = 1; k < pieces.size(); ++k) event.added.push_back(addBody(pieces[k]));
   // The pieces are new bodies with their own centres of mass: the broken body's joints let go.
   joints_.erase(std::remove_if(joints_.begin(), joints_.end(),
-                               [&](const Joint& j) { return j.def.bodyA == body || j.def.bodyB == body; }),
+                               [&](const Joint& j) { return j.a == body || j.b == body; }),
                 joints_.end());
   updateJointFilter();
   fractureEvents_.push_back(event);

@@ -11,20 +11,21 @@ double spinEnergy(const RigidBody& body) { return 0.5 * body.state().angularMome
 // Whether anything but the integrator turned the body during the step that ended at world.time():
 // a contact (the speculative ones within the margin included), a spring, a joint, or a scripted
 // force with a moment about the centre of mass.
-bool torqued(const World& world, std::size_t i) {
+bool torqued(const World& world, BodyId id) {
+  const std::size_t i = world.indexOf(id);
   for (const Contact& c : world.contacts()) {
     if (c.b == i || (c.kind == Contact::Kind::BodyBody && c.a == i)) return true;
   }
   for (const Spring& s : world.springs()) {
-    if (s.body == i) return true;
+    if (s.body == id) return true;
   }
   for (const Joint& j : world.joints()) {
-    if (j.def.bodyA == i || j.def.bodyB == i) return true;
+    if (j.a == i || j.b == i) return true;
   }
   const RigidBody& body = world.bodies()[i];
   const double stepStart = world.time() - world.settings().timeStep;
   for (double t : {stepStart, world.time()}) {
-    for (const auto& [point, force] : world.activeForces(i, t)) {
+    for (const auto& [point, force] : world.activeForces(id, t)) {
       if (!(point - body.position()).cross(force).isZero(0.0)) return true;
     }
   }
@@ -34,11 +35,11 @@ bool torqued(const World& world, std::size_t i) {
 }  // namespace
 
 void FreeFlightError::observe(const World& world) {
-  if (body_ >= world.bodies().size()) {
+  if (!world.isValid(body_)) {
     flow_.reset();
     return;
   }
-  const RigidBody& body = world.bodies()[body_];
+  const RigidBody& body = world.body(body_);
   if (!body.isDynamic() || !body.awake()) {
     flow_.reset();
     return;
@@ -53,8 +54,8 @@ void FreeFlightError::observe(const World& world) {
 
 FreeFlightError::Reading FreeFlightError::read(const World& world) const {
   Reading r;
-  if (!flow_ || body_ >= world.bodies().size()) return r;
-  const RigidBody& body = world.bodies()[body_];
+  if (!flow_ || !world.isValid(body_)) return r;
+  const RigidBody& body = world.body(body_);
   r.tracked = true;
   r.since = epochTime_;
   const Quat exact = flow_->principalToWorld(world.time() - epochTime_) * bodyToPrincipal_;

@@ -14,11 +14,13 @@ std::size_t World::addJoint(const JointDef& def) {
   if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
     throw std::invalid_argument(who + ": joints need the soft-step solver (world.solver \"soft-step\"); PGS does not solve them");
   }
-  if (def.bodyA >= bodies_.size()) throw std::invalid_argument(who + ": body_a names no body");
-  if (def.bodyB != kWorldAnchor && def.bodyB >= bodies_.size()) throw std::invalid_argument(who + ": body_b names no body");
+  if (!isValid(def.bodyA)) throw std::invalid_argument(who + ": body_a names no body");
+  const bool world = def.bodyB == kWorldAnchor;
+  if (!world && !isValid(def.bodyB)) throw std::invalid_argument(who + ": body_b names no body");
   if (def.bodyA == def.bodyB) throw std::invalid_argument(who + ": body_a and body_b are the same body");
-  if (!bodies_[def.bodyA].isDynamic()) {
-    throw std::invalid_argument(who + ": body_a '" + bodies_[def.bodyA].name() + "' must be dynamic (neither static nor kinematic)");
+  const std::size_t ia = indexOf(def.bodyA), ib = world ? kWorldIndex : indexOf(def.bodyB);
+  if (!bodies_[ia].isDynamic()) {
+    throw std::invalid_argument(who + ": body_a '" + bodies_[ia].name() + "' must be dynamic (neither static nor kinematic)");
   }
   if (!def.anchor.allFinite() || !def.axis.allFinite() || !(def.axis.norm() > 0.0)) {
     throw std::invalid_argument(who + ": expected a finite anchor and a finite, non-zero axis");
@@ -32,27 +34,28 @@ std::size_t World::addJoint(const JointDef& def) {
   Joint joint;
   joint.def = def;
   joint.def.axis = def.axis.normalized();
-  const RigidBody& a = bodies_[def.bodyA];
-  const bool world = def.bodyB == kWorldAnchor;
-  const Quat baseOrientation = world ? Quat::Identity() : bodies_[def.bodyB].orientation();
-  const Vec3 basePosition = world ? Vec3::Zero() : bodies_[def.bodyB].position();
+  joint.a = ia;
+  joint.b = ib;
+  const RigidBody& a = bodies_[ia];
+  const Quat baseOrientation = world ? Quat::Identity() : bodies_[ib].orientation();
+  const Vec3 basePosition = world ? Vec3::Zero() : bodies_[ib].position();
   joint.localAnchorBase = baseOrientation.conjugate() * (def.anchor - basePosition);
   joint.localAxisBase = baseOrientation.conjugate() * joint.def.axis;
   joint.localAnchorMoving = a.orientation().conjugate() * (def.anchor - a.position());
   joint.localAxisMoving = a.orientation().conjugate() * joint.def.axis;
   joint.referenceRotation = baseOrientation.conjugate() * a.orientation();
   joints_.push_back(joint);
-  bodies_[def.bodyA].wake();
-  if (!world) bodies_[def.bodyB].wake();
-  if (!world && !def.collideConnected) collision_.ignorePair(def.bodyA, def.bodyB);
+  bodies_[ia].wake();
+  if (!world) bodies_[ib].wake();
+  if (!world && !def.collideConnected) collision_.ignorePair(ia, ib);
   return joints_.size() - 1;
 }
 
 void World::wakeJointed() {
   for (const Joint& joint : joints_) {
-    if (joint.def.bodyB == kWorldAnchor) continue;
-    RigidBody& a = bodies_[joint.def.bodyA];
-    RigidBody& b = bodies_[joint.def.bodyB];
+    if (joint.b == kWorldIndex) continue;
+    RigidBody& a = bodies_[joint.a];
+    RigidBody& b = bodies_[joint.b];
     if (b.isStatic()) continue;
     if (a.awake() != b.awake()) {
       a.wake();
@@ -64,7 +67,7 @@ void World::wakeJointed() {
 void World::updateJointFilter() {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const Joint& joint : joints_) {
-    if (joint.def.bodyB != kWorldAnchor && !joint.def.collideConnected) pairs.emplace_back(joint.def.bodyA, joint.def.bodyB);
+    if (joint.b != kWorldIndex && !joint.def.collideConnected) pairs.emplace_back(joint.a, joint.b);
   }
   collision_.setIgnoredPairs(pairs);
 }

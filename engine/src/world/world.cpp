@@ -88,19 +88,19 @@ const Settings& checked(const Settings& settings) {
 World::World(const Settings& settings) : settings_(checked(settings)), collision_(settings_) {}
 
 void World::addForce(const ScriptedForce& force) {
-  if (force.body >= bodies_.size()) throw std::invalid_argument("scripted force names no body");
+  if (!isValid(force.body)) throw std::invalid_argument("scripted force names no body");
   forces_.push_back(force);
 }
 
 std::size_t World::addSpring(const Spring& spring) {
-  if (spring.body >= bodies_.size()) throw std::invalid_argument("spring names no body");
-  if (!bodies_[spring.body].isDynamic()) {
-    throw std::invalid_argument("spring on the static or kinematic body '" + bodies_[spring.body].name() + "'");
+  if (!isValid(spring.body)) throw std::invalid_argument("spring names no body");
+  if (!body(spring.body).isDynamic()) {
+    throw std::invalid_argument("spring on the static or kinematic body '" + body(spring.body).name() + "'");
   }
   if (!spring.anchor.allFinite() || !spring.point.allFinite() || !(spring.stiffness >= 0.0) || !(spring.restLength >= 0.0) ||
       !(spring.damping >= 0.0) || !std::isfinite(spring.stiffness) || !std::isfinite(spring.restLength) ||
       !std::isfinite(spring.damping)) {
-    throw std::invalid_argument("spring on body '" + bodies_[spring.body].name() + "': expected finite anchor and point, k, rest length and damping >= 0");
+    throw std::invalid_argument("spring on body '" + body(spring.body).name() + "': expected finite anchor and point, k, rest length and damping >= 0");
   }
   springs_.push_back(spring);
   return springs_.size() - 1;
@@ -110,12 +110,12 @@ void World::moveSpringAnchor(std::size_t spring, const Vec3& anchor) {
   if (spring >= springs_.size()) throw std::invalid_argument("moveSpringAnchor: no such spring");
   if (!anchor.allFinite()) throw std::invalid_argument("moveSpringAnchor: expected a finite anchor");
   springs_[spring].anchor = anchor;
-  bodies_[springs_[spring].body].wake();
+  body(springs_[spring].body).wake();
 }
 
 std::pair<Vec3, Vec3> World::springForce(std::size_t spring) const {
   if (spring >= springs_.size()) throw std::invalid_argument("springForce: no such spring");
-  return forceOfSpring(springs_[spring], bodies_[springs_[spring].body]);
+  return forceOfSpring(springs_[spring], body(springs_[spring].body));
 }
 
 void World::removeSpring(std::size_t spring) {
@@ -140,7 +140,7 @@ StepListener& World::addStepListener(std::unique_ptr<StepListener> listener) {
 }
 
 void World::addPoseEvent(const PoseEvent& event) {
-  if (event.body >= bodies_.size()) throw std::invalid_argument("pose event names no body");
+  if (!isValid(event.body)) throw std::invalid_argument("pose event names no body");
   const auto at = std::upper_bound(pendingEvents_.begin(), pendingEvents_.end(), event,
                                    [](const PoseEvent& a, const PoseEvent& b) { return a.time < b.time; });
   pendingEvents_.insert(at, event);
@@ -186,7 +186,7 @@ void World::applyPoseEvents() {
   const double t = time();
   auto due = pendingEvents_.begin();
   for (; due != pendingEvents_.end() && due->time <= t; ++due) {
-    RigidBody& body = bodies_[due->body];
+    RigidBody& body = this->body(due->body);
     if (due->position) body.setPosition(*due->position);
     if (due->orientation) body.setOrientation(*due->orientation);
     if (due->velocity) body.setVelocity(*due->velocity);
@@ -196,9 +196,9 @@ void World::applyPoseEvents() {
   pendingEvents_.erase(pendingEvents_.begin(), due);
 }
 
-std::vector<std::pair<Vec3, Vec3>> World::activeForces(std::size_t body, double t) const {
+std::vector<std::pair<Vec3, Vec3>> World::activeForces(BodyId body, double t) const {
   std::vector<std::pair<Vec3, Vec3>> active;
-  const RigidBody& b = bodies_[body];
+  const RigidBody& b = this->body(body);
   for (const ScriptedForce& f : forces_) {
     if (f.body == body && isActive(f, t)) active.push_back(inWorldFrame(f, b));
   }
@@ -208,7 +208,7 @@ std::vector<std::pair<Vec3, Vec3>> World::activeForces(std::size_t body, double 
 void World::accumulateForces(bool withGravity) {
   const double t = time();
   for (const ScriptedForce& f : forces_) {
-    if (isActive(f, t)) bodies_[f.body].wake();
+    if (isActive(f, t)) body(f.body).wake();
   }
   if (withGravity) {
     for (RigidBody& body : bodies_) {
@@ -217,7 +217,7 @@ void World::accumulateForces(bool withGravity) {
   }
   for (const ScriptedForce& f : forces_) {
     if (!isActive(f, t)) continue;
-    RigidBody& body = bodies_[f.body];
+    RigidBody& body = this->body(f.body);
     if (f.forceFrame == Frame::Body && f.pointFrame == Frame::Body) {
       // Fixed in the body: its torque r x f turns with the body within a step (integrator.h).
       body.applyForce(body.rotation() * f.force);
@@ -228,7 +228,7 @@ void World::accumulateForces(bool withGravity) {
     body.applyForceAtPoint(force, point);
   }
   for (const Spring& spring : springs_) {
-    RigidBody& body = bodies_[spring.body];
+    RigidBody& body = this->body(spring.body);
     if (!body.awake()) continue;
     const auto [point, force] = forceOfSpring(spring, body);
     body.applyForceAtPoint(force, point);
@@ -292,7 +292,7 @@ void World::updateSleep() {
     }
   }
   for (const Joint& joint : joints_) {  // jointed bodies sleep together (Box2D's b2LinkJoint)
-    if (joint.def.bodyB != kWorldAnchor && !bodies_[joint.def.bodyB].isStatic()) islands.link(joint.def.bodyA, joint.def.bodyB);
+    if (joint.b != kWorldIndex && !bodies_[joint.b].isStatic()) islands.link(joint.a, joint.b);
   }
   std::vector<double>& rested = islandRestingTime_;
   rested.assign(bodies_.size(), std::numeric_limits<double>::infinity());

@@ -51,7 +51,7 @@ World pendulumWorld(const Pendulum& p, double theta0, double dt, JointDef::Type 
   world.addBody(def);
   JointDef joint;
   joint.type = type;
-  joint.bodyA = 0;
+  joint.bodyA = world.idAt(0);
   joint.anchor = Vec3::Zero();
   joint.axis = Vec3::UnitZ();
   world.addJoint(joint);
@@ -179,8 +179,8 @@ TEST(Joints, ChainOfTenLinksHoldsItsJointsWithinAMillimetre) {
     def.position = (i + 0.5) * linkLength * down;
     world.addBody(def);
     JointDef joint;
-    joint.bodyA = static_cast<std::size_t>(i);
-    joint.bodyB = i == 0 ? kWorldAnchor : static_cast<std::size_t>(i - 1);
+    joint.bodyA = world.idAt(static_cast<std::size_t>(i));
+    joint.bodyB = i == 0 ? kWorldAnchor : world.idAt(static_cast<std::size_t>(i - 1));
     joint.anchor = i * linkLength * down;
     world.addJoint(joint);
   }
@@ -188,9 +188,9 @@ TEST(Joints, ChainOfTenLinksHoldsItsJointsWithinAMillimetre) {
   while (world.time() < 5.0) {
     world.step();
     for (const Joint& j : world.joints()) {
-      const RigidBody& a = world.bodies()[j.def.bodyA];
+      const RigidBody& a = world.bodies()[j.a];
       const Vec3 onA = a.bodyToWorld(j.localAnchorMoving);
-      const Vec3 onB = j.def.bodyB == kWorldAnchor ? j.localAnchorBase : world.bodies()[j.def.bodyB].bodyToWorld(j.localAnchorBase);
+      const Vec3 onB = j.b == kWorldIndex ? j.localAnchorBase : world.bodies()[j.b].bodyToWorld(j.localAnchorBase);
       worst = std::max(worst, (onA - onB).norm());
     }
   }
@@ -207,6 +207,7 @@ TEST(Joints, HingeLeavesOnlyTheMotionAboutItsAxis) {
   def.angularVelocity = Vec3(3.0, -2.0, 1.0);
   world.addBody(def);
   JointDef joint;
+  joint.bodyA = world.idAt(0);
   joint.type = JointDef::Type::Hinge;
   joint.anchor = Vec3::Zero();
   joint.axis = Vec3::UnitZ();
@@ -233,6 +234,7 @@ TEST(Joints, MotorSpinsUpAtItsTorqueAndHoldsItsSpeed) {
   BodyDef def = boxDef(Vec3(1.0, 1.0, 0.2), 3.0, "wheel");
   world.addBody(def);
   JointDef joint;
+  joint.bodyA = world.idAt(0);
   joint.type = JointDef::Type::Hinge;
   joint.axis = Vec3::UnitZ();
   joint.motor = true;
@@ -258,6 +260,7 @@ TEST(Joints, LimitsHoldTheAngle) {
   def.velocity = def.angularVelocity.cross(def.position);  // turning about the pivot
   limitedWorld.addBody(def);
   JointDef joint;
+  joint.bodyA = limitedWorld.idAt(0);
   joint.type = JointDef::Type::Hinge;
   joint.axis = Vec3::UnitZ();
   joint.limits = true;
@@ -290,12 +293,13 @@ TEST_P(DoorIntegrator, PushedAtItsHandleTurnsAtTorqueOverHingeInertia) {
   def.position = Vec3(0.5 * width, 0.0, 0.0);
   world.addBody(def);
   JointDef hinge;
+  hinge.bodyA = world.idAt(0);
   hinge.type = JointDef::Type::Hinge;
   hinge.anchor = Vec3::Zero();
   hinge.axis = Vec3::UnitY();
   world.addJoint(hinge);
   ScriptedForce push;
-  push.body = 0;
+  push.body = world.idAt(0);
   push.force = Vec3(0.0, 0.0, -10.0);  // in the door's frame: normal to the door
   push.forceFrame = Frame::Body;
   push.point = Vec3(0.4, 0.0, 0.0);  // the handle, 0.9 m from the hinge

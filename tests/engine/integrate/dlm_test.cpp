@@ -127,8 +127,8 @@ TEST(Dlm, ConstantTorqueAboutAPrincipalAxisTurnsByTheExactIntegralOfOmega) {
     // centre of mass, which stays at the origin because the net force is zero.
     const Vec3 F = Vec3::UnitX();  // [N], perpendicular to the axis
     const Vec3 r = F.cross(tau * axis);
-    world.addForce({0, F, r, Frame::World, Frame::World, 0.0, 1e9});
-    world.addForce({0, -F, Vec3::Zero(), Frame::World, Frame::World, 0.0, 1e9});
+    world.addForce({world.idAt(0), F, r, Frame::World, Frame::World, 0.0, 1e9});
+    world.addForce({world.idAt(0), -F, Vec3::Zero(), Frame::World, Frame::World, 0.0, 1e9});
     for (int i = 0; i < steps; ++i) world.step();
     angle[k++] = rotationAngleBetween(Mat3::Identity(), world.bodies()[0].rotation());
     EXPECT_TRUE(allNear(world.bodies()[0].state().angularMomentum, axis * (L0 + tau * world.time()), 1e-13));

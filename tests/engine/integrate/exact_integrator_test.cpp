@@ -63,7 +63,7 @@ TEST(ExactIntegrator, RestartsFromAStateSetByHand) {
   World world = tumbler(Integrator::Exact, 1.0 / 60.0);
   for (int i = 0; i < 60; ++i) world.step();
   const Quat turned = Quat(rotationFromAxisAngle(Vec3(0.0, 0.0, 1.0))) * world.bodies()[0].orientation();
-  world.body(0).setOrientation(turned.toRotationMatrix());
+  world.body(world.idAt(0)).setOrientation(turned.toRotationMatrix());
   const Vec3 omegaBody = world.bodies()[0].rotation().transpose() * world.bodies()[0].angularVelocity();
   const reference::TorqueFreeExact exact(world.bodies()[0].principalMoments(), omegaBody, turned.toRotationMatrix());
   const double t0 = world.time();
@@ -81,7 +81,7 @@ World torqued(Integrator integrator, double dt, TorqueFrame frame) {
   const Vec3 r(0.2, 0.0, 0.0), f(0.0, 0.05, 0.08);  // [m], [N]
   for (double sign : {1.0, -1.0}) {
     ScriptedForce couple;
-    couple.body = 0;
+    couple.body = world.idAt(0);
     couple.force = sign * f;
     couple.point = sign * r;
     couple.forceFrame = frame == TorqueFrame::World ? Frame::World : Frame::Body;

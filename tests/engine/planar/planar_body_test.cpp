@@ -52,6 +52,7 @@ TEST(PlanarBody, MatchesThe3DEngineConstrainedToThePlane) {
   def.position = Vec3(0.0, 2.0, 0.0);
   world.addBody(def);
   ScriptedForce force;
+  force.body = world.idAt(0);
   force.force = Vec3(push.x(), push.y(), 0.0);
   force.point = Vec3(pushPoint.x(), pushPoint.y(), 0.0);
   force.pointFrame = Frame::Body;

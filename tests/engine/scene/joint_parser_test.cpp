@@ -22,8 +22,8 @@ TEST(JointParser, ReadsEveryKey) {
   ASSERT_EQ(scene.joints.size(), 2u);
   const JointDef& hinge = scene.joints[0];
   EXPECT_EQ(hinge.type, JointDef::Type::Hinge);
-  EXPECT_EQ(hinge.bodyA, 1u);
-  EXPECT_EQ(hinge.bodyB, 0u);
+  EXPECT_EQ(hinge.bodyA, sceneBodyId(1));
+  EXPECT_EQ(hinge.bodyB, sceneBodyId(0));
   EXPECT_TRUE(hinge.anchor.isApprox(Vec3(0.1, 0.0, 0.0)));
   EXPECT_TRUE(hinge.axis.isApprox(Vec3::UnitY()));  // a direction: its length does not matter
   EXPECT_TRUE(hinge.motor);

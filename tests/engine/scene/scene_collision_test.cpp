@@ -136,7 +136,7 @@ TEST(SceneSpawn, SpringsAreCopiedToEveryInstance) {
   const Scene scene = parse({{"bodies", {boxBody()}}, {"spawn", {block}}});
   ASSERT_EQ(scene.bodies.size(), 4u);
   ASSERT_EQ(scene.springs.size(), 3u);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(scene.springs[i].body, i + 1);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(scene.springs[i].body, sceneBodyId(i + 1));
 }
 
 TEST(SceneSpawn, ErrorsNameTheSpawnPath) {

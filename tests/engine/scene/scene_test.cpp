@@ -99,7 +99,7 @@ TEST(ParseScene, BuildsTheExpectedBodies) {
   EXPECT_EQ(scene.inertiaMethods, (std::vector<std::string>{"exact", "exact"}));
 
   ASSERT_EQ(scene.forces.size(), 1u);
-  EXPECT_EQ(scene.forces[0].body, 0u);
+  EXPECT_EQ(scene.forces[0].body, sceneBodyId(0));
   EXPECT_EQ(scene.forces[0].forceFrame, Frame::World);
   EXPECT_EQ(scene.forces[0].pointFrame, Frame::Body);
   EXPECT_EQ(scene.forces[0].start, 0.5);

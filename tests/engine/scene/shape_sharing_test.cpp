@@ -101,8 +101,8 @@ TEST(ShapeSharing, BodiesOfOneObjShareOneMeshHullAndMassComputation) {
   // The World keeps what the scene shares: one mesh and one hull for every copy.
   World world = buildWorld(scene);
   for (int i = 1; i < kCopies; ++i) {
-    EXPECT_EQ(&world.body(i).mesh(), &world.body(0).mesh()) << i;
-    EXPECT_EQ(world.body(i).shape().hull.get(), world.body(0).shape().hull.get()) << i;
+    EXPECT_EQ(&world.body(world.idAt(i)).mesh(), &world.body(world.idAt(0)).mesh()) << i;
+    EXPECT_EQ(world.body(world.idAt(i)).shape().hull.get(), world.body(world.idAt(0)).shape().hull.get()) << i;
   }
 }
 

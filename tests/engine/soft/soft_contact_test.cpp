@@ -23,7 +23,7 @@ TEST(SoftContact, RigidBoxAndSoftBlockExchangeMomentumExactly) {
   box.inertiaBody = cuboidInertia(20.0, Vec3(0.4, 0.4, 0.4));
   box.position = Vec3(-1.0, 0.1, 0.05);
   world.addBody(box);
-  world.body(std::size_t{0}).setVelocity(Vec3(3.0, 0.0, 0.0));
+  world.body(world.idAt(0)).setVelocity(Vec3(3.0, 0.0, 0.0));
   SoftBodyDef soft;
   soft.mesh = makeTetBox(Vec3(1.0, 1.0, 1.0), 4, 4, 4);
   soft.position = Vec3(0.6, 0.0, 0.0);

@@ -118,7 +118,7 @@ TEST_P(StressMassAndStep, ConstantTorqueGivesLEqualsTauT) {
     for (double dt : kTimeSteps) {
       World world = worldAt(integrator, dt, Vec3::Zero());
       world.addBody(bodyOf(mass));
-      RigidBody& body = world.body(std::size_t{0});
+      RigidBody& body = world.body(world.idAt(0));
       const Vec3 tau = mass * kTorquePerKg;
       double largestRatio = 0.0;  // max over steps of |L| / |tau t|
       for (int i = 1; i <= kSteps; ++i) {

@@ -198,6 +198,7 @@ TEST(StressDivergence, Rk4AtAnExtremeSpinThrowsSimulationErrorNamingBodyIntegrat
   World world = spinWorld(Integrator::Rk4, kSpinDt);
   world.addBody(spinnerDef(1.0));
   PoseEvent kick;  // sets the extreme spin at step 5 (t = 5 dt >= 4.5 dt > 4 dt)
+  kick.body = world.idAt(0);
   kick.time = 4.5 * kSpinDt;
   kick.angularVelocity = kOverflowSpin * Vec3(1.0, -2.0, 0.5).normalized();
   world.addPoseEvent(kick);

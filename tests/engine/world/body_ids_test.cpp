@@ -1,4 +1,4 @@
-// Body ids with a generation (world/body_id.h) and destroying bodies: a stale id is refused and
+// Body ids with a generation (body/body_id.h) and destroying bodies: a stale id is refused and
 // never reaches another body, the bodies left keep their state and ids, what acted on a destroyed
 // body goes with it, and create/destroy cycles hold memory flat.
 #include <malloc.h>
@@ -72,23 +72,23 @@ TEST(BodyIds, WhatActedOnADestroyedBodyGoesAndTheRestFollowTheirBodies) {
   w.addBody(unitBox("b", Vec3(3.0, 0.0, 0.0)));
   const BodyId c = w.addBody(unitBox("c", Vec3(6.0, 0.0, 0.0)));
   Spring onA, onC;
-  onA.body = w.indexOf(a);
-  onC.body = w.indexOf(c);
+  onA.body = a;
+  onC.body = c;
   onC.anchor = Vec3(6.0, 5.0, 0.0);
   w.addSpring(onA);
   w.addSpring(onC);
   ScriptedForce pushA, pushC;
-  pushA.body = w.indexOf(a);
-  pushC.body = w.indexOf(c);
+  pushA.body = a;
+  pushC.body = c;
   pushC.force = Vec3(1.0, 0.0, 0.0);
   w.addForce(pushA);
   w.addForce(pushC);
   w.destroyBody(a);
   ASSERT_EQ(w.springs().size(), 1u);
-  EXPECT_EQ(w.springs()[0].body, w.indexOf(c));  // c moved into a's index, its spring with it
+  EXPECT_EQ(w.springs()[0].body, c);  // c moved into a's index, its spring with it, by id
   EXPECT_EQ(w.springs()[0].anchor, Vec3(6.0, 5.0, 0.0));
   ASSERT_EQ(w.scriptedForces().size(), 1u);
-  EXPECT_EQ(w.scriptedForces()[0].body, w.indexOf(c));
+  EXPECT_EQ(w.scriptedForces()[0].body, c);
   EXPECT_EQ(w.bodies()[w.indexOf(c)].name(), "c");
 }
 

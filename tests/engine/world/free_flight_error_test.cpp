@@ -18,7 +18,7 @@ FreeFlightError::Reading tumble(Integrator integrator, double seconds) {
   def.orientation = Quat(rotationFromAxisAngle(Vec3(0.3, -0.2, 0.5)));
   def.angularVelocity = def.orientation * Vec3(0.01, 10.0, 0.0);
   world.addBody(def);
-  FreeFlightError error(0);
+  FreeFlightError error(world.idAt(0));
   error.observe(world);
   for (long i = 0; i < std::lround(seconds * 60.0); ++i) {
     world.step();
@@ -54,7 +54,7 @@ TEST(FreeFlightError, RestartsAfterAContact) {
   def.velocity = Vec3(0.0, 4.0, 0.0);
   def.angularVelocity = Vec3(2.0, 7.0, 1.0);
   world.addBody(def);
-  FreeFlightError error(0);
+  FreeFlightError error(world.idAt(0));
   error.observe(world);
   bool landed = false;
   for (int i = 0; i < 120; ++i) {

@@ -39,8 +39,8 @@ TEST(WorldJoints, JointedBodiesDoNotCollideUnlessAsked) {
     world.addBody(a);
     world.addBody(b);
     JointDef joint;
-    joint.bodyA = 1;
-    joint.bodyB = 0;
+    joint.bodyA = world.idAt(1);
+    joint.bodyB = world.idAt(0);
     joint.anchor = Vec3(0.15, 0.0, 0.0);
     joint.collideConnected = collide;
     world.addJoint(joint);
@@ -61,14 +61,14 @@ TEST(WorldJoints, JointedBodiesSleepAndWakeTogether) {
   world.addBody(a);
   world.addBody(b);
   JointDef joint;
-  joint.bodyA = 1;
-  joint.bodyB = 0;
+  joint.bodyA = world.idAt(1);
+  joint.bodyB = world.idAt(0);
   joint.anchor = Vec3(0.0, -0.25, 0.0);
   world.addJoint(joint);
   for (int i = 0; i < 120; ++i) world.step();
   ASSERT_FALSE(world.bodies()[0].awake());
   ASSERT_FALSE(world.bodies()[1].awake());
-  world.body(std::size_t{1}).setVelocity(Vec3(1.0, 0.0, 0.0));
+  world.body(world.idAt(1)).setVelocity(Vec3(1.0, 0.0, 0.0));
   world.step();
   EXPECT_TRUE(world.bodies()[0].awake());
   EXPECT_GT(world.bodies()[0].velocity().norm(), 0.0);  // pulled along by the joint
@@ -87,8 +87,8 @@ TEST(WorldJoints, MotorBetweenTwoBodiesKeepsTheirAngularMomentum) {
   world.addBody(stator);
   JointDef motor;
   motor.type = JointDef::Type::Hinge;
-  motor.bodyA = 0;
-  motor.bodyB = 1;
+  motor.bodyA = world.idAt(0);
+  motor.bodyB = world.idAt(1);
   motor.anchor = Vec3(0.0, 0.0, 0.2);
   motor.axis = Vec3(0.0, 0.0, 1.0);
   motor.motor = true;
@@ -116,16 +116,16 @@ TEST(WorldJoints, ChainSettlesOnTheGroundWithItsJointsHeld) {
     world.addBody(link);
     if (i == 0) continue;
     JointDef joint;
-    joint.bodyA = static_cast<std::size_t>(i);
-    joint.bodyB = static_cast<std::size_t>(i - 1);
+    joint.bodyA = world.idAt(static_cast<std::size_t>(i));
+    joint.bodyB = world.idAt(static_cast<std::size_t>(i - 1));
     joint.anchor = Vec3(0.3 * i, 1.0, 0.0);
     world.addJoint(joint);
   }
   for (int i = 0; i < 300; ++i) world.step();  // 5 s
   double worst = 0.0, energy = 0.0;
   for (const Joint& j : world.joints()) {
-    const Vec3 onA = world.bodies()[j.def.bodyA].bodyToWorld(j.localAnchorMoving);
-    const Vec3 onB = world.bodies()[j.def.bodyB].bodyToWorld(j.localAnchorBase);
+    const Vec3 onA = world.bodies()[j.a].bodyToWorld(j.localAnchorMoving);
+    const Vec3 onB = world.bodies()[j.b].bodyToWorld(j.localAnchorBase);
     worst = std::max(worst, (onA - onB).norm());
   }
   for (const RigidBody& b : world.bodies()) {
@@ -146,16 +146,18 @@ TEST(WorldJoints, JointsFollowDestroyedAndMovedBodies) {
   const BodyId hook = world.addBody(hookDef);
   BodyDef weightDef = boxDef(Vec3(0.2, 0.2, 0.2), 1.0, "weight");
   weightDef.position = Vec3(0.0, 1.5, 0.0);
-  world.addBody(weightDef);
+  const BodyId weight = world.addBody(weightDef);
   JointDef joint;
-  joint.bodyA = 2;
-  joint.bodyB = 1;
+  joint.bodyA = weight;
+  joint.bodyB = hook;
   joint.anchor = Vec3(0.0, 1.8, 0.0);
   world.addJoint(joint);
   world.destroyBody(first);  // the weight moves into index 0
   ASSERT_EQ(world.joints().size(), 1u);
-  EXPECT_EQ(world.joints()[0].def.bodyA, 0u);
-  EXPECT_EQ(world.joints()[0].def.bodyB, 1u);
+  EXPECT_EQ(world.joints()[0].def.bodyA, weight);  // the ids stay
+  EXPECT_EQ(world.joints()[0].def.bodyB, hook);
+  EXPECT_EQ(world.joints()[0].a, 0u);  // the indices the solver reads follow the bodies
+  EXPECT_EQ(world.joints()[0].b, 1u);
   for (int i = 0; i < 60; ++i) world.step();
   EXPECT_NEAR(world.bodies()[0].position().y(), 1.5, 1e-3);  // still hanging
   world.destroyBody(hook);

@@ -88,7 +88,7 @@ TEST(Sleep, AFreeBodyUnderGravityNeverSleepsEvenFromRest) {
 TEST(Sleep, AScriptedForceWakesTheBodyAndActsInFull) {
   // Asleep from t = 0.5 s; a 4 N push for 1 s starting at t = 1 s must give v = F t / m = 2 m/s.
   World world = worldWithBox(zeroGravity(), Vec3::Zero());
-  world.addForce({0, Vec3(4.0, 0.0, 0.0), Vec3::Zero(), Frame::World, Frame::Body, 1.0, 2.0});
+  world.addForce({world.idAt(0), Vec3(4.0, 0.0, 0.0), Vec3::Zero(), Frame::World, Frame::Body, 1.0, 2.0});
   stepN(world, 64);  // to t = 1 s
   ASSERT_FALSE(world.bodies()[0].awake());
   stepN(world, 64);  // t = 1 .. 2 s
@@ -99,6 +99,7 @@ TEST(Sleep, AScriptedForceWakesTheBodyAndActsInFull) {
 TEST(Sleep, APoseEventWakesTheBody) {
   World world = worldWithBox(zeroGravity(), Vec3::Zero());
   PoseEvent kick;
+  kick.body = world.idAt(0);
   kick.time = 1.0;
   kick.velocity = Vec3(0.0, 0.0, 1.0);
   world.addPoseEvent(kick);
@@ -154,9 +155,9 @@ World everyStageScene(bool skip) {
   BodyDef resting = boxDef(Vec3::Ones(), 5.0, "resting");
   resting.position = Vec3(3.0, 0.0, 0.0);
   world.addBody(resting);
-  world.addForce({0, Vec3(0.0, 1.0, 0.0), Vec3(0.5, 0.0, 0.0), Frame::Body, Frame::Body, 0.25, 0.5});
+  world.addForce({world.idAt(0), Vec3(0.0, 1.0, 0.0), Vec3(0.5, 0.0, 0.0), Frame::Body, Frame::Body, 0.25, 0.5});
   PoseEvent nudge;
-  nudge.body = 1;
+  nudge.body = world.idAt(1);
   nudge.time = 2.0;
   nudge.velocity = Vec3(0.0, 0.1, 0.0);
   world.addPoseEvent(nudge);

@@ -64,12 +64,12 @@ void build(World& world, Scene scene) {
     // A chain of 20 small boxes on ball joints hanging straight down at rest: joints and no
     // contacts. (A swinging one keeps finding new largest broad-phase pair counts for a while,
     // and its buffers grow to them: growth to a high-water mark, not a steady state.)
-    std::size_t previous = 0;
+    BodyId previous;
     for (int i = 0; i < 20; ++i) {
       BodyDef def = boxDef(Vec3::Constant(0.4), 1.0);
       def.shape = Shape::box(Vec3::Constant(0.2));
       def.position = Vec3(0.0, 20.0 - 0.5 * (i + 1), 0.0);
-      const std::size_t body = world.indexOf(world.addBody(def));
+      const BodyId body = world.addBody(def);
       JointDef joint;
       joint.type = JointDef::Type::Ball;
       joint.bodyA = body;

@@ -58,6 +58,7 @@ TEST(World, AccumulateForcesRunsForScriptedForcesWhileIntegrateAddsGravityAlone)
   World pushed(settingsWith(Vec3::Zero()));
   pushed.addBody(boxDef(Vec3::Ones(), 1.0));
   ScriptedForce f;
+  f.body = pushed.idAt(0);
   f.force = Vec3(1.0, 0.0, 0.0);
   f.start = 0.0;
   f.end = 1.0;
@@ -78,6 +79,7 @@ TEST(World, PoseEventAppliesAtTheFirstStepStartingAtOrAfterItsTime) {
   def.position = Vec3(1.0, 1.0, 1.0);
   world.addBody(def);
   PoseEvent e;
+  e.body = world.idAt(0);
   e.time = 0.1;  // steps start at n/64: step 6 starts at 0.09375, step 7 at 0.109375
   e.position = Vec3(5.0, 6.0, 7.0);
   e.orientation = quatFromAxisAngle(Vec3(0.0, 0.5, 0.0));
@@ -103,6 +105,7 @@ TEST(World, PoseEventExactlyAtAStepStartAppliesAtThatStep) {
   World world(settingsWith(Vec3::Zero()));
   world.addBody(boxDef(Vec3::Ones(), 1.0));
   PoseEvent e;
+  e.body = world.idAt(0);
   e.time = 8 * kDt;
   e.angularVelocity = Vec3(0.0, 0.0, 2.0);
   world.addPoseEvent(e);
@@ -132,6 +135,7 @@ TEST(World, ScriptedForceGivesImpulseForceTimesDuration) {
   World world(settingsWith(Vec3::Zero()));
   world.addBody(boxDef(Vec3::Ones(), 2.0));
   ScriptedForce f;
+  f.body = world.idAt(0);
   f.force = Vec3(3.0, -1.5, 0.75);
   f.start = 0.0;
   f.end = 0.25;  // steps 0..15 start before 0.25: exactly 16 steps of dt = 1/64
@@ -141,14 +145,15 @@ TEST(World, ScriptedForceGivesImpulseForceTimesDuration) {
   EXPECT_TRUE(allNear(world.bodies()[0].state().linearMomentum, 0.25 * f.force, 0.0));
   EXPECT_TRUE(allNear(world.bodies()[0].state().angularMomentum, Vec3::Zero(), 0.0))
       << "applied at the centre of mass";
-  EXPECT_TRUE(world.activeForces(0, 0.25).empty()) << "the window is [start, end)";
-  EXPECT_EQ(world.activeForces(0, 0.0).size(), 1u);
+  EXPECT_TRUE(world.activeForces(world.idAt(0), 0.25).empty()) << "the window is [start, end)";
+  EXPECT_EQ(world.activeForces(world.idAt(0), 0.0).size(), 1u);
 }
 
 TEST(World, ScriptedForceOffCentreGivesAngularImpulse) {
   World world(settingsWith(Vec3::Zero()));
   world.addBody(boxDef(Vec3::Ones(), 1.0));
   ScriptedForce f;
+  f.body = world.idAt(0);
   f.force = Vec3(0.0, 2.0, 0.0);   // world frame
   f.point = Vec3(0.5, 0.0, 0.0);   // body frame, relative to the centre of mass
   f.start = 0.0;
@@ -166,6 +171,7 @@ TEST(World, BodyFrameForceTurnsWithTheBody) {
   def.angularVelocity = Vec3(0.0, 0.0, w);
   world.addBody(def);
   ScriptedForce f;
+  f.body = world.idAt(0);
   f.force = Vec3(1.0, 0.0, 0.0);  // along body x, applied at the centre of mass: no torque
   f.forceFrame = Frame::Body;
   f.start = 0.0;
@@ -174,7 +180,7 @@ TEST(World, BodyFrameForceTurnsWithTheBody) {
   Vec3 expected = Vec3::Zero();
   for (int n = 0; n < 64; ++n) {
     const Mat3 Rn = rotationFromAxisAngle(Vec3(0.0, 0.0, w * n * kDt));  // expmap is exact here
-    const auto active = world.activeForces(0, world.time());
+    const auto active = world.activeForces(world.idAt(0), world.time());
     ASSERT_EQ(active.size(), 1u);
     EXPECT_TRUE(allNear(active[0].second, Rn * f.force, 1e-13)) << "step " << n;
     expected += kDt * (Rn * f.force);
@@ -197,7 +203,7 @@ World deterministicWorld(double velocityNudge) {
   world.addBody(a);
   world.addBody(b);
   ScriptedForce push;
-  push.body = 1;
+  push.body = world.idAt(1);
   push.force = Vec3(0.0, 5.0, 1.0);
   push.point = Vec3(0.25, 0.0, 0.9);
   push.forceFrame = Frame::Body;
@@ -231,11 +237,15 @@ TEST(World, ScriptsMustNameABody) {
   World world(settingsWith(Vec3::Zero()));
   world.addBody(boxDef(Vec3::Ones(), 1.0));
   ScriptedForce f;
-  f.body = 1;
+  f.body = BodyId{1, 0};  // a slot no body has had
   EXPECT_THROW(world.addForce(f), std::invalid_argument);
   PoseEvent e;
-  e.body = 3;
+  e.body = BodyId{3, 0};
   EXPECT_THROW(world.addPoseEvent(e), std::invalid_argument);
+  const BodyId gone = world.addBody(boxDef(Vec3::Ones(), 1.0));
+  world.destroyBody(gone);
+  f.body = gone;  // a stale id: its slot's generation moved on
+  EXPECT_THROW(world.addForce(f), std::invalid_argument);
 }
 
 // The hand-moved spring of window mode's drag: moving its anchor wakes a sleeping body and pulls
@@ -246,12 +256,12 @@ TEST(World, AMovedSpringWakesItsBodyPullsItAndStopsWhenRemoved) {
   World world(settings);
   world.addBody(boxDef(Vec3(1.0, 1.0, 1.0), 2.0));
   Spring spring;
-  spring.body = 0;
+  spring.body = world.idAt(0);
   spring.anchor = Vec3::Zero();
   spring.point = Vec3(0.5, 0.0, 0.0);  // on the +x face
   spring.stiffness = 10.0;
   const std::size_t index = world.addSpring(spring);
-  world.body(std::size_t{0}).sleep();
+  world.body(world.idAt(0)).sleep();
   world.moveSpringAnchor(index, Vec3(1.5, 0.0, 0.0));
   EXPECT_TRUE(world.bodies()[0].awake());
   const auto [point, force] = world.springForce(index);

@@ -8,19 +8,22 @@
 #include <limits>
 #include <string>
 
+#include "rbsim/body/body_id.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {
 
-// body_b of a joint held by the world.
-inline constexpr std::size_t kWorldAnchor = std::numeric_limits<std::size_t>::max();
+// body_b of a joint held by the world: the id of no body.
+inline constexpr BodyId kWorldAnchor{};
+// Joint::b of a joint held by the world.
+inline constexpr std::size_t kWorldIndex = std::numeric_limits<std::size_t>::max();
 
 struct JointDef {
   enum class Type { Ball, Hinge };
   Type type = Type::Ball;
   std::string name;
-  std::size_t bodyA = 0;             // the jointed body (dynamic)
-  std::size_t bodyB = kWorldAnchor;  // the body it hangs on, or the world
+  BodyId bodyA;                      // the jointed body (dynamic)
+  BodyId bodyB = kWorldAnchor;       // the body it hangs on, or the world
   Vec3 anchor = Vec3::Zero();        // the pivot, world frame, where the bodies are when it is added [m]
   Vec3 axis = Vec3::UnitZ();         // hinge axis, world frame at that time, unit
   bool motor = false;
@@ -38,6 +41,10 @@ struct JointDef {
 // relative to B.
 struct Joint {
   JointDef def;
+  // The bodies' indices in World::bodies() now (World::destroyBody keeps them up to date), for
+  // the solver; b is kWorldIndex for the world.
+  std::size_t a = 0;
+  std::size_t b = kWorldIndex;
   Vec3 localAnchorBase = Vec3::Zero();    // base's body frame, from its centre of mass; world frame for the world [m]
   Vec3 localAnchorMoving = Vec3::Zero();  // body A's frame, from its centre of mass [m]
   Vec3 localAxisBase = Vec3::UnitZ();     // unit, base's frame

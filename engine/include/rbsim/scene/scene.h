@@ -62,6 +62,11 @@ struct ParticleLook {
   double sizeEndScale = 1.0;         // drawn size at a = 1 over the size at birth [1]
 };
 
+// A Scene names its bodies (in forces, pose events, springs and joints) by the ids that
+// buildWorld's World gives them: a fresh World numbers bodies added in order by slot, generation
+// 0, so body i of Scene::bodies gets sceneBodyId(i) (buildWorld checks it).
+inline BodyId sceneBodyId(std::size_t index) { return {static_cast<std::uint32_t>(index), 0}; }
+
 struct Scene {
   std::string file;        // where it came from, for messages
   std::string title;

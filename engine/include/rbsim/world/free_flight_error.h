@@ -15,8 +15,8 @@ namespace rbsim {
 
 class FreeFlightError {
  public:
-  explicit FreeFlightError(std::size_t body) : body_(body) {}
-  std::size_t body() const { return body_; }
+  explicit FreeFlightError(BodyId body) : body_(body) {}
+  BodyId body() const { return body_; }
 
   // After every step of the world, and once before the first: restarts the exact motion from the
   // body's state when anything but the integrator turned it during the step.
@@ -31,7 +31,7 @@ class FreeFlightError {
   Reading read(const World& world) const;
 
  private:
-  std::size_t body_;
+  BodyId body_;
   std::optional<FreeRigidBodyFlow> flow_;
   double epochTime_ = 0.0;  // [s]
   double spinEnergy_ = 0.0;  // at the epoch, which the exact motion keeps [J]

@@ -6,7 +6,7 @@
 
 #include "rbsim/collision/broadphase/broad_phase.h"
 #include "rbsim/math/types.h"
-#include "rbsim/world/body_id.h"
+#include "rbsim/body/body_id.h"
 
 namespace rbsim {
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <optional>
 
+#include "rbsim/body/body_id.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {
@@ -12,7 +13,7 @@ enum class Frame { World, Body };
 
 // A force f applied at point p for start <= t < end, t being the time at the start of a step.
 struct ScriptedForce {
-  std::size_t body = 0;
+  BodyId body;
   Vec3 force = Vec3::Zero();     // [N], in forceFrame
   Vec3 point = Vec3::Zero();     // [m], in pointFrame (body frame: relative to the centre of mass)
   Frame forceFrame = Frame::World;
@@ -23,7 +24,7 @@ struct ScriptedForce {
 
 // At the first step starting at or after `time`, the given fields are set by hand.
 struct PoseEvent {
-  std::size_t body = 0;
+  BodyId body;
   double time = 0.0;  // [s]
   std::optional<Vec3> position;
   std::optional<Quat> orientation;

@@ -3,12 +3,13 @@
 // spring forces F = -k (|d| - rest) d/|d| - c v_rel along d). Accumulated each step with gravity.
 #include <cstddef>
 
+#include "rbsim/body/body_id.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {
 
 struct Spring {
-  std::size_t body = 0;
+  BodyId body;
   Vec3 anchor = Vec3::Zero();      // world frame [m]
   Vec3 point = Vec3::Zero();       // body frame, relative to the centre of mass [m]
   double stiffness = 0.0;          // k [N/m], >= 0

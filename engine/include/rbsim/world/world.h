@@ -15,7 +15,7 @@
 #include "rbsim/body/material.h"
 #include "rbsim/dynamics/soft_step_solver.h"
 #include "rbsim/dynamics/step_listener.h"
-#include "rbsim/world/body_id.h"
+#include "rbsim/body/body_id.h"
 #include "rbsim/world/collision_pipeline.h"
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spring.h"
@@ -47,13 +47,11 @@ enum class Stage : int {
 };
 const char* stageName(Stage stage);
 
-// A body that broke: it became its first piece, and the others were added after every body
-// there was.
+// A body that broke: it became its first piece, and the others were added as new bodies.
 struct FractureEvent {
   double time = 0.0;            // [s]
-  std::size_t body = 0;         // now the first piece
-  std::size_t firstAdded = 0;   // the other pieces are bodies firstAdded .. firstAdded + added - 1
-  std::size_t added = 0;
+  BodyId body;                  // the body that broke, now its first piece (same id)
+  std::vector<BodyId> added;    // the other pieces, new bodies
   double impulse = 0.0;         // the normal impulses that broke it [N s]
 };
 
@@ -79,11 +77,10 @@ class World {
   // The body's index in bodies() now; throws std::invalid_argument on a stale id.
   std::size_t indexOf(BodyId id) const;
   BodyId idAt(std::size_t index) const;  // the id of bodies()[index]; throws when out of range
-  RigidBody& body(BodyId id) { return bodies_[indexOf(id)]; }
-  const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
   // Manual changes go through here (seed 004's "change x and R"): bodies() is read-only, since
   // adding or removing bodies behind the World's back would leave its per-body data behind.
-  RigidBody& body(std::size_t index);
+  RigidBody& body(BodyId id) { return bodies_[indexOf(id)]; }
+  const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
   std::size_t addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
@@ -128,7 +125,7 @@ class World {
   const std::vector<SolvedContactPoint>& contactPoints() const {
     return settings_.solver == Settings::ContactSolverMethod::Pgs ? contactSolver_.points() : softStep_.points();
   }
-  const Material& bodyMaterial(std::size_t body) const { return bodyMaterials_[body]; }
+  const Material& bodyMaterial(BodyId body) const { return bodyMaterials_[indexOf(body)]; }
   // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
   const std::vector<BodyShape>& bodyShapes() const { return bodyShapes_; }
   const std::vector<FractureEvent>& fractureEvents() const { return fractureEvents_; }
@@ -137,7 +134,7 @@ class World {
 
   // The forces acting during the step that starts at time t, in world frame: (point, force).
   // Used by stage AccumulateForces and by renderers that draw force arrows.
-  std::vector<std::pair<Vec3, Vec3>> activeForces(std::size_t body, double t) const;
+  std::vector<std::pair<Vec3, Vec3>> activeForces(BodyId body, double t) const;
 
   // FNV-1a over the bit patterns of every body's state, then of each step listener's (particles,
   // soft nodes, 2D bodies; nothing when there are none): equal hashes mean identical runs.
@@ -164,7 +161,7 @@ class World {
 
   Settings settings_;
   std::vector<RigidBody> bodies_;
-  // Ids (world/body_id.h): per slot the body's index in bodies_ (or, for a free slot, the next
+  // Ids (body/body_id.h): per slot the body's index in bodies_ (or, for a free slot, the next
   // free slot) and its generation; per body its slot.
   struct Slot {
     std::uint32_t index = 0;
