@@ -1,5 +1,5 @@
 // The rbsim command: numbered assignment demos, scenes from files, a listing. Exit codes:
-// 0 success, 2 bad input (file, field and expectation named), 1 internal error (DESIGN.md).
+// 0 success, 2 bad input (file, field and expectation named), 1 internal error (docs/architecture.md, "Around the engine").
 #include <cerrno>
 #include <cstdio>
 #include <cstring>

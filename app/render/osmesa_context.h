@@ -2,7 +2,7 @@
 // An OSMesa (llvmpipe) OpenGL 4.5 compatibility-profile context. It draws into its framebuffer
 // object (gl_context.h); OSMesa's own buffer is one pixel, made only because OSMesa cannot make a
 // context current without one. Compatibility rather than core because ImGui's OpenGL2 backend (the only Debian
-// backend that starts under OSMesa, see DESIGN.md) uses fixed-function calls; GLSL 4.50 shaders
+// backend that starts under OSMesa, see docs/architecture.md, "Rendering facts") uses fixed-function calls; GLSL 4.50 shaders
 // run in the same context.
 #include <cstdint>
 

@@ -20,7 +20,7 @@ class Overlay {
 
   // Draws a fixed-size, fixed-position panel at the top left into `target` (none when
   // `data` has no title, caption or rows), and each of data.labels in a box of its own. Fixed
-  // size, because ImGui hides an auto-sized window on its first frame (DESIGN.md). With `ui`, its pointer drives ImGui and its windows are drawn in the same frame;
+  // size, because ImGui hides an auto-sized window on its first frame (docs/architecture.md, "Rendering facts"). With `ui`, its pointer drives ImGui and its windows are drawn in the same frame;
   // returns whether ImGui wants the pointer (it is over a control). Leaves no program, vertex
   // array or buffer bound; the GL renderer sets everything else it needs each frame.
   bool draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui = nullptr);

@@ -1,5 +1,5 @@
 #pragma once
-// The CSV trace of DESIGN.md ("Trace format"): one row per body per traced step, SI units,
+// The CSV trace of docs/architecture.md ("Trace"): one row per body per traced step, SI units,
 // world frame, full double precision so external checks can reproduce our numbers. Fields are
 // quoted as RFC 4180 asks (a body name may hold a comma, a quote or a line break), and every
 // write is checked: a full disk stops the run with the file and the OS's reason.

@@ -1,5 +1,5 @@
 #pragma once
-// A plain X11 window that shows the images the off-screen renderer makes (DESIGN.md "Rendering
+// A plain X11 window that shows the images the off-screen renderer makes (docs/architecture.md "Rendering
 // facts": libOSMesa exports the GL entry points itself, and linking libGL for a GLX window into
 // the same process clashes with it). So the window has no GL context at all: the OSMesa image is
 // copied to it with XPutImage, and the window only reports the pointer and the keys. What the

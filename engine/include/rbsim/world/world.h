@@ -1,6 +1,6 @@
 #pragma once
-// The World owns the bodies and advances them; step() reads as the pipeline (DESIGN.md
-// "Data flow"), one named stage per call, each skipped when the scene has nothing for it.
+// The World owns the bodies and advances them; step() reads as the pipeline (docs/architecture.md,
+// "The step"), one named stage per call, each skipped when the scene has nothing for it.
 #include <array>
 #include <chrono>
 #include <cstdint>
