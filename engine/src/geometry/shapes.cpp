@@ -1,6 +1,8 @@
 #include "rbsim/geometry/shapes.h"
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -136,6 +138,61 @@ Mesh makeCapsule(double radius, double length, int segments, int rings) {
   m.vertices.emplace_back(0.0, radius + half, 0.0);
   for (int s = 0; s < segments; ++s) {
     m.triangles.push_back({top, previous + static_cast<std::uint32_t>((s + 1) % segments), previous + s});
+  }
+  return m;
+}
+
+Mesh makeRoundedBox(const Vec3& coreHalfExtents, double radius, int bandSegments) {
+  require(radius > 0.0 && std::isfinite(radius), "makeRoundedBox", "radius is " + std::to_string(radius) + ", expected > 0");
+  require(coreHalfExtents.allFinite() && coreHalfExtents.minCoeff() >= 0.0, "makeRoundedBox", "core half extents must be >= 0");
+  require(bandSegments >= 1, "makeRoundedBox", "bandSegments is " + std::to_string(bandSegments) + ", expected >= 1");
+  const Vec3& h = coreHalfExtents;
+  // Grid coordinates along axis j on the outer box: h_j + r tan(theta) over the band, theta in
+  // equal steps to 45 degrees (where the neighbouring face's band takes over), mirrored.
+  std::array<std::vector<double>, 3> ticks;
+  for (int j = 0; j < 3; ++j) {
+    std::vector<double> upper;
+    for (int i = 0; i < bandSegments; ++i) upper.push_back(h[j] + radius * std::tan(0.25 * kPi * i / bandSegments));
+    upper.push_back(h[j] + radius);  // exactly the neighbouring face's plane (tan(pi/4) rounds below 1)
+    for (auto it = upper.rbegin(); it != upper.rend(); ++it) ticks[j].push_back(-*it);
+    for (double t : upper) {
+      if (t > ticks[j].back()) ticks[j].push_back(t);  // a zero core extent shares its middle tick
+    }
+  }
+  Mesh m;
+  m.name = "rounded_box";
+  std::map<std::array<double, 3>, std::uint32_t> index;  // the faces' shared seams, merged
+  const auto vertex = [&](const Vec3& p) {
+    const Vec3 core = p.cwiseMax(-h).cwiseMin(h);
+    const Vec3 q = core + radius * (p - core).normalized();
+    const auto [it, added] = index.try_emplace({q.x(), q.y(), q.z()}, static_cast<std::uint32_t>(m.vertices.size()));
+    if (added) m.vertices.push_back(q);
+    return it->second;
+  };
+  for (int k = 0; k < 3; ++k) {
+    const int u = (k + 1) % 3, v = (k + 2) % 3;  // e_u x e_v = e_k
+    for (const double side : {1.0, -1.0}) {
+      for (std::size_t i = 0; i + 1 < ticks[u].size(); ++i) {
+        for (std::size_t j = 0; j + 1 < ticks[v].size(); ++j) {
+          std::array<std::uint32_t, 4> c;
+          for (int corner = 0; corner < 4; ++corner) {
+            Vec3 p;
+            p[k] = side * (h[k] + radius);
+            p[u] = ticks[u][i + ((corner == 1 || corner == 2) ? 1 : 0)];
+            p[v] = ticks[v][j + (corner >= 2 ? 1 : 0)];
+            c[static_cast<std::size_t>(corner)] = vertex(p);
+          }
+          // Counter-clockwise seen from outside: (u, v) turns about +e_k, so flip on the - side.
+          if (side > 0.0) {
+            m.triangles.push_back({c[0], c[1], c[2]});
+            m.triangles.push_back({c[0], c[2], c[3]});
+          } else {
+            m.triangles.push_back({c[0], c[2], c[1]});
+            m.triangles.push_back({c[0], c[3], c[2]});
+          }
+        }
+      }
+    }
   }
   return m;
 }

@@ -68,6 +68,17 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
       def.shape = Shape::capsule(radius, 0.5 * length);
       return makeCapsule(radius, length, kRoundSegments, kRoundRings);
     }
+    if (type == "rounded_box") {
+      shape.allowOnly({"type", "extents", "radius"}, "a \"rounded_box\" shape");
+      const Vec3 extents = shape.positiveVec3("extents");  // the outer box [m]
+      const double radius = shape.positiveNumber("radius", 0.1 * extents.minCoeff());
+      if (!(2.0 * radius <= extents.minCoeff())) {
+        shape.fail("radius", "expected at most half the smallest extent (" + std::to_string(0.5 * extents.minCoeff()) + " m)");
+      }
+      const Vec3 core = 0.5 * extents - Vec3::Constant(radius);
+      def.shape = Shape::roundedBox(core, radius);
+      return makeRoundedBox(core, radius, kRoundSegments / 8);
+    }
     if (type == "torus") {
       shape.allowOnly({"type", "major_radius", "minor_radius"}, "a \"torus\" shape");
       const double major = shape.positiveNumber("major_radius", 0.5), minor = shape.positiveNumber("minor_radius", 0.15);
@@ -114,7 +125,7 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
     for (Vec3& p : mesh.vertices) p *= scale;
     return mesh;
   }
-  shape.fail("type", "expected \"box\", \"sphere\", \"capsule\", \"torus\", \"bowl\", \"letter_u\", \"mesh\", "
+  shape.fail("type", "expected \"box\", \"sphere\", \"capsule\", \"rounded_box\", \"torus\", \"bowl\", \"letter_u\", \"mesh\", "
                     "\"implicit\" or \"csg\", got \"" + type + "\"");
 }
 

@@ -31,6 +31,22 @@ Vec3 scanSupport(const std::vector<Vec3>& points, const Vec3& d) {
   return points[best];
 }
 
+// The integral of x^2 over a rounded box with core half extents (a, b, c), a along x, and radius r
+// [m^5], summed over its pieces. A quarter disc of radius r has area pi r^2 / 4, first moment
+// r^3 / 3 and second moment pi r^4 / 16 about its edges; a ball eighth has volume pi r^3 / 6,
+// first moment pi r^4 / 16 and second moment pi r^5 / 30 about its faces.
+double roundedBoxSecondMoment(double a, double b, double c, double r) {
+  const double a3 = a * a * a;
+  const double core = 8.0 * a3 * b * c / 3.0;
+  const double slabsX = 8.0 * b * c * ((a + r) * (a + r) * (a + r) - a3) / 3.0;  // the two faces normal to x
+  const double slabsYZ = 8.0 * a3 * r * (b + c) / 3.0;                              // the four others
+  const double edgesX = 2.0 * kPi * r * r * a3 / 3.0;  // along x: a cylinder of area pi r^2, length 2a
+  // Along y and z: four quarter discs at x = +-a, each integrating (a + u)^2, over lengths 2b, 2c.
+  const double edgesYZ = 2.0 * (b + c) * (kPi * r * r * a * a + 8.0 * a * r * r * r / 3.0 + kPi * r * r * r * r / 4.0);
+  const double corners = 4.0 * kPi * a * a * r * r * r / 3.0 + kPi * a * r * r * r * r + 4.0 * kPi * r * r * r * r * r / 15.0;
+  return core + slabsX + slabsYZ + edgesX + edgesYZ + corners;
+}
+
 }  // namespace
 
 const char* shapeTypeName(ShapeType type) {
@@ -38,6 +54,7 @@ const char* shapeTypeName(ShapeType type) {
     case ShapeType::Sphere: return "sphere";
     case ShapeType::Capsule: return "capsule";
     case ShapeType::Box: return "box";
+    case ShapeType::RoundedBox: return "rounded box";
     case ShapeType::ConvexHull: return "convex hull";
     case ShapeType::Mesh: return "mesh";
   }
@@ -116,6 +133,20 @@ Shape Shape::capsule(double radius, double halfLength) {
   return s;
 }
 
+Shape Shape::roundedBox(const Vec3& coreHalfExtents, double radius) {
+  requirePositive(radius, "a rounded box's radius");
+  for (int k = 0; k < 3; ++k) {
+    if (!(coreHalfExtents[k] >= 0.0) || !std::isfinite(coreHalfExtents[k])) {
+      throw std::invalid_argument("shape: a rounded box's core half extents must be finite lengths >= 0 [m]");
+    }
+  }
+  Shape s;
+  s.type = ShapeType::RoundedBox;
+  s.radius = radius;
+  s.halfExtents = coreHalfExtents;
+  return s;
+}
+
 Shape Shape::box(const Vec3& halfExtents) {
   for (int k = 0; k < 3; ++k) requirePositive(halfExtents[k], "a box's half extent");
   Shape s;
@@ -146,6 +177,9 @@ Vec3 Shape::support(const Vec3& d, unsigned* hint) const {
     case ShapeType::Box:
       return Vec3(d.x() >= 0.0 ? halfExtents.x() : -halfExtents.x(), d.y() >= 0.0 ? halfExtents.y() : -halfExtents.y(),
                   d.z() >= 0.0 ? halfExtents.z() : -halfExtents.z());
+    case ShapeType::RoundedBox:  // the core's support point, pushed out by r along d
+      return Vec3(d.x() >= 0.0 ? halfExtents.x() : -halfExtents.x(), d.y() >= 0.0 ? halfExtents.y() : -halfExtents.y(),
+                  d.z() >= 0.0 ? halfExtents.z() : -halfExtents.z()) + radius * d.normalized();
     case ShapeType::ConvexHull:
     case ShapeType::Mesh: break;
   }
@@ -169,6 +203,7 @@ double Shape::boundingRadius() const {
     case ShapeType::Sphere: return radius;
     case ShapeType::Capsule: return halfLength + radius;
     case ShapeType::Box: return halfExtents.norm();
+    case ShapeType::RoundedBox: return halfExtents.norm() + radius;
     case ShapeType::ConvexHull:
     case ShapeType::Mesh: break;
   }
@@ -185,6 +220,7 @@ std::pair<Vec3, Vec3> Shape::worldBounds(const Mat3& R, const Vec3& x) const {
     case ShapeType::Capsule: half = (halfLength * R.col(1)).cwiseAbs() + Vec3::Constant(radius); break;
     // |R| h: the box's extent along each world axis (Ericson 4.2.6).
     case ShapeType::Box: half = R.cwiseAbs() * halfExtents; break;
+    case ShapeType::RoundedBox: half = R.cwiseAbs() * halfExtents + Vec3::Constant(radius); break;
     case ShapeType::ConvexHull:
     case ShapeType::Mesh: {
       Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
@@ -200,6 +236,18 @@ std::pair<Vec3, Vec3> Shape::worldBounds(const Mat3& R, const Vec3& x) const {
 }
 
 std::pair<double, Vec3> Shape::roundDistance(const Vec3& local) const {
+  if (type == ShapeType::RoundedBox) {
+    // The nearest point of the core box, then r beyond it. Inside the core, the nearest face.
+    const Vec3 core = local.cwiseMax(-halfExtents).cwiseMin(halfExtents);
+    const Vec3 out = local - core;
+    const double distance = out.norm();
+    if (distance > 0.0) return {distance - radius, Vec3(out / distance)};
+    int axis = 0;
+    (halfExtents - local.cwiseAbs()).minCoeff(&axis);
+    Vec3 normal = Vec3::Zero();
+    normal[axis] = local[axis] >= 0.0 ? 1.0 : -1.0;
+    return {local.cwiseAbs()[axis] - halfExtents[axis] - radius, normal};
+  }
   Vec3 centre = Vec3::Zero();  // the nearest point of the sphere's centre or the capsule's segment
   if (type == ShapeType::Capsule) centre.y() = std::clamp(local.y(), -halfLength, halfLength);
   const Vec3 out = local - centre;
@@ -214,6 +262,13 @@ double roundOrBoxVolume(const Shape& shape) {
     case ShapeType::Sphere: return 4.0 / 3.0 * kPi * r * r * r;
     case ShapeType::Capsule: return kPi * r * r * (2.0 * shape.halfLength) + 4.0 / 3.0 * kPi * r * r * r;
     case ShapeType::Box: return 8.0 * shape.halfExtents.prod();
+    case ShapeType::RoundedBox: {
+      // Core, six face slabs of thickness r, twelve quarter-cylinders along the edges (four per
+      // axis, one cylinder of length 2 h_k each), eight ball eighths at the corners (one ball).
+      const Vec3& h = shape.halfExtents;
+      return 8.0 * h.prod() + 8.0 * r * (h.x() * h.y() + h.y() * h.z() + h.z() * h.x()) + 2.0 * kPi * r * r * h.sum() +
+             4.0 / 3.0 * kPi * r * r * r;
+    }
     default: throw std::logic_error("roundOrBoxVolume: a hull's volume is the polyhedral integral's");
   }
 }
@@ -235,6 +290,15 @@ Mat3 roundOrBoxInertia(const Shape& shape, double mass) {
       const Vec3 e = 2.0 * shape.halfExtents;
       return Vec3(e.y() * e.y() + e.z() * e.z(), e.x() * e.x() + e.z() * e.z(), e.x() * e.x() + e.y() * e.y())
                  .asDiagonal() * (mass / 12.0);
+    }
+    case ShapeType::RoundedBox: {
+      // I_xx = rho (S_y + S_z), S_k the second moment along axis k (roundedBoxSecondMoment).
+      const Vec3& h = shape.halfExtents;
+      const double density = mass / roundOrBoxVolume(shape);
+      const double sx = roundedBoxSecondMoment(h.x(), h.y(), h.z(), r);
+      const double sy = roundedBoxSecondMoment(h.y(), h.z(), h.x(), r);
+      const double sz = roundedBoxSecondMoment(h.z(), h.x(), h.y(), r);
+      return Vec3(sy + sz, sx + sz, sx + sy).asDiagonal() * density;
     }
     default: throw std::logic_error("roundOrBoxInertia: a hull's inertia is the polyhedral integral's");
   }

@@ -69,9 +69,10 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body) {
     radius = std::max(radius, p.norm());
     local.grow(p);
   }
-  if (body.shape().isRound()) {
+  if (body.shape().isRound()) {  // the exact shape, not its inscribed display mesh
     radius = body.shape().boundingRadius();
-    local = {-Vec3::Constant(body.shape().radius), Vec3::Constant(body.shape().radius)};
+    const auto [lo, hi] = body.shape().worldBounds(Mat3::Identity(), Vec3::Zero());
+    local = {lo, hi};
   }
   radius_[index] = radius;
   thickness_[index] = local.extents().minCoeff();

@@ -20,6 +20,12 @@ Mesh makeUvSphere(double radius, int segments, int rings);
 // vertices on the exact capsule, so the mesh is inscribed in it.
 Mesh makeCapsule(double radius, double length, int segments, int rings);
 
+// Rounded box: the points within `radius` [m] of a core box of `coreHalfExtents` [m] (each >= 0).
+// Each face of the outer box is a grid whose points are sent to the nearest point of the rounded
+// surface, with `bandSegments` (>= 1) steps of equal angle over each 45-degree half of an edge's
+// quarter-round; vertices on the exact surface, so the mesh is inscribed in it.
+Mesh makeRoundedBox(const Vec3& coreHalfExtents, double radius, int bandSegments);
+
 // Torus around the y axis: tube centre circle of `majorRadius` [m] in the xz plane, tube radius
 // `minorRadius` [m] < majorRadius; vertices on the exact torus.
 Mesh makeTorus(double majorRadius, double minorRadius, int majorSegments, int minorSegments);

@@ -18,10 +18,11 @@ constexpr double kParallelAxisSine = 1e-3;  // [1]
 // A clipped stretch shorter than this is one point [m].
 constexpr double kMinStretch = 1e-9;  // [m]
 
-// The core a round shape is grown from: its centre, or its segment's two ends, in world frame.
-// On the stack: spheres and capsules collide with each other and the ground every step.
+// The core a round shape is grown from, in world frame: a sphere's centre, a capsule's segment's
+// two ends, a rounded box's eight core corners. On the stack: round shapes collide with each
+// other and the ground every step.
 struct Core {
-  std::array<Vec3, 2> points;
+  std::array<Vec3, 8> points;
   std::size_t count = 1;
   std::size_t size() const { return count; }
   const Vec3& operator[](std::size_t i) const { return points[i]; }
@@ -32,14 +33,48 @@ struct Core {
 };
 
 Core coreOf(const PosedShape& s) {
-  if (s.shape->type == ShapeType::Sphere) return {{s.position, s.position}, 1};
+  Core core;
+  if (s.shape->type == ShapeType::Sphere) {
+    core.points[0] = s.position;
+    return core;
+  }
+  if (s.shape->type == ShapeType::RoundedBox) {
+    const Vec3& h = s.shape->halfExtents;
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 corner((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
+      core.points[static_cast<std::size_t>(i)] = s.rotation * corner + s.position;
+    }
+    core.count = 8;
+    return core;
+  }
   const auto [lo, hi] = s.shape->segment();
-  return {{s.rotation * lo + s.position, s.rotation * hi + s.position}, 2};
+  core.points[0] = s.rotation * lo + s.position;
+  core.points[1] = s.rotation * hi + s.position;
+  core.count = 2;
+  return core;
+}
+
+// Two round shapes of which one has a box core: GJK / EPA and the feature manifold on the cores
+// (the face-to-face patch of two rounded boxes resting on each other), each point's depth grown
+// by both radii and moved out to midway between the surfaces.
+ContactManifold roundBoxCores(const PosedShape& a, const PosedShape& b, const Core& ca, const Core& cb, double margin) {
+  const double ra = a.shape->radius, rb = b.shape->radius;
+  const std::vector<Vec3> coreA(ca.begin(), ca.end()), coreB(cb.begin(), cb.end());
+  const ConvexContact c = collideConvex(coreA, coreB, margin + ra + rb);
+  ContactManifold m;
+  m.normal = c.manifold.normal;
+  const Vec3 shift = 0.5 * (ra - rb) * m.normal;  // A's surface is ra beyond its core, B's rb before its own
+  for (int i = 0; i < c.manifold.count; ++i) {
+    const ContactPoint& p = c.manifold.points[i];
+    if (p.depth + ra + rb >= -margin) m.add(p.position + shift, p.depth + ra + rb);
+  }
+  return m;
 }
 
 // Two round shapes: the closest points of their cores, pushed apart along n by the radii.
 ContactManifold roundRound(const PosedShape& a, const PosedShape& b, double margin) {
   const Core ca = coreOf(a), cb = coreOf(b);
+  if (ca.size() > 2 || cb.size() > 2) return roundBoxCores(a, b, ca, cb, margin);
   const double ra = a.shape->radius, rb = b.shape->radius;
   Vec3 pa = ca[0], pb = cb[0];
   if (ca.size() == 2 || cb.size() == 2) {
