@@ -11,7 +11,7 @@
 #include "collision/narrowphase/box_box.h"
 #include "collision/narrowphase/convex_convex.h"
 #include "collision/narrowphase/shape_pairs.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/math/rotation.h"
 
 using namespace rbsim;

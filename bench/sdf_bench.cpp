@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "geometry/implicit_surface.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/geometry/signed_distance_grid.h"
 
 namespace {

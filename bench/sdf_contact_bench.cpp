@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/geometry/signed_distance_grid.h"
 #include "geometry/surface_samples.h"
 #include "rbsim/mass/mass_model.h"

@@ -4,7 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 
 namespace rbsim {
 

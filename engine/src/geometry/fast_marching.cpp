@@ -29,7 +29,7 @@ double upwindSolve(double a[3], int count, double h) {
 
 }  // namespace
 
-std::size_t fastMarch(const GridShape& shape, std::vector<MarchLabel>& labels,
+std::size_t fastMarch(const GridLattice& shape, std::vector<MarchLabel>& labels,
                       std::vector<double>& distance) {
   using Entry = std::pair<double, std::size_t>;  // (tentative distance, point): min-heap order
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;

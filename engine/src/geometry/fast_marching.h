@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "rbsim/geometry/grid_shape.h"
+#include "rbsim/geometry/grid_lattice.h"
 
 namespace rbsim {
 
@@ -17,7 +17,7 @@ enum class MarchLabel : std::uint8_t { White, Red, Black };
 // equation sum over axes of ((d - a_axis)_+)^2 = h^2 using, per axis, the smaller Black neighbour
 // a_axis; a binary heap (lazy deletion of stale entries, ties broken by index, so the result is
 // deterministic) makes it O(N log N). Returns the number of points marched.
-std::size_t fastMarch(const GridShape& shape, std::vector<MarchLabel>& labels,
+std::size_t fastMarch(const GridLattice& shape, std::vector<MarchLabel>& labels,
                       std::vector<double>& distance);
 
 }  // namespace rbsim

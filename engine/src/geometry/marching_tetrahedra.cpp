@@ -18,7 +18,7 @@ constexpr std::array<std::array<int, 4>, 6> kTetrahedra{{
 
 class Mesher {
  public:
-  Mesher(const GridShape& grid, const std::vector<double>& values, MarchingStats& stats)
+  Mesher(const GridLattice& grid, const std::vector<double>& values, MarchingStats& stats)
       : grid_(grid), values_(values), stats_(stats), zeroBand_(kMarchingZeroBand * grid.cellSize) {}
 
   void cell(int i, int j, int k) {
@@ -113,7 +113,7 @@ class Mesher {
     mesh_.triangles.push_back(t);
   }
 
-  const GridShape& grid_;
+  const GridLattice& grid_;
   const std::vector<double>& values_;
   MarchingStats& stats_;
   const double zeroBand_;  // [m]
@@ -123,7 +123,7 @@ class Mesher {
 
 }  // namespace
 
-Mesh marchingTetrahedra(const GridShape& grid, const std::vector<double>& values, MarchingStats* stats) {
+Mesh marchingTetrahedra(const GridLattice& grid, const std::vector<double>& values, MarchingStats* stats) {
   if (values.size() != grid.pointCount()) {
     throw std::invalid_argument("marchingTetrahedra: " + std::to_string(values.size()) + " values for a grid of " +
                                 std::to_string(grid.pointCount()) + " points");

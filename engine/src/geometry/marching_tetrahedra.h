@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "rbsim/geometry/grid_shape.h"
+#include "rbsim/geometry/grid_lattice.h"
 #include "rbsim/geometry/mesh.h"
 
 namespace rbsim {
@@ -30,8 +30,8 @@ struct MarchingStats {
   std::size_t droppedTriangles = 0;  // collapsed: two corners on one such grid point
 };
 
-// `values` holds phi at the points of `grid` (GridShape::index order). Throws std::invalid_argument
+// `values` holds phi at the points of `grid` (GridLattice::index order). Throws std::invalid_argument
 // when their counts differ or a value is not finite. The mesh is empty when no point is inside.
-Mesh marchingTetrahedra(const GridShape& grid, const std::vector<double>& values, MarchingStats* stats = nullptr);
+Mesh marchingTetrahedra(const GridLattice& grid, const std::vector<double>& values, MarchingStats* stats = nullptr);
 
 }  // namespace rbsim

@@ -21,7 +21,7 @@ Vec3 faceNormal(const Mesh& mesh, std::uint32_t t) {
 
 }  // namespace
 
-SignRegions floodFillSigns(const GridShape& shape, const TriangleBvh& bvh, const Mesh& mesh,
+SignRegions floodFillSigns(const GridLattice& shape, const TriangleBvh& bvh, const Mesh& mesh,
                            const std::vector<SurfaceProximity>& proximity) {
   const std::size_t n = shape.pointCount();
   // Bit `axis` set: the edge from this point to its +axis neighbour is occluded.

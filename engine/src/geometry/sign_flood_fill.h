@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "rbsim/geometry/grid_shape.h"
+#include "rbsim/geometry/grid_lattice.h"
 #include "geometry/triangle_bvh.h"
 
 namespace rbsim {
@@ -31,7 +31,7 @@ struct SignRegions {
 // right when a region is a cavity (a hollow ball's inner shell faces inward, so the cavity is
 // outside). A region with as many votes each way (only possible for a few points lying exactly on
 // the surface, whose every edge touches it) is inside.
-SignRegions floodFillSigns(const GridShape& shape, const TriangleBvh& bvh, const Mesh& mesh,
+SignRegions floodFillSigns(const GridLattice& shape, const TriangleBvh& bvh, const Mesh& mesh,
                            const std::vector<SurfaceProximity>& proximity);
 
 }  // namespace rbsim

@@ -52,7 +52,7 @@ void validate(const Mesh& mesh, const SdfGridOptions& options) {
 }
 
 // The grid points of triangle t's box grown by `radius`, as index ranges [first, last] per axis.
-void bandRange(const Mesh& mesh, const Triangle& t, const GridShape& shape, double radius, Vec3i& first, Vec3i& last) {
+void bandRange(const Mesh& mesh, const Triangle& t, const GridLattice& shape, double radius, Vec3i& first, Vec3i& last) {
   Aabb box;
   for (std::uint32_t v : t) box.grow(mesh.vertices[v]);
   const Vec3 lo = (box.min.array() - radius - shape.origin.array()) / shape.cellSize;
@@ -70,9 +70,9 @@ std::string megabytes(double bytes) {
 }  // namespace
 
 // Padded bounding box (seed 000 "Constructing Signed Distance Functions"), centred on the mesh.
-GridShape sdfGridShape(const Mesh& mesh, const SdfGridOptions& options) {
+GridLattice sdfGridLattice(const Mesh& mesh, const SdfGridOptions& options) {
   const Vec3 lo = mesh.boundsMin(), hi = mesh.boundsMax();
-  GridShape shape;
+  GridLattice shape;
   shape.cellSize = (hi - lo).maxCoeff() / options.resolution;
   for (int axis = 0; axis < 3; ++axis) {
     // In [1, resolution] before the cast, whatever the box (a flat or non-finite one gives NaN).
@@ -85,7 +85,7 @@ GridShape sdfGridShape(const Mesh& mesh, const SdfGridOptions& options) {
   return shape;
 }
 
-double sdfBandVisits(const Mesh& mesh, const GridShape& shape, const SdfGridOptions& options) {
+double sdfBandVisits(const Mesh& mesh, const GridLattice& shape, const SdfGridOptions& options) {
   double visits = 0.0;
   Vec3i first, last;
   for (const Triangle& t : mesh.triangles) {
@@ -96,7 +96,7 @@ double sdfBandVisits(const Mesh& mesh, const GridShape& shape, const SdfGridOpti
 }
 
 std::string sdfBudgetProblem(const Mesh& mesh, const SdfGridOptions& options) {
-  const GridShape shape = sdfGridShape(mesh, options);
+  const GridLattice shape = sdfGridLattice(mesh, options);
   const double points = shape.dims.cast<double>().prod();
   std::ostringstream problem;
   problem << std::setprecision(3) << "resolution " << options.resolution << " lays a " << shape.dims.x() << " x "
@@ -124,8 +124,8 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
   const std::string overBudget = sdfBudgetProblem(mesh, options);
   if (!overBudget.empty()) throw std::invalid_argument("SignedDistanceGrid: " + overBudget);
   SignedDistanceGrid grid;
-  GridShape& shape = grid.shape_;
-  shape = sdfGridShape(mesh, options);
+  GridLattice& shape = grid.shape_;
+  shape = sdfGridLattice(mesh, options);
   const double h = shape.cellSize;
   const std::size_t n = shape.pointCount();
   std::clock_t phase = std::clock();
@@ -178,7 +178,7 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
   return grid;
 }
 
-SignedDistanceGrid SignedDistanceGrid::fromValues(const GridShape& shape, std::vector<double> values) {
+SignedDistanceGrid SignedDistanceGrid::fromValues(const GridLattice& shape, std::vector<double> values) {
   requireOption((shape.dims.array() >= 2).all(), "fromValues: every axis needs >= 2 points");
   requireOption(shape.cellSize > 0.0 && shape.origin.allFinite(),
                 "fromValues: cell size " + std::to_string(shape.cellSize) +

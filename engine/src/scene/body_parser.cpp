@@ -12,7 +12,7 @@
 #include "rbsim/io/input_error.h"
 #include "io/obj_loader.h"
 #include "fracture/pieces.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/geometry/signed_distance_grid.h"
 #include "geometry/surface_samples.h"
 #include "rbsim/mass/mass_model.h"

@@ -19,7 +19,7 @@ void requireResolution(const ImplicitShape& shape) {
   }
 }
 
-std::vector<double> sample(const ImplicitFunction& f, const GridShape& grid, const Mat3& axes, const Vec3& centre) {
+std::vector<double> sample(const ImplicitFunction& f, const GridLattice& grid, const Mat3& axes, const Vec3& centre) {
   std::vector<double> values(grid.pointCount());
   for (int k = 0; k < grid.dims.z(); ++k) {
     for (int j = 0; j < grid.dims.y(); ++j) {
@@ -31,9 +31,9 @@ std::vector<double> sample(const ImplicitFunction& f, const GridShape& grid, con
 
 }  // namespace
 
-GridShape implicitGridShape(const ImplicitShape& shape) {
+GridLattice implicitGridLattice(const ImplicitShape& shape) {
   const ImplicitBounds b = shape.function->bounds();
-  GridShape grid;
+  GridLattice grid;
   if (b.empty()) return grid;
   grid.cellSize = (b.hi - b.lo).maxCoeff() / shape.resolution;
   for (int axis = 0; axis < 3; ++axis) {
@@ -46,7 +46,7 @@ GridShape implicitGridShape(const ImplicitShape& shape) {
 }
 
 std::string implicitBudgetProblem(const ImplicitShape& shape) {
-  const GridShape grid = implicitGridShape(shape);
+  const GridLattice grid = implicitGridLattice(shape);
   const double points = grid.dims.cast<double>().prod();
   const double evaluations = points * shape.function->primitiveCount();
   std::ostringstream problem;
@@ -74,7 +74,7 @@ ImplicitMeshing meshImplicitShape(const ImplicitShape& shape) {
   const std::string overBudget = implicitBudgetProblem(shape);
   if (!overBudget.empty()) throw std::invalid_argument(overBudget);
   ImplicitMeshing out;
-  out.grid = implicitGridShape(shape);
+  out.grid = implicitGridLattice(shape);
   std::clock_t start = std::clock();
   const std::vector<double> values = sample(*shape.function, out.grid, Mat3::Identity(), Vec3::Zero());
   out.sampleSeconds = secondsSince(start);
@@ -103,7 +103,7 @@ SignedDistanceGrid implicitBodyGrid(const ImplicitShape& shape, const Mesh& body
   requireResolution(shape);
   SdfGridOptions options;
   options.resolution = shape.resolution;
-  const GridShape grid = sdfGridShape(bodyMesh, options);
+  const GridLattice grid = sdfGridLattice(bodyMesh, options);
   if (grid.dims.cast<double>().prod() > kMaxSdfGridPoints) {
     throw std::invalid_argument("implicit shape: the body's grid of resolution " + std::to_string(shape.resolution) +
                                 " exceeds " + std::to_string(static_cast<long long>(kMaxSdfGridPoints)) + " points");

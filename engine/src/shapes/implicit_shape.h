@@ -9,7 +9,7 @@
 #include <string>
 
 #include "geometry/csg.h"
-#include "rbsim/geometry/grid_shape.h"
+#include "rbsim/geometry/grid_lattice.h"
 #include "geometry/marching_tetrahedra.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/geometry/signed_distance_grid.h"
@@ -33,7 +33,7 @@ struct ImplicitShape {
 
 // The meshing grid: the function's bounds padded by kImplicitPaddingCells, cells of longest
 // side / resolution.
-GridShape implicitGridShape(const ImplicitShape& shape);
+GridLattice implicitGridLattice(const ImplicitShape& shape);
 // Why sampling the shape would exceed kMaxSdfGridPoints or kMaxImplicitEvaluations, e.g.
 // "resolution 1024 lays a 1029 x 517 x 1029 grid (5.5e+08 points, ~22 GB); the limit is ...", or
 // empty when both hold.
@@ -42,7 +42,7 @@ std::string implicitBudgetProblem(const ImplicitShape& shape);
 struct ImplicitMeshing {
   Mesh mesh;                  // in the file frame, outward wound
   MarchingStats stats;
-  GridShape grid;             // the meshing grid
+  GridLattice grid;             // the meshing grid
   double sampleSeconds = 0.0; // processor time of evaluating the function on the grid [s]
   double meshSeconds = 0.0;   // processor time of marching tetrahedra [s]
 };
@@ -53,7 +53,7 @@ struct ImplicitMeshing {
 // an intersection of disjoint operands, or a solid thinner than a cell).
 ImplicitMeshing meshImplicitShape(const ImplicitShape& shape);
 
-// The body's grid: phi at the points of sdfGridShape(bodyMesh, {resolution}) laid over the
+// The body's grid: phi at the points of sdfGridLattice(bodyMesh, {resolution}) laid over the
 // body-frame mesh, evaluated at the file-frame point axes p + centre (MassModel's frame).
 SignedDistanceGrid implicitBodyGrid(const ImplicitShape& shape, const Mesh& bodyMesh, const Mat3& axes,
                                     const Vec3& centre);

@@ -12,7 +12,7 @@
 
 #include "geometry/box3d_convex_pile_hull.h"
 #include "rbsim/geometry/mesh.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "io/obj_loader.h"
 
 namespace rbsim {

@@ -17,8 +17,8 @@ namespace rbsim {
 namespace {
 
 // A cube of `points` per axis, cells of h [m], centred on the origin, with phi sampled.
-std::pair<GridShape, std::vector<double>> sampled(const std::function<double(const Vec3&)>& phi, int points, double h) {
-  GridShape grid;
+std::pair<GridLattice, std::vector<double>> sampled(const std::function<double(const Vec3&)>& phi, int points, double h) {
+  GridLattice grid;
   grid.cellSize = h;
   grid.dims = Vec3i::Constant(points);
   grid.origin = Vec3::Constant(-0.5 * h * (points - 1));

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "test_util.h"
 
 namespace rbsim {

@@ -12,7 +12,7 @@
 #include <stdexcept>
 
 #include "geometry/implicit_surface.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "geometry/surface_samples.h"
 
 namespace rbsim {
@@ -171,7 +171,7 @@ TEST(SignedDistanceGrid, HollowSphereHasThreeRegionsAndAnOutsideCavity) {
 }
 
 TEST(SignedDistanceGrid, TrilinearInterpolationIsExactForLinearFields) {
-  GridShape shape;
+  GridLattice shape;
   shape.origin = Vec3(-1.0, 0.5, 2.0);
   shape.cellSize = 0.25;
   shape.dims = Vec3i(5, 7, 4);

@@ -10,7 +10,7 @@
 #include <set>
 
 #include "geometry/distance.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 
 namespace rbsim {
 namespace {

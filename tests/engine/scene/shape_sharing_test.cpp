@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/box3d_convex_pile_hull.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/geometry/signed_distance_grid.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "rbsim/body/shape_body.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/mass/mass_properties.h"
 #include "rbsim/math/rotation.h"
 #include "rbsim/shapes/shape.h"

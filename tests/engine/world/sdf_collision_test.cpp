@@ -3,7 +3,7 @@
 // narrow phase gets wrong, and conservation in a collision of two non-convex bodies.
 #include <gtest/gtest.h>
 
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/geometry/signed_distance_grid.h"
 #include "geometry/surface_samples.h"
 #include "rbsim/mass/mass_model.h"

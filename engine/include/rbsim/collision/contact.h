@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "rbsim/math/types.h"
+#include "rbsim/shapes/plane.h"
 
 namespace rbsim {
 
@@ -33,13 +34,6 @@ struct ContactManifold {
     for (int i = 0; i < count; ++i) d = std::max(d, points[i].depth);
     return d;
   }
-};
-
-// An infinite static plane n . p = offset, solid on the side -n (the ground y = 0 has n = +y).
-struct Plane {
-  Vec3 normal = Vec3::UnitY();  // unit [1]
-  double offset = 0.0;          // [m]
-  double signedDistance(const Vec3& p) const { return normal.dot(p) - offset; }
 };
 
 // A touching (or, within the contact margin, nearly touching) pair. For a body against a plane,

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rbsim/geometry/grid_shape.h"
+#include "rbsim/geometry/grid_lattice.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/math/types.h"
 
@@ -33,8 +33,8 @@ struct SdfGridOptions {
 
 // The grid build() lays over the mesh (padded bounding box, cells of longest side / resolution),
 // and the point visits of its exact band. Options must be in range (build() checks them).
-GridShape sdfGridShape(const Mesh& mesh, const SdfGridOptions& options);
-double sdfBandVisits(const Mesh& mesh, const GridShape& shape, const SdfGridOptions& options);
+GridLattice sdfGridLattice(const Mesh& mesh, const SdfGridOptions& options);
+double sdfBandVisits(const Mesh& mesh, const GridLattice& shape, const SdfGridOptions& options);
 // "resolution 1024 lays a 1031 x 1031 x 1031 grid over mesh 'm' (1.1e+09 points, ~44 GB); the limit
 // is 1.6e+07 points (~640 MB)", or empty when both budgets hold.
 std::string sdfBudgetProblem(const Mesh& mesh, const SdfGridOptions& options);
@@ -56,10 +56,10 @@ class SignedDistanceGrid {
   // oriented, inside-out or degenerate mesh, non-finite vertices, options out of range, or a grid
   // over budget (sdfBudgetProblem).
   static SignedDistanceGrid build(const Mesh& mesh, const SdfGridOptions& options = {});
-  // A grid of given values (x fastest, as GridShape::index), e.g. one read back from a file.
+  // A grid of given values (x fastest, as GridLattice::index), e.g. one read back from a file.
   // Throws std::invalid_argument when the counts disagree, an axis has fewer than 2 points, the
   // cell size is not positive or a value is not finite.
-  static SignedDistanceGrid fromValues(const GridShape& shape, std::vector<double> values);
+  static SignedDistanceGrid fromValues(const GridLattice& shape, std::vector<double> values);
 
   // Trilinear interpolation of the grid values [m]. Outside the grid's box: the distance to the
   // box plus phi at the nearest point of the box.
@@ -86,7 +86,7 @@ class SignedDistanceGrid {
   // phi and its gradient at a point of the grid's box.
   double interpolate(const Vec3& p, Vec3* gradient) const;
 
-  GridShape shape_;
+  GridLattice shape_;
   std::vector<double> values_;
   BuildStats stats_;
 };

@@ -2,7 +2,7 @@
 // A body's collision shape, one of a small closed set (as Jolt's Physics/Collision/Shape/ and
 // Box2D's b2ShapeType): sphere, capsule, box, rounded box, convex hull, and a non-convex mesh
 // whose solid is a signed distance grid. The sixth, the infinite static plane, is the World's (World::addPlane,
-// collision/contact.h Plane): it is never a body. Everything here is in the body frame, whose
+// shapes/plane.h): it is never a body. Everything here is in the body frame, whose
 // origin is the centre of mass; the narrow phase picks the pair test from the two types
 // (collision/narrowphase/shape_pairs.h).
 //

@@ -9,7 +9,7 @@
 #include <random>
 
 #include "collision/narrowphase/convex_convex.h"
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/math/rotation.h"
 
 namespace rbsim {

@@ -1,4 +1,4 @@
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 
 #include <array>
 #include <cmath>

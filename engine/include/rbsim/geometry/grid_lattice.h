@@ -8,7 +8,7 @@ namespace rbsim {
 
 using Vec3i = Eigen::Vector3i;
 
-struct GridShape {
+struct GridLattice {
   Vec3 origin = Vec3::Zero();  // position of point (0, 0, 0) [m]
   double cellSize = 1.0;       // h [m]
   Vec3i dims = Vec3i::Ones();  // points per axis

@@ -1,6 +1,6 @@
-// geometry/shapes and geometry/surface_samples: every generator gives a closed, consistently and
+// geometry/mesh_generators and geometry/surface_samples: every generator gives a closed, consistently and
 // outwardly oriented mesh of the right volume; surface samples cover the surface.
-#include "rbsim/geometry/shapes.h"
+#include "rbsim/geometry/mesh_generators.h"
 
 #include <gtest/gtest.h>
 
