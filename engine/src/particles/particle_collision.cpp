@@ -2,7 +2,7 @@
 
 namespace rbsim {
 
-bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const BodyShape& shape, const ParticleCollisionDef& c) {
+bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const BodySolid& shape, const ParticleCollisionDef& c) {
   const Vec3 arm = x - body.position();
   const double reach = shape.convex.boundingRadius + c.radius;
   if (arm.squaredNorm() > reach * reach) return false;  // before the rotation, which costs more

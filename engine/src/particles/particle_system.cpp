@@ -34,7 +34,7 @@ ParticleSystem::ParticleSystem(const ParticleSystemDef& def, const std::vector<R
 }
 
 void ParticleSystem::step(double t, double dt, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-                          const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes) {
+                          const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes) {
   for (Emitter& emitter : emitters_) {
     const std::size_t before = store_.count();
     lost_ += emitter.emit(t, dt, store_, random_, bodies);
@@ -48,7 +48,7 @@ void ParticleSystem::step(double t, double dt, const Vec3& gravity, const std::v
 }
 
 bool ParticleSystem::substep(double t, double h, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-                             const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes) {
+                             const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes) {
   ParticleStore& s = store_;
   const std::size_t n = s.count();
   const bool pairForces = !force_.empty();

@@ -6,7 +6,7 @@
 
 namespace rbsim {
 
-int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                          const std::vector<Material>& materials, const Material& softMaterial) {
   int touching = 0;
   std::vector<Vec3>& x = soft.positions();
@@ -14,7 +14,7 @@ int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const s
   const std::vector<double>& m = soft.nodeMasses();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     RigidBody& body = bodies[b];
-    const BodyShape& shape = shapes[b];
+    const BodySolid& shape = shapes[b];
     const Material material = combine(softMaterial, materials[b]);
     const Mat3& R = body.rotation();
     for (std::size_t i = 0; i < x.size(); ++i) {

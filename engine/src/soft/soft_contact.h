@@ -7,13 +7,13 @@
 
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/body/material.h"
-#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/body_solid.h"
 #include "rbsim/soft/soft_body.h"
 
 namespace rbsim {
 
 // Returns the number of nodes in contact. `shapes` and `materials` are per rigid body.
-int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+int collideSoftWithRigid(SoftBody& soft, std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                          const std::vector<Material>& materials, const Material& softMaterial);
 
 }  // namespace rbsim

@@ -41,10 +41,10 @@ BodyId World::addBody(const BodyDef& def) {
   }
   bodies_.emplace_back(def);
   bodyMaterials_.push_back(def.material);
-  bodyShapes_.push_back(bodyShapeOf(def));
+  bodySolids_.push_back(bodySolidOf(def));
   fracturePatterns_.push_back(def.fracture);
   if (def.fracture) ++breakableBodies_;
-  collision_.addBody(bodies_.back(), bodyShapes_.back().sdf != nullptr);
+  collision_.addBody(bodies_.back(), bodySolids_.back().sdf != nullptr);
   std::uint32_t slot = freeSlot_;
   if (slot == kNoSlot) {
     slot = static_cast<std::uint32_t>(slots_.size());
@@ -106,7 +106,7 @@ void World::destroyBody(BodyId id) {
   if (fracturePatterns_[removed]) --breakableBodies_;
   swapRemove(bodies_, removed);
   swapRemove(bodyMaterials_, removed);
-  swapRemove(bodyShapes_, removed);
+  swapRemove(bodySolids_, removed);
   swapRemove(fracturePatterns_, removed);
   collision_.removeBody(removed);
   updateJointFilter();

@@ -33,8 +33,8 @@ void World::breakBody(std::size_t body, double impulse) {
   std::vector<BodyDef> pieces = fracturePieces(bodies_[body], *pattern, bodyMaterials_[body]);
   FractureEvent event{time(), idAt(body), {}, impulse};
   bodies_[body] = RigidBody(pieces.front());
-  bodyShapes_[body] = bodyShapeOf(pieces.front());
-  collision_.replaceBody(body, bodies_[body], bodyShapes_[body].sdf != nullptr);
+  bodySolids_[body] = bodySolidOf(pieces.front());
+  collision_.replaceBody(body, bodies_[body], bodySolids_[body].sdf != nullptr);
   for (std::size_t k = 1; k < pieces.size(); ++k) event.added.push_back(addBody(pieces[k]));
   // The pieces are new bodies with their own centres of mass: the broken body's joints let go.
   joints_.erase(std::remove_if(joints_.begin(), joints_.end(),

@@ -246,7 +246,7 @@ void CollisionPipeline::ignorePair(std::size_t a, std::size_t b) {
 }
 
 bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
-                                    const std::vector<BodyShape>& shapes, double time, Contact& out) {
+                                    const std::vector<BodySolid>& shapes, double time, Contact& out) {
   out.manifold.count = 0;
   // Body indices, the lower first (a destroyed body's index goes to the last body, whose proxy id
   // stays as it was).
@@ -310,7 +310,7 @@ void CollisionPipeline::kept(Contact::Kind kind, std::size_t a, std::size_t b, C
   if (it != asleep_.end() && it->first == key) out = previous_[it->second];
 }
 
-void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                                     const std::vector<Plane>& planes, double time) {
   previous_.swap(contacts_);
   contacts_.clear();

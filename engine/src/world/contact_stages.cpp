@@ -26,7 +26,7 @@ void World::stepSoft(bool withGravity, bool awake, bool collides) {
     if (settings_.detectCollisions) collision_.broadPhase(bodies_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodySolids_, planes_, time());
   });
   const bool sweeping = settings_.continuousCollision && collides && awake;
   if (sweeping) collision_.rememberStart(bodies_);
@@ -54,7 +54,7 @@ void World::stepPgs(bool withGravity, bool awake, bool collides) {
     if (settings_.detectCollisions) collision_.broadPhase(bodies_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodyShapes_, planes_, time());
+    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodySolids_, planes_, time());
   });
   runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
     if (settings_.respondToContacts) solveContacts(withGravity);

@@ -176,7 +176,7 @@ void World::step() {
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
   const bool systemsBusy = std::any_of(listeners_.begin(), listeners_.end(), [](const auto& l) { return !l->idle(); });
   runStage(Stage::StepSystems, systemsBusy, [&] {
-    const StepContext context{t, stepCount_, settings_, bodies_, bodyShapes_, bodyMaterials_, planes_, planeMaterials_};
+    const StepContext context{t, stepCount_, settings_, bodies_, bodySolids_, bodyMaterials_, planes_, planeMaterials_};
     for (const std::unique_ptr<StepListener>& listener : listeners_) listener->step(context);
   });
   ++stepCount_;

@@ -84,7 +84,7 @@ TEST(ParticleCollision, NeverLeavesAParticleInsideARigidBox) {
   world.addBody(box);
   world.addPlane(Plane{Vec3::UnitY(), 0.0});
   addParticleSystem(world, spray(0.0));
-  const ConvexShape shape = convexShapeOf(world.bodies()[0].mesh());
+  const FacePlanes shape = facePlanesOf(world.bodies()[0].mesh());
   ASSERT_EQ(shape.normals.size(), 6u);
   const ParticleStore& p = particleSystems(world)[0].particles();
   const RigidBody& body = world.bodies()[0];

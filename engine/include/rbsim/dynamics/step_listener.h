@@ -8,7 +8,7 @@
 
 #include "rbsim/body/material.h"
 #include "rbsim/body/rigid_body.h"
-#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/settings/settings.h"
 
@@ -21,7 +21,7 @@ struct StepContext {
   std::uint64_t stepCount = 0;  // steps taken before this one
   const Settings& settings;     // timeStep, gravity, detectCollisions, ...
   std::vector<RigidBody>& bodies;
-  const std::vector<BodyShape>& shapes;          // per body
+  const std::vector<BodySolid>& shapes;          // per body
   const std::vector<Material>& bodyMaterials;    // per body
   const std::vector<Plane>& planes;
   const std::vector<Material>& planeMaterials;   // per plane

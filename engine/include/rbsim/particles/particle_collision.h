@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
-#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/particles/particle_def.h"
@@ -39,6 +39,6 @@ inline bool collidePlane(Vec3& x, Vec3& v, const Plane& plane, const ParticleCol
 // Keeps x outside the body's solid by c.radius, pushing it out along the surface normal (seed 000
 // "Collision Detection": a point in object space tested against the implicit volume); the
 // response uses the velocity relative to the body's surface point.
-bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const BodyShape& shape, const ParticleCollisionDef& c);
+bool collideBody(Vec3& x, Vec3& v, const RigidBody& body, const BodySolid& shape, const ParticleCollisionDef& c);
 
 }  // namespace rbsim

@@ -28,7 +28,7 @@ class ParticleSystem {
   // In the step a velocity stops being finite, and every kDivergenceCheckInterval steps for speeds
   // beyond 1e154 m/s, throws SimulationError naming the system, a particle and the integrator.
   void step(double t, double dt, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-            const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes);
+            const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes);
 
   const ParticleSystemDef& def() const { return def_; }
   const ParticleStore& particles() const { return store_; }
@@ -49,7 +49,7 @@ class ParticleSystem {
  private:
   // False when a velocity stopped being finite (checkFinite then finds and names the particle).
   bool substep(double t, double h, const Vec3& gravity, const std::vector<RigidBody>& bodies,
-               const std::vector<BodyShape>& shapes, const std::vector<Plane>& planes);
+               const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes);
   // A pass of its own over the velocities, made every few steps: the same test inside the step's
   // pass cost 17 % of a step (bench/particle_bench), this one costs 24 B per particle every
   // kDivergenceCheckInterval steps, about 1 % of the step's 128 B.

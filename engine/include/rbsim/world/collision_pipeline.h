@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
-#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/broadphase/broad_phase.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/collision/narrowphase/query_log.h"
@@ -30,7 +30,7 @@ class CollisionPipeline {
   explicit CollisionPipeline(const Settings& settings);
 
   // Bodies are added in World order (each the last of the World's bodies). `hasGrid`: the body's
-  // shape has a signed distance grid (BodyShape::sdf), so its convex hull is not its shape.
+  // shape has a signed distance grid (BodySolid::sdf), so its convex hull is not its shape.
   void addBody(const RigidBody& body, bool hasGrid);
   // Body `index` was destroyed and the last body moved into its index (World::destroyBody). Its
   // contacts go, the last body's are renumbered, and the last step's impacts are forgotten.
@@ -60,8 +60,8 @@ class CollisionPipeline {
   // Stage NarrowPhase: contacts of candidate pairs and of bodies against planes. Sleeping bodies
   // are not collided with each other or with planes: they keep the contacts they had (nothing
   // of theirs has moved since).
-  // `shapes` are per body (World::bodyShapes): pairs with a signed distance grid use them.
-  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+  // `shapes` are per body (World::bodySolids): pairs with a signed distance grid use them.
+  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                    const std::vector<Plane>& planes, double time);
 
   // Something awake and something to meet: two bodies, or a body and a plane. The stage also
@@ -79,7 +79,7 @@ class CollisionPipeline {
   bool isFast(std::size_t body) const;
   // The convex or round contact of candidate pair `proxies` into `out` (count 0: none, or a pair
   // to skip); true when the pair has a grid and is left to collideSdfPair.
-  bool collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodyShape>& shapes,
+  bool collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                    double time, Contact& out);
   void measure(std::size_t index, const RigidBody& body);  // radius_, thickness_, boxes_ of a body
   // The last step's contact of a sleeping pair (body and body, or plane and body) into `out`, if

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
-#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/dynamics/contact_solver.h"
 #include "rbsim/dynamics/joint.h"
@@ -127,7 +127,7 @@ class World {
   }
   const Material& bodyMaterial(BodyId body) const { return bodyMaterials_[indexOf(body)]; }
   // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
-  const std::vector<BodyShape>& bodyShapes() const { return bodyShapes_; }
+  const std::vector<BodySolid>& bodySolids() const { return bodySolids_; }
   const std::vector<FractureEvent>& fractureEvents() const { return fractureEvents_; }
   const Material& planeMaterial(std::size_t plane) const { return planeMaterials_[plane]; }
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
@@ -176,7 +176,7 @@ class World {
   std::vector<Material> bodyMaterials_;   // per body
   std::vector<Material> planeMaterials_;  // per plane
   std::vector<std::unique_ptr<StepListener>> listeners_;
-  std::vector<BodyShape> bodyShapes_;     // per body
+  std::vector<BodySolid> bodySolids_;     // per body
   std::vector<std::shared_ptr<const FracturePattern>> fracturePatterns_;  // per body; null: unbreakable
   std::size_t breakableBodies_ = 0;      // bodies with a pattern that have not broken yet
   std::vector<double> receivedImpulse_;  // BreakBodies' scratch, per body [N s]

@@ -18,13 +18,13 @@ struct PointContact {
 // The surface points of `body` that lie within `margin` of `solid`'s surface, as contacts whose
 // normal points from A to B: the solid's outward normal when the solid is A, its inverse when the
 // solid is B.
-void pointsAgainstSolid(const RigidBody& body, const BodyShape& bodyShape, const RigidBody& solid,
-                        const BodyShape& solidShape, double margin, bool solidIsA, std::vector<PointContact>& out) {
+void pointsAgainstSolid(const RigidBody& body, const BodySolid& bodySolid, const RigidBody& solid,
+                        const BodySolid& solidShape, double margin, bool solidIsA, std::vector<PointContact>& out) {
   const Mat3& R = body.rotation();
   const Mat3& Rs = solid.rotation();
   const Mat3 RsT = Rs.transpose();
   const double reach = solidShape.convex.boundingRadius + margin;
-  const std::vector<Vec3>& samples = bodyShape.samples ? *bodyShape.samples : body.mesh().vertices;
+  const std::vector<Vec3>& samples = bodySolid.samples ? *bodySolid.samples : body.mesh().vertices;
   for (const Vec3& p : samples) {
     const Vec3 world = R * p + body.position();
     const Vec3 arm = world - solid.position();
@@ -39,8 +39,8 @@ void pointsAgainstSolid(const RigidBody& body, const BodyShape& bodyShape, const
 
 }  // namespace
 
-std::vector<ContactManifold> collideSdf(const RigidBody& a, const BodyShape& shapeA, const RigidBody& b,
-                                        const BodyShape& shapeB, double margin) {
+std::vector<ContactManifold> collideSdf(const RigidBody& a, const BodySolid& shapeA, const RigidBody& b,
+                                        const BodySolid& shapeB, double margin) {
   std::vector<PointContact> points;
   pointsAgainstSolid(a, shapeA, b, shapeB, margin, /*solidIsA=*/false, points);
   pointsAgainstSolid(b, shapeB, a, shapeA, margin, /*solidIsA=*/true, points);

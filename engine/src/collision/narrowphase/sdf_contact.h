@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "rbsim/body/rigid_body.h"
-#include "rbsim/collision/body_shape.h"
+#include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/contact.h"
 
 namespace rbsim {
@@ -23,7 +23,7 @@ inline constexpr int kMaxSdfManifolds = 6;
 // The manifolds (normal from A to B, each of at most kMaxManifoldPoints) of the pair: A's surface
 // samples (or vertices) within `margin` [m] of B's solid, and B's within it of A's. Empty when
 // they are apart by more than the margin.
-std::vector<ContactManifold> collideSdf(const RigidBody& a, const BodyShape& shapeA, const RigidBody& b,
-                                        const BodyShape& shapeB, double margin);
+std::vector<ContactManifold> collideSdf(const RigidBody& a, const BodySolid& shapeA, const RigidBody& b,
+                                        const BodySolid& shapeB, double margin);
 
 }  // namespace rbsim

@@ -1,4 +1,5 @@
-#include "rbsim/collision/body_shape.h"
+// A convex solid as the intersection of its face planes (shapes/face_planes.h).
+#include "rbsim/shapes/face_planes.h"
 
 #include <algorithm>
 #include <array>
@@ -20,7 +21,7 @@ constexpr double kSamePlaneTolerance = 1e-9;  // [1] and [m]
 class PlaneBuckets {
  public:
   // The index of a known plane within tolerance of (unit, offset), or -1.
-  long find(const ConvexShape& shape, const Vec3& unit, double offset) const {
+  long find(const FacePlanes& shape, const Vec3& unit, double offset) const {
     const Key centre = keyOf(unit, offset);
     for (int code = 0; code < 81; ++code) {
       Key key = centre;
@@ -58,8 +59,8 @@ class PlaneBuckets {
 
 }  // namespace
 
-ConvexShape convexShapeOf(const Mesh& mesh) {
-  ConvexShape shape;
+FacePlanes facePlanesOf(const Mesh& mesh) {
+  FacePlanes shape;
   for (const Vec3& p : mesh.vertices) shape.boundingRadius = std::max(shape.boundingRadius, p.norm());
   PlaneBuckets known;
   for (const Triangle& t : mesh.triangles) {
@@ -76,48 +77,13 @@ ConvexShape convexShapeOf(const Mesh& mesh) {
   return shape;
 }
 
-FaceDistance nearestFace(const ConvexShape& shape, const Vec3& local) {
+FaceDistance nearestFace(const FacePlanes& shape, const Vec3& local) {
   FaceDistance out{0, -std::numeric_limits<double>::infinity()};
   for (std::size_t f = 0; f < shape.normals.size(); ++f) {
     const double d = shape.normals[f].dot(local) - shape.offsets[f];
     if (d > out.distance) out = {f, d};
   }
   return out;
-}
-
-BodyShape bodyShapeOf(const BodyDef& def) {
-  // A sphere's or capsule's display mesh is inscribed in it: the exact surface answers instead,
-  // and the faces of its 48 x 24 tessellation are never asked for (finding them took 2 ms a
-  // ball, most of what adding one cost).
-  if (def.shape && def.shape->isRound()) {
-    BodyShape out{ConvexShape{}, def.sdf, def.surfaceSamples, *def.shape};
-    out.convex.boundingRadius = def.shape->boundingRadius();
-    return out;
-  }
-  return BodyShape{convexShapeOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt};
-}
-
-SurfaceQuery querySurface(const BodyShape& shape, const Vec3& local) {
-  if (shape.round) {
-    const auto [distance, normal] = shape.round->roundDistance(local);
-    return {distance, normal};
-  }
-  if (shape.sdf) {
-    // Seed 000 "Collision Detection": phi at the object-space point, grad phi / |grad phi| as the
-    // normal. Where the gradient vanishes (the medial axis of a flat-bottomed interpolant), the
-    // way out is taken as straight away from the body's centre.
-    Vec3 gradient;
-    const double phi = shape.sdf->phiAndGradient(local, gradient);
-    const double length = gradient.norm();
-    if (length > 0.0) return {phi, gradient / length};
-    const double radial = local.norm();
-    return {phi, radial > 0.0 ? Vec3(local / radial) : Vec3::UnitY()};
-  }
-  if (shape.convex.normals.empty()) return {std::numeric_limits<double>::infinity(), Vec3::UnitY()};
-  // The signed distance to the convex set is at least the largest face distance; inside, it is
-  // exactly that, and the face it belongs to is the nearest way out.
-  const auto [face, distance] = nearestFace(shape.convex, local);
-  return {distance, shape.convex.normals[face]};
 }
 
 }  // namespace rbsim

@@ -1,0 +1,45 @@
+#include "rbsim/collision/body_solid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace rbsim {
+
+BodySolid bodySolidOf(const BodyDef& def) {
+  // A sphere's or capsule's display mesh is inscribed in it: the exact surface answers instead,
+  // and the faces of its 48 x 24 tessellation are never asked for (finding them took 2 ms a
+  // ball, most of what adding one cost).
+  if (def.shape && def.shape->isRound()) {
+    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, *def.shape};
+    out.convex.boundingRadius = def.shape->boundingRadius();
+    return out;
+  }
+  return BodySolid{facePlanesOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt};
+}
+
+SurfaceQuery querySurface(const BodySolid& shape, const Vec3& local) {
+  if (shape.round) {
+    const auto [distance, normal] = shape.round->roundDistance(local);
+    return {distance, normal};
+  }
+  if (shape.sdf) {
+    // Seed 000 "Collision Detection": phi at the object-space point, grad phi / |grad phi| as the
+    // normal. Where the gradient vanishes (the medial axis of a flat-bottomed interpolant), the
+    // way out is taken as straight away from the body's centre.
+    Vec3 gradient;
+    const double phi = shape.sdf->phiAndGradient(local, gradient);
+    const double length = gradient.norm();
+    if (length > 0.0) return {phi, gradient / length};
+    const double radial = local.norm();
+    return {phi, radial > 0.0 ? Vec3(local / radial) : Vec3::UnitY()};
+  }
+  if (shape.convex.normals.empty()) return {std::numeric_limits<double>::infinity(), Vec3::UnitY()};
+  // The signed distance to the convex set is at least the largest face distance; inside, it is
+  // exactly that, and the face it belongs to is the nearest way out.
+  const auto [face, distance] = nearestFace(shape.convex, local);
+  return {distance, shape.convex.normals[face]};
+}
+
+}  // namespace rbsim
