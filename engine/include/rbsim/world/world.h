@@ -69,9 +69,10 @@ class World {
   // that does not fit it: fracture/fracture.h checkFracturePattern). The new body is the last of
   // bodies(); its id stays valid until it is destroyed, whatever else is added or destroyed.
   BodyId addBody(const BodyDef& def);
-  // Removes the body and what acts on it alone (its scripted forces, springs and pose events) and
-  // wakes the bodies touching it; the last body takes its index (bodies() stays dense), with its id unchanged. Contacts and the
-  // solvers' warm starts are forgotten for one step. Throws std::invalid_argument on a stale id.
+  // Removes the body and what acts on it alone (its scripted forces, springs, pose events and
+  // joints) and wakes the bodies touching it; the last body takes its index (bodies() stays
+  // dense), its id unchanged. The other contacts are renumbered; the solvers' warm starts are
+  // forgotten for one step. Throws std::invalid_argument on a stale id.
   void destroyBody(BodyId id);
   bool isValid(BodyId id) const;
   // The body's index in bodies() now; throws std::invalid_argument on a stale id.
