@@ -13,7 +13,7 @@ Mesh displayMeshOf(const Shape& shape) {
     case ShapeType::Sphere: return makeUvSphere(shape.radius, kDisplaySegments, kDisplayRings);
     case ShapeType::Capsule: return makeCapsule(shape.radius, 2.0 * shape.halfLength, kDisplaySegments, kDisplayRings);
     case ShapeType::Box: return makeBox(2.0 * shape.halfExtents);
-    case ShapeType::RoundedBox: return makeRoundedBox(shape.halfExtents, shape.radius, kDisplaySegments / 8);
+    case ShapeType::RoundedBox: return makeRoundedBox(shape.halfExtents, shape.radius, kDisplayBandSegments);
     case ShapeType::ConvexHull:
     case ShapeType::Mesh: break;
   }

@@ -36,6 +36,8 @@ Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
 
 // Round shapes are tessellated as body/shape_body.h's display meshes (a bowl with half the rings).
 constexpr int kRoundSegments = kDisplaySegments;  // around the axis [1]
+// A rounded box without a "radius" rounds its edges by this share of its smallest extent.
+constexpr double kDefaultRoundingShare = 0.1;  // [1]
 constexpr int kRoundRings = kDisplayRings;        // from pole to pole [1]
 
 Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def,
@@ -71,13 +73,13 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
     if (type == "rounded_box") {
       shape.allowOnly({"type", "extents", "radius"}, "a \"rounded_box\" shape");
       const Vec3 extents = shape.positiveVec3("extents");  // the outer box [m]
-      const double radius = shape.positiveNumber("radius", 0.1 * extents.minCoeff());
+      const double radius = shape.positiveNumber("radius", kDefaultRoundingShare * extents.minCoeff());
       if (!(2.0 * radius <= extents.minCoeff())) {
         shape.fail("radius", "expected at most half the smallest extent (" + std::to_string(0.5 * extents.minCoeff()) + " m)");
       }
       const Vec3 core = 0.5 * extents - Vec3::Constant(radius);
       def.shape = Shape::roundedBox(core, radius);
-      return makeRoundedBox(core, radius, kRoundSegments / 8);
+      return makeRoundedBox(core, radius, kDisplayBandSegments);
     }
     if (type == "torus") {
       shape.allowOnly({"type", "major_radius", "minor_radius"}, "a \"torus\" shape");

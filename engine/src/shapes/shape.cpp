@@ -31,6 +31,11 @@ Vec3 scanSupport(const std::vector<Vec3>& points, const Vec3& d) {
   return points[best];
 }
 
+// The corner of the box of half extents h furthest along d (ties to +).
+Vec3 boxSupport(const Vec3& h, const Vec3& d) {
+  return Vec3(d.x() >= 0.0 ? h.x() : -h.x(), d.y() >= 0.0 ? h.y() : -h.y(), d.z() >= 0.0 ? h.z() : -h.z());
+}
+
 // The integral of x^2 over a rounded box with core half extents (a, b, c), a along x, and radius r
 // [m^5], summed over its pieces. A quarter disc of radius r has area pi r^2 / 4, first moment
 // r^3 / 3 and second moment pi r^4 / 16 about its edges; a ball eighth has volume pi r^3 / 6,
@@ -174,12 +179,8 @@ Vec3 Shape::support(const Vec3& d, unsigned* hint) const {
     case ShapeType::Sphere: return radius * d.normalized();
     case ShapeType::Capsule:
       return Vec3(0.0, d.y() >= 0.0 ? halfLength : -halfLength, 0.0) + radius * d.normalized();
-    case ShapeType::Box:
-      return Vec3(d.x() >= 0.0 ? halfExtents.x() : -halfExtents.x(), d.y() >= 0.0 ? halfExtents.y() : -halfExtents.y(),
-                  d.z() >= 0.0 ? halfExtents.z() : -halfExtents.z());
-    case ShapeType::RoundedBox:  // the core's support point, pushed out by r along d
-      return Vec3(d.x() >= 0.0 ? halfExtents.x() : -halfExtents.x(), d.y() >= 0.0 ? halfExtents.y() : -halfExtents.y(),
-                  d.z() >= 0.0 ? halfExtents.z() : -halfExtents.z()) + radius * d.normalized();
+    case ShapeType::Box: return boxSupport(halfExtents, d);
+    case ShapeType::RoundedBox: return boxSupport(halfExtents, d) + radius * d.normalized();  // the core's, pushed out by r
     case ShapeType::ConvexHull:
     case ShapeType::Mesh: break;
   }

@@ -197,6 +197,32 @@ TEST_P(RoundedBoxBodies, ReleasedOnAnEdgeItFallsFlat) {
   EXPECT_LT(b.velocity().norm() + b.angularVelocity().norm(), 1e-3);
 }
 
+// At the edge of the scene's range, radius = half the smallest extent, the core is flat (or 1 mm
+// thin): all eight core corners are within the margin of the ground. The manifold must keep the
+// four that span the face, not the first four (one edge), or the slab tips and sinks through the
+// ground (y fell to 0.002 m in 2 s before). Two such slabs stack.
+TEST_P(RoundedBoxBodies, AFlatCoreRestsFlatAndStacks) {
+  for (const double thickness : {0.0, 1e-3}) {  // the core's half height [m]
+    const Shape slab = Shape::roundedBox(Vec3(0.2, thickness, 0.1), 0.1);
+    World w(settings());
+    w.addPlane(Plane{});
+    const double half = thickness + 0.1;
+    for (int i = 0; i < 2; ++i) {
+      BodyDef def = shapeBodyDef(slab, 1.0, "slab" + std::to_string(i));
+      def.position = Vec3(0.0, (2 * i + 1) * half + 0.01 * i, 0.0);
+      def.orientation = quatFromAxisAngle(Vec3(0.0, 0.3 * i, 0.0));  // the top one turned about y
+      w.addBody(def);
+    }
+    for (int i = 0; i < steps(2.0); ++i) w.step();
+    for (int i = 0; i < 2; ++i) {
+      const RigidBody& b = w.bodies()[static_cast<std::size_t>(i)];
+      EXPECT_NEAR(b.position().y(), (2 * i + 1) * half, 0.006) << thickness << " " << i;
+      EXPECT_GT(b.rotation().col(1).y(), 1.0 - 1e-6) << thickness << " " << i;
+      EXPECT_LT(b.velocity().norm(), 1e-3) << thickness << " " << i;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(DtAndSolver, RoundedBoxBodies,
                          testing::Values(Case{1.0 / 60.0, Solver::SoftStep}, Case{1.0 / 240.0, Solver::SoftStep},
                                          Case{1.0 / 60.0, Solver::Pgs}, Case{1.0 / 240.0, Solver::Pgs}),

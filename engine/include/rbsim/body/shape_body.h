@@ -15,6 +15,8 @@ namespace rbsim {
 // over 99 % of its volume, coarse enough that drawing and surface sampling stay cheap.
 inline constexpr int kDisplaySegments = 48;  // around the axis [1]
 inline constexpr int kDisplayRings = 24;     // from pole to pole [1]
+// A rounded box's quarter-rounds: steps per 45 degrees, as many as a kDisplaySegments circle has.
+inline constexpr int kDisplayBandSegments = kDisplaySegments / 8;  // [1]
 
 // The display mesh of a sphere, capsule or box (throws std::invalid_argument for a hull or mesh,
 // whose mesh is their own).

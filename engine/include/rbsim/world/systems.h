@@ -15,12 +15,12 @@ namespace rbsim {
 // Throws std::invalid_argument when checkParticleSystemDef finds a problem.
 std::size_t addParticleSystem(World& world, const ParticleSystemDef& def);
 const std::vector<ParticleSystem>& particleSystems(const World& world);  // empty when none
-std::vector<ParticleSystem>& particleSystems(World& world);
+std::vector<ParticleSystem>& particleSystems(World& world);  // adds an empty, idle system when none
 
 // FEM soft bodies; throws std::invalid_argument on a bad definition (SoftBody's constructor).
 std::size_t addSoftBody(World& world, const SoftBodyDef& def);
 const std::vector<SoftBody>& softBodies(const World& world);  // empty when none
-std::vector<SoftBody>& softBodies(World& world);
+std::vector<SoftBody>& softBodies(World& world);  // adds an empty, idle system when none
 
 // A 2D world stepped with the World's dt and the x, y components of its gravity; replaces the
 // one there was.

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include "collision/narrowphase/convex_convex.h"
 #include "collision/narrowphase/convex_plane.h"
+#include "collision/narrowphase/manifold_reduction.h"
 #include "geometry/distance.h"
 
 namespace rbsim {
@@ -161,14 +163,37 @@ ContactManifold collideRoundPair(const PosedShape& a, const PosedShape& b, doubl
 
 ContactManifold collidePlaneShape(const Plane& plane, const PosedShape& b, double margin) {
   if (!b.shape->isRound()) return collidePlaneConvex(plane, worldHullVertices(b), margin);
-  ContactManifold m;
-  m.normal = plane.normal;
   const double r = b.shape->radius;
+  std::array<ContactPoint, std::tuple_size<decltype(Core::points)>::value> candidates;
+  std::size_t count = 0;
   for (const Vec3& c : coreOf(b)) {
     // The core point's lowest surface point c - r n, and its projection c - s n onto the plane.
     const double s = plane.signedDistance(c);
-    if (r - s >= -margin) m.add(c - plane.normal * (0.5 * (s + r)), r - s);
+    if (r - s >= -margin) candidates[count++] = {c - plane.normal * (0.5 * (s + r)), r - s};
   }
+  // A rounded box's core may put more than a manifold's worth of corners within the margin (all
+  // eight when its core is thin). A corner above another, along a core edge steeper than 45
+  // degrees to the plane (rising more than it moves sideways), rests on nothing the lower one
+  // does not: it goes. Of the rest the manifold keeps the deepest and widest four, not the first.
+  if (count > static_cast<std::size_t>(kMaxManifoldPoints)) {
+    std::array<bool, std::tuple_size<decltype(Core::points)>::value> above{};
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t j = 0; j < count && !above[i]; ++j) {
+        const Vec3 offset = candidates[i].position - candidates[j].position;
+        const double sideways = (offset - plane.normal * offset.dot(plane.normal)).norm();
+        above[i] = candidates[j].depth - candidates[i].depth > sideways;
+      }
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!above[i]) candidates[kept++] = candidates[i];
+    }
+    count = kept;
+    if (count > static_cast<std::size_t>(kMaxManifoldPoints)) return reduceContacts(candidates.data(), count, plane.normal);
+  }
+  ContactManifold m;
+  m.normal = plane.normal;
+  for (std::size_t i = 0; i < count; ++i) m.add(candidates[i].position, candidates[i].depth);
   return m;
 }
 
