@@ -14,6 +14,7 @@
 #include "pile_layout.h"
 #include "rbsim/mass/mass_properties.h"
 #include "rbsim/world/world.h"
+#include "rbsim/world/queries.h"
 
 using namespace rbsim;
 using namespace rbsim::bench;
@@ -67,7 +68,7 @@ void runPile(int count, bool allowSleep, Settings::ContactSolverMethod solver) {
   std::printf("%-9s N = %5d, sleep %-3s: %8.3f ms/step (median of last %d of %d), %6zu contact points, deepest %.4f m, "
               "fastest %.4f m/s (%s), %zu awake\n",
               solver == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step", count, allowSleep ? "on" : "off", tail[kTimedSteps / 2], kTimedSteps, kSteps, points, deepest, fastest,
-              fastest < kRestSpeed ? "at rest" : "moving", world.awakeCount());
+              fastest < kRestSpeed ? "at rest" : "moving", awakeCount(world));
   double total = 0.0;
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) total += world.stageStats(static_cast<Stage>(s)).seconds;
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {

@@ -20,15 +20,15 @@ constexpr float kGhostOpacity = 0.3f;
 // Brute force over the boxes the broad phase was given, timed: the reference the overlay
 // compares sweep and prune with.
 void compareWithBruteForce(const World& world, render::OverlayData& overlay) {
-  const CollisionPipeline& collision = world.collision();
   const auto start = std::chrono::steady_clock::now();
   const std::vector<ProxyPair> brute = bruteForcePairs(world);
   const double bruteMs = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const StageStats& sap = world.stageStats(Stage::BroadPhase);
   const double sapMs = sap.runs > 0 ? 1e3 * sap.seconds / static_cast<double>(sap.runs) : 0.0;
-  const bool same = brute == collision.candidatePairs();
+  const std::vector<ProxyPair>& pairs = candidatePairs(world);
+  const bool same = brute == pairs;
   overlay.rows.push_back({"bodies", format("%.0f", static_cast<double>(world.bodies().size()))});
-  overlay.rows.push_back({"pairs: sweep and prune", format("%.0f (%.3f ms per step, mean)", static_cast<double>(collision.candidatePairs().size()), sapMs)});
+  overlay.rows.push_back({"pairs: sweep and prune", format("%.0f (%.3f ms per step, mean)", static_cast<double>(pairs.size()), sapMs)});
   overlay.rows.push_back({"pairs: brute force", format("%.0f (%.3f ms, this frame)", static_cast<double>(brute.size()), bruteMs)});
   overlay.rows.push_back({"pair sets equal", same ? "yes" : "NO"});
 }
@@ -62,19 +62,19 @@ void drawImpulses(const World& world, render::FrameData& frame) {
   frame.overlay.rows.push_back({"points sticking", format("%.0f of %.0f", sticking, static_cast<double>(world.contactPoints().size()))});
   frame.overlay.rows.push_back({"all: kinetic energy", format("%.3f J", kinetic)});
   frame.overlay.rows.push_back({"all: + potential", format("%.3f J", kinetic + potential)});
-  frame.overlay.rows.push_back({"awake bodies", format("%.0f of %.0f", static_cast<double>(world.awakeCount()), static_cast<double>(world.bodies().size()))});
+  frame.overlay.rows.push_back({"awake bodies", format("%.0f of %.0f", static_cast<double>(awakeCount(world)), static_cast<double>(world.bodies().size()))});
 }
 
 }  // namespace
 
 void addCollisionView(const World& world, const Scene& scene, render::FrameData& frame) {
   const ViewDesc& view = scene.view;
-  const CollisionPipeline& collision = world.collision();
-  if (view.aabbs && collision.boxes().size() == world.bodies().size()) {
+  const std::vector<Aabb>& boxes = broadPhaseBoxes(world);
+  if (view.aabbs && boxes.size() == world.bodies().size()) {
     std::vector<char> paired(world.bodies().size(), 0);
-    for (const ProxyPair& p : collision.candidatePairs()) paired[p.a] = paired[p.b] = 1;
-    for (std::size_t i = 0; i < collision.boxes().size(); ++i) {
-      const Aabb& box = collision.boxes()[i];
+    for (const ProxyPair& p : candidatePairs(world)) paired[p.a] = paired[p.b] = 1;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const Aabb& box = boxes[i];
       render::appendBoxLines(frame.lines, toGlm(box.min), toGlm(box.max),
                              paired[i] ? render::kDebugOverlapAabbColor : render::kDebugAabbColor);
     }
@@ -133,7 +133,7 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
   }
 
   // Where continuous collision stopped a body, the pose the step would have reached.
-  for (const Impact& impact : collision.impacts()) {
+  for (const Impact& impact : impacts(world)) {
     const RigidBody& body = world.bodies()[impact.body];
     render::BodyView ghost;
     const Mat3 R = impact.unstoppedOrientation.toRotationMatrix();

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "rbsim/world/queries.h"
 #include "rbsim/world/systems.h"
 #include "run/collision_view.h"
 #include "run/particle_view.h"
@@ -111,7 +112,7 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
       for (const glm::vec3& p : bv.worldVertices) frame.points.push_back({p, render::kDebugVertexColor, kVertexDotPixels});
     }
     frame.bodies.push_back(std::move(bv));
-    for (const auto& [point, force] : world.activeForces(world.idAt(i), t)) {
+    for (const auto& [point, force] : activeForces(world, world.idAt(i), t)) {
       frame.forces.push_back({toGlm(point), toGlm(force)});
     }
   }

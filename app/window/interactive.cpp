@@ -233,8 +233,9 @@ class Session {
     }
     if (orbit_) f.camera = orbit_->camera();
     if (drag_) {
-      const auto [point, force] = world_->springForce(drag_->spring);
-      const RigidBody& body = world_->body(world_->springs()[drag_->spring].body);
+      const Spring& spring = world_->springs()[drag_->spring];
+      const RigidBody& body = world_->body(spring.body);
+      const auto [point, force] = forceOfSpring(spring, body);
       const double gravity = world_->settings().gravity.norm() > 0.0 ? world_->settings().gravity.norm() : kStandardGravity;
       const double weight = body.mass() * gravity;  // [N]
       const Vec3 torque = (point - body.position()).cross(force);

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rbsim/dynamics/soft_step_solver.h"
+#include "dynamics/soft_step_solver.h"
 
 namespace rbsim {
 

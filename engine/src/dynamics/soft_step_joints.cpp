@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "dynamics/contact_key.h"
-#include "rbsim/dynamics/soft_step_solver.h"
+#include "dynamics/soft_step_solver.h"
 
 namespace rbsim {
 

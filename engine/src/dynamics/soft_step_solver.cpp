@@ -1,9 +1,10 @@
-#include "rbsim/dynamics/soft_step_solver.h"
+#include "dynamics/soft_step_solver.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "dynamics/contact_key.h"
+#include "dynamics/friction_law.h"
 #include "rbsim/integrate/integrator.h"
 
 namespace rbsim {
@@ -14,11 +15,6 @@ namespace {
 // spring much stiffer than the substep can resolve only adds error (Box2D v3's solver.c caps
 // contactHertz at a quarter of the substep rate).
 constexpr double kMaxHertzPerSubstepRate = 0.25;  // [1]
-
-// A patch whose points slip slower than this at the end of a step sticks in the next one (static
-// friction, mu_s); faster, it slides (mu_k). The scale of Box2D's b2_linearSleepTolerance: a
-// contact that slow is at rest for every purpose a user sees.
-constexpr double kStickingSlipSpeed = 0.01;  // [m/s]
 
 }  // namespace
 
@@ -71,7 +67,6 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   // A new manifold first assumes sticking (seed 000); a known one keeps the regime its last step
   // ended in: sliding when friction reached the cone, sticking again when it stayed inside.
   c.sticking = old == nullptr || old->sticking;
-  c.friction = c.sticking ? material.staticFriction : material.kineticFriction;
   c.staticFriction = material.staticFriction;
   c.kineticFriction = material.kineticFriction;
 
@@ -161,12 +156,15 @@ void SoftStepSolver::updateJacobians(const Constraint& c, const PointFrame& f, P
   // n^T K n with K = (1/m) 1 + r*^T I^-1 r* summed over the pair (seed 000).
   p.normalMass = 1.0 / (mA + mB + p.crossA.dot(p.angularA) + p.crossB.dot(p.angularB));
   const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
+  std::array<Vec3, 2> tA, tB;  // r x t_k
   for (int k = 0; k < 2; ++k) {
-    const Vec3 tA = p.anchorA.cross(tangents[k]), tB = p.anchorB.cross(tangents[k]);
-    p.frictionA[k] = iA * tA;
-    p.frictionB[k] = iB * tB;
-    p.tangentMass[k] = 1.0 / (mA + mB + tA.dot(p.frictionA[k]) + tB.dot(p.frictionB[k]));
+    tA[k] = p.anchorA.cross(tangents[k]);
+    tB[k] = p.anchorB.cross(tangents[k]);
+    p.frictionA[k] = iA * tA[k];
+    p.frictionB[k] = iB * tB[k];
+    p.tangentMass[k] = 1.0 / (mA + mB + tA[k].dot(p.frictionA[k]) + tB[k].dot(p.frictionB[k]));
   }
+  p.tangentCoupling = tA[0].dot(p.frictionA[1]) + tB[0].dot(p.frictionB[1]);  // t1 . t2 = 0
 }
 
 void SoftStepSolver::updateJacobians() {
@@ -248,6 +246,7 @@ void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings
 }
 
 void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
+  const Settings::FrictionModel model = settings.friction;
   islands_.forContacts(island, [&](std::size_t index) {
     Constraint& c = constraints_[index];
     SolverState& A = states_[c.a];
@@ -257,23 +256,24 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
     const Vec3& n = c.normal;
     // Non-penetration first, friction with the new normal impulses after (Box2D v3's order).
     solveNormals(c, inverseH, settings, useBias, lastRelax, vA, wA, vB, wB);
-    const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
-    for (std::size_t k = 0; k < c.pointCount; ++k) {
-      Point& p = points_[c.firstPoint + k];
-      const Vec3 slip = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
-      // The impulse that stops the slip, then onto the friction cone of this point's normal
-      // impulse (seed 000: sticking inside mu j_N, sliding on its boundary).
-      double candidate[2];
-      for (int k = 0; k < 2; ++k) candidate[k] = p.tangentImpulse[k] - p.tangentMass[k] * tangents[k].dot(slip);
-      const double limit = c.friction * p.normalImpulse;
-      const double squared = candidate[0] * candidate[0] + candidate[1] * candidate[1];
-      if (squared > limit * limit) {
-        const double scale = limit / std::sqrt(squared);
-        candidate[0] *= scale;
-        candidate[1] *= scale;
-      }
-      const double d0 = candidate[0] - p.tangentImpulse[0], d1 = candidate[1] - p.tangentImpulse[1];
-      p.tangentImpulse = {candidate[0], candidate[1]};
+    bool sticking = true;
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+      Point& p = points_[j];
+      const Vec3 slip = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);  // u_rel, body 1 = B
+      FrictionPoint point;
+      point.accumulated = {p.tangentImpulse[0], p.tangentImpulse[1]};
+      point.slip = {c.tangent1.dot(slip), c.tangent2.dot(slip)};
+      point.tangentMass = {p.tangentMass[0], p.tangentMass[1]};
+      point.coupling = p.tangentCoupling;
+      point.normalImpulse = p.normalImpulse;
+      point.staticFriction = c.staticFriction;
+      point.kineticFriction = c.kineticFriction;
+      // The cone's regime is the patch's, seed 000's each point's (friction_law.h).
+      point.sliding = model == Settings::FrictionModel::Seed000 ? reports_[j].sliding : !c.sticking;
+      const FrictionImpulse next = frictionImpulse(model, point);
+      sticking = sticking && next.sticking;
+      const double d0 = next.total[0] - p.tangentImpulse[0], d1 = next.total[1] - p.tangentImpulse[1];
+      p.tangentImpulse = {next.total[0], next.total[1]};
       const Vec3 impulse = d0 * c.tangent1 + d1 * c.tangent2;
       vA -= mA * impulse;
       wA -= d0 * p.frictionA[0] + d1 * p.frictionA[1];
@@ -282,16 +282,18 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
     }
     if (lastRelax) {
       // Seed 000's regimes decided by the slip the step ends with: a patch slipping faster than
-      // kStickingSlipSpeed slides (mu_k) next step, a slower one sticks (mu_s). Deciding by
-      // which points reached their cone would flip a patch that sticks as a whole to sliding
-      // whenever the load is uneven across its points.
+      // kSlidingSpeed slides (mu_k) next step, a slower one sticks (mu_s). Deciding by which
+      // points reached their cone would flip a patch that sticks as a whole to sliding whenever
+      // the load is uneven across its points. Seed 000's law keeps each point's regime as well.
       double slip = 0.0;
       for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
         const Point& p = points_[j];
         const Vec3 v = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);
-        slip = std::max(slip, (v - v.dot(n) * n).norm());
+        const double pointSlip = (v - v.dot(n) * n).norm();
+        reports_[j].sliding = pointSlip > kSlidingSpeed;
+        slip = std::max(slip, pointSlip);
       }
-      c.slipping = slip > kStickingSlipSpeed;
+      c.slipping = slip > kSlidingSpeed && (model == Settings::FrictionModel::Cone || !sticking);
     }
     storeVelocities(c.a, vA, wA);
     storeVelocities(c.b, vB, wB);
@@ -331,9 +333,12 @@ void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, do
   });
 }
 
-void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
-                          std::vector<Joint>& joints, const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
-                          const Settings& settings, bool addGravity) {
+void SoftStepSolver::solve(const SolverInput& input) {
+  std::vector<RigidBody>& bodies = input.bodies;
+  const std::vector<Contact>& contacts = input.contacts;
+  std::vector<Joint>& joints = input.joints;
+  const Settings& settings = input.settings;
+  const bool addGravity = input.addGravity;
   clearAdvanced();
   advanced_.resize(bodies.size(), 0);
   slotOfBody_.resize(bodies.size(), 0);
@@ -373,7 +378,8 @@ void SoftStepSolver::step(std::vector<RigidBody>& bodies, const std::vector<Cont
     const int b = slotOfBody_[contact.b], a = plane ? 0 : slotOfBody_[contact.a];
     if (a == 0 && b == 0) continue;  // asleep, or static against static
     if (sims_[a].inverseMass == 0.0 && sims_[b].inverseMass == 0.0) continue;  // kinematic against static
-    const Material material = combine(bodyMaterials[contact.b], plane ? planeMaterials[contact.a] : bodyMaterials[contact.a]);
+    const Material material =
+        combine(input.bodyMaterials[contact.b], plane ? input.planeMaterials[contact.a] : input.bodyMaterials[contact.a]);
     prepare(bodies, contact, i, material, settings);
   }
 

@@ -165,12 +165,15 @@ Shape Shape::convexHull(const Mesh& mesh) {
   Shape s;
   s.type = ShapeType::ConvexHull;
   s.hull = adjacencyPtr(mesh);
+  s.faces = std::make_shared<const FacePlanes>(facePlanesOf(mesh));
   return s;
 }
 
 Shape Shape::mesh(const Mesh& mesh) {
-  Shape s = convexHull(mesh);
+  if (mesh.vertices.empty()) throw std::invalid_argument("shape: a mesh needs at least one vertex");
+  Shape s;
   s.type = ShapeType::Mesh;
+  s.hull = adjacencyPtr(mesh);
   return s;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "rbsim/world/world.h"
+#include "dynamics/contact_solver.h"
+#include "world/collision_pipeline.h"
 
 #include "rbsim/fracture/fracture.h"
 
@@ -44,7 +46,7 @@ BodyId World::addBody(const BodyDef& def) {
   bodySolids_.push_back(bodySolidOf(def));
   fracturePatterns_.push_back(def.fracture);
   if (def.fracture) ++breakableBodies_;
-  collision_.addBody(bodies_.back(), bodySolids_.back().sdf != nullptr);
+  collision_->addBody(bodies_.back(), bodySolids_.back().sdf != nullptr);
   std::uint32_t slot = freeSlot_;
   if (slot == kNoSlot) {
     slot = static_cast<std::uint32_t>(slots_.size());
@@ -80,7 +82,7 @@ void World::destroyBody(BodyId id) {
   const std::size_t removed = indexOf(id);
   const std::size_t last = bodies_.size() - 1;
   // Whatever rested on it must notice it is gone (as Box2D's b2DestroyBody wakes its contacts).
-  for (const Contact& c : collision_.contacts()) {
+  for (const Contact& c : collision_->contacts()) {
     if (c.kind != Contact::Kind::BodyBody) continue;
     if (c.a == removed) bodies_[c.b].wake();
     if (c.b == removed) bodies_[c.a].wake();
@@ -108,11 +110,10 @@ void World::destroyBody(BodyId id) {
   swapRemove(bodyMaterials_, removed);
   swapRemove(bodySolids_, removed);
   swapRemove(fracturePatterns_, removed);
-  collision_.removeBody(removed);
+  collision_->removeBody(removed);
   updateJointFilter();
   // Warm starts are keyed by body indices, which have changed: one step starts cold.
-  contactSolver_.forget();
-  softStep_.forget();
+  solver_->forget();
   // The id: the slot's generation moves on (every copy of the id is now stale), and the slot joins
   // the free list; the body moved into `removed` keeps its slot, which now points there.
   const std::uint32_t slot = id.slot;

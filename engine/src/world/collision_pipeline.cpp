@@ -1,4 +1,4 @@
-#include "rbsim/world/collision_pipeline.h"
+#include "world/collision_pipeline.h"
 
 #include <algorithm>
 #include <sstream>

@@ -1,9 +1,11 @@
-// The contact stages of World::step: the two orders of the pipeline (soft step collides first and
-// lets the solver advance the bodies it finds in contact; PGS integrates first and answers the
-// contacts of the new poses) and the SolveContacts stage itself.
+// The contact stages of World::step: the two orders of the pipeline (ContactSolver::Order: soft
+// step collides first and advances the bodies it finds in contact; PGS integrates first and
+// answers the contacts of the new poses) and the SolveContacts stage itself.
 #include <algorithm>
 #include <cmath>
 
+#include "dynamics/contact_solver.h"
+#include "world/collision_pipeline.h"
 #include "world/islands.h"
 #include "rbsim/world/world.h"
 
@@ -18,45 +20,45 @@ bool isFinite(const BodyState& s) {
 
 }  // namespace
 
-void World::stepSoft(bool withGravity, bool awake, bool collides) {
+void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
   // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
   // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
   // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
-  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
-    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(bodies_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodySolids_, planes_, time());
+    if (settings_.detectCollisions) collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
   });
   const bool sweeping = settings_.continuousCollision && collides && awake;
-  if (sweeping) collision_.rememberStart(bodies_);
-  softStep_.clearAdvanced();
+  if (sweeping) collision_->rememberStart(bodies_);
+  solver_->clearAdvanced();
   // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
   // are contacts between sleeping bodies, which receive nothing.
   // Joints are solved with the contacts, so a scene with joints runs the stage every awake step.
-  const bool contactsToSolve = !collision_.contacts().empty() && settings_.respondToContacts;
+  const bool contactsToSolve = !collision_->contacts().empty() && settings_.respondToContacts;
   runStage(Stage::SolveContacts, awake && (contactsToSolve || !joints_.empty()), [&] {
     if (contactsToSolve || !joints_.empty()) solveContacts(withGravity);
   });
   runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_, &softStep_.advancedFlags()); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, planes_, &solver_->advancedFlags()); });
 }
 
-void World::stepPgs(bool withGravity, bool awake, bool collides) {
+void World::stepIntegrateFirst(bool withGravity, bool awake, bool collides) {
   // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
   const bool sweeping = settings_.continuousCollision && collides && awake;
   runStage(Stage::Integrate, awake, [&] {
-    if (sweeping) collision_.rememberStart(bodies_);
+    if (sweeping) collision_->rememberStart(bodies_);
     integrateBodies(withGravity);
   });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_.continuous(bodies_, planes_); });
-  runStage(Stage::BroadPhase, collides && collision_.needsBroadPhase(bodies_, planes_), [&] {
-    if (settings_.detectCollisions) collision_.broadPhase(bodies_);
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, planes_); });
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(bodies_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_.narrowPhase(bodies_, bodySolids_, planes_, time());
+    if (settings_.detectCollisions) collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
   });
-  runStage(Stage::SolveContacts, awake && !collision_.contacts().empty() && settings_.respondToContacts, [&] {
+  runStage(Stage::SolveContacts, awake && !collision_->contacts().empty() && settings_.respondToContacts, [&] {
     if (settings_.respondToContacts) solveContacts(withGravity);
   });
 }
@@ -69,7 +71,7 @@ void World::wakeTouchedIslands() {
   const auto dynamicPair = [&](const Contact& c) {
     return c.kind == Contact::Kind::BodyBody && !bodies_[c.a].isStatic() && !bodies_[c.b].isStatic();
   };
-  const std::vector<Contact>& contacts = collision_.contacts();
+  const std::vector<Contact>& contacts = collision_->contacts();
   const bool touched = std::any_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
     return dynamicPair(c) && bodies_[c.a].awake() != bodies_[c.b].awake();
   });
@@ -89,15 +91,11 @@ void World::wakeTouchedIslands() {
 
 void World::solveContacts(bool withGravity) {
   wakeTouchedIslands();
-  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
-    contactSolver_.solve(bodies_, collision_.contacts(), bodyMaterials_, planeMaterials_, settings_);
-    return;
-  }
-  wakeJointed();
+  if (solver_->solvesJoints()) wakeJointed();
   static const std::vector<Contact> kNoContacts;
-  const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_.contacts() : kNoContacts;
-  softStep_.step(bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity);
-  checkFinite(softStep_.advancedBodies());
+  const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_->contacts() : kNoContacts;
+  solver_->solve({bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity});
+  checkFinite(solver_->advancedBodies());
 }
 
 void World::checkFinite(const std::vector<std::size_t>& bodies) const {

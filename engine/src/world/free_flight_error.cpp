@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "rbsim/world/queries.h"
+
 namespace rbsim {
 
 namespace {
@@ -25,7 +27,7 @@ bool torqued(const World& world, BodyId id) {
   const RigidBody& body = world.bodies()[i];
   const double stepStart = world.time() - world.settings().timeStep;
   for (double t : {stepStart, world.time()}) {
-    for (const auto& [point, force] : world.activeForces(id, t)) {
+    for (const auto& [point, force] : activeForces(world, id, t)) {
       if (!(point - body.position()).cross(force).isZero(0.0)) return true;
     }
   }

@@ -6,12 +6,14 @@
 #include <string>
 
 #include "rbsim/world/world.h"
+#include "dynamics/contact_solver.h"
+#include "world/collision_pipeline.h"
 
 namespace rbsim {
 
 std::size_t World::addJoint(const JointDef& def) {
   const std::string who = "joint" + (def.name.empty() ? std::string() : " '" + def.name + "'");
-  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
+  if (!solver_->solvesJoints()) {
     throw std::invalid_argument(who + ": joints need the soft-step solver (world.solver \"soft-step\"); PGS does not solve them");
   }
   if (!isValid(def.bodyA)) throw std::invalid_argument(who + ": body_a names no body");
@@ -47,7 +49,7 @@ std::size_t World::addJoint(const JointDef& def) {
   joints_.push_back(joint);
   bodies_[ia].wake();
   if (!world) bodies_[ib].wake();
-  if (!world && !def.collideConnected) collision_.ignorePair(ia, ib);
+  if (!world && !def.collideConnected) collision_->ignorePair(ia, ib);
   return joints_.size() - 1;
 }
 
@@ -69,7 +71,7 @@ void World::updateJointFilter() {
   for (const Joint& joint : joints_) {
     if (joint.b != kWorldIndex && !joint.def.collideConnected) pairs.emplace_back(joint.a, joint.b);
   }
-  collision_.setIgnoredPairs(pairs);
+  collision_->setIgnoredPairs(pairs);
 }
 
 }  // namespace rbsim

@@ -9,38 +9,17 @@
 #include <stdexcept>
 #include <string>
 
+#include "dynamics/contact_solver.h"
 #include "rbsim/integrate/integrator.h"
 #include "math/fnv.h"
 #include "rbsim/fracture/fracture.h"
+#include "world/collision_pipeline.h"
 #include "world/islands.h"
 #include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
 
 namespace {
-
-bool isActive(const ScriptedForce& f, double t) { return t >= f.start && t < f.end; }
-
-// (application point, force), both in world frame, for the body's current pose.
-std::pair<Vec3, Vec3> inWorldFrame(const ScriptedForce& f, const RigidBody& body) {
-  const Vec3 point = f.pointFrame == Frame::Body ? body.bodyToWorld(f.point) : f.point;
-  const Vec3 force = f.forceFrame == Frame::Body ? Vec3(body.rotation() * f.force) : f.force;
-  return {point, force};
-}
-
-// Seed 000 "particle systems" spring: F = -(k (|d| - rest) + c v_p . u) u at the body point p,
-// d = p - anchor, u = d / |d|. For rest = 0, F = -k d - c (v_p . u) u needs no direction when
-// d = 0, so a zero-length spring is well defined; for rest > 0 and d = 0 there is no direction.
-std::pair<Vec3, Vec3> forceOfSpring(const Spring& spring, const RigidBody& body) {
-  const Vec3 point = body.bodyToWorld(spring.point);
-  const Vec3 d = point - spring.anchor;
-  const double length = d.norm();
-  if (length == 0.0) return {point, Vec3::Zero()};
-  const Vec3 u = d / length;
-  const Vec3 pointVelocity = body.velocity() + body.angularVelocity().cross(point - body.position());
-  const double magnitude = spring.stiffness * (length - spring.restLength) + spring.damping * pointVelocity.dot(u);
-  return {point, -magnitude * u};
-}
 
 // The Integrate pass over many bodies, tuned with bench/throughput_bench. Bodies are stepped in
 // batches: first the integrator step of every body in the batch, then every body's derived
@@ -85,7 +64,16 @@ const Settings& checked(const Settings& settings) {
 }
 }  // namespace
 
-World::World(const Settings& settings) : settings_(checked(settings)), collision_(settings_) {}
+World::World(const Settings& settings)
+    : settings_(checked(settings)),
+      collision_(std::make_unique<CollisionPipeline>(settings_)),
+      solver_(makeContactSolver(settings_.solver)) {}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+const std::vector<Contact>& World::contacts() const { return collision_->contacts(); }
+const std::vector<SolvedContactPoint>& World::contactPoints() const { return solver_->points(); }
 
 void World::addForce(const ScriptedForce& force) {
   if (!isValid(force.body)) throw std::invalid_argument("scripted force names no body");
@@ -111,11 +99,6 @@ void World::moveSpringAnchor(std::size_t spring, const Vec3& anchor) {
   if (!anchor.allFinite()) throw std::invalid_argument("moveSpringAnchor: expected a finite anchor");
   springs_[spring].anchor = anchor;
   body(springs_[spring].body).wake();
-}
-
-std::pair<Vec3, Vec3> World::springForce(std::size_t spring) const {
-  if (spring >= springs_.size()) throw std::invalid_argument("springForce: no such spring");
-  return forceOfSpring(springs_[spring], body(springs_[spring].body));
 }
 
 void World::removeSpring(std::size_t spring) {
@@ -164,10 +147,10 @@ void World::step() {
   const bool anyAwakeNow =
       anyAwake || ((posed || pushed) && std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); }));
   const bool collides = settings_.detectCollisions && (!planes_.empty() || bodies_.size() >= 2);
-  if (settings_.solver == Settings::ContactSolverMethod::Pgs) {
-    stepPgs(!otherForces, anyAwakeNow, collides);
+  if (solver_->order() == ContactSolver::Order::IntegrateFirst) {
+    stepIntegrateFirst(!otherForces, anyAwakeNow, collides);
   } else {
-    stepSoft(!otherForces, anyAwakeNow, collides);
+    stepCollideFirst(!otherForces, anyAwakeNow, collides);
   }
   const bool solved = stats_[static_cast<int>(Stage::SolveContacts)].runs > solveRunsBefore;
   runStage(Stage::BreakBodies, breakableBodies_ > 0 && solved && settings_.respondToContacts, [&] {
@@ -194,15 +177,6 @@ void World::applyPoseEvents() {
     body.wake();  // an event setting nothing still marks the body as touched
   }
   pendingEvents_.erase(pendingEvents_.begin(), due);
-}
-
-std::vector<std::pair<Vec3, Vec3>> World::activeForces(BodyId body, double t) const {
-  std::vector<std::pair<Vec3, Vec3>> active;
-  const RigidBody& b = this->body(body);
-  for (const ScriptedForce& f : forces_) {
-    if (f.body == body && isActive(f, t)) active.push_back(inWorldFrame(f, b));
-  }
-  return active;
 }
 
 void World::accumulateForces(bool withGravity) {
@@ -239,6 +213,7 @@ void World::integrateBodies(bool withGravity) {
   const double dt = settings_.timeStep;
   const Vec3 gravity = settings_.gravity;
   const bool addGravity = withGravity && gravity != Vec3::Zero();
+  const std::vector<char>& advanced = solver_->advancedFlags();  // bodies the solver moved
   const std::size_t count = bodies_.size();
   std::array<BodyState, kIntegrateBatch> next;
   std::array<RigidBody*, kIntegrateBatch> stepped;
@@ -254,7 +229,7 @@ void World::integrateBodies(bool withGravity) {
     for (std::size_t i = first; i < end; ++i) {
       if (i + kPrefetchAhead < count) bodies_[i + kPrefetchAhead].prefetchForStep();
       RigidBody& body = bodies_[i];
-      if (!body.awake() || softStep_.advanced(i)) continue;
+      if (!body.awake() || (i < advanced.size() && advanced[i] != 0)) continue;
       if (body.isKinematic()) {
         next[n] = integrateKinematic(body.state(), body.stepInputs(), dt);
       } else {
@@ -286,7 +261,7 @@ void World::updateSleep() {
   }
   // An island sleeps when its least rested body has rested long enough.
   Islands islands(bodies_.size());
-  for (const Contact& contact : collision_.contacts()) {
+  for (const Contact& contact : collision_->contacts()) {
     if (contact.kind == Contact::Kind::BodyBody && !bodies_[contact.a].isStatic() && !bodies_[contact.b].isStatic()) {
       islands.link(contact.a, contact.b);
     }
@@ -305,10 +280,6 @@ void World::updateSleep() {
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (bodies_[i].awake() && rested[islands.find(i)] >= settings_.timeToSleep) bodies_[i].sleep();
   }
-}
-
-std::size_t World::awakeCount() const {
-  return static_cast<std::size_t>(std::count_if(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); }));
 }
 
 std::uint64_t World::stateHash() const {

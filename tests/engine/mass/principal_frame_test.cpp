@@ -11,6 +11,7 @@
 #include "rbsim/math/rotation.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/world.h"
+#include "rbsim/world/queries.h"
 #include "test_util.h"
 
 namespace rbsim {
@@ -59,7 +60,7 @@ TEST(PrincipalFrame, FileVerticesComeBackExactlyAndTheWorldPoseIsTheFilesOne) {
     EXPECT_TRUE(test::allNear(body.worldVertex(i), fileToWorld * (file.vertices[i] - c) + Vec3(1.0, 2.0, 3.0), 1e-14)) << i;
   }
   // The force's body-frame point (0.1, 0.2, 0.3) is in the file's axes about the centre of mass.
-  const auto forces = world.activeForces(world.idAt(0), 0.0);
+  const auto forces = activeForces(world, world.idAt(0), 0.0);
   ASSERT_EQ(forces.size(), 1u);
   EXPECT_TRUE(test::allNear(forces[0].first, fileToWorld * Vec3(0.1, 0.2, 0.3) + Vec3(1.0, 2.0, 3.0), 1e-14));
 }

@@ -10,6 +10,7 @@
 #include "test_util.h"
 #include "world/continuous_collision.h"
 #include "rbsim/world/world.h"
+#include "world/world_access.h"
 
 namespace rbsim {
 namespace {
@@ -66,7 +67,7 @@ TEST(CollisionWorld, ABoxSinkingThroughTheGroundHasFourContactsOfTheKnownDepth) 
     ASSERT_EQ(c.manifold.count, 4);
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(c.manifold.points[k].depth, depth, 1e-12) << n;
   }
-  EXPECT_GT(world.collision().queryLog().total(), 0u);
+  EXPECT_GT(WorldAccess::collision(world).queryLog().total(), 0u);
   }
 }
 
@@ -80,7 +81,7 @@ TEST(CollisionWorld, QueriesAreLoggedOnlyWhenAskedFor) {
     world.addPlane(Plane{Vec3::UnitY(), 0.0});
     for (int n = 0; n < 4; ++n) world.step();
     EXPECT_FALSE(world.contacts().empty());
-    EXPECT_EQ(world.collision().queryLog().total(), log ? 4u : 0u);
+    EXPECT_EQ(WorldAccess::collision(world).queryLog().total(), log ? 4u : 0u);
   }
 }
 
@@ -90,7 +91,7 @@ TEST(CollisionWorld, TwoBoxesOverlappingReportOneBodyContact) {
   world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.9, 0.0, 0.0)));
   world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(5.0, 0.0, 0.0)));
   world.step();
-  ASSERT_EQ(world.collision().candidatePairs().size(), 1u);
+  ASSERT_EQ(WorldAccess::collision(world).candidatePairs().size(), 1u);
   ASSERT_EQ(world.contacts().size(), 1u);
   const Contact& c = world.contacts()[0];
   EXPECT_EQ(c.kind, Contact::Kind::BodyBody);
@@ -147,7 +148,7 @@ TEST(CollisionWorld, AFastBoxDoesNotTunnelThroughAStaticWall) {
     if (continuous) {
       EXPECT_LE(front, -0.025 + 1e-9) << "stopped before the wall's face";
       EXPECT_GE(front, -0.025 - kImpactSeparation - 1e-9);
-      EXPECT_FALSE(world.collision().impacts().empty());
+      EXPECT_FALSE(WorldAccess::collision(world).impacts().empty());
     } else {
       EXPECT_GT(front, 5.0) << "without protection it went through";
     }
@@ -198,7 +199,7 @@ TEST(CollisionWorld, SweepAndPruneAndBruteForceGiveTheSameContacts) {
   }
   for (int n = 0; n < 40; ++n) {
     for (World& w : worlds) w.step();
-    ASSERT_EQ(worlds[0].collision().candidatePairs(), worlds[1].collision().candidatePairs()) << n;
+    ASSERT_EQ(WorldAccess::collision(worlds[0]).candidatePairs(), WorldAccess::collision(worlds[1]).candidatePairs()) << n;
     ASSERT_EQ(worlds[0].contacts().size(), worlds[1].contacts().size()) << n;
   }
   EXPECT_GT(worlds[0].contacts().size(), 0u) << "the scene has contacts to compare";

@@ -6,6 +6,7 @@
 
 #include "test_util.h"
 #include "rbsim/world/world.h"
+#include "rbsim/world/queries.h"
 
 namespace rbsim {
 namespace {
@@ -45,7 +46,7 @@ TEST(Sleep, ABodyAtRestSleepsAfterTimeToSleepAndIsNoLongerIntegrated) {
   EXPECT_TRUE(world.bodies()[0].awake()) << "one step short of timeToSleep";
   world.step();
   EXPECT_FALSE(world.bodies()[0].awake());
-  EXPECT_EQ(world.awakeCount(), 0u);
+  EXPECT_EQ(awakeCount(world), 0u);
   const std::uint64_t integrated = world.stageStats(Stage::Integrate).runs;
   stepN(world, 100);
   EXPECT_EQ(world.stageStats(Stage::Integrate).runs, integrated) << "nothing awake: Integrate is skipped";

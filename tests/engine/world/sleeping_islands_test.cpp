@@ -11,6 +11,7 @@
 
 #include "test_util.h"
 #include "rbsim/world/world.h"
+#include "world/world_access.h"
 
 namespace rbsim {
 namespace {
@@ -85,13 +86,13 @@ TEST_P(SleepingIslands, AreNotCollidedMovedOrWrittenWhileAnotherBodyMoves) {
   for (int i = 0; i < kStackHeight; ++i) before.push_back(world.bodies()[i].state());
   const std::size_t contactsBefore = stackContacts(world);
   ASSERT_EQ(contactsBefore, static_cast<std::size_t>(kStackHeight)) << "one plane contact, three box-box contacts";
-  const std::uint64_t queriesBefore = world.collision().queryLog().total();
+  const std::uint64_t queriesBefore = WorldAccess::collision(world).queryLog().total();
   const std::uint64_t narrowRuns = world.stageStats(Stage::NarrowPhase).runs;
   const int steps = static_cast<int>(std::lround(2.0 / GetParam()));  // 2 s
   for (int s = 0; s < steps; ++s) world.step();
   EXPECT_GT(world.stageStats(Stage::NarrowPhase).runs, narrowRuns) << "the narrow phase ran for the moving body";
   // The counter: every narrow-phase query is logged, and none was asked for the sleeping stack.
-  EXPECT_EQ(world.collision().queryLog().total(), queriesBefore);
+  EXPECT_EQ(WorldAccess::collision(world).queryLog().total(), queriesBefore);
   EXPECT_TRUE(stackAsleep(world));
   for (int i = 0; i < kStackHeight; ++i) EXPECT_TRUE(sameBits(world.bodies()[i].state(), before[i])) << "box " << i;
   EXPECT_EQ(stackContacts(world), contactsBefore) << "the sleeping island keeps its contacts";
@@ -146,10 +147,10 @@ TEST_P(SleepingIslands, KeepTheirContactsWhenAnotherBodyIsDestroyed) {
   world.step();
   world.destroyBody(first);
   EXPECT_EQ(stackContacts(world), static_cast<std::size_t>(kStackHeight));
-  const std::uint64_t queriesBefore = world.collision().queryLog().total();
+  const std::uint64_t queriesBefore = WorldAccess::collision(world).queryLog().total();
   for (int s = 0; s < 30; ++s) world.step();
   EXPECT_TRUE(stackAsleep(world));
-  EXPECT_EQ(world.collision().queryLog().total(), queriesBefore) << "the sleeping stack is still not collided";
+  EXPECT_EQ(WorldAccess::collision(world).queryLog().total(), queriesBefore) << "the sleeping stack is still not collided";
   EXPECT_EQ(stackContacts(world), static_cast<std::size_t>(kStackHeight)) << "and still has its contacts";
 }
 

@@ -45,7 +45,7 @@ struct Settings {
   double sleepAngularSpeed = 0.035;  // [rad/s], 2 degrees per second
   double timeToSleep = 0.5;          // [s]
 
-  // Collision detection (engine/collision, engine/include/rbsim/world/collision_pipeline.h). false: bodies
+  // Collision detection (engine/collision, engine/src/world/collision_pipeline.h). false: bodies
   // pass through each other and through planes unseen, and the three collision stages never run
   // (scenes of free flight, and the throughput benchmark of the unconstrained step).
   bool detectCollisions = true;
@@ -68,9 +68,10 @@ struct Settings {
   // Contact response. false: contacts are detected and reported but nothing acts on them, so
   // bodies pass through each other (the narrow phase on its own).
   bool respondToContacts = true;
-  // SoftStep (engine/include/rbsim/dynamics/soft_step_solver.h, the default): substeps of soft contact
-  // constraints with relaxation (Catto, "Solver2D", 2024; Box2D v3). Pgs (engine/dynamics/
-  // contact_solver.h): projected Gauss-Seidel with split impulses, kept for comparison.
+  // The contact solver, behind one seam (engine/src/dynamics/contact_solver.h). SoftStep
+  // (soft_step_solver.h, the default): substeps of soft contact constraints with relaxation
+  // (Catto, "Solver2D", 2024; Box2D v3). Pgs (pgs_solver.h): projected Gauss-Seidel with split
+  // impulses, kept as the reference.
   enum class ContactSolverMethod { SoftStep, Pgs };
   ContactSolverMethod solver = ContactSolverMethod::SoftStep;
   // Soft step: substeps per step, each one solve sweep with bias and one relax sweep without.
@@ -91,7 +92,7 @@ struct Settings {
   // scaled onto the cone of mu_s or mu_k, the coefficient chosen by the regime the last step
   // ended in (soft step per point, PGS per patch at its centroid with a twist). Seed000: seed 000
   // "Friction" at every point in every sweep, after its normal row, with the point's K_T: the
-  // sticking impulse if inside the mu_s cone, else -mu_k j_n T (engine/src/dynamics/seed_friction.h).
+  // sticking impulse if inside the mu_s cone, else -mu_k j_n T (engine/src/dynamics/friction_law.h).
   // Both meet the analytic slide and incline; cone stacks better with PGS (REPORT section 5).
   enum class FrictionModel { Cone, Seed000 };
   FrictionModel friction = FrictionModel::Cone;

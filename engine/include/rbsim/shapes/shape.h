@@ -14,6 +14,7 @@
 
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/math/types.h"
+#include "rbsim/shapes/face_planes.h"
 
 namespace rbsim {
 
@@ -45,6 +46,9 @@ struct Shape {
   // Convex hull and mesh: the vertices that span the hull (for a mesh, of its convex hull, which
   // GJK sees when the other body has no grid), with their adjacency for large hulls.
   std::shared_ptr<const HullAdjacency> hull;
+  // Convex hull: its face planes, for exact distances inside and ray casts
+  // (collision/shape_queries.h). Null for a mesh, whose hull's faces are not its own.
+  std::shared_ptr<const FacePlanes> faces;
 
   // Each throws std::invalid_argument unless its sizes are positive and finite (a capsule's half
   // length may be 0: a sphere) and the mesh has a vertex.

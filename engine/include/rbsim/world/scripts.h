@@ -3,8 +3,10 @@
 // (seed 004 "TO DO: change values of x and R and redraw").
 #include <cstddef>
 #include <optional>
+#include <utility>
 
 #include "rbsim/body/body_id.h"
+#include "rbsim/body/rigid_body.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {
@@ -21,6 +23,9 @@ struct ScriptedForce {
   double start = 0.0;            // [s]
   double end = 0.0;              // [s]
 };
+inline bool isActive(const ScriptedForce& f, double t) { return t >= f.start && t < f.end; }
+// (application point, force), both in world frame, for the body's pose now.
+std::pair<Vec3, Vec3> inWorldFrame(const ScriptedForce& f, const RigidBody& body);
 
 // At the first step starting at or after `time`, the given fields are set by hand.
 struct PoseEvent {

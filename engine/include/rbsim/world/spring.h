@@ -2,8 +2,10 @@
 // A damped spring from a world anchor to a point fixed in a body (seed 000 "particle systems":
 // spring forces F = -k (|d| - rest) d/|d| - c v_rel along d). Accumulated each step with gravity.
 #include <cstddef>
+#include <utility>
 
 #include "rbsim/body/body_id.h"
+#include "rbsim/body/rigid_body.h"
 #include "rbsim/math/types.h"
 
 namespace rbsim {
@@ -16,5 +18,11 @@ struct Spring {
   double restLength = 0.0;         // [m], >= 0
   double damping = 0.0;            // c [N s/m], >= 0, along the spring only
 };
+
+// Seed 000 "particle systems" spring: F = -(k (|d| - rest) + c v_p . u) u at the body point p,
+// d = p - anchor, u = d / |d|, as (point, force) in world frame for the body's pose now: what
+// stage AccumulateForces applies. For rest = 0, F = -k d - c (v_p . u) u needs no direction when
+// d = 0, so a zero-length spring is well defined; for rest > 0 and d = 0 there is no direction.
+std::pair<Vec3, Vec3> forceOfSpring(const Spring& spring, const RigidBody& body);
 
 }  // namespace rbsim

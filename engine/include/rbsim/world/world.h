@@ -10,20 +10,21 @@
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/contact.h"
-#include "rbsim/dynamics/contact_solver.h"
 #include "rbsim/dynamics/joint.h"
+#include "rbsim/dynamics/solved_contact_point.h"
 #include "rbsim/body/material.h"
-#include "rbsim/dynamics/soft_step_solver.h"
 #include "rbsim/dynamics/step_listener.h"
 #include "rbsim/body/body_id.h"
-#include "rbsim/world/collision_pipeline.h"
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spring.h"
 #include "rbsim/settings/settings.h"
 
 namespace rbsim {
 
-struct FracturePattern;  // fracture/fracture.h: a body's pieces, kept per body
+struct FracturePattern;    // fracture/fracture.h: a body's pieces, kept per body
+class CollisionPipeline;   // the collision stages (engine/src/world/collision_pipeline.h)
+class ContactSolver;       // the contact solver's seam (engine/src/dynamics/contact_solver.h)
+struct WorldAccess;        // the internals tests read (engine/src/world/world_access.h)
 
 // Stages of World::step, in order (as Box2D v3's b2SolverStageType): names for timing and for
 // skipping.
@@ -62,8 +63,13 @@ struct StageStats {
 };
 
 class World {
+  friend struct WorldAccess;
+
  public:
   explicit World(const Settings& settings);  // throws std::invalid_argument (checkSettings)
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
 
   // Throws std::invalid_argument on an invalid def, naming the body (also for a fracture pattern
   // that does not fit it: fracture/fracture.h checkFracturePattern). The new body is the last of
@@ -89,8 +95,6 @@ class World {
   // joint): wakes the body, as every manual change does. Throws on a bad index or anchor.
   void moveSpringAnchor(std::size_t spring, const Vec3& anchor);
   void removeSpring(std::size_t spring);  // later springs move down one index
-  // (point, force) of a spring on its body now, world frame: what AccumulateForces applies.
-  std::pair<Vec3, Vec3> springForce(std::size_t spring) const;
   // Static and infinite; throws unless the normal is unit and the material valid.
   void addPlane(const Plane& plane, const Material& material = {});
   // The step hook (Jolt's PhysicsStepListener): a system stepped after the rigid bodies each
@@ -119,23 +123,16 @@ class World {
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
   const std::vector<Spring>& springs() const { return springs_; }
   const std::vector<Plane>& planes() const { return planes_; }
-  std::size_t awakeCount() const;
-  const CollisionPipeline& collision() const { return collision_; }
-  const std::vector<Contact>& contacts() const { return collision_.contacts(); }
-  // Every contact point of the last step with the impulse the solver gave it.
-  const std::vector<SolvedContactPoint>& contactPoints() const {
-    return settings_.solver == Settings::ContactSolverMethod::Pgs ? contactSolver_.points() : softStep_.points();
-  }
+  // The contact manifolds of the last narrow phase, and every contact point of the last step
+  // with the impulse the solver gave it.
+  const std::vector<Contact>& contacts() const;
+  const std::vector<SolvedContactPoint>& contactPoints() const;
   const Material& bodyMaterial(BodyId body) const { return bodyMaterials_[indexOf(body)]; }
   // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
   const std::vector<BodySolid>& bodySolids() const { return bodySolids_; }
   const std::vector<FractureEvent>& fractureEvents() const { return fractureEvents_; }
   const Material& planeMaterial(std::size_t plane) const { return planeMaterials_[plane]; }
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
-
-  // The forces acting during the step that starts at time t, in world frame: (point, force).
-  // Used by stage AccumulateForces and by renderers that draw force arrows.
-  std::vector<std::pair<Vec3, Vec3>> activeForces(BodyId body, double t) const;
 
   // FNV-1a over the bit patterns of every body's state, then of each step listener's (particles,
   // soft nodes, 2D bodies; nothing when there are none): equal hashes mean identical runs.
@@ -145,13 +142,14 @@ class World {
   void applyPoseEvents();
   void accumulateForces(bool withGravity);  // scripted forces and springs, after gravity if asked
   void integrateBodies(bool withGravity);   // adds m g to F first if asked
-  void stepSoft(bool withGravity, bool awake, bool collides);  // the middle of step() with soft step
-  void stepPgs(bool withGravity, bool awake, bool collides);   // ... and with PGS
+  // The middle of step() in the solver's order (ContactSolver::Order).
+  void stepCollideFirst(bool withGravity, bool awake, bool collides);
+  void stepIntegrateFirst(bool withGravity, bool awake, bool collides);
   void solveContacts(bool withGravity);
   void wakeTouchedIslands();  // a sleeping island touched by an awake body wakes whole
   void wakeJointed();         // a joint's sleeping side wakes with its awake one
   void updateJointFilter();   // the pairs that must not collide, after joints or indices changed
-  void checkFinite(const std::vector<std::size_t>& bodies) const;  // after the soft step
+  void checkFinite(const std::vector<std::size_t>& bodies) const;  // after a solver advanced them
   void updateSleep();
   void breakBodies();  // world/break_bodies.cpp
   void breakBody(std::size_t body, double impulse);
@@ -182,9 +180,8 @@ class World {
   std::size_t breakableBodies_ = 0;      // bodies with a pattern that have not broken yet
   std::vector<double> receivedImpulse_;  // BreakBodies' scratch, per body [N s]
   std::vector<FractureEvent> fractureEvents_;
-  CollisionPipeline collision_;
-  ContactSolver contactSolver_;  // PGS
-  SoftStepSolver softStep_;
+  std::unique_ptr<CollisionPipeline> collision_;
+  std::unique_ptr<ContactSolver> solver_;  // Settings::solver's
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
   std::vector<Joint> joints_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed

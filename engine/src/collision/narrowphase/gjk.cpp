@@ -46,9 +46,8 @@ void keepTriangleFeature(GjkSimplex& s, std::array<double, 4>& lambda, int i, in
   keep(s, lambda, idx, w, n);
 }
 
-// The point of the simplex's hull closest to the origin; the simplex is reduced to the smallest
-// subset holding it (Ericson §9.5.2: the sub-simplex whose Voronoi region contains the origin),
-// with the barycentric weights of that point in lambda.
+}  // namespace
+
 Vec3 closestToOrigin(GjkSimplex& s, std::array<double, 4>& lambda) {
   const Vec3 o = Vec3::Zero();
   switch (s.size) {
@@ -120,8 +119,6 @@ Vec3 closestToOrigin(GjkSimplex& s, std::array<double, 4>& lambda) {
   for (int k = 0; k < s.size; ++k) v += lambda[k] * s.points[k].w;
   return v;
 }
-
-}  // namespace
 
 std::size_t supportIndex(const std::vector<Vec3>& points, const Vec3& direction) {
   std::size_t best = 0;

@@ -69,6 +69,11 @@ class PointSetSupport final : public SupportMap {
 SupportPoint minkowskiSupport(const SupportMap& a, const SupportMap& b, const Vec3& direction);
 SupportPoint minkowskiSupport(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& direction);
 
+// The point of the simplex's hull closest to the origin; the simplex is reduced to the smallest
+// subset holding it (Ericson §9.5.2: the sub-simplex whose Voronoi region contains the origin),
+// with the barycentric weights of that point in lambda.
+Vec3 closestToOrigin(GjkSimplex& s, std::array<double, 4>& lambda);
+
 GjkResult gjk(const SupportMap& a, const SupportMap& b);
 GjkResult gjk(const std::vector<Vec3>& a, const std::vector<Vec3>& b);  // empty sets: +infinity apart
 

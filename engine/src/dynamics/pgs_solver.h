@@ -1,6 +1,7 @@
 #pragma once
-// Stage SolveContacts: every contact of the step solved together (seed 001 "Resting Contact":
-// non-penetrating, repulsive, complementary) by projected Gauss-Seidel over accumulated impulses
+// The reference contact solver (Settings::solver = pgs; contact_solver.h): every contact of the
+// step solved together (seed 001 "Resting Contact": non-penetrating, repulsive, complementary) by
+// projected Gauss-Seidel over accumulated impulses
 // (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005), warm started from the previous
 // step; penetration removed by split impulses, which move positions and add no energy (Catto,
 // "Modeling and Solving Constraints", GDC 2009).
@@ -9,31 +10,25 @@
 // the manifold as a whole, at the centroid of its points: a tangential impulse and a twist about
 // the normal, coupled through seed 002's 6x6 K; seed 000's rule decides between sticking (inside
 // the cone mu_s of the manifold's total normal impulse) and kinetic friction mu_k against the
-// slip. A rigid patch slides as a whole, so the cone is the patch's, not each point's.
+// slip. A rigid patch slides as a whole, so the cone is the patch's, not each point's. With
+// Settings::friction = seed000 friction is each point's instead, through friction_law.h.
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "rbsim/body/rigid_body.h"
-#include "rbsim/body/material.h"
-#include "rbsim/dynamics/solved_contact_point.h"
-#include "rbsim/collision/contact.h"
-#include "rbsim/settings/settings.h"
+#include "dynamics/contact_solver.h"
 
 namespace rbsim {
 
-class ContactSolver {
+class PgsSolver final : public ContactSolver {
  public:
+  Order order() const override { return Order::IntegrateFirst; }
+  bool solvesJoints() const override { return false; }
   // Changes P and L of the bodies in contact (and x, q where they penetrate beyond the slop).
-  // `bodyMaterials` has one entry per body, `planeMaterials` one per plane.
-  void solve(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts,
-             const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
-             const Settings& settings);
-
-  const std::vector<SolvedContactPoint>& points() const { return solved_; }
-  // Forgets the warm starts: the bodies were renumbered (World::destroyBody).
-  void forget() {
+  void solve(const SolverInput& input) override;
+  const std::vector<SolvedContactPoint>& points() const override { return solved_; }
+  void forget() override {
     cache_.clear();
     solved_.clear();
   }
@@ -61,11 +56,11 @@ class ContactSolver {
     double correctionVelocity = 0.0;      // split-impulse target [m/s]
     double impulse = 0.0;                 // accumulated j_N >= 0 [N s]
     double pseudoImpulse = 0.0;           // accumulated split impulse [N s]
-    // Settings::FrictionModel::Seed000 (contact_solver_seed.cpp): friction per point.
+    // Settings::FrictionModel::Seed000: friction per point (friction_law.h).
     Vec3 arm1 = Vec3::Zero(), arm2 = Vec3::Zero();  // r1, r2: the point from each centre of mass [m]
     Vec3 friction = Vec3::Zero();  // accumulated tangential impulse on body 1, world [N s]
     bool sticking = true;          // the last sweep's sticking impulse was inside the mu_s cone
-    bool sliding = false;          // slipping at the end of the last step (seed_friction.h)
+    bool sliding = false;          // slipping at the end of the last step (friction_law.h)
   };
   struct Patch {  // one manifold
     int body1 = 0, body2 = 0;  // indices into bodies_
@@ -105,8 +100,9 @@ class ContactSolver {
   double normalImpulse(const Patch& patch) const;  // sum of the patch's accumulated j_N [N s]
   void solveNormal(Patch& patch, NormalRow& row);
   void solveFriction(Patch& patch);
-  void solveSeedFriction(const Patch& patch, NormalRow& row);  // seed 000's, at the point
-  void applySeed(const Patch& patch, const NormalRow& row, const Vec3& impulse);  // at the point
+  // Friction at the point by the law of `model` (friction_law.h), and its impulse applied there.
+  void solvePointFriction(const Patch& patch, NormalRow& row, Settings::FrictionModel model);
+  void applyPointFriction(const Patch& patch, const NormalRow& row, const Vec3& impulse);
   void markSliding();  // seed000: each row's regime for the next step, from its slip now
   void solvePosition(const Patch& patch, NormalRow& row);
   void writeBack(std::vector<RigidBody>& bodies, double dt);

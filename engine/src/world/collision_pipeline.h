@@ -12,18 +12,11 @@
 #include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/broadphase/broad_phase.h"
 #include "rbsim/collision/contact.h"
+#include "rbsim/collision/impact.h"
 #include "rbsim/collision/narrowphase/query_log.h"
 #include "rbsim/settings/settings.h"
 
 namespace rbsim {
-
-// A fast body stopped at its time of impact by continuous collision detection.
-struct Impact {
-  std::size_t body = 0;
-  double fraction = 1.0;  // s in [0, 1] of the step at which it stopped
-  Vec3 unstoppedPosition = Vec3::Zero();  // where the step would have taken it [m]
-  Quat unstoppedOrientation = Quat::Identity();
-};
 
 class CollisionPipeline {
  public:

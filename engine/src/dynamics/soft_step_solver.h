@@ -25,44 +25,34 @@
 #include <cstdint>
 #include <vector>
 
-#include "rbsim/body/rigid_body.h"
-#include "rbsim/body/material.h"
-#include "rbsim/dynamics/joint.h"
+#include "dynamics/contact_solver.h"
 #include "rbsim/dynamics/softness.h"
-#include "rbsim/dynamics/solved_contact_point.h"
 #include "rbsim/dynamics/solver_islands.h"
-#include "rbsim/collision/contact.h"
 #include "rbsim/math/parallel.h"
-#include "rbsim/settings/settings.h"
 
 namespace rbsim {
 
-class SoftStepSolver {
+class SoftStepSolver final : public ContactSolver {
  public:
+  Order order() const override { return Order::CollideFirst; }
+  bool solvesJoints() const override { return true; }
   // Advances by settings.timeStep every awake body in a contact with a manifold (x, q, P, L),
-  // using the forces and torques accumulated in it, plus m g when `addGravity` (the World adds
-  // gravity in its Integrate pass unless other forces act), and every awake body of a joint,
-  // whose warm-start impulses are read and written back. Clears their accumulators.
-  void step(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts, std::vector<Joint>& joints,
-            const std::vector<Material>& bodyMaterials, const std::vector<Material>& planeMaterials,
-            const Settings& settings, bool addGravity);
-
-  // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
-  void forget() {
+  // using the forces and torques accumulated in it, plus m g when `addGravity`, and every awake
+  // body of a joint, whose warm-start impulses are read and written back. Clears their
+  // accumulators.
+  void solve(const SolverInput& input) override;
+  void forget() override {
     clearAdvanced();
     cache_.clear();
     solved_.clear();
   }
-  // Forgets which bodies the last step advanced: a step that does not run the solver advanced none.
-  void clearAdvanced() {
+  void clearAdvanced() override {
     for (std::size_t body : advancedList_) advanced_[body] = 0;
     advancedList_.clear();
   }
-  // Whether the last step advanced World body `body` (then the World must not integrate it).
-  bool advanced(std::size_t body) const { return body < advanced_.size() && advanced_[body] != 0; }
-  const std::vector<std::size_t>& advancedBodies() const { return advancedList_; }
-  const std::vector<char>& advancedFlags() const { return advanced_; }  // per World body
-  const std::vector<SolvedContactPoint>& points() const { return solved_; }
+  const std::vector<std::size_t>& advancedBodies() const override { return advancedList_; }
+  const std::vector<char>& advancedFlags() const override { return advanced_; }  // per World body
+  const std::vector<SolvedContactPoint>& points() const override { return solved_; }
 
  private:
   // Hot: what a substep reads and writes per body, 112 bytes with q aligned to 16 (Box2D's
@@ -89,7 +79,7 @@ class SoftStepSolver {
   // reads (Box2D v3 keeps its solver points apart from the manifold the same way): the sweeps of
   // every substep read and write Point; updateJacobians, once a substep, reads PointFrame; the
   // step's start and end (prepare, restitution, the report) use PointReport.
-  struct Point {  // 296 bytes
+  struct Point {  // 304 bytes
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // the point from each centre of mass, world [m]
     Vec3 crossA = Vec3::Zero(), crossB = Vec3::Zero();      // r x n [m]
     Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
@@ -99,8 +89,9 @@ class SoftStepSolver {
     std::array<double, 2> tangentMass{};  // 1 / (t_k^T K t_k) [kg]
     double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
     std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
+    double tangentCoupling = 0.0;    // t1^T K t2, for seed 000's K_TT (friction_law.h) [1/kg]
   };
-  static_assert(sizeof(Point) == 296, "the size the comment above states");
+  static_assert(sizeof(Point) == 304, "the size the comment above states");
   struct PointFrame {
     // The point as each body carries it, body frame [m]; for a sphere or capsule, the point of
     // its core (centre or axis) under the contact, and the surface point is roundA / roundB
@@ -119,13 +110,12 @@ class SoftStepSolver {
     // added once a substep, after the relax sweep, plus the collision and restitution passes.
     double totalNormalImpulse = 0.0;  // [N s]
     Vec3 totalFriction = Vec3::Zero();  // world [N s]
-    bool sliding = false;  // seed000: slipping at the end of the last step (seed_friction.h)
+    bool sliding = false;  // slipping at the end of the last step (seed 000's regime, friction_law.h)
   };
   struct Constraint {  // one manifold
     int a = 0, b = 0;  // body slots; 0 is the ground
     Vec3 normal = Vec3::UnitY(), tangent1 = Vec3::UnitX(), tangent2 = Vec3::UnitZ();
-    double friction = 0.0;     // mu_s while sticking, mu_k while sliding [1]
-    double staticFriction = 0.0, kineticFriction = 0.0;  // mu_s, mu_k (Settings::FrictionModel::Seed000) [1]
+    double staticFriction = 0.0, kineticFriction = 0.0;  // mu_s, mu_k [1]
     double restitution = 0.0;  // [1]
     Softness softness;
     bool sticking = true;      // this step's regime: the last step ended without slipping
@@ -166,17 +156,11 @@ class SoftStepSolver {
   // Island k's share of a substep (solver_islands.h): the sweeps below run island by island.
   void warmStart(std::size_t island);
   void solve(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax);
-  // The normal impulses of one constraint on the pair's velocities, shared by both sweeps.
+  // The normal impulses of one constraint on the pair's velocities, before its friction.
   void solveNormals(Constraint& c, double inverseH, const Settings& settings, bool useBias, bool lastRelax, Vec3& vA,
                     Vec3& wA, Vec3& vB, Vec3& wB);
-  // solve with Settings::FrictionModel::Seed000 (soft_step_seed.cpp).
-  void solveSeed(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax);
   void sweep(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
-    if (settings.friction == Settings::FrictionModel::Seed000) {
-      solveSeed(island, inverseH, settings, useBias, lastRelax);
-    } else {
-      solve(island, inverseH, settings, useBias, lastRelax);
-    }
+    solve(island, inverseH, settings, useBias, lastRelax);
     if (!useBias) addTotals(island);
   }
   // A sweep's velocities of slot `slot` written back, unless it is the ground (slot 0, never

@@ -1,0 +1,68 @@
+#pragma once
+// The seam between World::step and the contact solvers (stage SolveContacts), as the broad phase
+// keeps sweep and prune beside brute force: SoftStepSolver (soft_step_solver.h) is the default,
+// PgsSolver (pgs_solver.h) the reference. The World picks one from Settings::solver when it is
+// built (makeContactSolver) and asks it where in the step it goes. A new solver implements this
+// class and adds a Settings::ContactSolverMethod (docs/architecture.md, "Adding a solver").
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "rbsim/body/material.h"
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/collision/contact.h"
+#include "rbsim/dynamics/joint.h"
+#include "rbsim/dynamics/solved_contact_point.h"
+#include "rbsim/settings/settings.h"
+
+namespace rbsim {
+
+// What stage SolveContacts hands the solver. `bodyMaterials` has one entry per body,
+// `planeMaterials` one per plane; `addGravity`: the forces accumulated in the bodies lack m g
+// (World::step adds gravity in its Integrate pass unless other forces act).
+struct SolverInput {
+  std::vector<RigidBody>& bodies;
+  const std::vector<Contact>& contacts;
+  std::vector<Joint>& joints;
+  const std::vector<Material>& bodyMaterials;
+  const std::vector<Material>& planeMaterials;
+  const Settings& settings;
+  bool addGravity = true;
+};
+
+class ContactSolver {
+ public:
+  // The two orders of World::step's middle stages.
+  enum class Order {
+    // Collide at the poses the last step left, then the solver advances the bodies it finds in
+    // contact or jointed, and the integrator the rest (Box2D v3's b2Collide before b2Solve).
+    CollideFirst,
+    // Integrate every body, then collide and answer the contacts of the new poses with impulses
+    // on the integrated velocities (Catto, GDC 2005).
+    IntegrateFirst,
+  };
+
+  virtual ~ContactSolver() = default;
+  virtual Order order() const = 0;
+  virtual bool solvesJoints() const = 0;  // false: World::addJoint refuses joints
+  virtual void solve(const SolverInput& input) = 0;
+  // Every contact point of the last solve with the impulse it received.
+  virtual const std::vector<SolvedContactPoint>& points() const = 0;
+  // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
+  virtual void forget() = 0;
+
+  // Order::CollideFirst: the World bodies the last solve advanced, which the integrator must
+  // leave alone, as a list and as flags per body. Empty for a solver that advances none.
+  virtual const std::vector<std::size_t>& advancedBodies() const { return kNone; }
+  virtual const std::vector<char>& advancedFlags() const { return kNoFlags; }
+  // A step that does not run the solver advances no body.
+  virtual void clearAdvanced() {}
+
+ private:
+  static inline const std::vector<std::size_t> kNone{};
+  static inline const std::vector<char> kNoFlags{};
+};
+
+std::unique_ptr<ContactSolver> makeContactSolver(Settings::ContactSolverMethod method);
+
+}  // namespace rbsim
