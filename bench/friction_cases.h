@@ -107,8 +107,8 @@ inline InclineResult incline(const Settings& settings, double degrees, double se
 struct BounceResult {
   double impactSpeed = 0.0;  // sqrt(2 g h) [m/s], analytic
   // The speed it left the ground with: at the end of the first step that ends rising, from its
-  // height y above touching and its speed v there, sqrt(v^2 + 2 g y) (free flight keeps it). A
-  // bounce reversed above the ground shows as the energy it gained.
+  // height y above touching and its speed v there, sqrt(v^2 + 2 g max(y, 0)) (free flight keeps
+  // it). A bounce reversed above the ground shows as the energy it gained.
   double leaveSpeed = 0.0;  // [m/s]
 };
 
@@ -133,7 +133,9 @@ inline BounceResult dropAndBounce(const Settings& settings, double restitution, 
     const double vy = world.bodies()[0].velocity().y();
     if (vy < 0.0) fell = true;
     if (fell && vy >= 0.0) {
-      const double above = world.bodies()[0].position().y() - kDropRestHeight;
+      // Below the touching height (within Settings::contactSlop, which the solvers leave alone)
+      // it left from the surface: the depth is not energy it lacks.
+      const double above = std::max(world.bodies()[0].position().y() - kDropRestHeight, 0.0);
       out.leaveSpeed = std::sqrt(std::max(vy * vy + 2.0 * kFrictionG * above, 0.0));
       break;
     }

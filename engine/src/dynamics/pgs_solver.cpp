@@ -96,6 +96,7 @@ void PgsSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& contac
           .inverse();
 
   const Cached* old = settings.warmStarting ? cached(pairKey(contact)) : nullptr;
+  const bool seed = settings.friction == Settings::FrictionModel::Seed000;
   for (int i = 0; i < m.count; ++i) {
     NormalRow row;
     const Vec3& p = m.points[i].position;
@@ -127,11 +128,15 @@ void PgsSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& contac
     const double startGap = std::max(gap - 0.5 * (startApproach + approach) * dt, 0.0);
     const double touch = startApproach * startApproach - 2.0 * normalAcceleration * startGap;
     const double leave = material.restitution * material.restitution * touch + 2.0 * normalAcceleration * std::max(gap, 0.0);
-    // Below leave = 0 the bounce would not reach back here at all; seed 000's -c_R u_rel,N then
-    // (the gap's energy gained, at most m |a_N| |u| dt).
-    const bool bounces = approach < -settings.restitutionThreshold && -approach * dt >= gap;
-    const double rebound = leave >= 0.0 ? std::sqrt(leave) : -material.restitution * approach;
-    row.targetNormalVelocity = bounces ? rebound : -std::max(gap, 0.0) / dt;
+    // Below leave = 0 the bounce would not reach back here at all: the body keeps its approach
+    // through the surface, and bounces in the next step with the speed it hit it at (the split
+    // impulse takes it out of the ground without energy). Reversed here with seed 000's
+    // -c_R u_rel,N, it gained the gap's energy: a c_R = 0.3 ball dropped 1 cm left at 2.4 c_R u_c
+    // at 1/60 s, 1.6 at 1/240 s; held to the gap, it reached the surface slower and stayed there.
+    const bool collides =
+        material.restitution > 0.0 && approach < -settings.restitutionThreshold && -approach * dt >= gap;
+    const bool bounces = collides && leave >= 0.0;
+    row.targetNormalVelocity = bounces ? std::sqrt(leave) : collides ? approach : -std::max(gap, 0.0) / dt;
     row.correctionVelocity = std::max(0.0, settings.positionCorrection * (-gap - settings.contactSlop) / dt);
     if (old != nullptr) {
       for (int j = 0; j < old->count; ++j) {
@@ -142,6 +147,18 @@ void PgsSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& contac
           break;
         }
       }
+    }
+    // Seed 000's regime at a collision (approaching faster than the restitution threshold):
+    // sliding when its sticking impulse leaves the mu_s cone (collisionImpulse). A resting point
+    // keeps the regime its last step ended in; a new one first assumes sticking.
+    if (seed && approach < -settings.restitutionThreshold) {
+      const Velocity& v1 = velocities_[patch.body1];
+      const Velocity& v2 = velocities_[patch.body2];
+      const Vec3 u = v1.linear + v1.angular.cross(r1) - v2.linear - v2.angular.cross(r2);
+      const Mat3 factor = impulseFactor(s1.inverseMass, s1.inverseInertiaWorld, r1) +
+                          impulseFactor(s2.inverseMass, s2.inverseInertiaWorld, r2);
+      const CollisionImpulse hit = collisionImpulse<3>(factor, u, n, material);
+      row.sliding = hit.colliding && !hit.sticking;
     }
     SolvedContactPoint out;
     out.contact = index;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dynamics/soft_step_solver.h"
+#include "rbsim/dynamics/impulse.h"
 
 namespace rbsim {
 
@@ -30,6 +31,8 @@ void SoftStepSolver::collide(const Settings& settings) {
   // pair, as Newton's cradle does, where one simultaneous solve would move the row together.
   // Only pairs touching at one point: a patch (a box landing flat) bounces in applyRestitution,
   // whose sweeps share the rebound among its points instead of tipping it at the first one.
+  // With Settings::friction = seed000 the collision takes seed 000's whole impulse, friction
+  // included (collisionImpulse, dynamics/impulse.h), as the seed writes it for one collision.
   const double dt = settings.timeStep;
   for (int sweep = 0; sweep < kCollisionSweeps; ++sweep) {
     bool collided = false;
@@ -48,9 +51,35 @@ void SoftStepSolver::collide(const Settings& settings) {
       // applyRestitution with its speed at the touch: reversed here, above the ground, it lost the
       // energy of the gap (a ball dropped 1 cm left at 37 % of c_R u_c at 1/60 s, or not at all).
       if (p.separation > kTouchingGap) continue;
-      const double impulse = -(1.0 + c.restitution) * vn * p.normalMass;
-      reports_[c.firstPoint].totalNormalImpulse += impulse;
-      reports_[c.firstPoint].impactSpeed = 0.0;  // it has bounced: applyRestitution must not bounce it again
+      PointReport& report = reports_[c.firstPoint];
+      report.impactSpeed = 0.0;  // it has bounced: applyRestitution must not bounce it again
+      collided = true;
+      if (settings.friction == Settings::FrictionModel::Seed000) {
+        // Seed 000 "Friction", literally: the whole impulse of the collision from the 3x3 K_T,
+        // sticking if inside the mu_s cone, kinetic (N - mu_k T) j_n otherwise.
+        const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+        const Mat3& iA = sims_[c.a].inverseInertiaNow;
+        const Mat3& iB = sims_[c.b].inverseInertiaNow;
+        const Vec3 u = B.linearVelocity + B.angularVelocity.cross(p.anchorB) - A.linearVelocity -
+                       A.angularVelocity.cross(p.anchorA);  // u_rel, body 1 = B
+        const CollisionImpulse hit = collisionImpulse<3>(impulseFactor(mA, iA, p.anchorA) + impulseFactor(mB, iB, p.anchorB), u,
+                                                         n, Material{c.restitution, c.staticFriction, c.kineticFriction});
+        const Vec3& j = hit.impulse;
+        report.totalNormalImpulse += j.dot(n);
+        report.totalFriction += j - j.dot(n) * n;
+        report.sliding = !hit.sticking;  // the regime the substeps carry on with
+        if (c.a != 0) {
+          A.linearVelocity -= mA * j;
+          A.angularVelocity -= iA * p.anchorA.cross(j);
+        }
+        if (c.b != 0) {
+          B.linearVelocity += mB * j;
+          B.angularVelocity += iB * p.anchorB.cross(j);
+        }
+        continue;
+      }
+      const double impulse = -(1.0 + c.restitution) * vn * p.normalMass;  // j = N j_n only
+      report.totalNormalImpulse += impulse;
       if (c.a != 0) {
         A.linearVelocity -= (sims_[c.a].inverseMass * impulse) * n;
         A.angularVelocity -= impulse * p.angularA;
@@ -59,7 +88,6 @@ void SoftStepSolver::collide(const Settings& settings) {
         B.linearVelocity += (sims_[c.b].inverseMass * impulse) * n;
         B.angularVelocity += impulse * p.angularB;
       }
-      collided = true;
     }
     if (!collided) return;
   }

@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "dynamics/contact_solver.h"
@@ -150,6 +151,12 @@ class SoftStepSolver final : public ContactSolver {
   void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
                const Settings& settings);
   const Cached* cached(std::uint64_t key) const;
+  // Seed 000's regime at a collision (a point approaching faster than
+  // Settings::restitutionThreshold): sliding when the sticking impulse leaves the mu_s cone
+  // (collisionImpulse, dynamics/impulse.h). Empty for a resting point, which keeps the regime its
+  // last step ended in (a new one first assumes sticking).
+  std::optional<bool> seedSlides(const Vec3& anchorA, const Vec3& anchorB, const Constraint& c, const SolverState& stateA,
+                  const SolverState& stateB, const Material& material, const Settings& settings) const;
   void updateJacobians(const Constraint& c, const PointFrame& f, Point& p) const;
   void updateJacobians();
   void integrateVelocities(double h);

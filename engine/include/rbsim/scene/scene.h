@@ -17,50 +17,9 @@
 #include "rbsim/world/spring.h"
 #include "rbsim/settings/settings.h"
 #include "rbsim/world/world.h"
+#include "rbsim/scene/view_desc.h"
 
 namespace rbsim {
-
-// How the scene is shown; plain data, the app turns it into pixels.
-struct ViewDesc {
-  Vec3 eye = Vec3(4.0, 3.0, 6.0);      // camera position [m]
-  Vec3 target = Vec3(0.0, 0.5, 0.0);   // point looked at [m]
-  Vec3 up = Vec3(0.0, 1.0, 0.0);
-  double fovDegrees = 45.0;            // vertical field of view
-  int width = 1280;                    // [px]
-  int height = 720;                    // [px]
-  int fps = 30;                        // frames per simulated second
-  bool overlay = true;
-  bool wireframe = false;
-  bool axes = true;
-  bool grid = true;
-  bool aabbs = false;     // draw AABBs (red when in a pair), compare pairs with brute force
-  bool contacts = false;  // draw contact points, normals, distances and impact ghosts
-  // Draw each body's vertex list p' = R p + x as the engine computed it (seed 004 section 2: "do
-  // this transform yourself"), as dots over the body the renderer drew from R and x.
-  bool vertices = false;
-  std::size_t selected = 0;            // body shown in the overlay
-  std::string caption;
-  // Time plots in the overlay (app/run/plot_history.h): names of kPlotQuantities, of the whole
-  // scene or (plotSelected) of the selected body, over the last plotSeconds.
-  std::vector<std::string> plots;
-  bool plotSelected = false;
-  double plotSeconds = 10.0;  // [s]
-};
-
-// The quantities view.plots may name.
-inline const std::vector<std::string> kPlotQuantities = {"ke", "pe", "E", "|P|", "|L|", "contacts", "error"};
-
-// How one particle system is drawn: camera-facing sprites whose colour, opacity and size follow
-// the particle's age fraction a = age / lifetime from birth (a = 0) to death (a = 1).
-struct ParticleLook {
-  enum class Blend { Additive, Alpha };
-  Blend blend = Blend::Alpha;        // additive: light adds up (fire); alpha: covers (smoke)
-  bool hasColorEnd = false;          // false: the birth colour throughout
-  Vec3 colorEnd = Vec3::Zero();      // linear RGB at a = 1, mixed linearly from the birth colour
-  double alphaStart = 1.0;           // opacity at a = 0 [1]
-  double alphaEnd = 1.0;             // opacity at a = 1 [1]
-  double sizeEndScale = 1.0;         // drawn size at a = 1 over the size at birth [1]
-};
 
 // A Scene names its bodies (in forces, pose events, springs and joints) by the ids that
 // buildWorld's World gives them: a fresh World numbers bodies added in order by slot, generation
