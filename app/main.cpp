@@ -17,6 +17,7 @@
 #include "rbsim/io/input_error.h"
 #include "rbsim/particles/particle_def.h"
 #include "run/paths.h"
+#include "render/offscreen_renderer.h"
 #include "render/render_error.h"
 #include "window/interactive.h"
 #include "window/replay_window.h"
@@ -247,6 +248,8 @@ int listEverything() {
   std::printf("inertia methods:\n  cube\n  exact\n");
   std::printf("particle integrators (particles[].integrator):\n");
   for (const std::string& name : rbsim::particleIntegratorNames()) std::printf("  %s\n", name.c_str());
+  std::printf("data folders (RBSIM_ASSET_DIR, RBSIM_SHADER_DIR, or beside the executable):\n  assets   %s\n  shaders  %s\n",
+              rbsim::app::assetDir().c_str(), rbsim::render::defaultShaderDir().c_str());
   return 0;
 }
 

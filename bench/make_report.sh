@@ -181,6 +181,8 @@ say "rendering REPORT.pdf: bash bench/make_pdf.sh (log: $logs/make_pdf.log)"
 bash bench/make_pdf.sh > "$logs/make_pdf.log" 2>&1 || { tail -20 "$logs/make_pdf.log"; exit 1; }
 
 if [ $all = 1 ]; then
+  say "the submission's zip: bash bench/make_bundle.sh --build $build"
+  bash bench/make_bundle.sh --build "$build" --out videos/rbsim-submission.zip
   say "done in $(( $(date +%s) - started )) s ($mode, --all); the submission's files:"
   where() {  # where FILE WHAT: the file, its size, what it is; a missing file is said to be missing
     if [ -e "$1" ]; then
@@ -198,6 +200,7 @@ if [ $all = 1 ]; then
   where REPORT.md "the report (video line: bench/video_url.txt)"
   for page in docs/*.md; do [ -f "$page" ] && where "$page" "a docs page"; done
   where REPORT.pdf "the report as a PDF (bench/make_pdf.sh)"
+  where videos/rbsim-submission.zip "the source (git HEAD) and the program with its shaders and assets (bench/make_bundle.sh)"
   where "$results" "benchmark CSVs and plots (logs in $logs)"
 else
   say "done in $(( $(date +%s) - started )) s ($mode)"

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "data_dir.h"
 #include "gl_renderer.h"
 #include "overlay.h"
 #include "render_error.h"
@@ -23,6 +24,7 @@ std::string defaultShaderDir() {
   if (const char* dir = std::getenv("RBSIM_SHADER_DIR"); dir != nullptr && *dir != '\0') {
     return dir;
   }
+  if (std::string beside = besideExecutable("shaders"); !beside.empty()) return beside;
   return RBSIM_DEFAULT_SHADER_DIR;
 }
 

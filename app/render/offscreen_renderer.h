@@ -14,8 +14,8 @@
 
 namespace rbsim::render {
 
-// The shader folder: env RBSIM_SHADER_DIR if set, else the source tree's shaders/ baked in at
-// build time.
+// The shader folder: env RBSIM_SHADER_DIR if set, else shaders/ beside the executable (a bundle or
+// an install, render/data_dir.h), else the source tree's shaders/ baked in at build time.
 std::string defaultShaderDir();
 
 class OffscreenRenderer {
