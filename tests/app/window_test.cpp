@@ -136,6 +136,87 @@ TEST_F(WindowMode, ShowsTheControlPanelAndOtherwiseTheOffscreenFrame) {
   EXPECT_GT(insideDiff / (3.0 * inside), 10.0) << "mean difference per channel inside the control panel";
 }
 
+// Pressing on a body, dragging and releasing, end to end (issue 36): synthetic pointer events
+// (xdotool through XTEST, tests/app/drag_session.sh) on the real window under Xvfb. The box of
+// drag_box.json (one_box.json at rest) is drawn at (386, 180); the pointer presses there and
+// drags up to (386, 60), 1.1 m up at the box's depth.
+// Held: the box follows the spring up, and the panel grows by its two rows (drag force, drag
+// torque). Released: the rows go and the box flies on.
+struct DragShot {
+  Image image;
+  std::string log;
+};
+
+DragShot dragSession(const std::string& mode, const fs::path& dir) {
+  const fs::path shot = dir / (mode + ".png");
+  const std::string scene = std::string(RBSIM_WINDOW_DATA_DIR) + "/drag_box.json";
+  const auto [code, output] = run("xvfb-run -a -s '-screen 0 1280x1024x24' bash '" + std::string(RBSIM_DRAG_SESSION) +
+                                  "' '" + std::string(RBSIM_BINARY) + "' '" + scene + "' " + mode + " '" +
+                                  shot.string() + "'");
+  DragShot out;
+  out.log = "exit " + std::to_string(code) + ": " + output;
+  if (code == 0) out.image = readPng(shot);
+  return out;
+}
+
+// Mean row of the box's pixels (red, lit or in shade) left of the control panel; -1 when none are
+// in view.
+double redRow(const Image& image) {
+  const int right = rbsim::app::panelRect(kWidth, kHeight).x;
+  double sum = 0.0;
+  long count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < right; ++x) {
+      const unsigned char* p = image.at(x, y);
+      if (p[0] > p[1] + 30 && p[0] > p[2] + 30) {
+        sum += y;
+        ++count;
+      }
+    }
+  }
+  return count > 100 ? sum / count : -1.0;
+}
+
+// The last row of the variables panel (top left, dark) in column 13, left of its text: the last
+// dark row before the sky or ground (a run of 5 light rows; the separator lines are thinner).
+int panelBottom(const Image& image) {
+  int bottom = 0, light = 0;
+  for (int y = 12; y < image.height && light < 5; ++y) {
+    const unsigned char* p = image.at(13, y);
+    if (p[0] < 70 && p[1] < 70 && p[2] < 70) {
+      bottom = y;
+      light = 0;
+    } else {
+      ++light;
+    }
+  }
+  return bottom;
+}
+
+TEST(DragInWindow, PressDragAndReleaseMoveTheBodyAndThePanelShowsTheForce) {
+  const fs::path dir = fs::temp_directory_path() / ("rbsim_drag_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const DragShot still = dragSession("none", dir), held = dragSession("hold", dir), released = dragSession("release", dir);
+  fs::remove_all(dir);
+  ASSERT_EQ(still.image.width, kWidth) << still.log;
+  ASSERT_EQ(held.image.width, kWidth) << held.log;
+  ASSERT_EQ(released.image.width, kWidth) << released.log;
+  // Untouched, the box rests where it was: its pixels centre on row 204 (its centre projects to
+  // row 180; the lit top and the shaded bottom weigh differently).
+  const double stillRow = redRow(still.image);
+  EXPECT_NEAR(stillRow, 204.0, 5.0);
+  // Held: pulled up until the grabbed point is at the pointer (row 60; the centre within the
+  // box's half diagonal, about 50 px, of it), and two more panel rows.
+  const double heldRow = redRow(held.image);
+  EXPECT_GT(heldRow, 0.0) << "the box left the view";
+  EXPECT_LT(heldRow, stillRow - 50.0) << "the box did not follow the spring up";
+  EXPECT_GE(panelBottom(held.image), panelBottom(still.image) + 20) << "the panel lacks the drag force rows";
+  // Released: the rows are gone, and the box flies on with what the spring gave it.
+  EXPECT_NEAR(panelBottom(released.image), panelBottom(still.image), 2);
+  const double releasedRow = redRow(released.image);
+  EXPECT_TRUE(releasedRow < 0.0 || std::abs(releasedRow - stillRow) > 20.0) << releasedRow;
+}
+
 TEST(WindowModeErrors, NoDisplayAndMisplacedFlagsExitTwoWithAMessage) {
   const std::string binary = "'" + std::string(RBSIM_BINARY) + "'";
   auto [code, output] = run("env -u DISPLAY " + binary + " run '" + kScene + "' --window");
