@@ -162,8 +162,11 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const RigidBody& body = bodies[i];
     fast_[i] = 0;
-    // A kinematic body goes where it is told, through anything: it is never stopped.
-    if (!body.awake() || !haveStart_ || hasGrid_[i] || body.isKinematic()) continue;
+    // A kinematic body goes where it is told, through anything: it is never stopped. A body with a
+    // grid is swept too, as its convex hull, which holds it: it may stop a little early (at its
+    // hull's touch, where the grid's contacts take over), never late. Its partners with grids
+    // are not swept against (a ball falling into a bowl would stop at the bowl's hull).
+    if (!body.awake() || !haveStart_ || body.isKinematic()) continue;
     // Stopping a body the solver moved would undo its speculative contacts, which already hold
     // it at the surfaces it can reach this step (and hold it still, again, every step after).
     if (solved != nullptr && i < solved->size() && (*solved)[i] != 0) continue;
