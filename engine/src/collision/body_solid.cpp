@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "shapes/implicit_shape.h"
+
 namespace rbsim {
 
 BodySolid bodySolidOf(const BodyDef& def) {
@@ -12,11 +14,11 @@ BodySolid bodySolidOf(const BodyDef& def) {
   // and the faces of its 48 x 24 tessellation are never asked for (finding them took 2 ms a
   // ball, most of what adding one cost).
   if (def.shape && def.shape->isRound()) {
-    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, *def.shape};
+    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, *def.shape, nullptr};
     out.convex.boundingRadius = def.shape->boundingRadius();
     return out;
   }
-  return BodySolid{facePlanesOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt};
+  return BodySolid{facePlanesOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt, def.implicit};
 }
 
 SurfaceQuery querySurface(const BodySolid& shape, const Vec3& local) {
@@ -29,7 +31,11 @@ SurfaceQuery querySurface(const BodySolid& shape, const Vec3& local) {
     // normal. Where the gradient vanishes (the medial axis of a flat-bottomed interpolant), the
     // way out is taken as straight away from the body's centre.
     Vec3 gradient;
-    const double phi = shape.sdf->phiAndGradient(local, gradient);
+    double phi = shape.sdf->phiAndGradient(local, gradient);
+    if (shape.implicit && phi <= kExactBandCells * shape.sdf->cellSize()) {
+      phi = shape.implicit->phi(local);
+      gradient = shape.implicit->gradient(local);
+    }
     const double length = gradient.norm();
     if (length > 0.0) return {phi, gradient / length};
     const double radial = local.norm();

@@ -14,6 +14,7 @@
 #include "fracture/pieces.h"
 #include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/geometry/signed_distance_grid.h"
+#include "geometry/feature_points.h"
 #include "geometry/surface_samples.h"
 #include "rbsim/mass/mass_model.h"
 #include "scene/fracture_parser.h"
@@ -184,7 +185,21 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
   if (!samplesTooMany.empty()) {
     overBudget(o.has("sample_spacing") ? "sample_spacing" : "resolution", samplesTooMany + "; use a larger sample_spacing");
   }
-  def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(surfaceSamples(mesh, spacing));
+  if (!implicit) {
+    def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(surfaceSamples(mesh, spacing));
+    return;
+  }
+  // An implicit body collides through its exact function: one sharp sample per surface cell of
+  // its grid, and, when the scene asks for a finer spacing, the mesh's samples moved onto the
+  // exact surface.
+  auto solid = std::make_shared<const ImplicitSolid>(implicitSolidOf(*implicit, def.fileFrame.axes, def.fileFrame.centre));
+  std::vector<Vec3> samples = implicitSurfaceSamples(*solid, *def.sdf);
+  if (spacingGiven > 0.0) {
+    const ExactField field{[&](const Vec3& p) { return solid->phi(p); }, [&](const Vec3& p) { return solid->gradient(p); }};
+    for (const Vec3& p : surfaceSamples(mesh, spacing)) samples.push_back(projectOntoSurface(p, field, kCrossingTolerance * def.sdf->cellSize()));
+  }
+  def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(std::move(samples));
+  def.implicit = std::move(solid);
 }
 
 // The keys a body's shape is built from, as one string (ShapeCache): the "shape" object with a
@@ -281,6 +296,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
     def.shape = built->shape;
     def.sdf = built->sdf;
     def.surfaceSamples = built->surfaceSamples;
+    def.implicit = built->implicit;
   } else {
     std::optional<ImplicitShape> implicit;
     Mesh mesh = parseShape(b, baseDir, def, implicit);

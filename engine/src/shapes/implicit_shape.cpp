@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "geometry/feature_points.h"
+
 namespace rbsim {
 
 namespace {
@@ -109,6 +111,48 @@ SignedDistanceGrid implicitBodyGrid(const ImplicitShape& shape, const Mesh& body
                                 " exceeds " + std::to_string(static_cast<long long>(kMaxSdfGridPoints)) + " points");
   }
   return SignedDistanceGrid::fromValues(grid, sample(*shape.function, grid, axes, centre));
+}
+
+Vec3 ImplicitSolid::gradient(const Vec3& p) const {
+  Vec3 g;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Vec3 step = gradientStep * Vec3::Unit(axis);
+    g[axis] = (phi(p + step) - phi(p - step)) / (2.0 * gradientStep);
+  }
+  return g;
+}
+
+Vec3 ImplicitSolid::supportNear(const Vec3& start, const Vec3& d, double cellSize) const {
+  const ExactField field{[&](const Vec3& p) { return phi(p); }, [&](const Vec3& p) { return gradient(p); }};
+  Vec3 best = start, x = start;
+  Vec3 normal = gradient(x).normalized();
+  double radius = cellSize;  // the patch's radius of curvature, until two normals show it
+  for (int step = 0; step < kSupportSteps; ++step) {
+    const Vec3 tangent = d - normal * normal.dot(d);
+    if (!(tangent.norm() > kSupportAngle)) break;
+    // On a sphere of radius rho through x with normal n there, the point along d is x + rho (d - n).
+    const Vec3 next = projectOntoSurface(x + radius * (d - normal), field, kCrossingTolerance * cellSize);
+    if (!((next - start).norm() <= 2.0 * cellSize)) break;  // left the patch: another feature
+    const Vec3 nextNormal = gradient(next).normalized();
+    const double turned = (nextNormal - normal).norm();
+    if (!(turned > 0.0)) break;  // flat: every point of the face is as far along d
+    radius = (next - x).norm() / turned;
+    x = next;
+    normal = nextNormal;
+    if (d.dot(x) > d.dot(best)) best = x;
+  }
+  return best;
+}
+
+ImplicitSolid implicitSolidOf(const ImplicitShape& shape, const Mat3& axes, const Vec3& centre) {
+  const ImplicitBounds b = shape.function->bounds();
+  const double extent = b.empty() ? 1.0 : (b.hi - b.lo).maxCoeff();
+  return ImplicitSolid{shape.function, axes, centre, kImplicitGradientRelStep * extent};
+}
+
+std::vector<Vec3> implicitSurfaceSamples(const ImplicitSolid& solid, const SignedDistanceGrid& bodyGrid) {
+  const ExactField field{[&](const Vec3& p) { return solid.phi(p); }, [&](const Vec3& p) { return solid.gradient(p); }};
+  return featurePoints(bodyGrid, field);
 }
 
 }  // namespace rbsim

@@ -3,10 +3,14 @@
 // The exact function is sampled on a grid twice: over its bounds in the file frame, where marching
 // tetrahedra mesh it for drawing and mass properties (geometry/marching_tetrahedra.h), and over
 // the mesh in the body frame, where the samples are the body's signed distance grid (seed 000
-// "Discrete Implicit Surfaces": "store values of the function at grid points") for the narrow
-// phase, exactly as a mesh body's grid (collision/narrowphase/sdf_contact.h).
+// "Discrete Implicit Surfaces": "store values of the function at grid points"). The grid only
+// finds candidates: contact points, normals and depths come from the exact function
+// (ImplicitSolid below, collision/body_solid.h), and the body's surface samples keep its sharp
+// edges and corners (geometry/feature_points.h).
 #include <memory>
 #include <string>
+
+#include <vector>
 
 #include "geometry/csg.h"
 #include "rbsim/geometry/grid_lattice.h"
@@ -57,5 +61,37 @@ ImplicitMeshing meshImplicitShape(const ImplicitShape& shape);
 // body-frame mesh, evaluated at the file-frame point axes p + centre (MassModel's frame).
 SignedDistanceGrid implicitBodyGrid(const ImplicitShape& shape, const Mesh& bodyMesh, const Mat3& axes,
                                     const Vec3& centre);
+
+// An implicit body's exact solid in its body frame: phi(p) = f(axes p + centre), f the shape's
+// function in the file frame (axes a rotation, so phi keeps f's distances).
+struct ImplicitSolid {
+  std::shared_ptr<const ImplicitFunction> function;
+  Mat3 axes = Mat3::Identity();
+  Vec3 centre = Vec3::Zero();   // [m]
+  double gradientStep = 1e-6;   // central differences' step [m]
+
+  double phi(const Vec3& p) const { return function->phi(axes * p + centre); }
+  // Central differences of phi along the body axes: exact to O(step^2) where phi is smooth, the
+  // mean of the faces' normals on an edge or at a corner.
+  Vec3 gradient(const Vec3& p) const;
+  // The point of the surface furthest along unit d near `start` (a surface point): where the
+  // normal turns to d on a smooth patch, reached by Newton steps that model the patch as a sphere
+  // of the radius its normals' turning shows; `start` itself at a corner or on a flat face, or
+  // when no step gets further along d. Samples are a cell apart: a ball dropped on the ground
+  // touches at its lowest sample, up to half a cell off centre, and would spin from the impulse.
+  Vec3 supportNear(const Vec3& start, const Vec3& d, double cellSize) const;
+};
+// Steps of supportNear at most; each halves the angle between normal and d at least.
+inline constexpr int kSupportSteps = 8;
+// supportNear stops when the normal is within this angle of d.
+inline constexpr double kSupportAngle = 1e-10;  // [rad]
+// Central differences' step as a fraction of the solid's largest extent: far above rounding
+// (1e-16 / 1e-6 of the extent in the difference) and far below any feature a grid can hold.
+inline constexpr double kImplicitGradientRelStep = 1e-6;  // [1]
+ImplicitSolid implicitSolidOf(const ImplicitShape& shape, const Mat3& axes, const Vec3& centre);
+
+// The body's surface samples: one point on the exact surface per cell of its grid the surface
+// crosses, sharp at edges and corners (geometry/feature_points.h).
+std::vector<Vec3> implicitSurfaceSamples(const ImplicitSolid& solid, const SignedDistanceGrid& bodyGrid);
 
 }  // namespace rbsim

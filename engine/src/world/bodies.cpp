@@ -46,7 +46,7 @@ BodyId World::addBody(const BodyDef& def) {
   bodySolids_.push_back(bodySolidOf(def));
   fracturePatterns_.push_back(def.fracture);
   if (def.fracture) ++breakableBodies_;
-  collision_->addBody(bodies_.back(), bodySolids_.back().sdf != nullptr);
+  collision_->addBody(bodies_.back(), bodySolids_.back());
   std::uint32_t slot = freeSlot_;
   if (slot == kNoSlot) {
     slot = static_cast<std::uint32_t>(slots_.size());

@@ -10,6 +10,7 @@
 #include "collision/narrowphase/convex_convex.h"
 #include "collision/narrowphase/convex_plane.h"
 #include "collision/narrowphase/sdf_contact.h"
+#include "shapes/implicit_shape.h"
 #include "collision/narrowphase/shape_pairs.h"
 #include "world/continuous_collision.h"
 #include "rbsim/integrate/simulation_error.h"
@@ -45,6 +46,25 @@ Aabb boundsOf(const RigidBody& body) {
   return {lo, hi};
 }
 
+// An implicit body's samples in world frame, in a buffer of the calling thread's, and the exact
+// surface's point deepest below the plane near the deepest sample (ImplicitSolid::supportNear).
+const std::vector<Vec3>& implicitPlaneCandidates(const RigidBody& body, const BodySolid& solid, const Plane& plane) {
+  thread_local std::vector<Vec3> world;
+  const std::vector<Vec3>& samples = *solid.samples;
+  world.resize(samples.size());
+  const Mat3& R = body.rotation();
+  std::size_t deepest = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    world[k] = R * samples[k] + body.position();
+    if (plane.signedDistance(world[k]) < plane.signedDistance(world[deepest])) deepest = k;
+  }
+  if (!samples.empty()) {
+    const Vec3 down = -(R.transpose() * plane.normal);
+    world.push_back(R * solid.implicit->supportNear(samples[deepest], down, solid.sdf->cellSize()) + body.position());
+  }
+  return world;
+}
+
 PosedShape posed(const RigidBody& body) { return {&body.shape(), body.rotation(), body.position()}; }
 
 // A hull large enough that GJK climbs its vertex graph rather than scanning it.
@@ -62,7 +82,9 @@ SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) 
 CollisionPipeline::CollisionPipeline(const Settings& settings)
     : settings_(settings), broad_(makeBroadPhase(settings.broadPhase)), log_(settings.queryLogCapacity) {}
 
-void CollisionPipeline::measure(std::size_t index, const RigidBody& body) {
+void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const BodySolid& solid) {
+  hasGrid_[index] = solid.sdf ? 1 : 0;
+  gap_[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;
   double radius = 0.0;
   Aabb local;
   for (const Vec3& p : body.mesh().vertices) {
@@ -76,26 +98,27 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body) {
   }
   radius_[index] = radius;
   thickness_[index] = local.extents().minCoeff();
-  boxes_[index] = boundsOf(body).inflated(settings_.contactMargin);
+  boxes_[index] = boundsOf(body).inflated(settings_.contactMargin + gap_[index]);
 }
 
-void CollisionPipeline::addBody(const RigidBody& body, bool hasGrid) {
+void CollisionPipeline::addBody(const RigidBody& body, const BodySolid& solid) {
   const std::size_t index = proxies_.size();
+  hasGrid_.push_back(0);
+  gap_.push_back(0.0);
   radius_.push_back(0.0);
   thickness_.push_back(0.0);
   reach_.push_back(0.0);
   boxes_.emplace_back();
-  measure(index, body);
+  measure(index, body, solid);
   proxies_.push_back(broad_->add(boxes_[index], body.isStatic()));
   if (bodyOfProxy_.size() <= proxies_.back()) bodyOfProxy_.resize(proxies_.back() + 1);
   bodyOfProxy_[proxies_.back()] = index;
   start_.push_back(body.state());
   fast_.push_back(0);
-  hasGrid_.push_back(hasGrid ? 1 : 0);
 }
 
-void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, bool hasGrid) {
-  measure(index, body);
+void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid) {
+  measure(index, body, solid);
   // Removed and added again, since the piece may be dynamic where the body was static; the pool
   // hands back the smallest free id, which is this one.
   broad_->remove(proxies_[index]);
@@ -104,7 +127,6 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, bo
   bodyOfProxy_[proxies_[index]] = index;
   start_[index] = body.state();
   fast_[index] = 0;
-  hasGrid_[index] = hasGrid ? 1 : 0;
 }
 
 namespace {
@@ -128,6 +150,7 @@ void CollisionPipeline::removeBody(std::size_t index) {
   swapRemove(start_, index);
   swapRemove(fast_, index);
   swapRemove(hasGrid_, index);
+  swapRemove(gap_, index);
   swapRemove(boxes_, index);
   // The contacts follow the bodies to their new indices (World::destroyBody forgets the solver's
   // reports of them): the removed body's go and the last body's take its index, so that sleeping
@@ -215,7 +238,7 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
     const double dt = settings_.timeStep;
     reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
                       dt * settings_.gravity.norm());
-    boxes_[i] = box.inflated(settings_.contactMargin + reach_[i]);
+    boxes_[i] = box.inflated(settings_.contactMargin + gap_[i] + reach_[i]);
   });
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!bodies[i].awake()) continue;
@@ -371,9 +394,12 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     if (!aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
     const double margin = settings_.contactMargin + reach_[i];
     const bool round = bodies[i].shape().isRound();
-    const ContactManifold m = round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
-                                    : collidePlaneConvex(planes[p], bodies[i].worldVertices(), margin,
-                                                         reach_[i] + kPlaneSupportSlack);
+    // An implicit body meets a plane with its samples on the exact surface, whose corners are
+    // sharp; its display mesh's are bevelled.
+    const ContactManifold m =
+        round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
+              : collidePlaneConvex(planes[p], shapes[i].implicit ? implicitPlaneCandidates(bodies[i], shapes[i], planes[p]) : bodies[i].worldVertices(),
+                                   margin, reach_[i] + kPlaneSupportSlack);
     if (settings_.logQueries) {
       log_.record(summarize(round ? QueryKind::PlaneRound : QueryKind::PlaneConvex, static_cast<std::uint32_t>(p),
                             static_cast<std::uint32_t>(i), m, 0.0, time));

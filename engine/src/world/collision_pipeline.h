@@ -22,15 +22,16 @@ class CollisionPipeline {
  public:
   explicit CollisionPipeline(const Settings& settings);
 
-  // Bodies are added in World order (each the last of the World's bodies). `hasGrid`: the body's
-  // shape has a signed distance grid (BodySolid::sdf), so its convex hull is not its shape.
-  void addBody(const RigidBody& body, bool hasGrid);
+  // Bodies are added in World order (each the last of the World's bodies), with their solids
+  // (a body with a grid, BodySolid::sdf, is not its convex hull; an implicit body's display mesh
+  // lies up to a cell inside its exact surface).
+  void addBody(const RigidBody& body, const BodySolid& solid);
   // Body `index` was destroyed and the last body moved into its index (World::destroyBody). Its
   // contacts go, the last body's are renumbered, and the last step's impacts are forgotten.
   void removeBody(std::size_t index);
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
-  void replaceBody(std::size_t index, const RigidBody& body, bool hasGrid);
+  void replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid);
 
   // Pairs of bodies that never collide (jointed bodies without collide_connected): body indices,
   // either order. The narrow phase skips them.
@@ -74,7 +75,7 @@ class CollisionPipeline {
   // to skip); true when the pair has a grid and is left to collideSdfPair.
   bool collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                    double time, Contact& out);
-  void measure(std::size_t index, const RigidBody& body);  // radius_, thickness_, boxes_ of a body
+  void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // radius_, thickness_, boxes_ of a body
   // The last step's contact of a sleeping pair (body and body, or plane and body) into `out`, if
   // it had one; asleep_ is keyed by keptKey.
   static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
@@ -99,6 +100,9 @@ class CollisionPipeline {
   // Per body: shaped by a grid. Continuous collision sweeps convex hulls, so it leaves such bodies
   // and their partners alone (a hull would stop a body at a bowl's rim, above its cavity).
   std::vector<char> hasGrid_;
+  // Per body: how far its solid may reach beyond its display mesh's vertices [m] (an implicit
+  // body's: a cell's diagonal), added to its box.
+  std::vector<double> gap_;
   bool haveStart_ = false;              // start_ holds this step's start (rememberStart ran)
   std::vector<Aabb> boxes_;
   std::vector<std::uint64_t> ignored_;  // sorted keys (lower index << 32 | higher index)

@@ -15,6 +15,7 @@ namespace rbsim {
 
 struct FracturePattern;     // fracture/fracture.h
 class SignedDistanceGrid;   // geometry/signed_distance_grid.h
+struct ImplicitSolid;       // shapes/implicit_shape.h (private)
 
 // Where the body frame sits in the coordinates of the file the body came from (seed 000's
 // diagonalisation, mass/mass_model.h): p_file = axes p_body + centre.
@@ -56,6 +57,9 @@ struct BodyDef {
   // grids (null: the vertices). Without a grid, contacts treat the body as convex.
   std::shared_ptr<const SignedDistanceGrid> sdf;
   std::shared_ptr<const std::vector<Vec3>> surfaceSamples;
+  // Set for a body made from an implicit function or a CSG tree: its exact solid. The grid then
+  // only finds candidates, and depths and normals against the body are the function's.
+  std::shared_ptr<const ImplicitSolid> implicit;
 };
 
 }  // namespace rbsim

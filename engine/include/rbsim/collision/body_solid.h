@@ -14,6 +14,8 @@
 
 namespace rbsim {
 
+struct ImplicitSolid;  // shapes/implicit_shape.h (private)
+
 // What the World keeps per body for point queries: the face planes, and for a body of any shape
 // (a bowl, a torus) its signed distance grid and the surface points it tests against others.
 struct BodySolid {
@@ -21,17 +23,21 @@ struct BodySolid {
   std::shared_ptr<const SignedDistanceGrid> sdf;     // null: the face planes are the solid
   std::shared_ptr<const std::vector<Vec3>> samples;  // body frame; null: the mesh's vertices
   std::optional<Shape> round;                        // set for a round shape: its exact surface
+  std::shared_ptr<const ImplicitSolid> implicit;     // set for an implicit body: its exact solid
 };
 BodySolid bodySolidOf(const BodyDef& def);
 
 // Where a body-frame point is: its signed distance to the surface (< 0 inside; exact inside, and
 // outside a lower bound, enough to tell contact) and the outward unit normal there, body frame.
+// An implicit body answers from its exact function within kExactBandCells cells of its surface
+// (as the grid tells), from its grid farther out.
 // Callers cull points outside the bounding sphere (convex.boundingRadius) first, before rotating
 // them into the body frame, so the query does not test it again.
 struct SurfaceQuery {
   double distance = 0.0;        // [m]
   Vec3 normal = Vec3::UnitY();  // unit, body frame
 };
+inline constexpr double kExactBandCells = 2.0;  // [cells]; the grid's error is under a cell's diagonal
 SurfaceQuery querySurface(const BodySolid& shape, const Vec3& local);
 
 }  // namespace rbsim

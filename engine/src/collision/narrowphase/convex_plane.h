@@ -7,6 +7,7 @@
 // B) is the plane's normal, pointing out of the solid half-space towards the body. A point's
 // depth is -signedDistance of its vertex; its position is midway between the vertex and the
 // vertex's projection onto the plane.
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -22,6 +23,9 @@ namespace rbsim {
 // mesh from an implicit surface, whose sharp edges are bevelled half a grid cell above the face)
 // is then held by its face, not by bevel vertices hanging above the plane whose wider footprint
 // reduction by area would prefer.
+// Above this many candidates only those on the outline of their projection, and the deepest,
+// go on (an implicit body's samples on a face are thousands; a box's corners are 4).
+inline constexpr std::size_t kPlaneHullCandidates = 64;
 ContactManifold collidePlaneConvex(const Plane& plane, const std::vector<Vec3>& vertices, double margin = 0.0,
                                    double supportSlab = std::numeric_limits<double>::infinity());
 
