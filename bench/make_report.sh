@@ -1,6 +1,7 @@
 #!/bin/bash
 # Regenerates every figure of REPORT.md (issue 11): builds the benchmarks, runs each one writing a
-# CSV into bench/results/, draws the plots (PNG) with gnuplot from those CSVs, extracts one still
+# CSV into bench/results/, draws the plots (PNG) with gnuplot from those CSVs (REPORT.md's five,
+# sized for print, are bench/results/report_*.png: bench/report/plots.gp), extracts one still
 # per demo video into videos/stills/ (rendering the demo first when its MP4 is missing), and
 # rewrites the generated blocks (<!-- fig:NAME --> ... <!-- /fig:NAME -->) of REPORT.md and of the
 # docs/*.md pages the long tables moved to (issue 26) from the CSVs, points the line
@@ -47,8 +48,9 @@ say() { printf '[make_report %4ds] %s\n' $(( $(date +%s) - started )) "$*"; }
 # Heavy work runs at the lowest priority: the machine is shared with other builds.
 low() { nice -n 19 "$@"; }
 
-targets=(rbsim step_bench throughput_bench stage_skip_bench broadphase_bench contact_pile
-         bullet_pile bullet_pile_double particle_bench soft_bench accuracy_sweep sdf_bench sdf_contact_bench)
+targets=(rbsim step_bench throughput_bench stage_skip_bench broadphase_bench narrowphase_bench contact_pile
+         contact_scenes bullet_pile bullet_pile_double particle_bench soft_bench accuracy_sweep sdf_bench
+         sdf_contact_bench)
 
 if [ $run_bench = 1 ] || [ $make_stills = 1 ] || [ $all = 1 ]; then
   say "configuring $build (Release, benchmarks on)"
@@ -106,6 +108,7 @@ if [ $run_bench = 1 ]; then
   gbench stage_skip stage_skip_bench "${gb_reps[@]}"
   gbench broadphase broadphase_bench "${broadphase_filter[@]}"
   gbench particles particle_bench "${gb_reps[@]}"
+  gbench narrowphase narrowphase_bench "${gb_reps[@]}"
   # Programs that time whole runs themselves: their printed lines become CSV (bench/report/logs_to_csv.py).
   say "running contact_pile ${piles[*]}"
   low "$build/bench/contact_pile" "${piles[@]}" > "$logs/contact_pile.log"
@@ -118,6 +121,11 @@ if [ $run_bench = 1 ]; then
       rm -f "$logs/$variant.log"
     fi
   done
+  # REPORT section 5's plot: the stacks after 10 s with each solver (about 2 minutes).
+  say "running contact_scenes -> $results/contact_scenes.csv"
+  low "$build/bench/contact_scenes" --scenes stack10,stack20,stack40,pyramid20 --solvers soft-step,pgs \
+    --integrators expmap,dlm --csv "$results/contact_scenes.csv" > "$logs/contact_scenes.log" 2>&1 \
+    || { tail -20 "$logs/contact_scenes.log"; exit 1; }
   say "running soft_bench ${soft_moduli[*]}"
   low "$build/bench/soft_bench" "${soft_moduli[@]}" > "$logs/soft.log"
   python3 bench/report/logs_to_csv.py "$logs" "$results"
@@ -196,7 +204,7 @@ if [ $all = 1 ]; then
   done
   where videos/rbsim-demos.mp4 "the reel: every demo behind title cards, with chapters"
   where videos/chapters.txt "the reel's chapters, for the YouTube description"
-  where videos/stills "the report's stills"
+  where videos/stills "the demos' stills (docs/ pages)"
   where REPORT.md "the report (video line: bench/video_url.txt)"
   for page in docs/*.md; do [ -f "$page" ] && where "$page" "a docs page"; done
   where REPORT.pdf "the report as a PDF (bench/make_pdf.sh)"

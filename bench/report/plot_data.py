@@ -77,6 +77,49 @@ def main():
     with open(os.path.join(data, "soft_tets.txt"), "w") as f:
         f.write(" ".join(str(t) for t in tets))
 
+    # The report's plots (issue 36). Section 2: the torque-free box's orientation error against the
+    # wall time of a run, one block per integrator (gnuplot's `index`), in the CSV's order.
+    rows = [r for r in read_csv(os.path.join(results, "accuracy.csv")) if r["case"] == "torque-free-box"]
+    names = list(dict.fromkeys(r["integrator"] for r in rows))
+    with open(os.path.join(data, "accuracy.dat"), "w") as f:
+        f.write("# wall_ms_per_run orient_err_max_early_rad orient_err_max_rad steps_per_s, one block per integrator\n")
+        for name in names:
+            f.write("# %s\n" % name)
+            for r in rows:
+                if r["integrator"] == name:
+                    f.write("%s %s %s %s\n" % (r["wall_ms_per_run"], r["orient_err_max_early_rad"],
+                                               r["orient_err_max_rad"], r["steps_per_s"]))
+            f.write("\n\n")
+    with open(os.path.join(data, "accuracy_names.txt"), "w") as f:
+        f.write(" ".join(names))
+    with open(os.path.join(data, "accuracy_horizons.txt"), "w") as f:
+        f.write("%s %s" % (rows[0]["early_horizon_s"], rows[0]["sim_time_s"]))
+    with open(os.path.join(data, "accuracy_steps.txt"), "w") as f:
+        f.write(", ".join("1/" + rate for rate in dict.fromkeys(r["steps_per_s"] for r in rows)))
+
+    # Section 4: CPU time per narrow-phase query of each pair type, cheapest first (drawn at the bottom).
+    gb = GoogleBenchmark(os.path.join(results, "narrowphase.csv"))
+    pairs = [("SpherePlane", "sphere-plane"), ("CapsulePlane", "capsule-plane"), ("BoxPlane", "box-plane"),
+             ("SphereSphere", "sphere-sphere"), ("SphereCapsule", "sphere-capsule"),
+             ("CapsuleCapsule", "capsule-capsule"), ("SphereBox", "sphere-box"), ("CapsuleBox", "capsule-box"),
+             ("BoxBoxSat", "box-box, SAT"), ("HullHullClimb", "hull-hull, climbing"),
+             ("HullHullScan", "hull-hull, scanning")]
+    costs = sorted((1e9 * gb.seconds("BM_" + key), label) for key, label in pairs)
+    write(data, "narrowphase.dat", ["pair", "ns_per_query"], [['"%s"' % label, "%.6g" % ns] for ns, label in costs])
+
+    # Section 5: the stacks of bench/contact_scenes.cpp, how far the box that moved most ended
+    # from its start after 10 s, per solver (soft step's rows are the same with every integrator).
+    rows = read_csv(os.path.join(results, "contact_scenes.csv"))
+    index = by_keys(rows, "scene", "solver", "integrator")
+    labels = {"stack10": "column 10", "stack20": "column 20", "stack40": "column 40", "pyramid20": "pyramid 210"}
+    columns = [("soft-step", "expmap"), ("pgs", "expmap"), ("pgs", "dlm")]
+    scenes = [s for s in labels if any(r["scene"] == s for r in rows)]
+    if not scenes:
+        raise MissingData("contact_scenes.csv: none of the scenes " + " ".join(labels))
+    write(data, "stacks.dat", ["scene"] + ["%s-%s" % c for c in columns],
+          [['"%s"' % labels[s]] + [index[(s,) + c]["farthest_m"] if (s,) + c in index else NAN for c in columns]
+           for s in scenes])
+
 
 if __name__ == "__main__":
     main()
