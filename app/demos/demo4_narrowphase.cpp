@@ -7,7 +7,7 @@ namespace rbsim::app {
 
 Demo demo4Narrowphase() {
   return Demo{4, "narrowphase", "GJK distance, EPA/SAT contacts and manifolds, tunnelling without and with CCD",
-              {"narrowphase_pairs.json", "tunnelling_off.json", "tunnelling_on.json"}};
+              {"narrowphase_pairs.json", "tunnelling_off.json", "tunnelling_on.json", "mesh_contact.json"}};
 }
 
 }  // namespace rbsim::app

@@ -99,7 +99,12 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
     }
   }
   frame.overlay.rows.push_back({"contacts", format("%.0f manifolds, %.0f points", static_cast<double>(world.contacts().size()), points)});
-  if (fromGrids > 0) frame.overlay.rows.push_back({"from SDF grids", format("%.0f manifolds, green normals", fromGrids)});
+  if (fromGrids > 0) {
+    // Pairs of non-convex bodies: surface samples against grids, or crossing triangles (Moller).
+    const bool triangles = world.settings().meshContact == Settings::MeshContact::Triangles;
+    frame.overlay.rows.push_back({triangles ? "non-convex pairs" : "from SDF grids",
+                                  format(triangles ? "%.0f manifolds, green normals (meshes: crossing triangles)" : "%.0f manifolds, green normals", fromGrids)});
+  }
   if (points > 0) frame.overlay.rows.push_back({"deepest penetration", format("%.4f m", deepest)});
   drawImpulses(world, frame);
   std::size_t listed = 0;

@@ -14,11 +14,11 @@ BodySolid bodySolidOf(const BodyDef& def) {
   // and the faces of its 48 x 24 tessellation are never asked for (finding them took 2 ms a
   // ball, most of what adding one cost).
   if (def.shape && def.shape->isRound()) {
-    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, *def.shape, nullptr};
+    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, *def.shape, nullptr, nullptr};
     out.convex.boundingRadius = def.shape->boundingRadius();
     return out;
   }
-  return BodySolid{facePlanesOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt, def.implicit};
+  return BodySolid{facePlanesOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt, def.implicit, def.triangles};
 }
 
 SurfaceQuery querySurface(const BodySolid& shape, const Vec3& local) {

@@ -289,4 +289,34 @@ SelfCrossing TriangleBvh::selfCrossing(double maxPairTests) const {
   return out;
 }
 
+void TriangleBvh::overlappingPairs(const TriangleBvh& other, const Mat3& rotation, const Vec3& translation,
+                                   const std::function<void(std::uint32_t, std::uint32_t)>& pair) const {
+  const Mat3 spread = rotation.cwiseAbs();
+  const auto placed = [&](const Aabb& box) {  // the box of `box` rotated and moved into this frame
+    const Vec3 centre = rotation * (0.5 * (box.min + box.max)) + translation;
+    const Vec3 half = spread * (0.5 * (box.max - box.min));
+    return Aabb{centre - half, centre + half};
+  };
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
+  while (!stack.empty()) {
+    const auto [ia, ib] = stack.back();
+    stack.pop_back();
+    const Node& a = nodes_[ia];
+    const Node& b = other.nodes_[ib];
+    const Aabb bBox = placed(b.box);
+    if (!a.box.overlaps(bBox)) continue;
+    if (a.count > 0 && b.count > 0) {
+      for (std::uint32_t i = a.first; i < a.first + a.count; ++i) {
+        for (std::uint32_t j = b.first; j < b.first + b.count; ++j) pair(order_[i], other.order_[j]);
+      }
+    } else if (b.count > 0 || (a.count == 0 && a.box.extents().squaredNorm() >= bBox.extents().squaredNorm())) {
+      stack.push_back({a.first + 1, ib});
+      stack.push_back({a.first, ib});
+    } else {
+      stack.push_back({ia, b.first + 1});
+      stack.push_back({ia, b.first});
+    }
+  }
+}
+
 }  // namespace rbsim

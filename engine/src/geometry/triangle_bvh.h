@@ -7,6 +7,7 @@
 // Closest points on a triangle are Ericson's Voronoi-region method, closestPointOnTriangle in
 // geometry/distance.h (exact up to rounding in all seven regions).
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -75,6 +76,12 @@ class TriangleBvh {
   // The first pair of triangles (by a deterministic traversal) that cross each other and share no
   // edge, testing only pairs whose boxes overlap and at most `maxPairTests` of them.
   SelfCrossing selfCrossing(double maxPairTests) const;
+
+  // Every pair (triangle of this mesh, triangle of `other`) whose leaves' boxes overlap, `other`
+  // placed in this mesh's frame by p -> rotation p + translation (its boxes are bounded there by
+  // the boxes of their rotated corners). Simultaneous descent, splitting the larger node.
+  void overlappingPairs(const TriangleBvh& other, const Mat3& rotation, const Vec3& translation,
+                        const std::function<void(std::uint32_t, std::uint32_t)>& pair) const;
 
   std::size_t triangleCount() const { return triangles_.size(); }
   std::size_t nodeCount() const { return nodes_.size(); }

@@ -16,6 +16,7 @@
 #include "rbsim/geometry/signed_distance_grid.h"
 #include "geometry/feature_points.h"
 #include "geometry/surface_samples.h"
+#include "geometry/triangle_bvh.h"
 #include "rbsim/mass/mass_model.h"
 #include "scene/fracture_parser.h"
 #include "scene/implicit_parser.h"
@@ -187,6 +188,7 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
   }
   if (!implicit) {
     def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(surfaceSamples(mesh, spacing));
+    def.triangles = std::make_shared<const TriangleBvh>(mesh);
     return;
   }
   // An implicit body collides through its exact function: one sharp sample per surface cell of
@@ -297,6 +299,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
     def.sdf = built->sdf;
     def.surfaceSamples = built->surfaceSamples;
     def.implicit = built->implicit;
+    def.triangles = built->triangles;
   } else {
     std::optional<ImplicitShape> implicit;
     Mesh mesh = parseShape(b, baseDir, def, implicit);

@@ -51,6 +51,12 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
   if (!parseFrictionModel(friction, s.friction)) {
     w.fail("friction", "expected \"cone\" or \"seed000\", got \"" + friction + "\"");
   }
+  const std::string meshContact = w.string("mesh_contact", "samples");
+  if (meshContact == "triangles") {
+    s.meshContact = Settings::MeshContact::Triangles;
+  } else if (meshContact != "samples") {
+    w.fail("mesh_contact", "expected \"samples\" or \"triangles\", got \"" + meshContact + "\"");
+  }
   const auto integer = [&](const char* key, int fallback) {
     if (!w.has(key)) return fallback;
     const double x = w.number(key, fallback);

@@ -9,6 +9,7 @@
 #include "collision/narrowphase/box_box.h"
 #include "collision/narrowphase/convex_convex.h"
 #include "collision/narrowphase/convex_plane.h"
+#include "collision/narrowphase/mesh_mesh.h"
 #include "collision/narrowphase/sdf_contact.h"
 #include "shapes/implicit_shape.h"
 #include "collision/narrowphase/shape_pairs.h"
@@ -63,6 +64,10 @@ const std::vector<Vec3>& implicitPlaneCandidates(const RigidBody& body, const Bo
     world.push_back(R * solid.implicit->supportNear(samples[deepest], down, solid.sdf->cellSize()) + body.position());
   }
   return world;
+}
+
+PosedMesh posedMesh(const RigidBody& body, const BodySolid& solid) {
+  return {&body.mesh(), solid.triangles.get(), body.rotation(), body.position()};
 }
 
 PosedShape posed(const RigidBody& body) { return {&body.shape(), body.rotation(), body.position()}; }
@@ -374,9 +379,16 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[pairs[k].a]), static_cast<ProxyId>(bodyOfProxy_[pairs[k].b])};
     if (pair.a > pair.b) std::swap(pair.a, pair.b);
     const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
-    const std::vector<ContactManifold> manifolds = collideSdf(bodies[pair.a], shapes[pair.a], bodies[pair.b], shapes[pair.b], margin);
+    const BodySolid& sa = shapes[pair.a];
+    const BodySolid& sb = shapes[pair.b];
+    const bool triangles = settings_.meshContact == Settings::MeshContact::Triangles && sa.triangles && sb.triangles;
+    const std::vector<ContactManifold> manifolds =
+        triangles ? collideMeshes(posedMesh(bodies[pair.a], sa), posedMesh(bodies[pair.b], sb))
+                  : collideSdf(bodies[pair.a], sa, bodies[pair.b], sb, margin);
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
-      if (settings_.logQueries) log_.record(summarize(QueryKind::Sdf, pair.a, pair.b, manifolds[m], 0.0, time));
+      if (settings_.logQueries) {
+        log_.record(summarize(triangles ? QueryKind::TriangleTriangle : QueryKind::Sdf, pair.a, pair.b, manifolds[m], 0.0, time));
+      }
       contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, static_cast<std::uint8_t>(m), manifolds[m]});
     }
   }

@@ -44,6 +44,7 @@ const std::vector<Key>& keys() {
       {"response", "false", [](const Settings& s) { return !s.respondToContacts; }, ""},
       {"solver", "pgs", [](const Settings& s) { return s.solver == Settings::ContactSolverMethod::Pgs; }, ""},
       {"friction", "seed000", [](const Settings& s) { return s.friction == Settings::FrictionModel::Seed000; }, ""},
+      {"mesh_contact", "triangles", [](const Settings& s) { return s.meshContact == Settings::MeshContact::Triangles; }, ""},
       {"substeps", "4", [](const Settings& s) { return s.substeps == 4; }, "65"},
       {"contact_hertz", "60", [](const Settings& s) { return s.contactHertz == 60.0; }, "-1"},
       {"contact_damping_ratio", "1", [](const Settings& s) { return s.contactDampingRatio == 1.0; }, "-1"},

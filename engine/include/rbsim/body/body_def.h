@@ -16,6 +16,7 @@ namespace rbsim {
 struct FracturePattern;     // fracture/fracture.h
 class SignedDistanceGrid;   // geometry/signed_distance_grid.h
 struct ImplicitSolid;       // shapes/implicit_shape.h (private)
+class TriangleBvh;          // geometry/triangle_bvh.h (private)
 
 // Where the body frame sits in the coordinates of the file the body came from (seed 000's
 // diagonalisation, mass/mass_model.h): p_file = axes p_body + centre.
@@ -60,6 +61,9 @@ struct BodyDef {
   // Set for a body made from an implicit function or a CSG tree: its exact solid. The grid then
   // only finds candidates, and depths and normals against the body are the function's.
   std::shared_ptr<const ImplicitSolid> implicit;
+  // Set for a non-convex mesh body with a grid: the hierarchy over its body-frame triangles, for
+  // contact by crossing triangles (Settings::meshContact).
+  std::shared_ptr<const TriangleBvh> triangles;
 };
 
 }  // namespace rbsim

@@ -15,6 +15,7 @@
 namespace rbsim {
 
 struct ImplicitSolid;  // shapes/implicit_shape.h (private)
+class TriangleBvh;     // geometry/triangle_bvh.h (private)
 
 // What the World keeps per body for point queries: the face planes, and for a body of any shape
 // (a bowl, a torus) its signed distance grid and the surface points it tests against others.
@@ -24,6 +25,7 @@ struct BodySolid {
   std::shared_ptr<const std::vector<Vec3>> samples;  // body frame; null: the mesh's vertices
   std::optional<Shape> round;                        // set for a round shape: its exact surface
   std::shared_ptr<const ImplicitSolid> implicit;     // set for an implicit body: its exact solid
+  std::shared_ptr<const TriangleBvh> triangles;      // set for a non-convex mesh body (BodyDef::triangles)
 };
 BodySolid bodySolidOf(const BodyDef& def);
 

@@ -96,6 +96,13 @@ struct Settings {
   // Both meet the analytic slide and incline; cone stacks better with PGS (REPORT section 5).
   enum class FrictionModel { Cone, Seed000 };
   FrictionModel friction = FrictionModel::Cone;
+  // Contact between two bodies that are both non-convex triangle meshes with grids (not implicit
+  // shapes). Samples: each body's surface samples against the other's grid (seed 000 "Collision
+  // Detection"; collision/narrowphase/sdf_contact.h). Triangles: the segments where the two
+  // surfaces cross, by Moller's triangle-triangle test over both meshes' hierarchies
+  // (collision/narrowphase/mesh_mesh.h): exact on the meshes, but only once they cross.
+  enum class MeshContact { Samples, Triangles };
+  MeshContact meshContact = MeshContact::Samples;
   int velocityIterations = 10;  // PGS: [sweeps] over every contact point (Box2D v2's default is 8)
   int positionIterations = 4;   // PGS: [sweeps] of the split-impulse pass (Box2D v2's default is 3)
   // Approach speeds below this do not bounce: a resting body meets the ground at g dt every step,

@@ -9,12 +9,6 @@ namespace rbsim {
 
 namespace {
 
-struct PointContact {
-  Vec3 position;  // midway between the surfaces, world [m]
-  Vec3 normal;    // unit, world, from A to B
-  double depth;   // [m], > 0 overlapping
-};
-
 // The surface points of `body` that lie within `margin` of `solid`'s surface, as contacts whose
 // normal points from A to B: the solid's outward normal when the solid is A, its inverse when the
 // solid is B.
@@ -44,6 +38,10 @@ std::vector<ContactManifold> collideSdf(const RigidBody& a, const BodySolid& sha
   std::vector<PointContact> points;
   pointsAgainstSolid(a, shapeA, b, shapeB, margin, /*solidIsA=*/false, points);
   pointsAgainstSolid(b, shapeB, a, shapeA, margin, /*solidIsA=*/true, points);
+  return manifoldsByNormal(points);
+}
+
+std::vector<ContactManifold> manifoldsByNormal(std::vector<PointContact>& points) {
   std::vector<ContactManifold> manifolds;
   if (points.empty()) return manifolds;
   // Deepest first, so each group's normal is that of its deepest point; ties broken by position

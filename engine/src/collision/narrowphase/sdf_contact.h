@@ -20,6 +20,17 @@ inline constexpr double kSdfManifoldAngle = 0.35;  // [rad], 20 degrees
 // solver's cost grows with each.
 inline constexpr int kMaxSdfManifolds = 6;
 
+// A contact point of a pair of bodies of any shape, with its own normal.
+struct PointContact {
+  Vec3 position;  // midway between the surfaces, world [m]
+  Vec3 normal;    // unit, world, from A to B
+  double depth;   // [m], > 0 overlapping
+};
+// The points grouped by normal, deepest first: a point joins the group whose normal is nearest if
+// within kSdfManifoldAngle, else starts one (at most kMaxSdfManifolds); each group is reduced to
+// a manifold (manifold_reduction.h). Sorts `points`.
+std::vector<ContactManifold> manifoldsByNormal(std::vector<PointContact>& points);
+
 // The manifolds (normal from A to B, each of at most kMaxManifoldPoints) of the pair: A's surface
 // samples (or vertices) within `margin` [m] of B's solid, and B's within it of A's. Empty when
 // they are apart by more than the margin.
