@@ -115,5 +115,22 @@ TEST(ImplicitContact, ACubeOverAnImplicitTablesEdgeStaysAsOnAConvexTable) {
   }
 }
 
+// Continuous collision sweeps an implicit body as the hull of its mesh: an implicit torus thrown
+// at 40 m/s onto a 1 cm plate at 1/60 s (0.67 m a step, against a 0.16 m thick ring) stops on it.
+TEST(ImplicitContact, AFastImplicitTorusDoesNotTunnelThroughAThinPlate) {
+  for (const char* solver : {"soft-step", "pgs"}) {
+    const Scene scene = parse({{"world", {{"dt", 1.0 / 60.0}, {"solver", solver}, {"ccd", true}}},
+                               {"bodies",
+                                {{{"name", "plate"}, {"shape", convexBox(Vec3(2.0, 0.01, 2.0))}, {"mass", 1.0}, {"static", true}},
+                                 {{"name", "ring"},
+                                  {"shape", {{"type", "implicit"}, {"function", "torus"}, {"major_radius", 0.3}, {"minor_radius", 0.08}, {"resolution", 32}}},
+                                  {"density", 500.0}, {"position", {0.0, 1.0, 0.0}}, {"velocity", {0.0, -40.0, 0.0}}}}}});
+    ASSERT_TRUE(scene.bodies[1].implicit);
+    World world = buildWorld(scene);
+    for (int s = 0; s < 60; ++s) world.step();
+    EXPECT_GT(world.bodies()[1].position().y(), 0.0) << solver << ": it went through the plate";
+  }
+}
+
 }  // namespace
 }  // namespace rbsim
