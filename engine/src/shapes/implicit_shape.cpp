@@ -133,6 +133,7 @@ Vec3 ImplicitSolid::supportNear(const Vec3& start, const Vec3& d, double cellSiz
     // On a sphere of radius rho through x with normal n there, the point along d is x + rho (d - n).
     const Vec3 next = projectOntoSurface(x + radius * (d - normal), field, kCrossingTolerance * cellSize);
     if (!((next - start).norm() <= 2.0 * cellSize)) break;  // left the patch: another feature
+    if (!(std::abs(phi(next)) <= kSupportOnSurface * cellSize)) break;  // the projection did not converge
     const Vec3 nextNormal = gradient(next).normalized();
     const double turned = (nextNormal - normal).norm();
     if (!(turned > 0.0)) break;  // flat: every point of the face is as far along d

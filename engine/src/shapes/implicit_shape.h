@@ -83,6 +83,8 @@ struct ImplicitSolid {
 };
 // Steps of supportNear at most; each halves the angle between normal and d at least.
 inline constexpr int kSupportSteps = 8;
+// supportNear keeps a point only this close to the surface, as a fraction of a cell.
+inline constexpr double kSupportOnSurface = 1e-9;  // [1]
 // supportNear stops when the normal is within this angle of d.
 inline constexpr double kSupportAngle = 1e-10;  // [rad]
 // Central differences' step as a fraction of the solid's largest extent: far above rounding
