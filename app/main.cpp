@@ -16,6 +16,7 @@
 #include "rbsim/integrate/integrator.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/particles/particle_def.h"
+#include "run/output_paths.h"
 #include "run/paths.h"
 #include "render/offscreen_renderer.h"
 #include "render/render_error.h"
@@ -37,14 +38,6 @@ using rbsim::app::RunOptions;
 constexpr std::uint64_t kMaxTraceEvery = 1'000'000'000;  // [steps]
 // --window-frames: 1e9 frames is 190 days at 60 fps; more is surely a typo.
 constexpr std::uint64_t kMaxWindowFrames = 1'000'000'000;  // [frames]
-
-// Whether two output paths name the same file (the same text, or e.g. "a/../b.csv" and "b.csv").
-bool samePath(const std::string& a, const std::string& b) {
-  std::error_code errorA, errorB;
-  const std::filesystem::path pathA = std::filesystem::weakly_canonical(a, errorA);
-  const std::filesystem::path pathB = std::filesystem::weakly_canonical(b, errorB);
-  return a == b || (!errorA && !errorB && pathA == pathB);
-}
 
 // Flags shared by `demo` and `run`. Those that change the scene become --set assignments, so a
 // flag and the scene key it stands for are checked by the same code.
@@ -70,9 +63,10 @@ struct Flags {
     cmd.add_option("--video", run.videoPath, "write the MP4 here (default videos/<name>.mp4)")->check(nonEmpty);
     cmd.add_option("--png-level", pngLevel,
                    "zlib level of the --frames PNGs, 0 (stored, fastest) to 9 (smallest); default 1, "
-                   "see app/render/png_file.h");
+                   "see app/render/png_file.h")
+        ->check(nonEmpty);
     cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here")->check(nonEmpty);
-    cmd.add_option("--trace-every", traceEvery, "trace every K-th step, K from 1 to 1e9");
+    cmd.add_option("--trace-every", traceEvery, "trace every K-th step, K from 1 to 1e9")->check(nonEmpty);
     cmd.add_option("--record", run.recordPath,
                    "record every step's state into this file, for `rbsim replay` (record/recording.h)")
         ->check(nonEmpty);
@@ -98,12 +92,14 @@ struct Flags {
     cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
     cmd.add_flag("--quiet", run.quiet, "print nothing on success");
     cmd.add_flag("--window", window, "open an X11 window with controls instead of writing a video");
-    cmd.add_option("--window-frames", windowFrames, "with --window: close after N frames (scripted runs), N >= 1");
-    cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame");
+    cmd.add_option("--window-frames", windowFrames, "with --window: close after N frames (scripted runs), N >= 1")
+        ->check(nonEmpty);
+    cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame")->check(nonEmpty);
     cmd.add_option("--gl", gl,
                    "off-screen OpenGL: " + rbsim::render::glBackendChoices() + " (default " +
                        rbsim::render::glBackendName(rbsim::render::defaultGlBackend()) +
-                       "; both are Mesa's llvmpipe, egl on the surfaceless platform)");
+                       "; both are Mesa's llvmpipe, egl on the surfaceless platform)")
+        ->check(nonEmpty);
   }
 
   // `framesByDefault`: `demo all` writes PNG frames without --frames (so --png-level applies).
@@ -165,10 +161,6 @@ struct Flags {
     }
     run.render = !noRender;
     if (run.videoPath.empty() && run.render) run.videoPath = defaultVideo;
-    if (!run.tracePath.empty() && !run.videoPath.empty() && samePath(run.tracePath, run.videoPath)) {
-      // Both would write the one file, each corrupting the other.
-      throw InputError("", "--trace " + run.tracePath, "is also the video file; give the trace and the video different names");
-    }
     return run;
   }
 
@@ -201,6 +193,10 @@ struct Flags {
     }
     if (!traceEvery.empty() && run.tracePath.empty()) {
       throw InputError("", "--trace-every without --trace", "it only thins the trace; add --trace FILE.csv");
+    }
+    for (const auto& [flag, given] : {std::pair<const char*, bool>{"--window-frames", !windowFrames.empty()},
+                                      std::pair<const char*, bool>{"--screenshot", !windowOptions.screenshot.empty()}}) {
+      if (given && !window) throw InputError("", std::string(flag) + " without --window", "it only acts on the window; add --window");
     }
   }
 
@@ -295,6 +291,7 @@ int replayRecording(const std::string& path, Flags& flags) {
       throw InputError("", key, "a replay shows the recorded motion: only view keys (camera, size, fps, overlay, plots) may change");
     }
   }
+  rbsim::app::requireRegularInput({"recording", path}, "a recording written by --record");
   rbsim::app::RecordReader reader(path);
   std::vector<std::string> overrides = reader.header().overrides;
   overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
@@ -314,6 +311,9 @@ int replayRecording(const std::string& path, Flags& flags) {
   }
   if (flags.window) {
     flags.windowOptions.quiet = options.quiet;
+    if (!flags.windowOptions.screenshot.empty()) {
+      rbsim::app::checkOutputPaths({{"--screenshot", flags.windowOptions.screenshot}}, {{"recording", path}}, "");
+    }
     rbsim::app::runReplayWindow(phases, reader, path, flags.windowOptions);
     return finishStdout(0);
   }
@@ -392,14 +392,16 @@ int main(int argc, char** argv) {
       options = runFlags.finish("videos/" + std::filesystem::path(scenePath).stem().string() + ".mp4");
       files.push_back(scenePath);
     }
-    if (!flags.window && (!flags.windowFrames.empty() || !flags.windowOptions.screenshot.empty())) {
-      throw InputError("", "--window-frames/--screenshot", "only with --window");
-    }
     if (flags.window) {
       if (!options.recordPath.empty()) {
         throw InputError("", "--record with --window", "not allowed: a window session is not recorded (its Record button writes a video)");
       }
       flags.windowOptions.quiet = options.quiet;
+      if (!flags.windowOptions.screenshot.empty()) {
+        std::vector<rbsim::app::NamedFile> inputs;
+        for (const std::string& file : files) inputs.push_back({"scene", file});
+        rbsim::app::checkOutputPaths({{"--screenshot", flags.windowOptions.screenshot}}, inputs, "");
+      }
       rbsim::app::runWindow({files, options.overrides, title}, flags.windowOptions);
       return finishStdout(0);
     }

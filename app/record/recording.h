@@ -78,6 +78,7 @@ class RecordReader {
   RecordReader& operator=(const RecordReader&) = delete;
 
   const RecordingHeader& header() const { return header_; }
+  const std::string& path() const { return path_; }
   // Puts the next entry into `world`, which must be world `index` of the replayed phase and hold
   // the bodies, particle systems and soft bodies of the recording's. InputError when the file
   // ends (truncated), a block is damaged, or the entry is of another world or shape.

@@ -14,6 +14,7 @@
 #include "render/offscreen_renderer.h"
 #include "run/compare_view.h"
 #include "run/output_budget.h"
+#include "run/output_paths.h"
 #include "run/plot_history.h"
 #include "record/recording.h"
 #include "run/progress.h"
@@ -122,6 +123,27 @@ RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptio
 
 }  // namespace
 
+namespace {
+
+// Every output against every input the phases read (scene files, meshes, the recording) and
+// against each other, before any is opened (run/output_paths.h).
+void checkOutputs(const std::vector<Phase>& phases, const RunOptions& options, bool wantImages, const RecordReader* replay) {
+  std::vector<NamedFile> inputs, outputs;
+  for (const Phase& phase : phases) {
+    inputs.push_back({"scene", phase.file});
+    for (const PhaseWorld& world : phase.worlds) {
+      for (const std::string& mesh : world.scene.files) inputs.push_back({"mesh", mesh});
+    }
+  }
+  if (replay) inputs.push_back({"recording", replay->path()});
+  if (!options.tracePath.empty()) outputs.push_back({"--trace", options.tracePath});
+  if (!options.recordPath.empty()) outputs.push_back({"--record", options.recordPath});
+  if (wantImages && !options.videoPath.empty()) outputs.push_back({"--video", options.videoPath});
+  checkOutputPaths(outputs, inputs, wantImages ? options.framesDir : std::string());
+}
+
+}  // namespace
+
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
                      const FrameObserver& observer, RecordReader* replay) {
   RunSummary summary;
@@ -142,6 +164,14 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
 
   const bool wantImages = options.render && (!options.framesDir.empty() || !options.videoPath.empty());
   checkRunBudgets(phases, *longest, options, wantImages ? totalFrames : 0, totalSteps);
+  checkOutputs(phases, options, wantImages, replay);
+  if (wantImages && !options.framesDir.empty()) {
+    const std::size_t stale = removeOldFrames(options.framesDir);
+    if (stale > 0 && !options.quiet) {
+      std::fprintf(stderr, "rbsim: --frames %s: removed %zu frames (frame_NNNNNN.png) of an earlier run, so that the "
+                   "folder holds this run's alone\n", options.framesDir.c_str(), stale);
+    }
+  }
   // The trace first: opening it is cheap, and a bad path then fails before ffmpeg has started.
   std::optional<TraceWriter> trace;
   if (!options.tracePath.empty()) trace.emplace(options.tracePath);

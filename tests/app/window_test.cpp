@@ -224,7 +224,7 @@ TEST(WindowModeErrors, NoDisplayAndMisplacedFlagsExitTwoWithAMessage) {
   EXPECT_NE(output.find("cannot open the X display"), std::string::npos) << output;
   std::tie(code, output) = run(binary + " run '" + kScene + "' --screenshot /tmp/never.png");
   EXPECT_EQ(code, 2) << output;
-  EXPECT_NE(output.find("only with --window"), std::string::npos) << output;
+  EXPECT_NE(output.find("--screenshot without --window"), std::string::npos) << output;
 }
 
 // `rbsim replay FILE --window` (issue 24): the recording plays in the window with a timeline bar

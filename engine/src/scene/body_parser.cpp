@@ -289,6 +289,13 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
     b.fail("inertia", "expected \"cube\" or \"exact\"");
   }
   const std::string key = shapes != nullptr ? shapeKey(b, baseDir, method) : std::string();
+  if (b.has("shape") && b.raw("shape").is_object()) {
+    const nlohmann::json& shape = b.raw("shape");
+    const auto type = shape.find("type"), file = shape.find("file");
+    if (type != shape.end() && *type == "mesh" && file != shape.end() && file->is_string()) {
+      scene.files.push_back((std::filesystem::path(baseDir) / file->get<std::string>()).lexically_normal().string());
+    }
+  }
   if (const BodyDef* built = key.empty() ? nullptr : shapes->find(key)) {
     // The same keys were built and checked before: share what they made (pointers, not copies).
     def.mesh = built->mesh;

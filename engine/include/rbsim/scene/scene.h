@@ -28,6 +28,7 @@ inline BodyId sceneBodyId(std::size_t index) { return {static_cast<std::uint32_t
 
 struct Scene {
   std::string file;        // where it came from, for messages
+  std::vector<std::string> files;  // every other file it read (meshes), as opened
   std::string title;
   Settings settings;
   double duration = 5.0;   // simulated time to run [s]
