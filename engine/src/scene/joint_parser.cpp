@@ -83,6 +83,9 @@ JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settin
 }
 
 void parseJoints(const JsonObject& root, Scene& scene) {
+  if (root.has("joints") && root.raw("joints").is_array() && root.raw("joints").size() > kMaxJoints) {
+    root.fail("joints", std::to_string(root.raw("joints").size()) + " joints; the limit is " + std::to_string(kMaxJoints));
+  }
   JointBodies bodies;
   for (const BodyDef& b : scene.bodies) {
     bodies.names.push_back(b.name);

@@ -63,5 +63,18 @@ TEST(JointParser, BadValuesNameTheField) {
   EXPECT_EQ(fieldOf("world.solver=pgs"), "joints[0].type");
 }
 
+// More joints than kMaxJoints are refused by their count, before any is read.
+TEST(JointParser, MoreJointsThanTheLimitAreRefusedByTheirCount) {
+  nlohmann::json doc = {{"bodies", {{{"name", "a"}, {"shape", {{"type", "sphere"}, {"radius", 0.1}}}, {"mass", 1.0}}}}};
+  doc["joints"] = nlohmann::json::array();
+  for (int i = 0; i < 1'000'001; ++i) doc["joints"].push_back(nullptr);
+  try {
+    parseScene(doc, "many.json", "");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("joints: 1000001 joints; the limit is 1000000"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace rbsim
