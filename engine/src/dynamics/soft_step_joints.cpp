@@ -128,16 +128,22 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
         wA -= impulse * (iA * axis);
         wB += impulse * (iB * axis);
       };
+      // The angle now, for the motor (which must not drive past a limit) and the limits.
+      const double angle = (def.motor || def.limits) ? hingeAngle(joint, c.base == 0 ? c.baseOrientation : A.orientation, B.orientation) : 0.0;
       if (def.motor && axialMass > 0.0) {  // revolute_joint.c: Cdot = wB - wA - speed, |lambda| <= h tau_max
+        // At or past a stop it drives into, the motor lets go and the stop alone acts: a stop holds
+        // against any motor. Box2D lets a motor stronger than the soft limit's spring push through
+        // (a door driven at 1e6 N m ran 1 rad past its stop); a motor held at zero speed there would
+        // in turn keep the door from springing back to the stop.
+        const bool intoStop = def.limits && ((angle <= def.lowerAngle && def.motorSpeed < 0.0) ||
+                                             (angle >= def.upperAngle && def.motorSpeed > 0.0));
         const double cdot = axis.dot(wB - wA) - def.motorSpeed;
         const double old = joint.motorImpulse;
         const double maxImpulse = h * def.maxMotorTorque;
-        joint.motorImpulse = std::clamp(old - axialMass * cdot, -maxImpulse, maxImpulse);
+        joint.motorImpulse = intoStop ? 0.0 : std::clamp(old - axialMass * cdot, -maxImpulse, maxImpulse);
         applyAxial(joint.motorImpulse - old);
       }
       if (def.limits && axialMass > 0.0) {
-        const Quat baseNow = c.base == 0 ? c.baseOrientation : A.orientation;
-        const double angle = hingeAngle(joint, baseNow, B.orientation);
         // Lower: C = angle - lower >= 0; upper: C = upper - angle >= 0, signs flipped so that
         // both impulses are >= 0. A limit not reached is speculative (the gap may close within
         // the substep, no further); a reached one is soft with bias, rigid in the relax.

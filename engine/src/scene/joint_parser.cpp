@@ -26,7 +26,12 @@ void parseMotor(const JsonObject& j, JointDef& def) {
   if (!m.has("max_torque")) m.fail("max_torque", "missing; the motor's largest torque in N m (>= 0) is required");
   def.motorSpeed = m.requiredNumber("speed");
   def.maxMotorTorque = m.requiredNumber("max_torque");
-  if (!(def.maxMotorTorque >= 0.0)) m.fail("max_torque", "expected a torque >= 0 in N m, got " + formatNumber(def.maxMotorTorque));
+  if (!(std::abs(def.motorSpeed) <= kMaxMotorSpeed)) {
+    m.fail("speed", "expected a speed of at most " + formatNumber(kMaxMotorSpeed) + " rad/s either way, got " + formatNumber(def.motorSpeed));
+  }
+  if (!(def.maxMotorTorque >= 0.0 && def.maxMotorTorque <= kMaxMotorTorque)) {
+    m.fail("max_torque", "expected a torque from 0 to " + formatNumber(kMaxMotorTorque) + " N m, got " + formatNumber(def.maxMotorTorque));
+  }
 }
 
 void parseLimits(const JsonObject& j, JointDef& def) {

@@ -30,6 +30,12 @@ struct JointBodies {
 // scene file could hold 1.6 million of the shortest ({"type":"ball","body_a":"a","body_b":"b"}).
 inline constexpr std::size_t kMaxJoints = 1'000'000;
 
+// A motor's physical ranges: |speed| up to 1e5 rad/s (a million rpm, past any real rotor) and a
+// torque up to 1e12 N m (a hundred thousand times a ship's propeller shaft). Beyond them a motor
+// is a typo, and 1e300 N m overflowed the impulse h tau into a motor that did nothing.
+inline constexpr double kMaxMotorSpeed = 1e5;    // [rad/s]
+inline constexpr double kMaxMotorTorque = 1e12;  // [N m]
+
 // One entry of "joints"; `solver` refuses joints under PGS, which does not solve them.
 JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settings& settings);
 // "joints": [{...}, ...] into scene.joints.

@@ -280,6 +280,46 @@ TEST(Joints, LimitsHoldTheAngle) {
   EXPECT_GT(highest, 0.29);  // it did reach the limit
 }
 
+// A door on a hinge with stops at +-0.5 rad, driven by a motor of 1e6 N m at 5 rad/s either way:
+// it comes to rest against the stop it is driven into, at 1/60 and 1/240 s. The motor stops
+// pushing at a stop, so the stop holds whatever its torque.
+TEST(Joints, LimitsHoldAgainstAnyMotor) {
+  for (double dt : {1.0 / 60.0, 1.0 / 240.0}) {
+    for (double speed : {5.0, -5.0}) {
+      Settings s = pendulumSettings(dt);
+      s.gravity = Vec3::Zero();
+      World world(s);
+      BodyDef door = boxDef(Vec3(1.0, 2.0, 0.05), 20.0, "door");
+      door.position = Vec3(0.5, 0.0, 0.0);
+      world.addBody(door);
+      JointDef hinge;
+      hinge.bodyA = world.idAt(0);
+      hinge.type = JointDef::Type::Hinge;
+      hinge.anchor = Vec3::Zero();
+      hinge.axis = Vec3::UnitY();
+      hinge.motor = true;
+      hinge.motorSpeed = speed;
+      hinge.maxMotorTorque = 1e6;
+      hinge.limits = true;
+      hinge.lowerAngle = -0.5;
+      hinge.upperAngle = 0.5;
+      world.addJoint(hinge);
+      double widest = 0.0;
+      for (int i = 0; i < static_cast<int>(std::lround(2.0 / dt)); ++i) {
+        world.step();
+        const Vec3 x = world.bodies()[0].position();
+        widest = std::max(widest, std::abs(std::atan2(x.z(), x.x())));  // the door's turn about y
+      }
+      const Vec3 x = world.bodies()[0].position();
+      const double final = std::abs(std::atan2(x.z(), x.x()));
+      std::printf("motor %+.0f rad/s at 1e6 N m, dt %.5f s: widest %.5f rad, at rest %.5f rad\n", speed, dt, widest, final);
+      EXPECT_LT(widest, 0.5 + 0.01) << "dt " << dt << ", speed " << speed;  // the soft stop's give at 5 rad/s
+      EXPECT_NEAR(final, 0.5, 1e-3) << "dt " << dt << ", speed " << speed;
+      EXPECT_LT(world.bodies()[0].angularVelocity().norm(), 1e-3) << "dt " << dt << ", speed " << speed;
+    }
+  }
+}
+
 // Seed 004: a door (1 m wide, 2 m tall, 0.05 m thick, 20 kg) hinged at its edge about the
 // vertical, pushed at its handle 0.9 m from the hinge by 10 N normal to it: angular acceleration
 // tau / I_hinge with I_hinge = m (w^2 + t^2) / 12 + m (w / 2)^2, whatever the integrator.

@@ -59,6 +59,10 @@ TEST(JointParser, BadValuesNameTheField) {
   EXPECT_EQ(fieldOf("joints.hinge.body_b=nobody"), "joints[0].body_b");
   EXPECT_EQ(fieldOf("joints.hinge.limits=[0.5,0.2]"), "joints[0].limits");
   EXPECT_EQ(fieldOf("joints.hinge.motor.max_torque=-1"), "joints[0].motor.max_torque");
+  EXPECT_EQ(fieldOf("joints.hinge.motor.max_torque=1e300"), "joints[0].motor.max_torque");  // past kMaxMotorTorque
+  EXPECT_EQ(fieldOf("joints.hinge.motor.max_torque=1e12"), "accepted");
+  EXPECT_EQ(fieldOf("joints.hinge.motor.speed=-2e5"), "joints[0].motor.speed");  // past kMaxMotorSpeed
+  EXPECT_EQ(fieldOf("joints.hinge.motor.speed=-1e5"), "accepted");
   EXPECT_EQ(fieldOf("joints[1].axis=[0,1,0]"), "joints[1].axis");  // a ball joint has no axis
   EXPECT_EQ(fieldOf("world.solver=pgs"), "joints[0].type");
 }
