@@ -14,7 +14,7 @@ trap 'kill $pid 2> /dev/null || true' EXIT
 window=$(timeout 30 xdotool search --sync --onlyvisible --name "window test: drag" | head -1)
 [ -n "$window" ] || { echo "drag_session: the window did not appear" >&2; exit 1; }
 xdotool mousemove --window "$window" 386 180
-sleep 0.3
+sleep 1  # the first frames drawn, with the box under the pointer, on a loaded machine too
 if [ "$mode" != none ]; then
   xdotool mousedown 1
   for y in 170 155 140 125 110 95 80 65 60; do
@@ -24,7 +24,7 @@ if [ "$mode" != none ]; then
   sleep 1  # time for the spring to pull the box up, in a sanitizer build too
   if [ "$mode" = release ]; then
     xdotool mouseup 1
-    sleep 0.3
+    sleep 1  # frames enough for the released box to fly off, on a loaded machine too
   fi
 fi
 xdotool key --window "$window" q 2> /dev/null
