@@ -21,6 +21,7 @@ void bindRendering(py::module_& m);  // py_render.cpp
 namespace {
 
 using rbsim::BodyId;
+using rbsim::python::PyBodyId;
 using rbsim::python::PyWorld;
 
 // The exception types live as long as the module (they are its attributes); plain handles avoid
@@ -45,8 +46,9 @@ void translate(std::exception_ptr error) {
   }
 }
 
-std::string idRepr(const BodyId& id) {
-  return "BodyId(slot=" + std::to_string(id.slot) + ", generation=" + std::to_string(id.generation) + ")";
+std::string idRepr(const PyBodyId& id) {
+  return "BodyId(slot=" + std::to_string(id.id.slot) + ", generation=" + std::to_string(id.id.generation) +
+         ", world=" + std::to_string(id.world) + ")";
 }
 
 py::dict settingsDict(const rbsim::Settings& s) {
@@ -87,11 +89,17 @@ PYBIND11_MODULE(rbsim, m) {
   m.def("integrators", &rbsim::integratorNames, "the names world.integrator accepts");
   m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs"}; }, "the names world.solver accepts");
 
-  py::class_<BodyId>(m, "BodyId", "A body's handle: stays valid while the body exists (Box2D's b2BodyId)")
-      .def_readonly("slot", &BodyId::slot)
-      .def_readonly("generation", &BodyId::generation)
-      .def("__eq__", [](const BodyId& a, const BodyId& b) { return a == b; })
-      .def("__hash__", [](const BodyId& id) { return (static_cast<std::uint64_t>(id.generation) << 32) | id.slot; })
+  py::class_<PyBodyId>(m, "BodyId",
+                       "A body's handle: stays valid while the body exists (Box2D's b2BodyId), in the World that gave it")
+      .def_property_readonly("slot", [](const PyBodyId& id) { return id.id.slot; })
+      .def_property_readonly("generation", [](const PyBodyId& id) { return id.id.generation; })
+      .def_readonly("world", &PyBodyId::world, "the number of the World that gave it")
+      .def("__eq__", [](const PyBodyId& a, const py::object& b) {
+        return py::isinstance<PyBodyId>(b) && a.id == b.cast<PyBodyId>().id && a.world == b.cast<PyBodyId>().world;
+      })
+      .def("__hash__", [](const PyBodyId& id) {
+        return std::hash<std::uint64_t>{}((static_cast<std::uint64_t>(id.id.generation) << 32) | id.id.slot) ^ (id.world * 0x9e3779b97f4a7c15ULL);
+      })
       .def("__repr__", &idRepr);
 
   py::class_<rbsim::Scene>(m, "Scene", "A scene file, parsed (rbsim.load_scene)")
@@ -152,9 +160,16 @@ PYBIND11_MODULE(rbsim, m) {
            "(k, 4) the body's orientation (w, x, y, z) t seconds from now, for each t, by the closed-form "
            "torque-free motion (Jacobi elliptic functions): the reference for integrator errors")
       .def("step", &PyWorld::step, py::arg("steps") = 1, "advance by steps x dt")
-      .def("is_valid", [](const PyWorld& w, BodyId id) { return w.world().isValid(id); })
-      .def("index_of", &PyWorld::index, py::arg("body"), "the body's row in the state arrays now")
-      .def("id_at", [](const PyWorld& w, std::size_t i) { return w.world().idAt(i); }, py::arg("index"))
+      .def("is_valid", [](const PyWorld& w, const PyBodyId& id) { return id.world == w.serial() && w.world().isValid(id.id); },
+           py::arg("body"))
+      .def("index_of", [](const PyWorld& w, const PyBodyId& id) { return w.index(id, "World.index_of()"); }, py::arg("body"),
+           "the body's row in the state arrays now")
+      .def("id_at", [](const PyWorld& w, std::size_t i) {
+        if (i >= w.world().bodies().size()) {
+          throw rbsim::InputError("World.id_at()", "index", "expected a row below " + std::to_string(w.world().bodies().size()));
+        }
+        return w.wrap(w.world().idAt(i));
+      }, py::arg("index"))
       .def("__len__", [](const PyWorld& w) { return w.world().bodies().size(); })
       .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); }, "[s]")
       .def_property_readonly("step_count", [](const PyWorld& w) { return w.world().stepCount(); })

@@ -61,7 +61,13 @@ class PyRenderer {
   py::array_t<std::uint8_t> render(const PyWorld& world, const py::object& selected, const py::kwargs& view) {
     Scene scene = world.scene();
     parseViewBlock(toJson(view, kRenderCall, ""), kRenderCall, "", scene.view);
-    if (!selected.is_none()) scene.view.selected = world.index(selected.cast<BodyId>());
+    if (!selected.is_none()) {
+      if (!py::isinstance<PyBodyId>(selected)) {
+        throw InputError(kRenderCall, "selected", "expected a BodyId (from add_body or id_at), got " +
+                                                      std::string(py::str(py::type::of(selected).attr("__name__"))));
+      }
+      scene.view.selected = world.index(selected.cast<PyBodyId>(), kRenderCall);
+    }
     const render::FrameData frame = app::buildFrame(world.world(), scene, "");
     const std::vector<std::uint8_t>& rgba = renderer_->render(frame);
     py::array_t<std::uint8_t> out({py::ssize_t{renderer_->height()}, py::ssize_t{renderer_->width()}, py::ssize_t{4}});

@@ -40,6 +40,9 @@ Eigen::VectorXd finiteNumbers(const py::object& value, std::size_t count, const 
   return out;
 }
 
+// Worlds made so far: each World's ids carry its number (the GIL serialises construction).
+std::uint64_t worldsMade = 0;
+
 }  // namespace
 
 PyWorld PyWorld::fromKeywords(const py::kwargs& world) {
@@ -50,21 +53,31 @@ PyWorld PyWorld::fromKeywords(const py::kwargs& world) {
   return PyWorld(std::move(scene));
 }
 
-PyWorld::PyWorld(Scene scene) : scene_(std::move(scene)), world_(buildWorld(scene_)) {
+PyWorld::PyWorld(Scene scene) : scene_(std::move(scene)), world_(buildWorld(scene_)), serial_(++worldsMade) {
   for (const RigidBody& body : world_.bodies()) names_.insert(body.name());
 }
 
-std::size_t PyWorld::index(BodyId id) const {
-  if (!world_.isValid(id)) {
-    throw InputError("", "body", "no body has this id (slot " + std::to_string(id.slot) + ", generation " +
-                                     std::to_string(id.generation) + "): it was removed, or is of another World");
+std::size_t PyWorld::index(const PyBodyId& id, const char* call) const {
+  if (id.world != serial_) {
+    throw InputError(call, "body", "this id is of another World (World " + std::to_string(id.world) + "; this is World " +
+                                       std::to_string(serial_) + "); ids name bodies of the World that gave them");
   }
-  return world_.indexOf(id);
+  if (!world_.isValid(id.id)) {
+    throw InputError(call, "body", "no body has this id (slot " + std::to_string(id.id.slot) + ", generation " +
+                                       std::to_string(id.id.generation) + "): it was removed");
+  }
+  return world_.indexOf(id.id);
 }
 
-BodyId PyWorld::addBody(const py::kwargs& body) {
+PyBodyId PyWorld::addBody(const py::kwargs& body) {
   const std::size_t index = world_.bodies().size();
-  const BodyBlock block = parseBodyBlock(toJson(body, kBodyCall, ""), kBodyCall, "", "", world_.settings(), index);
+  nlohmann::json keys = toJson(body, kBodyCall, "");
+  if (keys.is_object() && !keys.contains("name")) {
+    std::size_t n = index;
+    while (names_.count("body" + std::to_string(n)) != 0) ++n;
+    keys["name"] = "body" + std::to_string(n);
+  }
+  const BodyBlock block = parseBodyBlock(keys, kBodyCall, "", "", world_.settings(), index);
   if (names_.count(block.def.name) != 0) {
     throw InputError(kBodyCall, "name", "duplicate body name \"" + block.def.name + "\"");
   }
@@ -85,13 +98,13 @@ BodyId PyWorld::addBody(const py::kwargs& body) {
     s.body = id;
     world_.addSpring(s);
   }
-  return id;
+  return wrap(id);
 }
 
-void PyWorld::removeBody(BodyId id) {
-  const std::size_t i = index(id);
+void PyWorld::removeBody(const PyBodyId& id) {
+  const std::size_t i = index(id, "World.remove_body()");
   names_.erase(world_.bodies()[i].name());
-  world_.destroyBody(id);
+  world_.destroyBody(id.id);
   // The World moved its last body into the hole (world.h); the names of inertia methods follow.
   scene_.inertiaMethods[i] = scene_.inertiaMethods.back();
   scene_.inertiaMethods.pop_back();
@@ -103,15 +116,15 @@ std::size_t PyWorld::addPlane(const py::kwargs& plane) {
   return world_.planes().size() - 1;
 }
 
-void PyWorld::addForce(BodyId id, const py::kwargs& force) {
-  const std::size_t i = index(id);
+void PyWorld::addForce(const PyBodyId& id, const py::kwargs& force) {
+  const std::size_t i = index(id, kForceCall);
   const RigidBody& body = world_.bodies()[i];
   if (!body.isDynamic()) {
     throw InputError(kForceCall, "body", "\"" + body.name() + "\" is " + (body.isStatic() ? "static" : "kinematic") +
                                              ": forces act on dynamic bodies only");
   }
   ScriptedForce f = parseForceBlock(toJson(force, kForceCall, ""), kForceCall, "", i, body.fileFrame().axes);
-  f.body = id;
+  f.body = id.id;
   world_.addForce(f);
 }
 
@@ -124,10 +137,10 @@ std::size_t PyWorld::addJoint(const py::kwargs& joint) {
   }
 }
 
-void PyWorld::setPose(BodyId id, const py::object& position, const py::object& orientation,
+void PyWorld::setPose(const PyBodyId& id, const py::object& position, const py::object& orientation,
                       const py::object& velocity, const py::object& angularVelocity) {
-  index(id);  // a stale id is an input error, not an invalid_argument
-  RigidBody& body = world_.body(id);
+  index(id, kPoseCall);  // a stale id is an input error, not an invalid_argument
+  RigidBody& body = world_.body(id.id);
   if (!body.isDynamic() && !body.isKinematic() && (!velocity.is_none() || !angularVelocity.is_none())) {
     throw InputError(kPoseCall, "velocity", "a static body cannot move");
   }
@@ -145,6 +158,9 @@ void PyWorld::setPose(BodyId id, const py::object& position, const py::object& o
   }
   if (!velocity.is_none()) v = Vec3(finiteNumbers(velocity, 3, "velocity"));
   if (!angularVelocity.is_none()) w = Vec3(finiteNumbers(angularVelocity, 3, "angular_velocity"));
+  // A scene's ranges, so that a pose set from Python is one a scene could give.
+  checkPoseRanges(kPoseCall, x ? &*x : nullptr, v ? &*v : nullptr, w ? &*w : nullptr,
+                  0.5 * (body.mesh().boundsMax() - body.mesh().boundsMin()).norm());
   if (x) body.setPosition(*x);
   if (q) body.setOrientation(*q);
   if (v) body.setVelocity(*v);
@@ -160,8 +176,8 @@ void PyWorld::step(long long steps) {
   }
 }
 
-py::array_t<double> PyWorld::exactRotation(BodyId id, const py::array_t<double, py::array::c_style | py::array::forcecast>& times) const {
-  const RigidBody& body = world_.bodies()[index(id)];
+py::array_t<double> PyWorld::exactRotation(const PyBodyId& id, const py::array_t<double, py::array::c_style | py::array::forcecast>& times) const {
+  const RigidBody& body = world_.bodies()[index(id, "World.exact_rotation()")];
   // The flow moves the principal frame (free_flight_error.cpp does the same for the overlay).
   const Quat principalToBody(body.principalAxes());
   const FreeRigidBodyFlow flow(body.orientation() * principalToBody, body.state().angularMomentum, body.principalMoments());

@@ -3,6 +3,7 @@
 // names a renderer reads), built from a scene file or from keyword arguments that are blocks of
 // the scene format (engine/include/rbsim/scene/scene_parts.h), so Python meets the same keys and messages as
 // the command line.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -15,36 +16,51 @@
 
 namespace rbsim::python {
 
+// A body's id as Python holds it: the World's BodyId and which World gave it, so that an id of
+// one World is refused by another instead of naming a body of its own (issue 37).
+struct PyBodyId {
+  BodyId id;
+  std::uint64_t world = 0;  // PyWorld::serial() of the World that gave it
+};
+
 class PyWorld {
  public:
   // World(**world_block): the keys of a scene's "world" block (dt, integrator, gravity, ...).
   static PyWorld fromKeywords(const pybind11::kwargs& world);
   explicit PyWorld(Scene scene);
 
-  BodyId addBody(const pybind11::kwargs& body);  // the keys of one entry of "bodies"
-  void removeBody(BodyId id);
+  // The keys of one entry of "bodies"; without "name", the first of body<N>, N = the body count
+  // and up, that no body has (a removed body's default name may be taken again, a living one's not).
+  PyBodyId addBody(const pybind11::kwargs& body);
+  void removeBody(const PyBodyId& id);
   std::size_t addPlane(const pybind11::kwargs& plane);  // the keys of one entry of "planes"
-  void addForce(BodyId id, const pybind11::kwargs& force);  // the keys of one entry of "forces"
+  void addForce(const PyBodyId& id, const pybind11::kwargs& force);  // the keys of one entry of "forces"
   std::size_t addJoint(const pybind11::kwargs& joint);      // the keys of one entry of "joints"
   // Sets any of x, q (w, x, y, z: the state's own, as World.q reads), v and omega now, as seed
-  // 004's manual change does: derived quantities follow and the body wakes.
-  void setPose(BodyId id, const pybind11::object& position, const pybind11::object& orientation,
+  // 004's manual change does: derived quantities follow and the body wakes. The values meet a
+  // scene's ranges: coordinates within 1e6 m, speeds and the surface's speed of turning below c.
+  void setPose(const PyBodyId& id, const pybind11::object& position, const pybind11::object& orientation,
                const pybind11::object& velocity, const pybind11::object& angularVelocity);
   void step(long long steps);  // steps >= 0
   // The body's orientation (w, x, y, z) t [s] from now for each t of `times`, by the closed-form
   // torque-free motion (integrate/free_rigid_body.h) from its state now: the reference the
   // integrators' errors are measured against.
-  pybind11::array_t<double> exactRotation(BodyId id, const pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>& times) const;
+  pybind11::array_t<double> exactRotation(const PyBodyId& id, const pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>& times) const;
 
   World& world() { return world_; }
   const World& world() const { return world_; }
   const Scene& scene() const { return scene_; }
-  std::size_t index(BodyId id) const;  // throws InputError (field "body") on a stale id
+  // The body's row now; InputError naming `call` and the field "body" for an id of another World
+  // or of a removed body.
+  std::size_t index(const PyBodyId& id, const char* call) const;
+  PyBodyId wrap(BodyId id) const { return {id, serial_}; }
+  std::uint64_t serial() const { return serial_; }
 
  private:
   Scene scene_;  // settings, view, looks; inertiaMethods kept per body in the World's order
   World world_;
   std::unordered_set<std::string> names_;  // every body's, for add_body's duplicate check
+  std::uint64_t serial_;                   // this World's number among those the module made
 };
 
 // Every body's state as NumPy arrays, one row per body in World order (python/src/state_arrays.cpp).

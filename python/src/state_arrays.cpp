@@ -145,12 +145,12 @@ void bindStateArrays(py::class_<PyWorld>& c) {
           "every state array at once, with the time t, as a dict")
       .def(
           "vertices",
-          [](const PyWorld& w, BodyId id) { return pointArray(w.world().bodies()[w.index(id)].worldVertices()); },
+          [](const PyWorld& w, const PyBodyId& id) { return pointArray(w.world().bodies()[w.index(id, "World.vertices()")].worldVertices()); },
           py::arg("body"), "(k, 3) the body's vertices in world frame, p' = R p + x (seed 004) [m]")
       .def(
           "body_vertices",
-          [](const PyWorld& w, BodyId id) {
-            const RigidBody& b = w.world().bodies()[w.index(id)];
+          [](const PyWorld& w, const PyBodyId& id) {
+            const RigidBody& b = w.world().bodies()[w.index(id, "World.body_vertices()")];
             std::vector<Vec3> points(b.vertexCount());
             for (std::size_t i = 0; i < points.size(); ++i) points[i] = b.bodyVertex(i);
             return pointArray(points);

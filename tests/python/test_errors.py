@@ -111,6 +111,56 @@ def test_duplicate_name_and_stale_id():
         assert e.value.field == "body"
 
 
+def test_an_id_of_another_world_is_refused_naming_the_call():
+    """Ids carry their World (issue 37): before, remove_body with another World's id removed a
+    body of this one."""
+    first, second = rbsim.World(), rbsim.World()
+    ball = dict(shape={"type": "sphere", "radius": 0.5}, mass=1)
+    mine = first.add_body(name="mine", **ball)
+    theirs = second.add_body(name="theirs", **ball)
+    assert mine.slot == theirs.slot and mine.generation == theirs.generation and mine != theirs
+    for name, call in (("World.remove_body()", lambda: first.remove_body(theirs)),
+                       ("World.set_pose()", lambda: first.set_pose(theirs, position=[0, 1, 0])),
+                       ("World.add_force()", lambda: first.add_force(theirs, force=[1, 0, 0])),
+                       ("World.index_of()", lambda: first.index_of(theirs)),
+                       ("World.vertices()", lambda: first.vertices(theirs))):
+        with pytest.raises(rbsim.InputError) as e:
+            call()
+        assert e.value.file == name and e.value.field == "body" and "another World" in e.value.problem, str(e.value)
+        assert "command line" not in str(e.value)
+    assert first.names == ["mine"] and not first.is_valid(theirs) and first.is_valid(mine)
+    first.remove_body(mine)
+    with pytest.raises(rbsim.InputError) as e:
+        first.remove_body(mine)
+    assert e.value.file == "World.remove_body()" and "removed" in e.value.problem
+
+
+def test_default_names_stay_unique_after_removals():
+    world = rbsim.World()
+    ball = dict(shape={"type": "sphere", "radius": 0.5}, mass=1)
+    ids = [world.add_body(**ball) for _ in range(3)]
+    world.remove_body(ids[0])
+    added = [world.add_body(**ball) for _ in range(3)]  # refused as duplicates before
+    assert len(set(world.names)) == len(world.names) == 5
+    assert all(world.is_valid(i) for i in ids[1:] + added)
+
+
+@pytest.mark.parametrize("keywords,field", [
+    (dict(velocity=[1e300, 0, 0]), "velocity"),            # gave inf before
+    (dict(velocity=[3e8, 0, 0]), "velocity"),              # faster than light
+    (dict(position=[2e6, 0, 0]), "position"),              # past the scene's 1e6 m
+    (dict(angular_velocity=[0, 1e10, 0]), "angular_velocity"),
+])
+def test_set_pose_applies_the_scenes_ranges(keywords, field):
+    world = rbsim.World()
+    body = world.add_body(shape={"type": "sphere", "radius": 0.5}, mass=1)
+    before = world.x.copy()
+    with pytest.raises(rbsim.InputError) as e:
+        world.set_pose(body, **keywords)
+    assert e.value.field == field and e.value.file == "World.set_pose()"
+    assert (world.x == before).all() and np.isfinite(world.v).all()
+
+
 def test_bad_plane_force_pose_and_steps():
     world = rbsim.World()
     with pytest.raises(rbsim.InputError) as e:

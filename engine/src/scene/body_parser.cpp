@@ -27,7 +27,6 @@ namespace rbsim::scene_detail {
 namespace {
 
 // Why a coordinate may not exceed kMaxCoordinate, for messages.
-constexpr const char* kFarFromOrigin = "beyond it a double cannot resolve the contact tolerances";
 
 Frame parseFrame(const JsonObject& o, const char* key, Frame fallback) {
   const std::string name = o.string(key, fallback == Frame::Body ? "body" : "world");

@@ -9,7 +9,6 @@ namespace rbsim::scene_detail {
 
 namespace {
 
-constexpr const char* kFarFromOrigin = "beyond it a double cannot resolve the contact tolerances";
 
 // A required length [m] of a function: positive and within kMaxCoordinate.
 double length(const JsonObject& o, const char* key) {

@@ -11,6 +11,8 @@ namespace rbsim {
 // Positions, anchors and points on planes [m]. The contact tolerances (5 mm slop, millimetre
 // margins) need positions resolved far below a millimetre; ulp(1e6 m) = 1.2e-10 m.
 inline constexpr double kMaxCoordinate = 1e6;  // [m]
+// Why, in the words of the messages that refuse a coordinate beyond it.
+inline constexpr const char* kFarFromOrigin = "beyond it a double cannot resolve the contact tolerances";
 // No body moves faster than light: a larger speed is a typo or an attempt to overflow.
 inline constexpr double kMaxSpeed = 299'792'458.0;  // [m/s], c
 // Masses and principal moments of inertia [kg, kg m^2], and their inverses, at most this: the

@@ -7,6 +7,7 @@
 
 #include "rbsim/io/input_error.h"
 #include "scene/body_parser.h"
+#include "scene/input_ranges.h"
 #include "scene/joint_parser.h"
 
 namespace rbsim {
@@ -216,6 +217,21 @@ JointDef parseJointBlock(const nlohmann::json& joint, const std::string& file, c
     bodies.ids.push_back(world.idAt(bodies.ids.size()));
   }
   return scene_detail::parseJoint(JsonObject(joint, file, path, scene_detail::kJointKeys), bodies, world.settings());
+}
+
+void checkPoseRanges(const std::string& call, const Vec3* position, const Vec3* velocity, const Vec3* angularVelocity,
+                     double radius) {
+  if (position && !(position->cwiseAbs().maxCoeff() <= kMaxCoordinate)) {
+    throw InputError(call, "position", "expected coordinates within " + formatNumber(kMaxCoordinate) +
+                                           " m of the origin; " + kFarFromOrigin);
+  }
+  if (velocity && !(velocity->stableNorm() <= kMaxSpeed)) {
+    throw InputError(call, "velocity", "|v| = " + formatNumber(velocity->stableNorm()) + " m/s; expected less than the speed of light");
+  }
+  if (angularVelocity && !(angularVelocity->stableNorm() * radius <= kMaxSpeed)) {
+    throw InputError(call, "angular_velocity", "its surface moves at |omega| r = " + formatNumber(angularVelocity->stableNorm()) +
+                                                   " rad/s x " + formatNumber(radius) + " m, faster than light; expected a smaller spin");
+  }
 }
 
 }  // namespace rbsim

@@ -59,6 +59,12 @@ void parseViewFields(const JsonObject& v, ViewDesc& view);
 // What a single picture of a view block uses, over `view`: "camera", "overlay", "wireframe",
 // "axes", "grid" and "caption" (a picture has no frame rate, its size is the renderer's, and it
 // has no history to plot).
+// A pose set by hand (Python's World.set_pose) within a scene's ranges: coordinates within 1e6 m
+// of the origin, |v| and the surface's speed of turning |omega| radius below the speed of light.
+// InputError naming `call` and the field ("position", "velocity", "angular_velocity").
+void checkPoseRanges(const std::string& call, const Vec3* position, const Vec3* velocity, const Vec3* angularVelocity,
+                     double radius);
+
 void parseViewBlock(const nlohmann::json& block, const std::string& file, const std::string& path, ViewDesc& view);
 
 }  // namespace rbsim
