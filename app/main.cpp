@@ -296,7 +296,9 @@ int replayRecording(const std::string& path, Flags& flags) {
   std::vector<std::string> overrides = reader.header().overrides;
   overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
   std::vector<rbsim::app::Phase> phases;
-  for (const rbsim::app::RecordedPhase& p : reader.header().phases) {
+  for (std::size_t i = 0; i < reader.header().phases.size(); ++i) {
+    const rbsim::app::RecordedPhase& p = reader.header().phases[i];
+    reader.checkFiles(i);
     phases.push_back(rbsim::app::parsePhaseText(p.text, p.file, p.baseDir, overrides));
     // Contacts and boxes come from collision detection, which a replay does not run.
     bool dropped = false;

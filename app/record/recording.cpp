@@ -1,6 +1,7 @@
 #include "record/recording.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 
@@ -43,6 +44,19 @@ void appendVec(std::vector<std::uint8_t>& out, const Vec3& v) {
 
 }  // namespace
 
+RecordedFile recordedFileOf(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) throw InputError(path, "--record", std::string("cannot read it to checksum it (") + std::strerror(errno) + ")");
+  RecordedFile out{std::filesystem::absolute(path).lexically_normal().string(), 0, 0};
+  std::vector<std::uint8_t> buffer(std::size_t{1} << 16);
+  for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), f)) > 0;) {
+    out.crc32 = libdeflate_crc32(out.crc32, buffer.data(), n);
+    out.bytes += n;
+  }
+  std::fclose(f);
+  return out;
+}
+
 RecordWriter::RecordWriter(const std::string& path, const RecordingHeader& header) : path_(path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   std::error_code ec;
@@ -50,7 +64,11 @@ RecordWriter::RecordWriter(const std::string& path, const RecordingHeader& heade
   file_ = std::fopen(path.c_str(), "wb");
   if (file_ == nullptr) throw InputError(path, "--record", std::string("cannot create the recording (") + std::strerror(errno) + ")");
   nlohmann::json phases = nlohmann::json::array();
-  for (const RecordedPhase& p : header.phases) phases.push_back({{"file", p.file}, {"base_dir", p.baseDir}, {"text", p.text}});
+  for (const RecordedPhase& p : header.phases) {
+    nlohmann::json files = nlohmann::json::array();
+    for (const RecordedFile& f : p.files) files.push_back({{"path", f.path}, {"bytes", f.bytes}, {"crc32", f.crc32}});
+    phases.push_back({{"file", p.file}, {"base_dir", p.baseDir}, {"text", p.text}, {"files", files}});
+  }
   const std::string text =
       nlohmann::json{{"rbsim", header.rbsimVersion}, {"title", header.title}, {"overrides", header.overrides},
                      {"phases", phases}}.dump();
@@ -59,6 +77,8 @@ RecordWriter::RecordWriter(const std::string& path, const RecordingHeader& heade
   const std::uint64_t size = text.size();
   put(&size, sizeof size);
   put(text.data(), text.size());
+  const std::uint32_t crc = libdeflate_crc32(0, text.data(), text.size());
+  put(&crc, sizeof crc);
   compressor_ = libdeflate_alloc_compressor(kDeflateLevel);
   raw_.reserve(kBlockBytes + 4096);
 }
@@ -155,13 +175,22 @@ RecordReader::RecordReader(const std::string& path) : path_(path) {
   if (size > kMaxHeaderBytes) fail("its header claims " + std::to_string(size) + " bytes; a recording's is at most 1 GiB");
   std::string text(size, '\0');
   if (std::fread(text.data(), 1, size, file_) != size) fail("truncated in its header");
+  std::uint32_t crc = 0;
+  if (std::fread(&crc, sizeof crc, 1, file_) != 1) fail("truncated in its header");
+  if (crc != libdeflate_crc32(0, text.data(), text.size())) {
+    fail("its header (the scenes and settings it ran) does not match its checksum: it was edited or damaged");
+  }
   try {
     const nlohmann::json h = nlohmann::json::parse(text);
     header_.rbsimVersion = h.at("rbsim").get<std::string>();
     header_.title = h.at("title").get<std::string>();
     header_.overrides = h.at("overrides").get<std::vector<std::string>>();
     for (const nlohmann::json& p : h.at("phases")) {
-      header_.phases.push_back({p.at("file").get<std::string>(), p.at("base_dir").get<std::string>(), p.at("text").get<std::string>()});
+      RecordedPhase phase{p.at("file").get<std::string>(), p.at("base_dir").get<std::string>(), p.at("text").get<std::string>(), {}};
+      for (const nlohmann::json& f : p.at("files")) {
+        phase.files.push_back({f.at("path").get<std::string>(), f.at("bytes").get<std::uint64_t>(), f.at("crc32").get<std::uint32_t>()});
+      }
+      header_.phases.push_back(std::move(phase));
     }
   } catch (const nlohmann::json::exception& e) {
     fail(std::string("its header is damaged (") + e.what() + ")");
@@ -188,6 +217,9 @@ bool RecordReader::loadBlock() {
   }
   if (sizes[0] == 0) {
     if (std::fread(&endCount_, sizeof endCount_, 1, file_) != 1) fail("truncated at its end marker");
+    // Every byte of the end is checked: its two copies of the count agree, and nothing follows.
+    if (sizes[1] != 0 || sizes[2] != static_cast<std::uint32_t>(endCount_)) fail("its end marker is damaged");
+    if (std::fgetc(file_) != EOF) fail("has data after its end marker: it is damaged or two files were joined");
     ended_ = true;
     return false;
   }
@@ -232,7 +264,22 @@ std::size_t RecordReader::entryLength() const {
   return at - offset_;
 }
 
-void RecordReader::restoreNext(std::size_t index, World& world) {
+void RecordReader::checkFiles(std::size_t phase) const {
+  for (const RecordedFile& recorded : header_.phases.at(phase).files) {
+    RecordedFile now;
+    try {
+      now = recordedFileOf(recorded.path);
+    } catch (const InputError&) {
+      fail("its scene read " + recorded.path + ", which is gone or unreadable now");
+    }
+    if (now.bytes != recorded.bytes || now.crc32 != recorded.crc32) {
+      fail("its scene read " + recorded.path + ", which has changed since it was recorded (" + std::to_string(recorded.bytes) +
+           " bytes then, " + std::to_string(now.bytes) + " now; CRC-32 differs): the poses would be drawn on another mesh");
+    }
+  }
+}
+
+void RecordReader::restoreNext(std::size_t index, std::size_t worldCount, World& world) {
   // Entries come in the order the recording run stepped its worlds. A replay at another frame
   // rate steps a compared phase's worlds in another order, so entries of the others wait.
   if (index >= pending_.size()) pending_.resize(index + 1);
@@ -243,14 +290,23 @@ void RecordReader::restoreNext(std::size_t index, World& world) {
     std::uint16_t owner = 0;
     const std::size_t length = entryLength();
     std::memcpy(&owner, block_.data() + offset_, sizeof owner);
-    if (owner >= kMaxRecordedWorlds) fail("an entry names world " + std::to_string(owner) + ": the file is damaged");
+    if (owner >= worldCount) {
+      fail("an entry names world " + std::to_string(owner) + ", and the scene has " + std::to_string(worldCount) +
+           (worldCount == 1 ? " world" : " worlds") + ": the recording does not belong to it, or is damaged");
+    }
     if (owner >= pending_.size()) pending_.resize(owner + 1);
+    pendingBytes_ += length;
+    if (pendingBytes_ > kMaxPendingBytes) {
+      fail("entries of other worlds run more than " + std::to_string(kMaxPendingBytes >> 20) + " MiB ahead of world " +
+           std::to_string(index) + "'s: the recording is damaged");
+    }
     pending_[owner].emplace_back(block_.begin() + static_cast<std::ptrdiff_t>(offset_),
                                  block_.begin() + static_cast<std::ptrdiff_t>(offset_ + length));
     offset_ += length;
   }
   entry_ = std::move(pending_[index].front());
   pending_[index].pop_front();
+  pendingBytes_ -= entry_.size();
   restoreEntry(index, world, /*nextStep=*/true);
   ++entries_;
 }
@@ -291,6 +347,16 @@ void RecordReader::restoreEntry(std::size_t index, World& world, bool nextStep) 
     std::uint8_t awake = 0;
     get(awake);
     awake_[i] = static_cast<char>(awake);
+    // Validated as a scene's values are: a damaged or forged entry must not reach the World.
+    if (!s.position.allFinite() || !s.linearMomentum.allFinite() || !s.angularMomentum.allFinite() ||
+        !s.orientation.coeffs().allFinite()) {
+      fail("entry " + std::to_string(entries_) + ": body " + std::to_string(i) + "'s state is not finite");
+    }
+    if (std::abs(s.orientation.norm() - 1.0) > kRotationTolerance) {
+      fail("entry " + std::to_string(entries_) + ": body " + std::to_string(i) + "'s orientation is not a unit quaternion (|q| = " +
+           std::to_string(s.orientation.norm()) + ")");
+    }
+    if (awake > 1) fail("entry " + std::to_string(entries_) + ": body " + std::to_string(i) + "'s awake flag is " + std::to_string(awake));
   }
   world.restore(step, states_, awake_);
   std::uint32_t systems = 0;
@@ -310,6 +376,10 @@ void RecordReader::restoreEntry(std::size_t index, World& world, bool nextStep) 
       get(p.lifetime[i]);
       for (int c = 0; c < 3; ++c) get(p.color[i][c]);
       get(p.size[i]);
+      if (!p.position[i].allFinite() || !p.velocity[i].allFinite() || !std::isfinite(p.inverseMass[i]) ||
+          !std::isfinite(p.age[i]) || !std::isfinite(p.lifetime[i]) || !std::isfinite(p.size[i])) {
+        fail("entry " + std::to_string(entries_) + ": particle " + std::to_string(i) + " is not finite");
+      }
     }
   }
   std::uint32_t softCount = 0;
@@ -321,6 +391,11 @@ void RecordReader::restoreEntry(std::size_t index, World& world, bool nextStep) 
     if (nodes != soft.positions().size()) fail("an entry's soft body nodes do not match the scene's");
     for (Vec3& x : soft.positions()) getVec(x);
     for (Vec3& v : soft.velocities()) getVec(v);
+    for (std::size_t n = 0; n < nodes; ++n) {
+      if (!soft.positions()[n].allFinite() || !soft.velocities()[n].allFinite()) {
+        fail("entry " + std::to_string(entries_) + ": soft body node " + std::to_string(n) + " is not finite");
+      }
+    }
   }
 }
 

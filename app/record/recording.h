@@ -5,7 +5,8 @@
 //
 // The file, little-endian:
 //   "RBSIMREC", u32 kRecordingVersion, u64 n, n bytes of header JSON (rbsim's version, the
-//   overrides, each phase's scene file text, name and folder);
+//   overrides, each phase's scene file text, name and absolute folder, and every other file it
+//   read with its size and CRC-32), u32 CRC-32 of those n bytes (an edited mass is refused);
 //   blocks of entries: u32 raw size, u32 deflated size, u32 CRC-32 of the raw bytes, the bytes
 //   deflated by libdeflate; the last block is empty (raw size 0) and its CRC field is the number
 //   of entries, so a file cut short anywhere is known to be.
@@ -22,15 +23,30 @@
 
 namespace rbsim::app {
 
-inline constexpr std::uint32_t kRecordingVersion = 1;
+// 2: the header's checksum, absolute folders and the files' checksums (issue 37).
+inline constexpr std::uint32_t kRecordingVersion = 2;
+// Entries read ahead of the world that is waiting for its own, at most (a compared phase
+// replayed at another frame rate reads a frame's steps of the others ahead; a damaged or forged
+// file could ask for the whole file).
+inline constexpr std::size_t kMaxPendingBytes = std::size_t{256} << 20;  // [bytes]
 // The worlds a recording's entries may name: a compared run's (run/phase.h kMaxComparedWorlds,
 // which run/runner.cpp asserts fits); an entry naming another is damage.
 inline constexpr std::size_t kMaxRecordedWorlds = 8;
 
+// A file a scene read besides itself (a mesh), as it was when recorded.
+struct RecordedFile {
+  std::string path;  // as the scene resolved it, absolute
+  std::uint64_t bytes = 0;
+  std::uint32_t crc32 = 0;
+};
+// The file's size and CRC-32 now; InputError naming it when it cannot be read.
+RecordedFile recordedFileOf(const std::string& path);
+
 struct RecordedPhase {
   std::string file;     // as the run named it, for messages
-  std::string baseDir;  // where its mesh paths start
+  std::string baseDir;  // where its mesh paths start, absolute: a replay works from any folder
   std::string text;     // the scene file as it was read
+  std::vector<RecordedFile> files;  // meshes it read
 };
 
 struct RecordingHeader {
@@ -79,10 +95,15 @@ class RecordReader {
 
   const RecordingHeader& header() const { return header_; }
   const std::string& path() const { return path_; }
-  // Puts the next entry into `world`, which must be world `index` of the replayed phase and hold
-  // the bodies, particle systems and soft bodies of the recording's. InputError when the file
-  // ends (truncated), a block is damaged, or the entry is of another world or shape.
-  void restoreNext(std::size_t index, World& world);
+  // InputError unless every file phase `phase` of the recording read is as it was (a mesh changed
+  // since would be drawn at the old poses).
+  void checkFiles(std::size_t phase) const;
+  // Puts the next entry into `world`, which must be world `index` of the replayed phase's
+  // `worldCount` and hold the bodies, particle systems and soft bodies of the recording's.
+  // InputError when the file ends (truncated), a block is damaged, the entry is of another world
+  // or shape, a state is not finite or not a unit quaternion, or entries of other worlds run more
+  // than kMaxPendingBytes ahead.
+  void restoreNext(std::size_t index, std::size_t worldCount, World& world);
   // InputError unless the recording ends here, with as many entries as were read.
   void expectEnd();
   // The entry restoreNext restored last, to keep (the replay window keeps one per frame to scrub
@@ -104,6 +125,7 @@ class RecordReader {
   std::vector<std::uint8_t> block_;
   std::size_t offset_ = 0;
   std::vector<std::deque<std::vector<std::uint8_t>>> pending_;  // per world: entries read ahead
+  std::size_t pendingBytes_ = 0;
   std::vector<std::uint8_t> entry_;  // the one being restored
   std::size_t entryOffset_ = 0;
   bool ended_ = false;

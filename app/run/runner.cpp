@@ -116,7 +116,17 @@ RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptio
         }
       }
     }
-    header.phases.push_back({phase.file, std::filesystem::path(phase.file).parent_path().string(), readSceneFile(phase.file)});
+    RecordedPhase recorded{phase.file, std::filesystem::absolute(phase.file).parent_path().lexically_normal().string(),
+                           readSceneFile(phase.file), {}};
+    for (const PhaseWorld& w : phase.worlds) {
+      for (const std::string& file : w.scene.files) {
+        const RecordedFile f = recordedFileOf(file);
+        const bool seen = std::any_of(recorded.files.begin(), recorded.files.end(),
+                                      [&](const RecordedFile& r) { return r.path == f.path; });
+        if (!seen) recorded.files.push_back(f);
+      }
+    }
+    header.phases.push_back(std::move(recorded));
   }
   return header;
 }
@@ -230,7 +240,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
       while (worlds[k].stepCount() < target) {
         const auto start = Clock::now();
         if (replay != nullptr) {
-          replay->restoreNext(k, worlds[k]);
+          replay->restoreNext(k, worlds.size(), worlds[k]);
         } else {
           worlds[k].step();
         }

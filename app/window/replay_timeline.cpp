@@ -31,7 +31,7 @@ ReplayTimeline::ReplayTimeline(const std::vector<Phase>& phases, RecordReader& r
         const Scene& scene = phase.worlds[k].scene;
         const std::uint64_t target = std::min(stepOfFrame(f, fps, scene.settings.timeStep), scene.stepCount());
         while (worlds[k].stepCount() < target) {
-          reader_.restoreNext(k, worlds[k]);
+          reader_.restoreNext(k, worlds.size(), worlds[k]);
           freeFlight[k].observe(worlds[k]);
           latest[k] = reader_.lastEntry();
         }
@@ -50,7 +50,7 @@ ReplayTimeline::ReplayTimeline(const std::vector<Phase>& phases, RecordReader& r
       frames_.push_back(std::move(kept));
     }
     for (std::size_t k = 0; k < worlds.size(); ++k) {
-      while (worlds[k].stepCount() < phase.worlds[k].scene.stepCount()) reader_.restoreNext(k, worlds[k]);
+      while (worlds[k].stepCount() < phase.worlds[k].scene.stepCount()) reader_.restoreNext(k, worlds.size(), worlds[k]);
     }
   }
   reader_.expectEnd();
