@@ -2,7 +2,7 @@
 # Fuzzes the scene loader, the OBJ loader and the --set override parser with libFuzzer for a
 # bounded time each, then minimises what was found into the corpus kept in the repository.
 #
-#   bash tests/fuzz/run_fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (default 60; scene obj set)
+#   bash tests/fuzz/run_fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (default 60; scene obj set record)
 #
 # Builds build-fuzz/ with clang, -fsanitize=fuzzer plus AddressSanitizer and UBSan (RBSIM_FUZZ,
 # RBSIM_SANITIZE), then runs each <target>_fuzzer on its corpus tests/fuzz/corpus/<target>/ plus
@@ -23,7 +23,7 @@ cd "$(dirname "$0")/../.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene obj set)
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj set record)
 build=build-fuzz
 max_len=4096          # [bytes] longest generated input: keeps the kept corpus files small
 kept=tests/fuzz/corpus
@@ -57,6 +57,7 @@ seeds() {  # the read-only seed folders of a target
     scene) echo assets/scenes tests/data/bad ;;
     obj) echo assets/meshes tests/data/bad ;;
     set) echo ;;  # the assignments need the base-scene byte: only tests/fuzz/corpus/set
+    record) echo ;;  # recordings of the target's own scene: only tests/fuzz/corpus/record
   esac
 }
 
@@ -69,7 +70,7 @@ run() {  # target
   echo "+ $target for ${seconds} s (log: $log)"
   # shellcheck disable=SC2046
   if ! nice -n 19 "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=$max_len \
-      -dict="tests/fuzz/$target.dict" -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 \
+      $( [ -f "tests/fuzz/$target.dict" ] && echo "-dict=tests/fuzz/$target.dict" ) -artifact_prefix="$build/crashes/$target-" -print_final_stats=1 \
       "${keep_going[@]}" "$work" "$kept/$target" $(seeds "$target") > "$log" 2>&1; then
     status=1
     grep -m5 -E "ERROR|runtime error|==ABORTING|terminate called" "$log" || true
