@@ -168,7 +168,7 @@ void PyWorld::setPose(const PyBodyId& id, const py::object& position, const py::
 }
 
 void PyWorld::step(long long steps) {
-  if (steps < 0) throw InputError("", "steps", "expected a number of steps >= 0, got " + std::to_string(steps));
+  if (steps < 0) throw InputError("World.step()", "steps", "expected a number of steps >= 0, got " + std::to_string(steps));
   for (long long i = 0; i < steps; ++i) {
     world_.step();
     // Ctrl-C in a notebook stops a long run between two steps (the World stays consistent).

@@ -175,7 +175,7 @@ def test_bad_plane_force_pose_and_steps():
     assert e.value.field == "velocity"
     with pytest.raises(rbsim.InputError) as e:
         world.step(-1)
-    assert e.value.field == "steps"
+    assert e.value.field == "steps" and e.value.file == "World.step()"
 
 
 def test_scene_errors_carry_the_command_lines_message(rbsim_binary, tmp_path):

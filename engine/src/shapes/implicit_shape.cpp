@@ -1,5 +1,6 @@
 #include "shapes/implicit_shape.h"
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <iomanip>
@@ -84,10 +85,22 @@ ImplicitMeshing meshImplicitShape(const ImplicitShape& shape) {
   out.mesh = marchingTetrahedra(out.grid, values, &out.stats);
   out.meshSeconds = secondsSince(start);
   if (out.mesh.triangles.empty()) {
+    // Every point lies within half a cell's diagonal of a grid point, and phi is at most the
+    // distance to the solid (csg.h): if every grid point has phi above that, there is no solid;
+    // otherwise it may be one thinner or smaller than a cell, which the grid passes between.
+    const double nearest = *std::min_element(values.begin(), values.end());
+    const double halfDiagonal = 0.5 * std::sqrt(3.0) * out.grid.cellSize;
     std::ostringstream problem;
-    problem << std::setprecision(3) << "the solid is empty: no point of the " << out.grid.dims.x() << " x "
-            << out.grid.dims.y() << " x " << out.grid.dims.z() << " grid (cell " << out.grid.cellSize
-            << " m) is inside (phi < 0), so it has no volume";
+    problem << std::setprecision(3);
+    if (nearest <= halfDiagonal) {
+      problem << "no point of the " << out.grid.dims.x() << " x " << out.grid.dims.y() << " x " << out.grid.dims.z()
+              << " grid is inside, but its surface passes " << nearest << " m from one: the solid is thinner or smaller "
+              << "than a grid cell (" << out.grid.cellSize << " m); raise the shape's resolution";
+    } else {
+      problem << "the solid is empty: no point of the " << out.grid.dims.x() << " x " << out.grid.dims.y() << " x "
+              << out.grid.dims.z() << " grid (cell " << out.grid.cellSize << " m) is inside (phi < 0), nor within a cell "
+              << "of the surface, so it has no volume";
+    }
     throw std::invalid_argument(problem.str());
   }
   if (out.mesh.triangles.size() > kMaxMeshTriangles || out.mesh.vertices.size() > kMaxMeshVertices) {

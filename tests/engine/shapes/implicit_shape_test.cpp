@@ -112,7 +112,9 @@ TEST(ImplicitShape, RandomTreesMeshClosedWithoutZeroAreaTriangles) {
     try {
       m = meshImplicitShape(shape);
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("the solid is empty"), std::string::npos) << e.what();
+      const std::string what = e.what();
+      EXPECT_TRUE(what.find("the solid is empty") != std::string::npos || what.find("thinner or smaller than a grid cell") != std::string::npos)
+          << what;
       continue;
     }
     const MeshCheck check = checkMesh(m.mesh);
@@ -139,6 +141,36 @@ TEST(ImplicitShape, EmptySolidsAndOverBudgetGridsAreRefused) {
   EXPECT_NE(implicitBudgetProblem(huge).find("the limit is"), std::string::npos);
   EXPECT_THROW(meshImplicitShape(huge), std::invalid_argument);
   EXPECT_TRUE(implicitBudgetProblem(ImplicitShape{huge.function, 64}).empty());
+}
+
+// A lens 1 mm thick (two balls of 0.5 m whose centres are 0.999 m apart) at 16 cells of 1/16 m:
+// no grid point is inside it, and it is said to be thinner than a cell, not empty; two balls that
+// miss each other by 1 m make an empty intersection, and are said to.
+TEST(ImplicitShape, ASolidThinnerThanACellIsSaidToBeNotEmpty) {
+  const auto intersection = [](double apart) {
+    return ImplicitShape{std::make_shared<const ImplicitFunction>(ImplicitFunction::combine(
+                             CsgOp::Intersection, ImplicitFunction::primitive(SphereSurface{0.5}),
+                             ImplicitFunction::primitive(SphereSurface{0.5}, Vec3(apart, 0.0, 0.0)))),
+                         16};
+  };
+  const auto problem = [](const ImplicitShape& shape) {
+    try {
+      meshImplicitShape(shape);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("meshed");
+  };
+  const std::string thin = problem(intersection(0.999));
+  EXPECT_NE(thin.find("thinner or smaller than a grid cell"), std::string::npos) << thin;
+  EXPECT_EQ(thin.find("empty"), std::string::npos) << thin;
+  // Bounds that overlap (a 2 m box around each) but balls that do not: empty, and said so.
+  const ImplicitShape apart{std::make_shared<const ImplicitFunction>(ImplicitFunction::combine(
+                                CsgOp::Intersection, ImplicitFunction::primitive(BoxSurface{Vec3::Constant(1.0)}),
+                                ImplicitFunction::combine(CsgOp::Difference, ImplicitFunction::primitive(BoxSurface{Vec3::Constant(1.0)}),
+                                                          ImplicitFunction::primitive(BoxSurface{Vec3::Constant(1.5)})))),
+                            16};
+  EXPECT_NE(problem(apart).find("the solid is empty"), std::string::npos) << problem(apart);
 }
 
 }  // namespace
