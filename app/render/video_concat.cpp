@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "ffmpeg_log.h"
 #include "render_error.h"
 
 extern char** environ;
@@ -57,7 +58,7 @@ int runFfmpeg(std::vector<std::string> args, std::string& errors) {
     const ssize_t n = read(err[0], buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
-    if (errors.size() < 65536) errors.append(buffer, static_cast<std::size_t>(n));
+    appendFfmpegLog(errors, buffer, static_cast<std::size_t>(n));
   }
   close(err[0]);
   int status = 0;
@@ -109,9 +110,8 @@ void concatVideos(const std::vector<std::filesystem::path>& parts, const std::fi
   std::filesystem::remove(list, ignored);
   std::filesystem::remove(metadata, ignored);
   if (status != 0) {
-    while (!errors.empty() && (errors.back() == '\n' || errors.back() == ' ')) errors.pop_back();
     throw RenderError("ffmpeg could not join " + std::to_string(parts.size()) + " videos into " + output.string() +
-                      " (exit status " + std::to_string(status) + "): " + errors);
+                      " (exit status " + std::to_string(status) + "): " + ffmpegLogTail(errors));
   }
 }
 

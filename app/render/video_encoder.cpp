@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "png_sequence_writer.h"  // ensureWritableDirectory
+#include "ffmpeg_log.h"
 #include "render_error.h"
 
 extern char** environ;
@@ -32,12 +33,6 @@ bool writeAll(int fd, const std::uint8_t* data, std::size_t size) {
     size -= static_cast<std::size_t>(n);
   }
   return true;
-}
-
-// ffmpeg's output without its closing line breaks, so the message ends where its words do.
-std::string trimmedEnd(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
-  return text;
 }
 
 }  // namespace
@@ -142,7 +137,7 @@ void VideoEncoder::drainStderr() {
     const ssize_t n = read(stderrFd_, buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
-    if (stderrText_.size() < 65536) stderrText_.append(buffer, static_cast<std::size_t>(n));
+    appendFfmpegLog(stderrText_, buffer, static_cast<std::size_t>(n));
   }
   close(stderrFd_);
   stderrFd_ = -1;
@@ -179,7 +174,7 @@ void VideoEncoder::finish() {
       // The exit status and ffmpeg's own words explain more than a broken pipe: they win.
       std::lock_guard<std::mutex> lock(errorMutex_);
       error_ = failure + " while writing " + output_.string() +
-               (stderrText_.empty() ? std::string() : ":\n" + trimmedEnd(stderrText_));
+               (stderrText_.empty() ? std::string() : ":\n" + ffmpegLogTail(stderrText_));
     }
   }
   const std::string message = error();

@@ -1,5 +1,6 @@
 // Frame output: the MP4 must be what ffprobe calls a 10-frame H.264 yuv420p video of the right
 // size, PNGs must decode to exactly the submitted pixels, and failures must be clear errors.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>  // implementation is in Debian's libstb, linked via rbsim_render
 
+#include "render/ffmpeg_log.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
 #include "render/render_error.h"
@@ -152,6 +154,26 @@ TEST(FrameSink, AFramesFolderThatIsAFileIsRefusedBeforeFfmpegStarts) {
     EXPECT_NE(std::string(e.what()).find("a file that is not a folder is in the way"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.mp4"));  // the PNG folder is checked first
+}
+
+// ffmpeg's reason comes last: after 5000 lines of warnings the kept log still ends with it, and the
+// message quotes the last 12 lines (a kept head of 64 KB lost it).
+TEST(FfmpegLog, KeepsTheLastLinesWhereTheReasonIs) {
+  std::string log;
+  for (int i = 0; i < 5000; ++i) {
+    const std::string line = "warning " + std::to_string(i) + ": past duration too large\n";
+    appendFfmpegLog(log, line.data(), line.size());
+  }
+  const std::string reason = "out.mp4: No space left on device\n\n";
+  appendFfmpegLog(log, reason.data(), reason.size());
+  EXPECT_LE(log.size(), kFfmpegLogBytes);
+  const std::string tail = ffmpegLogTail(log);
+  EXPECT_EQ(std::count(tail.begin(), tail.end(), '\n'), kFfmpegLogLines - 1);
+  EXPECT_EQ(tail.substr(tail.size() - 32), "out.mp4: No space left on device");
+  EXPECT_EQ(tail.find("warning 4988"), std::string::npos);
+  EXPECT_NE(tail.find("warning 4989"), std::string::npos);
+  EXPECT_EQ(ffmpegLogTail("one line\n"), "one line");
+  EXPECT_EQ(ffmpegLogTail(""), "");
 }
 
 TEST(FrameSink, FfmpegFailureIsReportedByFinish) {
