@@ -38,7 +38,7 @@ bash .ci/setup
 
 mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link -DFUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION" \
   -DRBSIM_SANITIZE=ON -DRBSIM_FUZZ=ON -DRBSIM_BUILD_BENCH=OFF > "$build/configure.log"
 cmake --build "$build" -j2 --target "${targets[@]/%/_fuzzer}"
 
