@@ -7,7 +7,7 @@
 //   "RBSIMREC", u32 kRecordingVersion, u64 n, n bytes of header JSON (rbsim's version, the
 //   overrides, each phase's scene file text, name and absolute folder, and every other file it
 //   read with its size and CRC-32), u32 CRC-32 of those n bytes (an edited mass is refused);
-//   blocks of entries: u32 raw size, u32 deflated size, u32 CRC-32 of the raw bytes, the bytes
+//   blocks of entries: u32 raw size, u32 deflated size, u32 CRC-32 of the deflated bytes, the bytes
 //   deflated by libdeflate; the last block is empty (raw size 0) and its CRC field is the number
 //   of entries, so a file cut short anywhere is known to be.
 // An entry is one world after one step: u16 world, u64 step, u32 bodies and per body x, q (w x y
