@@ -147,15 +147,22 @@ struct DragShot {
   std::string log;
 };
 
+constexpr int kDragAttempts = 3;
+
 DragShot dragSession(const std::string& mode, const fs::path& dir) {
   const fs::path shot = dir / (mode + ".png");
   const std::string scene = std::string(RBSIM_WINDOW_DATA_DIR) + "/drag_box.json";
-  const auto [code, output] = run("xvfb-run -a -s '-screen 0 1280x1024x24' bash '" + std::string(RBSIM_DRAG_SESSION) +
-                                  "' '" + std::string(RBSIM_BINARY) + "' '" + scene + "' " + mode + " '" +
-                                  shot.string() + "'");
+  // xvfb-run -a picks a free display by its lock files and then starts Xvfb, which races with
+  // the other window tests ctest runs beside it: a session whose server failed to start (exit 1,
+  // no screenshot) is the machine's, not the drag's, and is run again, up to kDragAttempts times.
   DragShot out;
-  out.log = "exit " + std::to_string(code) + ": " + output;
-  if (code == 0) out.image = readPng(shot);
+  for (int attempt = 0; attempt < kDragAttempts && out.image.width == 0; ++attempt) {
+    const auto [code, output] = run("xvfb-run -a -e /dev/stdout -s '-screen 0 1280x1024x24' bash '" +
+                                    std::string(RBSIM_DRAG_SESSION) + "' '" + std::string(RBSIM_BINARY) + "' '" + scene +
+                                    "' " + mode + " '" + shot.string() + "'");
+    out.log += "attempt " + std::to_string(attempt + 1) + ", exit " + std::to_string(code) + ": " + output + "\n";
+    if (code == 0) out.image = readPng(shot);
+  }
   return out;
 }
 
