@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "arguments.h"
 #include "py_world.h"
 #include "rbsim/integrate/simulation_error.h"
 #include "rbsim/io/input_error.h"
@@ -21,8 +22,13 @@ void bindRendering(py::module_& m);  // py_render.cpp
 namespace {
 
 using rbsim::BodyId;
+using rbsim::python::bodyArgument;
+using rbsim::python::intArgument;
+using rbsim::python::pathArgument;
 using rbsim::python::PyBodyId;
 using rbsim::python::PyWorld;
+using rbsim::python::requireKeywordsOnly;
+using rbsim::python::stringListArgument;
 
 // The exception types live as long as the module (they are its attributes); plain handles avoid
 // destructors running after the interpreter has gone.
@@ -76,6 +82,10 @@ py::dict settingsDict(const rbsim::Settings& s) {
 }  // namespace
 
 PYBIND11_MODULE(rbsim, m) {
+  // Each call's docstring opens with its signature as Python reads it (types included):
+  // pybind11's would show "object" for the parameters arguments.h converts by hand.
+  py::options options;
+  options.disable_function_signatures();
   m.doc() = "rbsim: rigid bodies for physically based animation coursework (see README, \"Python\")";
 
   inputErrorType = PyErr_NewException("rbsim.InputError", PyExc_ValueError, nullptr);
@@ -86,8 +96,9 @@ PYBIND11_MODULE(rbsim, m) {
   m.attr("RenderError") = py::handle(renderErrorType);
   py::register_exception_translator(translate);
 
-  m.def("integrators", &rbsim::integratorNames, "the names world.integrator accepts");
-  m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs"}; }, "the names world.solver accepts");
+  m.def("integrators", &rbsim::integratorNames, "integrators() -> [str]: the names world.integrator accepts");
+  m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs"}; },
+        "solvers() -> [str]: the names world.solver accepts");
 
   py::class_<PyBodyId>(m, "BodyId",
                        "A body's handle: stays valid while the body exists (Box2D's b2BodyId), in the World that gave it")
@@ -108,13 +119,15 @@ PYBIND11_MODULE(rbsim, m) {
       .def_readonly("duration", &rbsim::Scene::duration, "[s]")
       .def_property_readonly("steps", &rbsim::Scene::stepCount, "steps covering the duration")
       .def_property_readonly("settings", [](const rbsim::Scene& s) { return settingsDict(s.settings); })
-      .def("world", [](const rbsim::Scene& s) { return PyWorld(s); }, "a new World holding the scene");
+      .def("world", [](const rbsim::Scene& s) { return PyWorld(s); }, "world() -> World: a new World holding the scene");
 
   // Through the program's phase loader (app/run/phase.h), so a scene file means what it means to
   // `rbsim run`, "compare" block and its messages included.
   m.def(
       "load_scene",
-      [](const std::string& path, const std::vector<std::string>& overrides) {
+      [](const py::object& pathArg, const py::object& overridesArg) {
+        const std::string path = pathArgument(pathArg, "rbsim.load_scene()", "path");
+        const auto overrides = stringListArgument(overridesArg, "rbsim.load_scene()", "overrides");
         rbsim::app::Phase phase = rbsim::app::loadPhase(path, overrides);
         if (phase.compared()) {
           throw rbsim::InputError(path, "compare", "the scene compares " + phase.compareKey + " over " +
@@ -123,53 +136,99 @@ PYBIND11_MODULE(rbsim, m) {
         }
         return std::move(phase.worlds.front().scene);
       },
-      py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
+      py::arg("path"), py::arg("overrides") = py::list(),
       "load_scene(path, overrides=[\"world.dt=0.01\", ...]) -> Scene: a scene file with --set overrides");
   m.def(
       "load_comparison",
-      [](const std::string& path, const std::vector<std::string>& overrides) {
+      [](const py::object& pathArg, const py::object& overridesArg) {
+        const std::string path = pathArgument(pathArg, "rbsim.load_comparison()", "path");
+        const auto overrides = stringListArgument(overridesArg, "rbsim.load_comparison()", "overrides");
         rbsim::app::Phase phase = rbsim::app::loadPhase(path, overrides);
         std::vector<std::pair<std::string, rbsim::Scene>> scenes;
         for (rbsim::app::PhaseWorld& w : phase.worlds) scenes.emplace_back(w.label, std::move(w.scene));
         return scenes;
       },
-      py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
+      py::arg("path"), py::arg("overrides") = py::list(),
       "load_comparison(path, overrides=[]) -> [(label, Scene)]: one scene per value of the file's \"compare\" "
       "block (one, unlabelled, without it)");
 
   py::class_<PyWorld> world(m, "World",
                             "World(**world): the keys of a scene's \"world\" block, e.g. World(dt=1/60, "
                             "integrator=\"rk4\", solver=\"pgs\")");
-  world.def(py::init([](const py::kwargs& kwargs) { return PyWorld::fromKeywords(kwargs); }))
-      .def("add_body", &PyWorld::addBody,
+  world
+      .def(py::init([](const py::args& args, const py::kwargs& kwargs) {
+             requireKeywordsOnly(args, "World()", "a scene's \"world\" block");
+             return PyWorld::fromKeywords(kwargs);
+           }),
+           "World(**world): the keys of a scene's \"world\" block, e.g. World(dt=1/60, integrator=\"rk4\")")
+      .def("add_body",
+           [](PyWorld& w, const py::args& args, const py::kwargs& body) {
+             requireKeywordsOnly(args, "World.add_body()", "an entry of a scene's \"bodies\"");
+             return w.addBody(body);
+           },
            "add_body(**body) -> BodyId: the keys of an entry of a scene's \"bodies\", e.g. "
            "shape={\"type\": \"sphere\", \"radius\": 0.25}, mass=1, position=(0, 2, 0)")
-      .def("remove_body", &PyWorld::removeBody, py::arg("body"),
-           "the last body takes the removed one's index; ids stay valid")
-      .def("add_plane", &PyWorld::addPlane, "add_plane(normal=(0, 1, 0), point=(0, 0, 0), restitution=..., ...) -> index")
-      .def("add_joint", &PyWorld::addJoint,
+      .def("remove_body", [](PyWorld& w, const py::object& body) { w.removeBody(bodyArgument(body, "World.remove_body()")); },
+           py::arg("body"), "remove_body(body: BodyId): the last body takes the removed one's index; ids stay valid")
+      .def("add_plane",
+           [](PyWorld& w, const py::args& args, const py::kwargs& plane) {
+             requireKeywordsOnly(args, "World.add_plane()", "an entry of a scene's \"planes\"");
+             return w.addPlane(plane);
+           },
+           "add_plane(normal=(0, 1, 0), point=(0, 0, 0), restitution=..., ...) -> int: the plane's index")
+      .def("add_joint",
+           [](PyWorld& w, const py::args& args, const py::kwargs& joint) {
+             requireKeywordsOnly(args, "World.add_joint()", "an entry of a scene's \"joints\"");
+             return w.addJoint(joint);
+           },
            "add_joint(type=\"hinge\"|\"ball\", body_a=NAME, body_b=NAME (absent: the world), anchor=(x, y, z), "
-           "axis=(x, y, z), motor={\"speed\": rad/s, \"max_torque\": N m}, limits=(lo, hi), collide_connected=False) -> index")
-      .def("add_force", &PyWorld::addForce, py::arg("body"),
-           "add_force(body, force=(fx, fy, fz), point=(0, 0, 0), force_frame=\"world\", point_frame=\"body\", "
+           "axis=(x, y, z), motor={\"speed\": rad/s, \"max_torque\": N m}, limits=(lo, hi), collide_connected=False) -> int")
+      .def("add_force",
+           [](PyWorld& w, const py::object& body, const py::kwargs& force) {
+             w.addForce(bodyArgument(body, "World.add_force()"), force);
+           },
+           py::arg("body"),
+           "add_force(body: BodyId, force=(fx, fy, fz), point=(0, 0, 0), force_frame=\"world\", point_frame=\"body\", "
            "start=0, end=inf)")
-      .def("set_pose", &PyWorld::setPose, py::arg("body"), py::arg("position") = py::none(),
-           py::arg("orientation") = py::none(), py::arg("velocity") = py::none(),
-           py::arg("angular_velocity") = py::none())
-      .def("exact_rotation", &PyWorld::exactRotation, py::arg("body"), py::arg("times"),
-           "(k, 4) the body's orientation (w, x, y, z) t seconds from now, for each t, by the closed-form "
-           "torque-free motion (Jacobi elliptic functions): the reference for integrator errors")
-      .def("step", &PyWorld::step, py::arg("steps") = 1, "advance by steps x dt")
-      .def("is_valid", [](const PyWorld& w, const PyBodyId& id) { return id.world == w.serial() && w.world().isValid(id.id); },
-           py::arg("body"))
-      .def("index_of", [](const PyWorld& w, const PyBodyId& id) { return w.index(id, "World.index_of()"); }, py::arg("body"),
-           "the body's row in the state arrays now")
-      .def("id_at", [](const PyWorld& w, std::size_t i) {
-        if (i >= w.world().bodies().size()) {
-          throw rbsim::InputError("World.id_at()", "index", "expected a row below " + std::to_string(w.world().bodies().size()));
-        }
-        return w.wrap(w.world().idAt(i));
-      }, py::arg("index"))
+      .def("set_pose",
+           [](PyWorld& w, const py::object& body, const py::object& position, const py::object& orientation,
+              const py::object& velocity, const py::object& angularVelocity) {
+             w.setPose(bodyArgument(body, "World.set_pose()"), position, orientation, velocity, angularVelocity);
+           },
+           py::arg("body"), py::arg("position") = py::none(), py::arg("orientation") = py::none(),
+           py::arg("velocity") = py::none(), py::arg("angular_velocity") = py::none(),
+           "set_pose(body: BodyId, position=(x, y, z), orientation=(w, x, y, z), velocity=(vx, vy, vz), "
+           "angular_velocity=(wx, wy, wz)): any of them, within a scene's ranges; the body wakes")
+      .def("exact_rotation",
+           [](const PyWorld& w, const py::object& body, const py::object& times) {
+             return w.exactRotation(bodyArgument(body, "World.exact_rotation()"),
+                                    rbsim::python::doubleArrayArgument(times, "World.exact_rotation()", "times"));
+           },
+           py::arg("body"), py::arg("times"),
+           "exact_rotation(body: BodyId, times: [float]) -> (k, 4) the body's orientation (w, x, y, z) t seconds "
+           "from now, for each t, by the closed-form torque-free motion (Jacobi elliptic functions): the "
+           "reference for integrator errors")
+      .def("step", [](PyWorld& w, const py::object& steps) { w.step(intArgument(steps, "World.step()", "steps")); },
+           py::arg("steps") = 1, "step(steps: int = 1): advance by steps x dt")
+      .def("is_valid",
+           [](const PyWorld& w, const py::object& body) {
+             const PyBodyId& id = bodyArgument(body, "World.is_valid()");
+             return id.world == w.serial() && w.world().isValid(id.id);
+           },
+           py::arg("body"), "is_valid(body: BodyId) -> bool: the body is in this World")
+      .def("index_of", [](const PyWorld& w, const py::object& body) { return w.index(bodyArgument(body, "World.index_of()"), "World.index_of()"); },
+           py::arg("body"), "index_of(body: BodyId) -> int: the body's row in the state arrays now")
+      .def("id_at",
+           [](const PyWorld& w, const py::object& index) {
+             const long long i = intArgument(index, "World.id_at()", "index");
+             if (i < 0 || static_cast<unsigned long long>(i) >= w.world().bodies().size()) {
+               throw rbsim::InputError("World.id_at()", "index",
+                                       "expected a row from 0 to " + std::to_string(w.world().bodies().size()) + " - 1, got " +
+                                           std::to_string(i));
+             }
+             return w.wrap(w.world().idAt(static_cast<std::size_t>(i)));
+           },
+           py::arg("index"), "id_at(index: int) -> BodyId: the id of the body in that row")
       .def("__len__", [](const PyWorld& w) { return w.world().bodies().size(); })
       .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); }, "[s]")
       .def_property_readonly("step_count", [](const PyWorld& w) { return w.world().stepCount(); })
@@ -183,7 +242,7 @@ PYBIND11_MODULE(rbsim, m) {
       .def_property_readonly("contact_count", [](const PyWorld& w) { return w.world().contactPoints().size(); },
                              "contact points of the last step")
       .def("state_hash", [](const PyWorld& w) { return w.world().stateHash(); },
-           "FNV-1a of every state's bits: equal hashes, identical runs");
+           "state_hash() -> int: FNV-1a of every state's bits: equal hashes, identical runs");
   rbsim::python::bindStateArrays(world);
   rbsim::python::bindRendering(m);
 }

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <memory>
 
+#include "arguments.h"
 #include "py_world.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene_parts.h"
@@ -31,7 +32,7 @@ constexpr int kMaxPixels = 8192;
 // Frames waiting for ffmpeg: 8 frames of 1280 x 720 RGBA are 29 MB.
 constexpr std::size_t kVideoQueueFrames = 8;
 
-void checkSize(const char* call, int width, int height) {
+void checkSize(const char* call, long long width, long long height) {
   for (const auto& [name, value] : {std::pair{"width", width}, std::pair{"height", height}}) {
     if (value < kMinPixels || value > kMaxPixels) {
       throw InputError(call, name, "expected a size in [" + std::to_string(kMinPixels) + ", " + std::to_string(kMaxPixels) +
@@ -43,7 +44,7 @@ void checkSize(const char* call, int width, int height) {
 
 class PyRenderer {
  public:
-  PyRenderer(int width, int height, int samples, const std::string& gl) {
+  PyRenderer(long long width, long long height, long long samples, const std::string& gl) {
     checkSize(kRendererCall, width, height);
     if (samples < 1 || samples > 16) throw InputError(kRendererCall, "samples", "expected 1 to 16 samples per pixel");
     render::GlBackend backend = render::defaultGlBackend();
@@ -52,7 +53,8 @@ class PyRenderer {
       if (!parsed) throw InputError(kRendererCall, "gl", "unknown backend \"" + gl + "\"; expected " + render::glBackendChoices());
       backend = *parsed;
     }
-    renderer_ = std::make_unique<render::OffscreenRenderer>(width, height, render::defaultShaderDir(), samples, backend);
+    renderer_ = std::make_unique<render::OffscreenRenderer>(static_cast<int>(width), static_cast<int>(height),
+                                                            render::defaultShaderDir(), static_cast<int>(samples), backend);
   }
 
   // The world as the program draws it, under the world's view (a scene's "view" block, or the
@@ -61,13 +63,7 @@ class PyRenderer {
   py::array_t<std::uint8_t> render(const PyWorld& world, const py::object& selected, const py::kwargs& view) {
     Scene scene = world.scene();
     parseViewBlock(toJson(view, kRenderCall, ""), kRenderCall, "", scene.view);
-    if (!selected.is_none()) {
-      if (!py::isinstance<PyBodyId>(selected)) {
-        throw InputError(kRenderCall, "selected", "expected a BodyId (from add_body or id_at), got " +
-                                                      std::string(py::str(py::type::of(selected).attr("__name__"))));
-      }
-      scene.view.selected = world.index(selected.cast<PyBodyId>(), kRenderCall);
-    }
+    if (!selected.is_none()) scene.view.selected = world.index(bodyArgument(selected, kRenderCall, "selected"), kRenderCall);
     const render::FrameData frame = app::buildFrame(world.world(), scene, "");
     const std::vector<std::uint8_t>& rgba = renderer_->render(frame);
     py::array_t<std::uint8_t> out({py::ssize_t{renderer_->height()}, py::ssize_t{renderer_->width()}, py::ssize_t{4}});
@@ -88,14 +84,17 @@ class PyRenderer {
 
 class PyVideoWriter {
  public:
-  PyVideoWriter(const std::string& path, int width, int height, int fps) : width_(width), height_(height) {
+  PyVideoWriter(const std::string& path, long long width, long long height, long long fps) {
     checkSize(kVideoCall, width, height);
     if (fps < 1 || fps > 240) throw InputError(kVideoCall, "fps", "expected 1 to 240 frames per second");
-    encoder_ = std::make_unique<render::VideoEncoder>(path, width, height, fps, kVideoQueueFrames);
+    width_ = static_cast<int>(width);
+    height_ = static_cast<int>(height);
+    encoder_ = std::make_unique<render::VideoEncoder>(path, width_, height_, static_cast<int>(fps), kVideoQueueFrames);
   }
 
   // An (height, width, 4) uint8 array, as Renderer.render gives.
-  void write(const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& frame) {
+  void write(const py::handle& frameArg) {
+    const auto frame = byteArrayArgument(frameArg, "VideoWriter.write()", "frame");
     if (!encoder_) throw render::RenderError("VideoWriter.write(): the video is closed");
     if (frame.ndim() != 3 || frame.shape(0) != height_ || frame.shape(1) != width_ || frame.shape(2) != 4) {
       throw InputError("VideoWriter.write()", "frame",
@@ -116,8 +115,8 @@ class PyVideoWriter {
   long frames() const { return frames_; }
 
  private:
-  int width_;
-  int height_;
+  int width_ = 0;
+  int height_ = 0;
   long frames_ = 0;
   std::unique_ptr<render::VideoEncoder> encoder_;
 };
@@ -126,20 +125,35 @@ class PyVideoWriter {
 
 void bindRendering(py::module_& m) {
   py::class_<PyRenderer>(m, "Renderer", "The off-screen OpenGL renderer of `rbsim run` (OSMesa or EGL, llvmpipe).")
-      .def(py::init<int, int, int, const std::string&>(), py::arg("width") = 640, py::arg("height") = 360,
-           py::arg("samples") = 1, py::arg("gl") = "")
-      .def("render", &PyRenderer::render, py::arg("world"), py::arg("selected") = py::none(),
-           "render(world, selected=None, **view) -> (height, width, 4) uint8 RGBA. view: the keys of a scene's "
-           "\"view\" block (camera={eye, target, up, fov_deg}, overlay, wireframe, axes, grid, caption); "
+      .def(py::init([](const py::object& width, const py::object& height, const py::object& samples, const py::object& gl) {
+             return std::make_unique<PyRenderer>(intArgument(width, kRendererCall, "width"),
+                                                 intArgument(height, kRendererCall, "height"),
+                                                 intArgument(samples, kRendererCall, "samples"),
+                                                 stringArgument(gl, kRendererCall, "gl"));
+           }),
+           py::arg("width") = 640, py::arg("height") = 360, py::arg("samples") = 1, py::arg("gl") = "",
+           "Renderer(width: int = 640, height: int = 360, samples: int = 1, gl: str = \"\"): gl \"\" picks the "
+           "program's default backend")
+      .def("render",
+           [](PyRenderer& r, const py::object& world, const py::object& selected, const py::kwargs& view) {
+             return r.render(worldArgument(world, kRenderCall), selected, view);
+           },
+           py::arg("world"), py::arg("selected") = py::none(),
+           "render(world: World, selected: BodyId = None, **view) -> (height, width, 4) uint8 RGBA. view: the keys "
+           "of a scene's \"view\" block (camera={eye, target, up, fov_deg}, overlay, wireframe, axes, grid, caption); "
            "selected: the BodyId the overlay shows")
       .def_property_readonly("width", &PyRenderer::width)
       .def_property_readonly("height", &PyRenderer::height);
 
   py::class_<PyVideoWriter>(m, "VideoWriter", "An H.264 MP4 written by ffmpeg, as `rbsim run --video` writes.")
-      .def(py::init<const std::string&, int, int, int>(), py::arg("path"), py::arg("width"), py::arg("height"),
-           py::arg("fps") = 30)
-      .def("write", &PyVideoWriter::write, py::arg("frame"))
-      .def("close", &PyVideoWriter::close)
+      .def(py::init([](const py::object& path, const py::object& width, const py::object& height, const py::object& fps) {
+             return std::make_unique<PyVideoWriter>(pathArgument(path, kVideoCall, "path"), intArgument(width, kVideoCall, "width"),
+                                                    intArgument(height, kVideoCall, "height"), intArgument(fps, kVideoCall, "fps"));
+           }),
+           py::arg("path"), py::arg("width"), py::arg("height"), py::arg("fps") = 30,
+           "VideoWriter(path: str, width: int, height: int, fps: int = 30)")
+      .def("write", &PyVideoWriter::write, py::arg("frame"), "write(frame: (height, width, 4) uint8 array)")
+      .def("close", &PyVideoWriter::close, "close(): waits for ffmpeg to finish the file")
       .def_property_readonly("frames", &PyVideoWriter::frames)
       .def("__enter__", [](PyVideoWriter& w) -> PyVideoWriter& { return w; })
       .def("__exit__", [](PyVideoWriter& w, const py::args&) { w.close(); });

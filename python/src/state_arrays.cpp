@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "arguments.h"
 #include "py_world.h"
 
 namespace py = pybind11;
@@ -142,20 +143,23 @@ void bindStateArrays(py::class_<PyWorld>& c) {
             d["pe"] = potentialEnergies(wd);
             return d;
           },
-          "every state array at once, with the time t, as a dict")
+          "state() -> dict: every state array at once, with the time t")
       .def(
           "vertices",
-          [](const PyWorld& w, const PyBodyId& id) { return pointArray(w.world().bodies()[w.index(id, "World.vertices()")].worldVertices()); },
-          py::arg("body"), "(k, 3) the body's vertices in world frame, p' = R p + x (seed 004) [m]")
+          [](const PyWorld& w, const py::object& body) {
+            const PyBodyId& id = bodyArgument(body, "World.vertices()");
+            return pointArray(w.world().bodies()[w.index(id, "World.vertices()")].worldVertices());
+          },
+          py::arg("body"), "vertices(body: BodyId) -> (k, 3) the body's vertices in world frame, p' = R p + x (seed 004) [m]")
       .def(
           "body_vertices",
-          [](const PyWorld& w, const PyBodyId& id) {
-            const RigidBody& b = w.world().bodies()[w.index(id, "World.body_vertices()")];
+          [](const PyWorld& w, const py::object& body) {
+            const RigidBody& b = w.world().bodies()[w.index(bodyArgument(body, "World.body_vertices()"), "World.body_vertices()")];
             std::vector<Vec3> points(b.vertexCount());
             for (std::size_t i = 0; i < points.size(); ++i) points[i] = b.bodyVertex(i);
             return pointArray(points);
           },
-          py::arg("body"), "(k, 3) the body's vertices in body frame (origin at the centre of mass) [m]");
+          py::arg("body"), "body_vertices(body: BodyId) -> (k, 3) the body's vertices in body frame (origin at the centre of mass) [m]");
 }
 
 }  // namespace rbsim::python

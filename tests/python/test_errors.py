@@ -161,6 +161,57 @@ def test_set_pose_applies_the_scenes_ranges(keywords, field):
     assert (world.x == before).all() and np.isfinite(world.v).all()
 
 
+@pytest.mark.parametrize("call,words", [
+    (lambda w, b: w.step("10"), "World.step(): steps: expected an int, got str"),
+    (lambda w, b: w.step(2.5), "World.step(): steps: expected an int, got float"),
+    (lambda w, b: w.step(True), "World.step(): steps: expected an int, got bool"),
+    (lambda w, b: w.remove_body("ball"), "World.remove_body(): body: expected a BodyId"),
+    (lambda w, b: w.remove_body(0), "World.remove_body(): body: expected a BodyId (from add_body or id_at), got int"),
+    (lambda w, b: w.set_pose(b.slot, position=[0, 1, 0]), "World.set_pose(): body: expected a BodyId"),
+    (lambda w, b: w.add_force(None, force=[1, 0, 0]), "World.add_force(): body: expected a BodyId (from add_body or id_at), got NoneType"),
+    (lambda w, b: w.index_of([b]), "World.index_of(): body: expected a BodyId"),
+    (lambda w, b: w.vertices("ball"), "World.vertices(): body: expected a BodyId"),
+    (lambda w, b: w.exact_rotation(b, "soon"), "World.exact_rotation(): times: expected numbers"),
+    (lambda w, b: w.id_at("0"), "World.id_at(): index: expected an int, got str"),
+    (lambda w, b: w.add_body({"shape": {"type": "sphere", "radius": 1}}), "World.add_body() takes keyword arguments only"),
+    (lambda w, b: w.add_plane([0, 1, 0]), "World.add_plane() takes keyword arguments only"),
+    (lambda w, b: rbsim.World(1 / 60), "World() takes keyword arguments only"),
+    (lambda w, b: rbsim.load_scene(3), "rbsim.load_scene(): path: expected a path (str or pathlib.Path), got int"),
+    (lambda w, b: rbsim.load_scene("x.json", "world.dt=0.01"), "rbsim.load_scene(): overrides: expected a list of str"),
+    (lambda w, b: rbsim.load_comparison("x.json", [1]), "rbsim.load_comparison(): overrides[0]: expected a str, got int"),
+    (lambda w, b: rbsim.Renderer(width="640"), "Renderer(): width: expected an int, got str"),
+    (lambda w, b: rbsim.Renderer(gl=1), "Renderer(): gl: expected a str, got int"),
+    (lambda w, b: rbsim.Renderer(64, 64).render(b), "Renderer.render(): world: expected a World, got BodyId"),
+    (lambda w, b: rbsim.Renderer(64, 64).render(w, selected=0), "Renderer.render(): selected: expected a BodyId"),
+    (lambda w, b: rbsim.VideoWriter(None, 64, 64), "VideoWriter(): path: expected a path"),
+])
+def test_argument_type_errors_name_the_call_the_parameter_and_the_type(call, words):
+    """Issue 37: pybind11 said "Unable to cast Python instance to C++ type" or listed signatures;
+    now a TypeError names the call, the parameter and the type it expects, and changes nothing."""
+    world = rbsim.World()
+    ball = world.add_body(name="ball", shape={"type": "sphere", "radius": 0.5}, mass=1)
+    with pytest.raises(TypeError) as e:
+        call(world, ball)
+    assert words in str(e.value) and "Unable to cast" not in str(e.value)
+    assert world.names == ["ball"] and world.step_count == 0
+
+
+def test_signatures_show_the_types():
+    assert rbsim.World.step.__doc__.startswith("step(steps: int = 1)")
+    assert rbsim.World.set_pose.__doc__.startswith("set_pose(body: BodyId")
+    assert "object" not in rbsim.World.exact_rotation.__doc__
+
+
+def test_paths_may_be_pathlib_paths(tmp_path):
+    scene = tmp_path / "scene.json"
+    scene.write_text('{"bodies": [{"shape": {"type": "sphere", "radius": 0.5}, "mass": 1}]}')
+    assert len(rbsim.load_scene(scene).world()) == 1
+    world = rbsim.World()
+    with pytest.raises(rbsim.InputError) as e:
+        world.id_at(-1)
+    assert e.value.field == "index"
+
+
 def test_bad_plane_force_pose_and_steps():
     world = rbsim.World()
     with pytest.raises(rbsim.InputError) as e:
