@@ -1,5 +1,6 @@
 #include "geometry/marching_tetrahedra.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -90,7 +91,10 @@ class Mesher {
     const Corner& hi = pFirst ? q : p;
     const Vec3 step = (hi.point - lo.point) / grid_.cellSize;
     const int mask = (step.x() > 0.5 ? 1 : 0) | (step.y() > 0.5 ? 2 : 0) | (step.z() > 0.5 ? 4 : 0);
-    return {2 * (static_cast<std::uint64_t>(lo.index) * 8 + static_cast<std::uint64_t>(mask)) + 1, exact, exact};
+    // From the lower index's end, so that every tetrahedron around the edge places it alike.
+    const double s = std::clamp(lo.value / (lo.value - hi.value), kMarchingVertexMargin, 1.0 - kMarchingVertexMargin);
+    const Vec3 placed = lo.point + s * (hi.point - lo.point);
+    return {2 * (static_cast<std::uint64_t>(lo.index) * 8 + static_cast<std::uint64_t>(mask)) + 1, exact, placed};
   }
 
   std::uint32_t vertex(const Edge& e) {

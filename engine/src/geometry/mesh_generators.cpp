@@ -206,10 +206,20 @@ Mesh makeTorus(double majorRadius, double minorRadius, int majorSegments, int mi
               ", expected >= 3 each");
   Mesh m;
   m.name = "torus";
+  // The tube's rings start at its outer equator, so with an even count one runs along the inner
+  // equator, R - r from the axis. As r nears R that ring closes on the axis: its triangles become
+  // slivers thinner than rounding, and those of opposite sides meet (issue 37: r = 0.49999999,
+  // R = 0.5 was refused as self-crossing). Where that ring would be nearer the axis than turning
+  // the rings by half a step puts the innermost ones, they turn: those are then
+  // R - r cos(pi / n) >= r (1 - cos(pi / n)) from it for any r < R, as with an odd count always.
+  const double halfStep = kPi / minorSegments;
+  const bool innerRing = minorSegments % 2 == 0;
+  const double phase =
+      innerRing && majorRadius - minorRadius < minorRadius * (1.0 - std::cos(halfStep)) ? halfStep : 0.0;
   for (int i = 0; i < majorSegments; ++i) {
     const double theta = 2.0 * kPi * i / majorSegments;
     for (int j = 0; j < minorSegments; ++j) {
-      const double psi = 2.0 * kPi * j / minorSegments;
+      const double psi = phase + 2.0 * kPi * j / minorSegments;
       const double rho = majorRadius + minorRadius * std::cos(psi);
       m.vertices.emplace_back(rho * std::cos(theta), minorRadius * std::sin(psi), rho * std::sin(theta));
     }

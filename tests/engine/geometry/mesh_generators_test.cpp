@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "geometry/surface_samples.h"
+#include "geometry/triangle_bvh.h"
 
 namespace rbsim {
 namespace {
@@ -50,6 +51,35 @@ TEST(Shapes, TorusIsClosedOutwardWithPappusVolume) {
   const double pappus = 2.0 * kPi * kPi * 1.0 * 0.25 * 0.25;
   EXPECT_LT(enclosedVolume(m), pappus);
   EXPECT_GT(enclosedVolume(m), 0.99 * pappus);
+}
+
+// Issue 37: with r within rounding of R the ring of vertices on the inner equator closed on the
+// axis and the mesh crossed itself ("its volume is not defined"); the mesher, not the shape, was
+// at fault. Every r < R now meshes to a closed surface that does not cross itself, vertices on the
+// exact torus, volume inscribed in Pappus's 2 pi^2 R r^2.
+TEST(Shapes, TorusMeshesCleanlyUpToAHornTorus) {
+  for (const double minor : {0.15, 0.45, 0.49, 0.4999, 0.49999999, 0.5 - 1e-15}) {
+    for (const int rings : {6, 7, 24}) {
+      SCOPED_TRACE("r = " + std::to_string(minor) + ", rings " + std::to_string(rings));
+      const Mesh m = makeTorus(0.5, minor, 48, rings);
+      expectWatertight(m);
+      EXPECT_FALSE(TriangleBvh(m).selfCrossing(1e7).found);
+      double nearestAxis = 1.0;
+      for (const Vec3& v : m.vertices) {
+        EXPECT_NEAR(std::hypot(std::hypot(v.x(), v.z()) - 0.5, v.y()), minor, 1e-15);
+        nearestAxis = std::min(nearestAxis, std::hypot(v.x(), v.z()));
+      }
+      EXPECT_GT(nearestAxis, minor * (1.0 - std::cos(kPi / rings)) - 1e-15);
+      const double pappus = 2.0 * kPi * kPi * 0.5 * minor * minor;
+      EXPECT_LT(enclosedVolume(m), pappus);
+      EXPECT_GT(enclosedVolume(m), (rings == 24 ? 0.98 : 0.8) * pappus);
+    }
+  }
+  // An ordinary torus keeps a ring on its inner equator, as before.
+  const Mesh ring = makeTorus(0.5, 0.15, 48, 24);
+  double nearest = 1.0;
+  for (const Vec3& v : ring.vertices) nearest = std::min(nearest, std::hypot(v.x(), v.z()));
+  EXPECT_NEAR(nearest, 0.35, 1e-15);
 }
 
 TEST(Shapes, BowlIsAClosedHemisphericalShellOpeningUp) {
