@@ -132,6 +132,12 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
                     "\"implicit\" or \"csg\", got \"" + type + "\"");
 }
 
+// An implicit shape's loading that ran out of evaluations (shapes/implicit_shape.h): the shape's
+// resolution and its tree's size set the cost.
+[[noreturn]] void implicitBudgetFailed(const JsonObject& b, const ImplicitBudgetExceeded& e) {
+  b.fail("shape.resolution", std::string(e.what()) + "; use a lower resolution or fewer primitives");
+}
+
 // A body of any shape gets a signed distance grid (seed 000 "Constructing Signed Distance
 // Functions") and surface samples: asked for with "sdf": {"resolution", "sample_spacing"}, and
 // always for a closed non-convex mesh, which the convex narrow phase would treat as its hull. An
@@ -175,6 +181,8 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
     def.sdf = std::make_shared<const SignedDistanceGrid>(
         implicit ? implicitBodyGrid(*implicit, mesh, def.fileFrame.axes, def.fileFrame.centre)
                  : SignedDistanceGrid::build(mesh, options));
+  } catch (const ImplicitBudgetExceeded& e) {
+    implicitBudgetFailed(b, e);
   } catch (const std::invalid_argument& e) {
     b.fail("shape", std::string("no signed distance grid for this shape: ") + e.what());
   }
@@ -194,10 +202,15 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
   // its grid, and, when the scene asks for a finer spacing, the mesh's samples moved onto the
   // exact surface.
   auto solid = std::make_shared<const ImplicitSolid>(implicitSolidOf(*implicit, def.fileFrame.axes, def.fileFrame.centre));
-  std::vector<Vec3> samples = implicitSurfaceSamples(*solid, *def.sdf);
-  if (spacingGiven > 0.0) {
-    const ExactField field{[&](const Vec3& p) { return solid->phi(p); }, [&](const Vec3& p) { return solid->gradient(p); }};
-    for (const Vec3& p : surfaceSamples(mesh, spacing)) samples.push_back(projectOntoSurface(p, field, kCrossingTolerance * def.sdf->cellSize()));
+  std::vector<Vec3> samples;
+  try {
+    samples = implicitSurfaceSamples(*solid, *def.sdf, implicit->budget.get());
+    if (spacingGiven > 0.0) {
+      const ExactField field = implicitField(*solid, implicit->budget.get());
+      for (const Vec3& p : surfaceSamples(mesh, spacing)) samples.push_back(projectOntoSurface(p, field, kCrossingTolerance * def.sdf->cellSize()));
+    }
+  } catch (const ImplicitBudgetExceeded& e) {
+    implicitBudgetFailed(b, e);
   }
   def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(std::move(samples));
   def.implicit = std::move(solid);

@@ -113,6 +113,7 @@ ImplicitShape parseImplicitShape(const JsonObject& shape) {
   }
   const std::string overBudget = implicitBudgetProblem(out);
   if (!overBudget.empty()) shape.fail("resolution", overBudget + "; use a lower resolution");
+  out.budget = std::make_shared<ImplicitBudget>(out.function->primitiveCount());
   return out;
 }
 

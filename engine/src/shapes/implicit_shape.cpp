@@ -22,7 +22,10 @@ void requireResolution(const ImplicitShape& shape) {
   }
 }
 
-std::vector<double> sample(const ImplicitFunction& f, const GridLattice& grid, const Mat3& axes, const Vec3& centre) {
+std::vector<double> sample(const ImplicitShape& shape, const GridLattice& grid, const Mat3& axes, const Vec3& centre,
+                           const char* stage) {
+  if (shape.budget) shape.budget->charge(grid.dims.cast<double>().prod(), stage);
+  const ImplicitFunction& f = *shape.function;
   std::vector<double> values(grid.pointCount());
   for (int k = 0; k < grid.dims.z(); ++k) {
     for (int j = 0; j < grid.dims.y(); ++j) {
@@ -33,6 +36,16 @@ std::vector<double> sample(const ImplicitFunction& f, const GridLattice& grid, c
 }
 
 }  // namespace
+
+void ImplicitBudget::spend(double evaluations, const std::string& stage) {
+  spent_ += evaluations;
+  if (!(spent_ > limit_)) return;
+  std::ostringstream problem;
+  problem << std::setprecision(3) << "loading it (a tree of " << primitives_ << (primitives_ == 1.0 ? " primitive" : " primitives")
+          << ") passed its budget of "
+          << limit_ << " primitive evaluations (~" << limit_ * kImplicitSecondsPerEvaluation << " s) at " << stage;
+  throw ImplicitBudgetExceeded(problem.str());
+}
 
 GridLattice implicitGridLattice(const ImplicitShape& shape) {
   const ImplicitBounds b = shape.function->bounds();
@@ -61,9 +74,12 @@ std::string implicitBudgetProblem(const ImplicitShape& shape) {
             << kMaxSdfGridPoints * kSdfBytesPerPoint / 1e9 << " GB)";
     return problem.str();
   }
-  if (evaluations > kMaxImplicitEvaluations) {
-    problem << std::setprecision(3) << " of " << shape.function->primitiveCount() << " primitives: " << evaluations
-            << " evaluations; the limit is " << kMaxImplicitEvaluations;
+  // The body's grid is laid over the mesh at the same resolution: about as many points again.
+  if (2.0 * evaluations > kMaxImplicitEvaluations) {
+    problem << std::setprecision(3) << ", sampled twice, of " << shape.function->primitiveCount() << " primitives: "
+            << 2.0 * evaluations << " primitive evaluations (~" << 2.0 * evaluations * kImplicitSecondsPerEvaluation
+            << " s); the limit is " << kMaxImplicitEvaluations << " (~"
+            << kMaxImplicitEvaluations * kImplicitSecondsPerEvaluation << " s)";
     return problem.str();
   }
   return "";
@@ -79,7 +95,7 @@ ImplicitMeshing meshImplicitShape(const ImplicitShape& shape) {
   ImplicitMeshing out;
   out.grid = implicitGridLattice(shape);
   std::clock_t start = std::clock();
-  const std::vector<double> values = sample(*shape.function, out.grid, Mat3::Identity(), Vec3::Zero());
+  const std::vector<double> values = sample(shape, out.grid, Mat3::Identity(), Vec3::Zero(), "the meshing grid");
   out.sampleSeconds = secondsSince(start);
   start = std::clock();
   out.mesh = marchingTetrahedra(out.grid, values, &out.stats);
@@ -103,6 +119,7 @@ ImplicitMeshing meshImplicitShape(const ImplicitShape& shape) {
     }
     throw std::invalid_argument(problem.str());
   }
+  if (shape.budget) shape.budget->chargeMesh(out.mesh.triangles.size());
   if (out.mesh.triangles.size() > kMaxMeshTriangles || out.mesh.vertices.size() > kMaxMeshVertices) {
     std::ostringstream problem;
     problem << "resolution " << shape.resolution << " meshes the surface into " << out.mesh.triangles.size()
@@ -123,7 +140,7 @@ SignedDistanceGrid implicitBodyGrid(const ImplicitShape& shape, const Mesh& body
     throw std::invalid_argument("implicit shape: the body's grid of resolution " + std::to_string(shape.resolution) +
                                 " exceeds " + std::to_string(static_cast<long long>(kMaxSdfGridPoints)) + " points");
   }
-  return SignedDistanceGrid::fromValues(grid, sample(*shape.function, grid, axes, centre));
+  return SignedDistanceGrid::fromValues(grid, sample(shape, grid, axes, centre, "the body's grid"));
 }
 
 Vec3 ImplicitSolid::gradient(const Vec3& p) const {
@@ -164,9 +181,21 @@ ImplicitSolid implicitSolidOf(const ImplicitShape& shape, const Mat3& axes, cons
   return ImplicitSolid{shape.function, axes, centre, kImplicitGradientRelStep * extent};
 }
 
-std::vector<Vec3> implicitSurfaceSamples(const ImplicitSolid& solid, const SignedDistanceGrid& bodyGrid) {
-  const ExactField field{[&](const Vec3& p) { return solid.phi(p); }, [&](const Vec3& p) { return solid.gradient(p); }};
-  return featurePoints(bodyGrid, field);
+ExactField implicitField(const ImplicitSolid& solid, ImplicitBudget* budget) {
+  constexpr const char* stage = "the surface samples' crossings and corners";
+  return ExactField{[&solid, budget](const Vec3& p) {
+                      if (budget) budget->charge(1.0, stage);
+                      return solid.phi(p);
+                    },
+                    [&solid, budget](const Vec3& p) {
+                      if (budget) budget->charge(6.0, stage);  // central differences
+                      return solid.gradient(p);
+                    }};
+}
+
+std::vector<Vec3> implicitSurfaceSamples(const ImplicitSolid& solid, const SignedDistanceGrid& bodyGrid,
+                                         ImplicitBudget* budget) {
+  return featurePoints(bodyGrid, implicitField(solid, budget));
 }
 
 }  // namespace rbsim

@@ -8,11 +8,13 @@
 // (ImplicitSolid below, collision/body_solid.h), and the body's surface samples keep its sharp
 // edges and corners (geometry/feature_points.h).
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <vector>
 
 #include "geometry/csg.h"
+#include "geometry/feature_points.h"
 #include "rbsim/geometry/grid_lattice.h"
 #include "geometry/marching_tetrahedra.h"
 #include "rbsim/geometry/mesh.h"
@@ -27,20 +29,64 @@ inline constexpr int kDefaultImplicitResolution = 48;  // [1]
 inline constexpr int kImplicitPaddingCells = 2;  // [1]
 // Levels of nested operations a scene may write; each level is one more call per grid point.
 inline constexpr int kMaxCsgDepth = 16;  // [1]
-// Budget of evaluating the tree on one grid: grid points x primitives, ~10 s at ~10 ns each.
-inline constexpr double kMaxImplicitEvaluations = 1e9;  // [primitive evaluations]
+// What loading one implicit shape may spend, in primitive evaluations: evaluating its tree on the
+// meshing grid, on the body's grid, at the crossings and corners of its surface samples
+// (geometry/feature_points.h) and their projections, each phi call costing the tree's primitive
+// count and each gradient six calls; and checking and indexing its mesh, each triangle costing
+// kImplicitEvaluationsPerTriangle. A primitive evaluation (with its share of the operations) took
+// 24 to 27 ns in trees of 4096 tori, spheres or boxes and 38 ns in one of 4096 ellipsoids, the
+// slowest (bench/csg_stress.py, one thread, the machine of bench/results/machine.csv): the budget
+// is ~8 s of loading, ~10 s with the rest of the scene's work.
+inline constexpr double kMaxImplicitEvaluations = 2e8;  // [primitive evaluations]
+// The slowest measured cost, rounded up, to say the budget in seconds.
+inline constexpr double kImplicitSecondsPerEvaluation = 4e-8;  // [s / primitive evaluation]
+// A triangle of the mesh costs its closure and self-crossing checks, mass properties, search tree
+// and surface samples: 9 to 12 us measured (400,000 to 1.7 million triangles), ~300 evaluations.
+inline constexpr double kImplicitEvaluationsPerTriangle = 300.0;  // [primitive evaluations / triangle]
+
+// The evaluations a shape's loading has spent: each stage charges before it evaluates (a grid)
+// or as it goes (crossings, corners, projections), and the first charge past
+// kMaxImplicitEvaluations throws ImplicitBudgetExceeded naming the stage, so no tree loads for
+// longer than the budget allows, whatever its surface looks like.
+class ImplicitBudgetExceeded : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+class ImplicitBudget {
+ public:
+  explicit ImplicitBudget(int primitives, double limit = kMaxImplicitEvaluations)
+      : primitives_(primitives), limit_(limit) {}
+  // `calls` evaluations of the whole tree for `stage` ("the meshing grid", ...).
+  void charge(double calls, const std::string& stage) { spend(calls * primitives_, stage); }
+  // The checks a mesh of `triangles` goes through, charged when it is made, before they run.
+  void chargeMesh(std::size_t triangles) {
+    spend(double(triangles) * kImplicitEvaluationsPerTriangle,
+          "the checks of its mesh of " + std::to_string(triangles) + " triangles");
+  }
+  double spent() const { return spent_; }  // [primitive evaluations]
+
+ private:
+  void spend(double evaluations, const std::string& stage);
+
+  double primitives_;
+  double limit_;  // [primitive evaluations]
+  double spent_ = 0.0;
+};
 
 struct ImplicitShape {
   std::shared_ptr<const ImplicitFunction> function;
   int resolution = kDefaultImplicitResolution;  // cells along the longest side [1], 4 to 1024
+  // What its loading has spent; shared by the stages that build one body (scene/body_parser.cpp).
+  // Null: unbudgeted (tests and tools that measure the cost itself).
+  std::shared_ptr<ImplicitBudget> budget;
 };
 
 // The meshing grid: the function's bounds padded by kImplicitPaddingCells, cells of longest
 // side / resolution.
 GridLattice implicitGridLattice(const ImplicitShape& shape);
-// Why sampling the shape would exceed kMaxSdfGridPoints or kMaxImplicitEvaluations, e.g.
-// "resolution 1024 lays a 1029 x 517 x 1029 grid (5.5e+08 points, ~22 GB); the limit is ...", or
-// empty when both hold.
+// Why sampling the shape would exceed kMaxSdfGridPoints, or its two grids alone
+// kMaxImplicitEvaluations, e.g. "resolution 1024 lays a 1029 x 517 x 1029 grid (5.5e+08 points,
+// ~22 GB); the limit is ...", or empty when both hold.
 std::string implicitBudgetProblem(const ImplicitShape& shape);
 
 struct ImplicitMeshing {
@@ -94,6 +140,10 @@ ImplicitSolid implicitSolidOf(const ImplicitShape& shape, const Mat3& axes, cons
 
 // The body's surface samples: one point on the exact surface per cell of its grid the surface
 // crosses, sharp at edges and corners (geometry/feature_points.h).
-std::vector<Vec3> implicitSurfaceSamples(const ImplicitSolid& solid, const SignedDistanceGrid& bodyGrid);
+// Charges `budget` (when not null) for every evaluation.
+std::vector<Vec3> implicitSurfaceSamples(const ImplicitSolid& solid, const SignedDistanceGrid& bodyGrid,
+                                         ImplicitBudget* budget = nullptr);
+// The exact field of `solid` for geometry/feature_points.h, charging `budget` when not null.
+ExactField implicitField(const ImplicitSolid& solid, ImplicitBudget* budget);
 
 }  // namespace rbsim

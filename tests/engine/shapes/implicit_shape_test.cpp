@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "geometry/triangle_bvh.h"
 #include "rbsim/mass/mass_model.h"
 #include "rbsim/mass/mass_properties.h"
 
@@ -78,6 +79,19 @@ TEST(ImplicitShape, BodyGridPointsHoldTheExactCsgValue) {
   EXPECT_NEAR(grid.phi(body), -0.03, grid.cellSize());
 }
 
+// Issue 37: values just past the zero band at grid points left slivers thin enough for rounding
+// to make them cross, and the plain torus below was refused ("the surface crosses itself") at
+// these resolutions, 11 of the 91 from 40 to 130; with the band at 1e-3 of a cell, none is.
+TEST(ImplicitShape, APlainTorusMeshesWithoutSelfCrossingWhereItUsedTo) {
+  const auto torus = std::make_shared<const ImplicitFunction>(ImplicitFunction::primitive(TorusSurface{0.5, 0.15}));
+  for (const int resolution : {54, 65, 75, 78, 81, 91, 100, 104}) {
+    const ImplicitMeshing m = meshImplicitShape(ImplicitShape{torus, resolution});
+    EXPECT_FALSE(TriangleBvh(m.mesh).selfCrossing(1e9).found) << "resolution " << resolution;
+    const double pappus = 2.0 * M_PI * M_PI * 0.5 * 0.15 * 0.15;
+    EXPECT_NEAR(polyhedralMassProperties(m.mesh, 1.0).volume, pappus, 0.01 * pappus) << "resolution " << resolution;
+  }
+}
+
 // Random trees of random primitives, some with sizes and offsets on the grid's lattice (values of
 // zero, or of rounding size, at grid points): every mesh is closed, outward and has no zero-area
 // triangle, which the mass properties need. With kMarchingZeroBand set to 0, 3 of these trees gave
@@ -121,6 +135,7 @@ TEST(ImplicitShape, RandomTreesMeshClosedWithoutZeroAreaTriangles) {
     EXPECT_TRUE(check.closed && check.consistentlyOriented && check.degenerateTriangles == 0)
         << "tree " << n << ", resolution " << shape.resolution << ": " << check.problem;
     EXPECT_GT(polyhedralMassProperties(m.mesh, 1.0).volume, 0.0) << "tree " << n;
+    EXPECT_FALSE(TriangleBvh(m.mesh).selfCrossing(1e9).found) << "tree " << n << ", resolution " << shape.resolution;
     ++meshed;
   }
   EXPECT_GT(meshed, 40);
@@ -141,6 +156,57 @@ TEST(ImplicitShape, EmptySolidsAndOverBudgetGridsAreRefused) {
   EXPECT_NE(implicitBudgetProblem(huge).find("the limit is"), std::string::npos);
   EXPECT_THROW(meshImplicitShape(huge), std::invalid_argument);
   EXPECT_TRUE(implicitBudgetProblem(ImplicitShape{huge.function, 64}).empty());
+}
+
+// Issue 37: the budget bounded one grid's evaluations only, and a tree within it took 158 s to
+// load, most of it placing surface samples. Now every stage charges one budget: the two grids
+// before they are sampled, the mesh's checks by its triangles, the crossings and corners as they
+// go, and the first charge past it throws, naming the stage.
+TEST(ImplicitShape, OneBudgetBoundsEveryStageOfLoading) {
+  const ImplicitShape torus{std::make_shared<const ImplicitFunction>(ImplicitFunction::primitive(TorusSurface{0.5, 0.15})), 32};
+  const GridLattice grid = implicitGridLattice(torus);
+  const double gridPoints = grid.dims.cast<double>().prod();
+  // Unbounded: what each stage costs.
+  ImplicitBudget unbounded(1, 1e300);
+  const ImplicitShape measured{torus.function, torus.resolution, std::shared_ptr<ImplicitBudget>(&unbounded, [](ImplicitBudget*) {})};
+  const ImplicitMeshing m = meshImplicitShape(measured);
+  // The meshing grid, then the mesh's checks, charged per triangle before they run.
+  const double meshed = gridPoints + double(m.mesh.triangles.size()) * kImplicitEvaluationsPerTriangle;
+  EXPECT_EQ(unbounded.spent(), meshed);
+  const MassModel model = buildMassModel(m.mesh, 1.0, std::nullopt, InertiaMethod::Exact);
+  const SignedDistanceGrid bodyGrid = implicitBodyGrid(measured, *model.mesh, model.principalAxes, model.centerOffset);
+  const double grids = unbounded.spent();
+  EXPECT_EQ(grids, meshed + bodyGrid.dims().cast<double>().prod());
+  const ImplicitSolid solid = implicitSolidOf(measured, model.principalAxes, model.centerOffset);
+  const std::vector<Vec3> samples = implicitSurfaceSamples(solid, bodyGrid, &unbounded);
+  const double all = unbounded.spent();
+  // Each sample's crossings (regula falsi, a gradient each) and its projection: ~10 to 100 calls.
+  EXPECT_GT(all - grids, 10.0 * samples.size());
+  EXPECT_LT(all - grids, 100.0 * samples.size());
+  // A budget the grids fit in but the samples do not: refused at the samples, naming the stage.
+  ImplicitBudget tight(1, 0.5 * (grids + all));
+  const ImplicitShape bounded{torus.function, torus.resolution, std::shared_ptr<ImplicitBudget>(&tight, [](ImplicitBudget*) {})};
+  meshImplicitShape(bounded);
+  implicitBodyGrid(bounded, *model.mesh, model.principalAxes, model.centerOffset);
+  try {
+    implicitSurfaceSamples(solid, bodyGrid, &tight);
+    ADD_FAILURE() << "the samples ran past the budget";
+  } catch (const ImplicitBudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("crossings and corners"), std::string::npos) << e.what();
+    EXPECT_LE(tight.spent(), 0.5 * (grids + all) + 6.0);
+  }
+  // A budget the meshing grid does not fit in: refused before sampling it.
+  ImplicitBudget none(1, 0.5 * gridPoints);
+  try {
+    meshImplicitShape(ImplicitShape{torus.function, torus.resolution, std::shared_ptr<ImplicitBudget>(&none, [](ImplicitBudget*) {})});
+    ADD_FAILURE() << "the grid ran past the budget";
+  } catch (const ImplicitBudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("the meshing grid"), std::string::npos) << e.what();
+  }
+  // Each call of the tree costs its primitive count.
+  ImplicitBudget three(3, 1e300);
+  three.charge(10.0, "a test");
+  EXPECT_EQ(three.spent(), 30.0);
 }
 
 // A lens 1 mm thick (two balls of 0.5 m whose centres are 0.999 m apart) at 16 cells of 1/16 m:

@@ -20,7 +20,7 @@ class TriangleBvh;     // geometry/triangle_bvh.h (private)
 // What the World keeps per body for point queries: the face planes, and for a body of any shape
 // (a bowl, a torus) its signed distance grid and the surface points it tests against others.
 struct BodySolid {
-  FacePlanes convex;                                // face planes; boundingRadius bounds the body
+  FacePlanes convex;  // face planes (none with an sdf, which answers instead); boundingRadius bounds the body
   std::shared_ptr<const SignedDistanceGrid> sdf;     // null: the face planes are the solid
   std::shared_ptr<const std::vector<Vec3>> samples;  // body frame; null: the mesh's vertices
   std::optional<Shape> round;                        // set for a round shape: its exact surface
