@@ -166,25 +166,34 @@ void RecordWriter::close() {
 
 RecordReader::RecordReader(const std::string& path) : path_(path) {
   if (std::filesystem::is_directory(path)) fail("is a folder, not a recording");
-  file_ = std::fopen(path.c_str(), "rb");
+  file_.reset(std::fopen(path.c_str(), "rb"));
   if (file_ == nullptr) fail(std::string("cannot open it (") + std::strerror(errno) + ")");
   char magic[sizeof kMagic] = {};
-  if (std::fread(magic, 1, sizeof magic, file_) != sizeof magic || std::memcmp(magic, kMagic, sizeof kMagic) != 0) {
+  if (std::fread(magic, 1, sizeof magic, file_.get()) != sizeof magic || std::memcmp(magic, kMagic, sizeof kMagic) != 0) {
     fail("not an rbsim recording (it does not start with RBSIMREC)");
   }
   std::uint32_t version = 0;
   std::uint64_t size = 0;
-  if (std::fread(&version, sizeof version, 1, file_) != 1) fail("truncated in its header");
+  if (std::fread(&version, sizeof version, 1, file_.get()) != 1) fail("truncated in its header");
   if (version != kRecordingVersion) {
     fail("a recording of format version " + std::to_string(version) + "; this rbsim reads version " +
          std::to_string(kRecordingVersion) + " only");
   }
-  if (std::fread(&size, sizeof size, 1, file_) != 1) fail("truncated in its header");
+  if (std::fread(&size, sizeof size, 1, file_.get()) != 1) fail("truncated in its header");
   if (size > kMaxHeaderBytes) fail("its header claims " + std::to_string(size) + " bytes; a recording's is at most 1 GiB");
+  // Before allocating: a damaged length must not ask for more memory than the file holds (the
+  // recording fuzzer's 369-byte file claimed 512 MiB).
+  std::error_code sizeError;
+  const std::uintmax_t fileBytes = std::filesystem::file_size(path, sizeError);
+  const long position = std::ftell(file_.get());
+  if (!sizeError && position >= 0 && size > fileBytes - static_cast<std::uintmax_t>(position)) {
+    fail("its header claims " + std::to_string(size) + " bytes, but only " +
+         std::to_string(fileBytes - static_cast<std::uintmax_t>(position)) + " follow: truncated or damaged");
+  }
   std::string text(size, '\0');
-  if (std::fread(text.data(), 1, size, file_) != size) fail("truncated in its header");
+  if (std::fread(text.data(), 1, size, file_.get()) != size) fail("truncated in its header");
   std::uint32_t crc = 0;
-  if (std::fread(&crc, sizeof crc, 1, file_) != 1) fail("truncated in its header");
+  if (std::fread(&crc, sizeof crc, 1, file_.get()) != 1) fail("truncated in its header");
   if (kCheckChecksums && crc != libdeflate_crc32(0, text.data(), text.size())) {
     fail("its header (the scenes and settings it ran) does not match its checksum: it was edited or damaged");
   }
@@ -212,7 +221,6 @@ RecordReader::RecordReader(const std::string& path) : path_(path) {
 }
 
 RecordReader::~RecordReader() {
-  if (file_ != nullptr) std::fclose(file_);
   if (decompressor_ != nullptr) libdeflate_free_decompressor(static_cast<libdeflate_decompressor*>(decompressor_));
 }
 
@@ -220,20 +228,20 @@ void RecordReader::fail(const std::string& problem) const { throw InputError(pat
 
 bool RecordReader::loadBlock() {
   std::uint32_t sizes[3];
-  if (std::fread(sizes, sizeof sizes, 1, file_) != 1) {
+  if (std::fread(sizes, sizeof sizes, 1, file_.get()) != 1) {
     fail("truncated after " + std::to_string(entries_) + " steps: the recording was not finished");
   }
   if (sizes[0] == 0) {
-    if (std::fread(&endCount_, sizeof endCount_, 1, file_) != 1) fail("truncated at its end marker");
+    if (std::fread(&endCount_, sizeof endCount_, 1, file_.get()) != 1) fail("truncated at its end marker");
     // Every byte of the end is checked: its two copies of the count agree, and nothing follows.
     if (sizes[1] != 0 || sizes[2] != static_cast<std::uint32_t>(endCount_)) fail("its end marker is damaged");
-    if (std::fgetc(file_) != EOF) fail("has data after its end marker: it is damaged or two files were joined");
+    if (std::fgetc(file_.get()) != EOF) fail("has data after its end marker: it is damaged or two files were joined");
     ended_ = true;
     return false;
   }
   if (sizes[0] > kMaxBlockBytes || sizes[1] > kMaxBlockBytes) fail("a block claims more than 1 GiB: the file is damaged");
   std::vector<std::uint8_t> deflated(sizes[1]);
-  if (std::fread(deflated.data(), 1, deflated.size(), file_) != deflated.size()) {
+  if (std::fread(deflated.data(), 1, deflated.size(), file_.get()) != deflated.size()) {
     fail("truncated after " + std::to_string(entries_) + " steps: the recording was not finished");
   }
   // The checksum is of the stored bytes, so it sees every bit of them: a flip in the padding bits

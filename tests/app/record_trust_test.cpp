@@ -95,6 +95,35 @@ TEST(RecordTrust, EveryOneBitFlipIsRefused) {
   fs::remove_all(dir);
 }
 
+std::size_t openDescriptors() {
+  return static_cast<std::size_t>(std::distance(fs::directory_iterator("/proc/self/fd"), fs::directory_iterator()));
+}
+
+// Found by an hour of the recording fuzzer: a header length past the file's end allocated and
+// zeroed it first (a 369-byte file, 512 MiB), and a reader that refused its file in the
+// constructor never closed it (the fuzzer ran out of descriptors after 61,525 inputs).
+TEST(RecordTrust, ARefusedRecordingIsClosedAndAskedForNoMoreThanItHolds) {
+  const fs::path dir = tempDir("refused");
+  const Recorded good = record(dir / "good.rbrec");
+  std::string longHeader = good.bytes.substr(0, 64);
+  const std::uint64_t claimed = std::uint64_t{1} << 29;  // 512 MiB, below kMaxHeaderBytes
+  std::memcpy(longHeader.data() + 12, &claimed, sizeof claimed);
+  std::ofstream(dir / "long.rbrec", std::ios::binary) << longHeader;
+  const std::size_t before = openDescriptors();
+  for (int i = 0; i < 2000; ++i) {  // past the usual limit of 1024 descriptors
+    try {
+      RecordReader reader((dir / "long.rbrec").string());
+      ADD_FAILURE() << "a header longer than its file was read";
+    } catch (const InputError& e) {
+      if (i == 0) {
+        EXPECT_NE(std::string(e.what()).find("claims 536870912 bytes, but only 44 follow"), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_EQ(openDescriptors(), before);
+  fs::remove_all(dir);
+}
+
 TEST(RecordTrust, AnEditedHeaderFailsItsChecksum) {
   const fs::path dir = tempDir("header");
   const Recorded good = record(dir / "good.rbrec");
