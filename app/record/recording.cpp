@@ -33,6 +33,10 @@ constexpr int kDeflateLevel = 1;
 constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 30;  // [bytes]
 // No block of ours is larger (kBlockBytes plus one entry); a damaged size asks for no more.
 constexpr std::uint32_t kMaxBlockBytes = std::uint32_t{1} << 30;  // [bytes]
+// Deflate's largest expansion: a 258-byte match costs at least 2 bits, so 1032 bytes out per byte
+// in (RFC 1951; zlib's tech notes), plus a stream's own few bytes.
+constexpr std::uint64_t kMaxDeflateRatio = 1032;       // [1]
+constexpr std::uint64_t kDeflateSlackBytes = 64;       // [bytes]
 
 // Bytes of one body, particle and soft-body node in an entry (recording.h): x, q, P, L and the
 // awake byte; x, v, 1/m, age, lifetime, colour (3 floats) and size; x and v.
@@ -184,11 +188,11 @@ RecordReader::RecordReader(const std::string& path) : path_(path) {
   // Before allocating: a damaged length must not ask for more memory than the file holds (the
   // recording fuzzer's 369-byte file claimed 512 MiB).
   std::error_code sizeError;
-  const std::uintmax_t fileBytes = std::filesystem::file_size(path, sizeError);
-  const long position = std::ftell(file_.get());
-  if (!sizeError && position >= 0 && size > fileBytes - static_cast<std::uintmax_t>(position)) {
-    fail("its header claims " + std::to_string(size) + " bytes, but only " +
-         std::to_string(fileBytes - static_cast<std::uintmax_t>(position)) + " follow: truncated or damaged");
+  fileBytes_ = std::filesystem::file_size(path, sizeError);
+  if (sizeError) fail("cannot tell its size (" + sizeError.message() + ")");
+  if (size > remainingBytes()) {
+    fail("its header claims " + std::to_string(size) + " bytes, but only " + std::to_string(remainingBytes()) +
+         " follow: truncated or damaged");
   }
   std::string text(size, '\0');
   if (std::fread(text.data(), 1, size, file_.get()) != size) fail("truncated in its header");
@@ -226,6 +230,12 @@ RecordReader::~RecordReader() {
 
 void RecordReader::fail(const std::string& problem) const { throw InputError(path_, "", problem); }
 
+std::uint64_t RecordReader::remainingBytes() const {
+  const long position = std::ftell(file_.get());
+  if (position < 0 || static_cast<std::uintmax_t>(position) > fileBytes_) return 0;
+  return fileBytes_ - static_cast<std::uintmax_t>(position);
+}
+
 bool RecordReader::loadBlock() {
   std::uint32_t sizes[3];
   if (std::fread(sizes, sizeof sizes, 1, file_.get()) != 1) {
@@ -240,6 +250,13 @@ bool RecordReader::loadBlock() {
     return false;
   }
   if (sizes[0] > kMaxBlockBytes || sizes[1] > kMaxBlockBytes) fail("a block claims more than 1 GiB: the file is damaged");
+  // Before allocating (the fuzzer again): the stored bytes must be in the file, and deflate
+  // cannot inflate them more than kMaxDeflateRatio-fold.
+  if (sizes[1] > remainingBytes() || sizes[0] > kMaxDeflateRatio * std::uint64_t{sizes[1]} + kDeflateSlackBytes) {
+    fail("a block after step " + std::to_string(entries_) + " claims " + std::to_string(sizes[1]) + " stored bytes (" +
+         std::to_string(remainingBytes()) + " follow) inflating to " + std::to_string(sizes[0]) +
+         ": truncated or damaged");
+  }
   std::vector<std::uint8_t> deflated(sizes[1]);
   if (std::fread(deflated.data(), 1, deflated.size(), file_.get()) != deflated.size()) {
     fail("truncated after " + std::to_string(entries_) + " steps: the recording was not finished");

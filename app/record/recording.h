@@ -119,8 +119,10 @@ class RecordReader {
   // entry_ into `world`; with nextStep, it must be the step after the world's.
   void restoreEntry(std::size_t index, World& world, bool nextStep);
   [[noreturn]] void fail(const std::string& problem) const;
+  std::uint64_t remainingBytes() const;  // in the file after the read position
 
   std::string path_;
+  std::uintmax_t fileBytes_ = 0;  // its size when opened
   // Owned from the moment it opens: a constructor that refuses the file still closes it (the
   // recording fuzzer ran out of file descriptors after 61,525 refused inputs).
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_{nullptr, &std::fclose};

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <unistd.h>
@@ -121,6 +122,18 @@ TEST(RecordTrust, ARefusedRecordingIsClosedAndAskedForNoMoreThanItHolds) {
     }
   }
   EXPECT_EQ(openDescriptors(), before);
+  // A block's sizes are weighed before its buffers are: stored bytes past the file's end, or more
+  // inflated bytes than deflate can give (the fuzzer's second timeout, 10 s zeroing 1 GiB).
+  std::uint64_t headerBytes = 0;
+  std::memcpy(&headerBytes, good.bytes.data() + 12, sizeof headerBytes);
+  const std::size_t block = 20 + headerBytes + 4;  // magic, version, length, header, its CRC
+  for (const auto& [field, value, words] : {std::tuple{1, std::uint32_t{1} << 29, "claims 536870912 stored bytes"},
+                                            std::tuple{0, std::uint32_t{1} << 29, "inflating to 536870912"}}) {
+    std::string damaged = good.bytes;
+    std::memcpy(damaged.data() + block + 4 * field, &value, sizeof value);
+    const std::string error = replayError(damaged, good.phases, dir / "block.rbrec");
+    EXPECT_NE(error.find(words), std::string::npos) << error;
+  }
   fs::remove_all(dir);
 }
 
