@@ -37,13 +37,14 @@ std::vector<double> sample(const ImplicitShape& shape, const GridLattice& grid, 
 
 }  // namespace
 
-void ImplicitBudget::spend(double evaluations, const std::string& stage) {
+void ImplicitBudget::spend(double evaluations, const char* stage, std::size_t triangles) {
   spent_ += evaluations;
   if (!(spent_ > limit_)) return;
   std::ostringstream problem;
   problem << std::setprecision(3) << "loading it (a tree of " << primitives_ << (primitives_ == 1.0 ? " primitive" : " primitives")
-          << ") passed its budget of "
-          << limit_ << " primitive evaluations (~" << limit_ * kImplicitSecondsPerEvaluation << " s) at " << stage;
+          << ") passed its budget of " << limit_ << " primitive evaluations (~" << limit_ * kImplicitSecondsPerEvaluation
+          << " s) at " << stage;
+  if (triangles > 0) problem << " of " << triangles << " triangles";
   throw ImplicitBudgetExceeded(problem.str());
 }
 

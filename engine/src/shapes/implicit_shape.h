@@ -57,16 +57,16 @@ class ImplicitBudget {
   explicit ImplicitBudget(int primitives, double limit = kMaxImplicitEvaluations)
       : primitives_(primitives), limit_(limit) {}
   // `calls` evaluations of the whole tree for `stage` ("the meshing grid", ...).
-  void charge(double calls, const std::string& stage) { spend(calls * primitives_, stage); }
+  void charge(double calls, const char* stage) { spend(calls * primitives_, stage); }
   // The checks a mesh of `triangles` goes through, charged when it is made, before they run.
   void chargeMesh(std::size_t triangles) {
-    spend(double(triangles) * kImplicitEvaluationsPerTriangle,
-          "the checks of its mesh of " + std::to_string(triangles) + " triangles");
+    spend(double(triangles) * kImplicitEvaluationsPerTriangle, "the checks of its mesh", triangles);
   }
   double spent() const { return spent_; }  // [primitive evaluations]
 
  private:
-  void spend(double evaluations, const std::string& stage);
+  // A plain string, not std::string: charge runs at every evaluation of the samples' stage.
+  void spend(double evaluations, const char* stage, std::size_t triangles = 0);
 
   double primitives_;
   double limit_;  // [primitive evaluations]
