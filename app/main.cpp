@@ -11,6 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "demos/demo.h"
+#include "cli/cli_messages.h"
+#include "cli/flags.h"
+#include "cli/scene_catalogue.h"
 #include "flag_values.h"
 #include "record/recording.h"
 #include "rbsim/integrate/integrator.h"
@@ -32,180 +35,9 @@
 namespace {
 
 using rbsim::InputError;
+using rbsim::app::Flags;
+using rbsim::app::FlagSet;
 using rbsim::app::RunOptions;
-
-// --trace-every past the most steps a scene may have (world.steps) would trace step 0 alone.
-constexpr std::uint64_t kMaxTraceEvery = 1'000'000'000;  // [steps]
-// --window-frames: 1e9 frames is 190 days at 60 fps; more is surely a typo.
-constexpr std::uint64_t kMaxWindowFrames = 1'000'000'000;  // [frames]
-
-// Flags shared by `demo` and `run`. Those that change the scene become --set assignments, so a
-// flag and the scene key it stands for are checked by the same code.
-struct Flags {
-  RunOptions run;
-  std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
-  std::string pngLevel, traceEvery, windowFrames;  // numbers, parsed by flag_values.h
-  std::string gl;                                  // off-screen GL backend, render/gl_context.h
-  std::string compare;                             // KEY=V1,V2[,...]: a compare block
-  std::string plot;                                // Q1,Q2,...: view.plots
-  // Scene key -> the flag that set it ("view.size" -> "--size 0x0"), so an error the scene reports
-  // about the key can say which flag it came from.
-  std::map<std::string, std::string> keyFlags;
-  bool noRender = false, noOverlay = false, window = false;
-  rbsim::app::WindowOptions windowOptions;
-  std::vector<std::string> sets;
-
-  void attach(CLI::App& cmd) {
-    // An empty value would otherwise read as "flag not given": the flag would be ignored silently.
-    const CLI::Validator nonEmpty([](const std::string& value) { return value.empty() ? "expected a non-empty value" : ""; },
-                                  "NONEMPTY");
-    cmd.add_option("--frames", run.framesDir, "write PNG frames into this folder")->check(nonEmpty);
-    cmd.add_option("--video", run.videoPath, "write the MP4 here (default videos/<name>.mp4)")->check(nonEmpty);
-    cmd.add_option("--png-level", pngLevel,
-                   "zlib level of the --frames PNGs, 0 (stored, fastest) to 9 (smallest); default 1, "
-                   "see app/render/png_file.h")
-        ->check(nonEmpty);
-    cmd.add_option("--trace", run.tracePath, "write the per-body CSV trace here")->check(nonEmpty);
-    cmd.add_option("--trace-every", traceEvery, "trace every K-th step, K from 1 to 1e9")->check(nonEmpty);
-    cmd.add_option("--record", run.recordPath,
-                   "record every step's state into this file, for `rbsim replay` (record/recording.h)")
-        ->check(nonEmpty);
-    cmd.add_option("--steps", steps, "number of steps per scene (world.steps)")->check(nonEmpty);
-    cmd.add_option("--dt", dt, "time step in seconds (world.dt)")->check(nonEmpty);
-    cmd.add_option("--fps", fps, "frames per simulated second (view.fps)")->check(nonEmpty);
-    cmd.add_option("--size", size, "image size WxH in pixels (view.size)")->check(nonEmpty);
-    cmd.add_option("--integrator", integrator, "integrator name (world.integrator); see `rbsim list`")->check(nonEmpty);
-    cmd.add_option("--inertia", inertia, "cube|exact: default inertia method (world.inertia)")->check(nonEmpty);
-    cmd.add_option("--particle-integrator", particleIntegrator,
-                   "explicit-euler|semi-implicit-euler: of particle systems naming none (world.particle_integrator)")
-        ->check(nonEmpty);
-    cmd.add_option("--set", sets, "override any scene key: path=value, e.g. bodies.box.mass=2")->check(nonEmpty);
-    cmd.add_option("--compare", compare,
-                   "KEY=V1,V2[,...]: run the scene once per value of any scene key, drawn side by side in one "
-                   "frame (a \"compare\" block), e.g. world.integrator=euler-quat,dlm")
-        ->check(nonEmpty);
-    cmd.add_option("--plot", plot,
-                   "time plots in the frame (view.plots): a comma-separated list of ke, pe, E, |P|, |L|, "
-                   "contacts, error; of the whole scene, or of the selected body with --set view.plot_of=selected")
-        ->check(nonEmpty);
-    cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
-    cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");
-    cmd.add_flag("--quiet", run.quiet, "print nothing on success");
-    cmd.add_flag("--window", window, "open an X11 window with controls instead of writing a video");
-    cmd.add_option("--window-frames", windowFrames, "with --window: close after N frames (scripted runs), N >= 1")
-        ->check(nonEmpty);
-    cmd.add_option("--screenshot", windowOptions.screenshot, "with --window: PNG of the window's last frame")->check(nonEmpty);
-    cmd.add_option("--gl", gl,
-                   "off-screen OpenGL: " + rbsim::render::glBackendChoices() + " (default " +
-                       rbsim::render::glBackendName(rbsim::render::defaultGlBackend()) +
-                       "; both are Mesa's llvmpipe, egl on the surfaceless platform)")
-        ->check(nonEmpty);
-  }
-
-  // `framesByDefault`: `demo all` writes PNG frames without --frames (so --png-level applies).
-  RunOptions finish(const std::string& defaultVideo, bool framesByDefault = false) {
-    using rbsim::app::parseFlagInteger;
-    if (!pngLevel.empty()) {
-      run.pngLevel = static_cast<int>(parseFlagInteger(
-          "--png-level", pngLevel, rbsim::render::kMinPngLevel, rbsim::render::kMaxPngLevel,
-          "a zlib level (0: stored, fastest; 9: smallest)"));
-    }
-    if (!traceEvery.empty()) {
-      run.traceEvery = parseFlagInteger("--trace-every", traceEvery, 1, kMaxTraceEvery,
-                                        "a step interval (1: every step)");
-    }
-    if (!windowFrames.empty()) {
-      windowOptions.frames = parseFlagInteger("--window-frames", windowFrames, 1, kMaxWindowFrames,
-                                              "a number of frames to show");
-    }
-    if (!gl.empty()) {
-      const std::optional<rbsim::render::GlBackend> backend = rbsim::render::parseGlBackend(gl);
-      if (!backend) throw InputError("", "--gl " + gl, "expected " + rbsim::render::glBackendChoices());
-      run.glBackend = *backend;
-      windowOptions.glBackend = *backend;
-    }
-    refuseIgnoredFlags(framesByDefault);
-    auto add = [&](const std::string& key, const std::string& value, const std::string& flag) {
-      if (value.empty()) return;
-      run.overrides.push_back(key + "=" + value);
-      keyFlags[key] = flag;
-    };
-    add("world.dt", dt, "--dt " + dt);
-    add("world.steps", steps, "--steps " + steps);
-    add("world.integrator", integrator.empty() ? "" : "\"" + integrator + "\"", "--integrator " + integrator);
-    add("world.inertia", inertia.empty() ? "" : "\"" + inertia + "\"", "--inertia " + inertia);
-    add("world.particle_integrator", particleIntegrator.empty() ? "" : "\"" + particleIntegrator + "\"",
-        "--particle-integrator " + particleIntegrator);
-    add("view.fps", fps, "--fps " + fps);
-    if (!size.empty()) {
-      const auto [width, height] = rbsim::app::parseImageSize("--size", size);
-      add("view.size", "[" + std::to_string(width) + "," + std::to_string(height) + "]", "--size " + size);
-    }
-    if (noOverlay) add("view.overlay", "false", "--no-overlay");
-    if (!plot.empty()) {
-      nlohmann::json names = nlohmann::json::array();
-      std::size_t start = 0;
-      for (std::size_t comma; (comma = plot.find(',', start)) != std::string::npos; start = comma + 1) {
-        names.push_back(plot.substr(start, comma - start));
-      }
-      names.push_back(plot.substr(start));
-      add("view.plots", names.dump(), "--plot " + plot);
-    }
-    if (!compare.empty()) {
-      add("compare", rbsim::app::parseCompareFlag(compare), "--compare " + compare);
-      for (const char* field : {"compare.key", "compare.values"}) keyFlags[field] = "--compare " + compare;
-    }
-    for (const std::string& s : sets) {
-      run.overrides.push_back(s);
-      keyFlags.erase(s.substr(0, s.find('=')));  // a later --set of the key wins over the flag
-    }
-    run.render = !noRender;
-    if (run.videoPath.empty() && run.render) run.videoPath = defaultVideo;
-    return run;
-  }
-
-  // A flag that the others make pointless would be ignored without a word: refused instead.
-  void refuseIgnoredFlags(bool framesByDefault) const {
-    const std::pair<const char*, bool> imageFlags[] = {
-        {"--frames", !run.framesDir.empty()}, {"--video", !run.videoPath.empty()}, {"--png-level", !pngLevel.empty()}};
-    const std::pair<const char*, bool> runFlags[] = {{"--trace", !run.tracePath.empty()},
-                                                     {"--trace-every", !traceEvery.empty()},
-                                                     {"--no-render", noRender}};
-    for (const auto& [flag, given] : imageFlags) {
-      if (given && noRender) {
-        throw InputError("", std::string(flag) + " with --no-render", "contradictory: --no-render writes no images");
-      }
-      if (given && window) {
-        throw InputError("", std::string(flag) + " with --window",
-                         "not allowed: the window writes no files (its record button writes videos/window-*.mp4)");
-      }
-    }
-    for (const auto& [flag, given] : runFlags) {
-      if (given && window) {
-        throw InputError("", std::string(flag) + " with --window", "not allowed: --window shows the scene live and writes no trace or video");
-      }
-    }
-    if (!gl.empty() && noRender) {
-      throw InputError("", "--gl with --no-render", "contradictory: --no-render makes no OpenGL context");
-    }
-    if (!pngLevel.empty() && run.framesDir.empty() && !framesByDefault) {
-      throw InputError("", "--png-level without --frames", "it sets the PNG frames' compression; add --frames DIR");
-    }
-    if (!traceEvery.empty() && run.tracePath.empty()) {
-      throw InputError("", "--trace-every without --trace", "it only thins the trace; add --trace FILE.csv");
-    }
-    for (const auto& [flag, given] : {std::pair<const char*, bool>{"--window-frames", !windowFrames.empty()},
-                                      std::pair<const char*, bool>{"--screenshot", !windowOptions.screenshot.empty()}}) {
-      if (given && !window) throw InputError("", std::string(flag) + " without --window", "it only acts on the window; add --window");
-    }
-  }
-
-  // The flag behind a scene error's field, as " (from --size 0x0)", or "" when no flag set it.
-  std::string origin(const InputError& e) const {
-    const auto it = keyFlags.find(e.field());
-    return it == keyFlags.end() ? "" : " (from " + it->second + ")";
-  }
-};
 
 // Everything printed on stdout (the summary, `list`) is checked too: `rbsim run ... > /dev/full`
 // must not report success.
@@ -238,6 +70,10 @@ int listEverything() {
   std::printf("demos:\n");
   for (const rbsim::app::Demo& demo : rbsim::app::allDemos()) {
     std::printf("  %d  %-14s %s\n", demo.number, demo.name.c_str(), demo.description.c_str());
+  }
+  std::printf("scenes in %s/scenes (rbsim run NAME):\n", rbsim::app::assetDir().c_str());
+  for (const rbsim::app::SceneEntry& scene : rbsim::app::shippedScenes()) {
+    std::printf("  %-32s %s\n", scene.name.c_str(), scene.title.c_str());
   }
   std::printf("integrators:\n");
   for (const std::string& name : rbsim::integratorNames()) std::printf("  %s\n", name.c_str());
@@ -284,7 +120,6 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
 // overrides and then the view keys given now, drawn from the recorded states (record/recording.h).
 int replayRecording(const std::string& path, Flags& flags) {
   const RunOptions options = flags.finish("videos/" + std::filesystem::path(path).stem().string() + "_replay.mp4");
-  if (!options.recordPath.empty()) throw InputError("", "--record with replay", "a replay records nothing: it is drawn from a recording");
   for (const std::string& assignment : options.overrides) {
     const std::string key = assignment.substr(0, assignment.find('='));
     if (key.rfind("view.", 0) != 0 && key != "view") {
@@ -329,6 +164,8 @@ int replayRecording(const std::string& path, Flags& flags) {
 int main(int argc, char** argv) {
   CLI::App app{"rbsim: rigid-body simulator with numbered coursework demos, rendered off-screen"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", rbsim::app::versionText(), "print the version and the commit it was built from");
+  rbsim::app::formatParseErrors(app);
 
   std::string demoArgument;
   std::string demoPhase;  // empty: every phase
@@ -336,24 +173,27 @@ int main(int argc, char** argv) {
   CLI::App* demo = app.add_subcommand("demo", "run numbered assignment demo N into videos/");
   demo->add_option("N", demoArgument, "demo number (see `rbsim list`), or `all`: every demo, and the reel "
                                       "videos/rbsim-demos.mp4")
+      ->type_name("N|all")
       ->required();
-  demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4");
-  demoFlags.attach(*demo);
+  demo->add_option("--phase", demoPhase, "play only phase K (1 = the first scene) -> videos/<name>_K.mp4")->type_name("K");
+  demoFlags.attach(*demo, FlagSet::Simulate);
 
   std::string scenePath;
   Flags runFlags;
   CLI::App* run = app.add_subcommand("run", "run a scene file");
-  run->add_option("SCENE", scenePath, "scene JSON file")->required();
-  runFlags.attach(*run);
+  run->add_option("SCENE", scenePath, "a scene file, or the name of a shipped scene (`rbsim list`)")
+      ->type_name("FILE|NAME")
+      ->required();
+  runFlags.attach(*run, FlagSet::Simulate);
 
   std::string recordingPath;
   Flags replayFlags;
   CLI::App* replay = app.add_subcommand("replay", "draw a recording (--record) again without simulating: another camera, "
                                                   "size, overlay or plots through view keys; with --window, a timeline to scrub");
-  replay->add_option("RECORDING", recordingPath, "a file written by --record")->required();
-  replayFlags.attach(*replay);
+  replay->add_option("RECORDING", recordingPath, "a file written by --record")->type_name("FILE.rbrec")->required();
+  replayFlags.attach(*replay, FlagSet::Replay);
 
-  app.add_subcommand("list", "list demos, integrators and inertia methods");
+  app.add_subcommand("list", "list the demos, the shipped scenes, integrators and inertia methods");
 
   try {
     app.parse(argc, argv);
@@ -392,7 +232,7 @@ int main(int argc, char** argv) {
       title = "Demo " + std::to_string(chosen->number) + ": " + chosen->name;
     } else {
       options = runFlags.finish("videos/" + std::filesystem::path(scenePath).stem().string() + ".mp4");
-      files.push_back(scenePath);
+      files.push_back(rbsim::app::resolveScene(scenePath));
     }
     if (flags.window) {
       if (!options.recordPath.empty()) {

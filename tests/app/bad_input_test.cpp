@@ -86,6 +86,9 @@ TEST_P(BadInput, ExitsTwoWithAMessageNamingTheField) {
     EXPECT_NE(output.find(fragment), std::string::npos) << "missing \"" << fragment << "\" in: " << output;
   }
   EXPECT_EQ(output.find("internal error"), std::string::npos) << output;
+  if (c.exit != 0) {
+    EXPECT_EQ(output.rfind("rbsim: error: ", 0), 0u) << "every error opens with one prefix: " << output;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, BadInput, ::testing::ValuesIn(loadCases()),

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "rbsim/io/input_error.h"
+#include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/scene/strict_json.h"
 
@@ -68,8 +69,16 @@ void applyOverride(nlohmann::json& document, const std::string& assignment) {
         }
       }
       if (index >= node->size()) {
+        std::vector<std::string> names;
+        for (const nlohmann::json& element : *node) {
+          if (element.is_object() && element.contains("name") && element["name"].is_string()) {
+            names.push_back(element["name"].get<std::string>());
+          }
+        }
+        const std::string near = isIndex(part) ? "" : nearestKey(part, names);
         throw InputError("", "--set", "\"" + part + "\" names no element of the array (it has " +
-                                          std::to_string(node->size()) + ")");
+                                          std::to_string(node->size()) + ", indexed from 0 or by name)" +
+                                          (near.empty() ? "" : "; did you mean \"" + near + "\"?"));
       }
       node = &(*node)[index];
     } else {
