@@ -14,7 +14,7 @@
 #include "cli/cli_messages.h"
 #include "cli/flags.h"
 #include "cli/scene_catalogue.h"
-#include "flag_values.h"
+#include "cli/flag_values.h"
 #include "record/recording.h"
 #include "rbsim/integrate/integrator.h"
 #include "rbsim/io/input_error.h"

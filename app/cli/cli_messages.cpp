@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "rbsim/scene/json_fields.h"
-#include "rbsim_commit.h"  // RBSIM_COMMIT, written at every build by app/cli/write_commit.cmake
 
 namespace rbsim::app {
 namespace {

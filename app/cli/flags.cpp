@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "flag_values.h"
+#include "cli/flag_values.h"
 #include "render/gl_context.h"
 #include "render/png_file.h"
 

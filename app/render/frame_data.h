@@ -122,14 +122,33 @@ struct OverlayPlot {
   std::vector<std::vector<float>> times;   // per series [s]
   std::vector<std::vector<float>> values;  // per series, in `unit`
   float tMin = 0.0f, tMax = 1.0f;  // the time axis [s]
+  bool nonNegative = false;        // a length, an energy of motion, a count: the axis starts at 0
 };
 
-// Text for the overlay panel: a title and rows of (label, value) already formatted by the app,
-// captions pinned to points of the image, and time plots stacked at the bottom right.
+// How much the panel shows (view.panel): a compact panel is the title, the caption and at most
+// kCompactRows (panel_rows.h) of the rows, chosen by their level; a full one every row.
+enum class PanelMode { Compact, Full, Off };
+
+// How much a row matters, for the compact panel: the Essential rows first, then the Useful ones
+// in order while there is room; Detail rows only in the full panel. Action rows tell what the
+// user is doing just now (a drag in the window): always shown, and outside the row budget, so the
+// scene's rows stay put while they come and go.
+enum class RowLevel { Essential, Useful, Detail, Action };
+
+// One row of the panel, its label and its value already formatted by the app.
+struct OverlayRow {
+  std::string label;
+  std::string value;
+  RowLevel level = RowLevel::Useful;
+};
+
+// Text for the overlay panel: a title and rows already formatted by the app, captions pinned to
+// points of the image, and time plots stacked at the bottom right or under the panel.
 struct OverlayData {
   std::string title;
   std::string caption;  // e.g. the demo phase being shown
-  std::vector<std::pair<std::string, std::string>> rows;
+  std::vector<OverlayRow> rows;
+  PanelMode panel = PanelMode::Compact;
   std::vector<OverlayLabel> labels;
   std::vector<OverlayPlot> plots;
   float plotsRight = 0.0f;  // the plots' right edge [px from the left]; 0: the image's (less a margin)

@@ -96,6 +96,7 @@ void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui) {
   OverlayData plotsOnly;
   if (!frame.options.overlay) {
     plotsOnly.plots = frame.overlay.plots;
+    plotsOnly.panel = frame.overlay.panel;
     plotsOnly.plotsRight = frame.overlay.plotsRight;
     plotsOnly.plotsUnderPanel = frame.overlay.plotsUnderPanel;
     plotsOnly.plotsBottomInset = frame.overlay.plotsBottomInset;
@@ -145,6 +146,11 @@ std::shared_ptr<const std::vector<std::uint8_t>> OffscreenRenderer::finishShared
 }
 
 bool OffscreenRenderer::uiWantsPointer() const { return impl_->uiWantsPointer; }
+
+PanelLayout OffscreenRenderer::layoutPanel(const OverlayData& data) {
+  impl_->context->makeCurrent();
+  return impl_->overlay.layoutPanel(data);
+}
 
 int OffscreenRenderer::width() const { return impl_->context->width(); }
 int OffscreenRenderer::height() const { return impl_->context->height(); }

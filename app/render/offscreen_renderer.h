@@ -9,6 +9,7 @@
 
 #include "frame_data.h"
 #include "gl_context.h"
+#include "panel_layout.h"
 #include "timing.h"
 #include "ui_frame.h"
 
@@ -49,6 +50,10 @@ class OffscreenRenderer {
   // Whether ImGui wanted the pointer during the last render() with a UiFrame (it was over a
   // control), so the window does not also turn the drag into a camera move or a pick.
   bool uiWantsPointer() const;
+
+  // Where the overlay panel of `data` goes and each line of its text, as render() lays it out
+  // (panel_layout.h; tests check that no text leaves its box).
+  PanelLayout layoutPanel(const OverlayData& data);
 
   int width() const;
   int height() const;

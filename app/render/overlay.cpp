@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <backends/imgui_impl_opengl2.h>
 #include <imgui.h>
@@ -39,31 +40,6 @@ ImFont* loadFont(ImGuiIO& io, float sizePx) {
   ImFontConfig config;
   config.SizePixels = 13.0f * std::max(1.0f, std::round(sizePx / 13.0f));
   return io.Fonts->AddFontDefault(&config);
-}
-
-// Greedy word wrap at spaces only. ImGui's own wrapping also breaks after '.' and ',', which
-// tears numbers such as "1.5" across two lines.
-std::string wrapAtSpaces(const std::string& text, float maxWidth) {
-  std::string out, line;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find_first_of(" \n", start);
-    if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string candidate = line.empty() ? word : line + " " + word;
-    if (!line.empty() && ImGui::CalcTextSize(candidate.c_str()).x > maxWidth) {
-      out += line + "\n";
-      line = word;
-    } else {
-      line = candidate;
-    }
-    if (end < text.size() && text[end] == '\n') {
-      out += line + "\n";
-      line.clear();
-    }
-    start = end + 1;
-  }
-  return out + line;
 }
 
 void applyStyle() {
@@ -110,7 +86,7 @@ Overlay::~Overlay() {
 }
 
 bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui) {
-  const bool panel = !(data.title.empty() && data.caption.empty() && data.rows.empty());  // no empty box
+  const bool panel = data.panel != PanelMode::Off && !(data.title.empty() && data.caption.empty() && data.rows.empty());
   if (!panel && data.labels.empty() && data.plots.empty() && ui == nullptr) return false;
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
@@ -143,77 +119,6 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
   glActiveTexture(GL_TEXTURE0);
   ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
   return io.WantCaptureMouse;
-}
-
-float Overlay::drawPanel(const OverlayData& data) {
-  ImGuiIO& io = ImGui::GetIO();
-
-  // Measure the content to give the window a fixed size (see overlay.h for why not auto-size).
-  const ImGuiStyle& style = ImGui::GetStyle();
-  float labelWidth = 0.0f, valueWidth = 0.0f;
-  ImGui::PushFont(bodyFont_);
-  for (const auto& [label, value] : data.rows) {
-    labelWidth = std::max(labelWidth, ImGui::CalcTextSize(label.c_str()).x);
-    valueWidth = std::max(valueWidth, ImGui::CalcTextSize(value.c_str()).x);
-  }
-  const float gap = ImGui::CalcTextSize("  ").x;
-  const float tableWidth = labelWidth + gap + valueWidth + 4.0f * style.CellPadding.x;
-  ImGui::PushFont(titleFont_);
-  const ImVec2 titleSize = ImGui::CalcTextSize(data.title.c_str());
-  ImGui::PopFont();
-  const float maxInner = 0.45f * io.DisplaySize.x - 2.0f * style.WindowPadding.x;
-  const float innerWidth = std::min(maxInner, std::max({tableWidth, titleSize.x, 12.0f * gap}));
-  const std::string caption = wrapAtSpaces(data.caption, innerWidth);
-  const ImVec2 captionSize = ImGui::CalcTextSize(caption.c_str());
-  const float lineHeight = ImGui::GetTextLineHeight();
-  const float rowHeight = lineHeight + 2.0f * style.CellPadding.y;
-  float contentHeight = titleSize.y;
-  if (!data.caption.empty()) contentHeight += style.ItemSpacing.y + captionSize.y;
-  if (!data.rows.empty()) {
-    contentHeight += style.ItemSpacing.y + 1.0f;  // separator
-    contentHeight += style.ItemSpacing.y + rowHeight * static_cast<float>(data.rows.size());
-  }
-  ImGui::PopFont();
-
-  const float margin = overlayMargin(static_cast<int>(io.DisplaySize.y));
-  const float windowHeight = contentHeight + 2.0f * style.WindowPadding.y;
-  ImGui::SetNextWindowPos(ImVec2(margin, margin));
-  ImGui::SetNextWindowSize(ImVec2(innerWidth + 2.0f * style.WindowPadding.x, windowHeight));
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
-                                 ImGuiWindowFlags_NoFocusOnAppearing;
-  if (ImGui::Begin("##rbsim-overlay", nullptr, flags)) {
-    ImGui::PushFont(titleFont_);
-    ImGui::TextColored(kTitleColor, "%s", data.title.c_str());
-    ImGui::PopFont();
-    ImGui::PushFont(bodyFont_);
-    if (!data.caption.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.78f, 0.82f, 0.88f, 1.0f));
-      ImGui::TextUnformatted(caption.c_str());
-      ImGui::PopStyleColor();
-    }
-    if (!data.rows.empty()) {
-      ImGui::Separator();
-      if (ImGui::BeginTable("rows", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-        ImGui::TableSetupColumn("label", ImGuiTableColumnFlags_WidthFixed, labelWidth + gap);
-        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
-        for (const auto& [label, value] : data.rows) {
-          ImGui::TableNextRow();
-          ImGui::TableSetColumnIndex(0);
-          ImGui::TextColored(ImVec4(0.70f, 0.76f, 0.84f, 1.0f), "%s", label.c_str());
-          ImGui::TableSetColumnIndex(1);
-          // Right-aligned: with a monospace font, same-precision numbers line up on the point.
-          const float free = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(value.c_str()).x;
-          if (free > 0.0f) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + free);
-          ImGui::TextUnformatted(value.c_str());
-        }
-        ImGui::EndTable();
-      }
-    }
-    ImGui::PopFont();
-  }
-  ImGui::End();
-  return margin + windowHeight;
 }
 
 void Overlay::drawLabels(const OverlayData& data) {

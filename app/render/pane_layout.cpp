@@ -11,7 +11,10 @@ namespace {
 constexpr int kPaneGap = 4;                   // between panes [px]
 constexpr float kMarginFraction = 0.015f;     // the overlay's margin, of the image height [1]
 constexpr float kMarginPixels = 4.0f;         // plus this [px]
-constexpr float kPanelWidthFraction = 0.45f;  // the panel's widest, of the image width [1] (overlay.cpp)
+// The panel's width, of the image width [1]: a full panel's rows hold three vectors; a compact one
+// leaves the scene two thirds of a 16:9 image.
+constexpr float kFullPanelWidthFraction = 0.45f;
+constexpr float kCompactPanelWidthFraction = 0.33f;
 constexpr double kMaxPaneFovDegrees = 150.0;  // a very narrow pane's field of view, at most [deg]
 
 }  // namespace
@@ -20,15 +23,15 @@ float overlayMargin(int imageHeight) {
   return std::round(kMarginFraction * static_cast<float>(imageHeight)) + kMarginPixels;
 }
 
-int infoColumnWidth(int imageWidth, int imageHeight) {
-  return static_cast<int>(std::lround(kPanelWidthFraction * static_cast<float>(imageWidth) +
-                                      2.0f * overlayMargin(imageHeight)));
+int infoColumnWidth(int imageWidth, int imageHeight, PanelMode panel) {
+  const float fraction = panel == PanelMode::Full ? kFullPanelWidthFraction : kCompactPanelWidthFraction;
+  return static_cast<int>(std::lround(fraction * static_cast<float>(imageWidth) + 2.0f * overlayMargin(imageHeight)));
 }
 
-std::vector<PaneRect> paneLayout(std::size_t count, int imageWidth, int imageHeight, bool infoColumn) {
+std::vector<PaneRect> paneLayout(std::size_t count, int imageWidth, int imageHeight, bool infoColumn, PanelMode panel) {
   std::vector<PaneRect> panes;
   if (count == 0 || imageWidth <= 0 || imageHeight <= 0) return panes;
-  const int left = infoColumn ? std::min(infoColumnWidth(imageWidth, imageHeight), imageWidth / 2) : 0;
+  const int left = infoColumn ? std::min(infoColumnWidth(imageWidth, imageHeight, panel), imageWidth / 2) : 0;
   const int areaWidth = imageWidth - left;
   const double imageAspect = static_cast<double>(imageWidth) / imageHeight;
   std::size_t bestColumns = 1;

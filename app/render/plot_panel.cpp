@@ -1,6 +1,6 @@
-// The overlay's time plots (OverlayData::plots, issue 24): stacked at the bottom right, each a
-// frame with its title and unit, the value range on the left, the time window below, one line per
-// series in its own colour and a legend. Drawn with ImGui's draw list: Debian's ImGui 1.86 has
+// The overlay's time plots (OverlayData::plots, issues 24 and 38): stacked under the panel in the
+// info column (or at the bottom right), each a frame with its title and unit, 1-2-5 ticks on the
+// left (plot_ticks.h), the time axis below, one line per series in its own colour and a legend. Drawn with ImGui's draw list: Debian's ImGui 1.86 has
 // PlotLines, but one series, no axes and no units.
 #include <algorithm>
 #include <cmath>
@@ -11,6 +11,7 @@
 
 #include "overlay.h"
 #include "pane_layout.h"
+#include "plot_ticks.h"
 
 namespace rbsim::render {
 
@@ -25,19 +26,17 @@ constexpr float kPlotsHeightFraction = 0.62f;  // the stack, at most, of the ima
 constexpr float kMaxPlotHeightFraction = 0.22f;  // one plot, at most [1]
 constexpr float kMinPlotLines = 5.0f;     // a plot's least height: title, two values, times [text lines]
 constexpr float kMinPlotColumns = 14.0f;  // its least width beside the value labels [text line heights]
-// The smallest range of a plot's value axis, relative to the values' size: the labels' 4
-// significant digits tell its ends apart [1]. And absolute, for values at zero [the plot's unit].
-constexpr float kMinRelativeSpan = 2e-3f;
-constexpr float kMinSpan = 1e-6f;
-
-// "1.23e+03" style for axis labels: 4 significant digits.
-std::string axisNumber(float value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", static_cast<double>(value));
-  return text;
-}
+constexpr float kTickSpacingLines = 1.3f;  // value ticks at least this far apart [text lines]
+constexpr float kTimeTickSpacingLabels = 1.6f;  // time ticks at least this far apart [label widths]
 
 }  // namespace
+
+float Overlay::leastPlotsHeight(const OverlayData& data) const {
+  if (data.plots.empty()) return 0.0f;
+  const float line = bodyFont_->FontSize;
+  return static_cast<float>(data.plots.size()) * kMinPlotLines * line + 2.0f * ImGui::GetStyle().WindowPadding.y +
+         overlayMargin(height_) + data.plotsBottomInset;
+}
 
 void Overlay::drawPlots(const OverlayData& data, float top) {
   if (data.plots.empty()) return;
@@ -46,7 +45,7 @@ void Overlay::drawPlots(const OverlayData& data, float top) {
   ImGui::PushFont(bodyFont_);
   const float line = ImGui::GetTextLineHeight();
   const float margin = overlayMargin(static_cast<int>(io.DisplaySize.y));
-  const float labelWidth = ImGui::CalcTextSize("-0.0000e+00").x;
+  const float labelWidth = ImGui::CalcTextSize("-00.000").x;
   // In a small image the fractions leave no room for the text: a plot keeps kMinPlotLines of
   // height and kMinPlotColumns of width beside its labels, overlapping more of the picture.
   // Under the panel, the plots fill the info column of a comparison's panes (pane_layout.h),
@@ -54,7 +53,7 @@ void Overlay::drawPlots(const OverlayData& data, float top) {
   const float count = static_cast<float>(data.plots.size());
   const float roomUnder = io.DisplaySize.y - data.plotsBottomInset - std::max(top, 0.0f) - 2.0f * margin - 2.0f * style.WindowPadding.y;
   const bool underPanel = data.plotsUnderPanel && roomUnder >= count * kMinPlotLines * line;
-  const float columnWidth = static_cast<float>(infoColumnWidth(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y))) - 2.0f * margin;
+  const float columnWidth = static_cast<float>(infoColumnWidth(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y), data.panel)) - 2.0f * margin;
   const float preferredWidth = underPanel ? columnWidth : kPanelWidthFraction * io.DisplaySize.x;
   const float width = std::min(std::max(preferredWidth, labelWidth + kMinPlotColumns * line), io.DisplaySize.x - 2.0f * margin);
   const float room = underPanel ? roomUnder : kPlotsHeightFraction * io.DisplaySize.y - 2.0f * style.WindowPadding.y;
@@ -74,26 +73,7 @@ void Overlay::drawPlots(const OverlayData& data, float top) {
     ImVec2 origin = ImGui::GetCursorScreenPos();
     const float innerWidth = width - 2.0f * style.WindowPadding.x;
     for (const OverlayPlot& plot : data.plots) {
-      // Title [unit], then the legend of a comparison, on one line.
-      const std::string title = plot.unit.empty() ? plot.title : plot.title + " [" + plot.unit + "]";
-      draw->AddText(origin, text, title.c_str());
-      // The legend of a comparison follows the title, or takes a line of its own when too long.
-      float legendWidth = 0.0f;
-      for (const std::string& name : plot.legend) {
-        if (!name.empty()) legendWidth += ImGui::CalcTextSize(name.c_str()).x + line;
-      }
-      const float titleWidth = ImGui::CalcTextSize(title.c_str()).x + line;
-      const bool ownLine = legendWidth > 0.0f && titleWidth + legendWidth > innerWidth;
-      ImVec2 at(ownLine ? origin.x : origin.x + titleWidth, ownLine ? origin.y + line : origin.y);
-      for (std::size_t s = 0; s < plot.legend.size(); ++s) {
-        if (plot.legend[s].empty()) continue;
-        const ImU32 color = kSeriesColors[s % std::size(kSeriesColors)];
-        draw->AddText(at, color, plot.legend[s].c_str());
-        at.x += ImGui::CalcTextSize(plot.legend[s].c_str()).x + line;
-      }
-      // The frame: values left of it, time below it.
-      const ImVec2 a(origin.x + labelWidth, origin.y + (ownLine ? 2.2f : 1.2f) * line);
-      const ImVec2 b(origin.x + innerWidth, origin.y + plotHeight - 1.4f * line);
+      // The value axis first: its shared power of ten goes into the title's unit.
       float lo = INFINITY, hi = -INFINITY;
       for (std::size_t s = 0; s < plot.values.size(); ++s) {
         for (std::size_t i = 0; i < plot.values[s].size(); ++i) {
@@ -104,27 +84,58 @@ void Overlay::drawPlots(const OverlayData& data, float top) {
           }
         }
       }
-      if (!(lo <= hi)) lo = 0.0f, hi = 1.0f;  // nothing to show yet
-      // The range spans at least kMinRelativeSpan of the values' size, so a conserved quantity
-      // draws as the flat line it is instead of its rounding blown up to the plot's height.
-      const float magnitude = std::max(std::abs(lo), std::abs(hi));
-      const float span = std::max({hi - lo, kMinRelativeSpan * magnitude, kMinSpan});
-      const float middle = 0.5f * (lo + hi);
-      lo = middle - 0.54f * span;  // 8 % free above and below the lines
-      hi = middle + 0.54f * span;
-      draw->AddRect(a, b, grid);
-      draw->AddLine(ImVec2(a.x, 0.5f * (a.y + b.y)), ImVec2(b.x, 0.5f * (a.y + b.y)), grid);
-      // The middle value only where three labels fit without touching, the lowest where two do.
-      const bool middleFits = b.y - a.y >= 3.0f * line, lowFits = b.y - a.y >= 2.0f * line;
-      for (const auto& [value, y] : {std::pair{hi, a.y}, std::pair{0.5f * (lo + hi), 0.5f * (a.y + b.y) - 0.5f * line},
-                                     std::pair{lo, b.y - line}}) {
-        if ((!middleFits && value != hi && value != lo) || (!lowFits && value == lo)) continue;
-        const std::string label = axisNumber(value);
-        draw->AddText(ImVec2(a.x - ImGui::CalcTextSize(label.c_str()).x - 0.3f * line, y), dim, label.c_str());
+      // Title [unit], then the legend of a comparison, on one line or on a line of its own.
+      float legendWidth = 0.0f;
+      for (const std::string& name : plot.legend) {
+        if (!name.empty()) legendWidth += ImGui::CalcTextSize(name.c_str()).x + line;
       }
-      const std::string from = axisNumber(plot.tMin) + " s", to = axisNumber(plot.tMax) + " s  t";
-      draw->AddText(ImVec2(a.x, b.y + 0.1f * line), dim, from.c_str());
-      draw->AddText(ImVec2(b.x - ImGui::CalcTextSize(to.c_str()).x, b.y + 0.1f * line), dim, to.c_str());
+      // The title's line, and room for half of the top tick's label above the frame.
+      const float frameTopLines = 1.7f;
+      const float frameHeightGuess = plotHeight - (frameTopLines + 1.4f) * line;
+      const int maxTicks = std::max(2, static_cast<int>(frameHeightGuess / (kTickSpacingLines * line)) + 1);
+      const AxisTicks ticks = niceTicks(lo, hi, std::min(maxTicks, 5), plot.nonNegative);
+      const std::string title = plot.title + axisUnit(ticks, plot.unit);
+      draw->AddText(origin, text, title.c_str());
+      const float titleWidth = ImGui::CalcTextSize(title.c_str()).x + line;
+      const bool ownLine = legendWidth > 0.0f && titleWidth + legendWidth > innerWidth;
+      ImVec2 at(ownLine ? origin.x : origin.x + titleWidth, ownLine ? origin.y + line : origin.y);
+      for (std::size_t s = 0; s < plot.legend.size(); ++s) {
+        if (plot.legend[s].empty()) continue;
+        const ImU32 color = kSeriesColors[s % std::size(kSeriesColors)];
+        draw->AddText(at, color, plot.legend[s].c_str());
+        at.x += ImGui::CalcTextSize(plot.legend[s].c_str()).x + line;
+      }
+      // The frame: value ticks left of it, time ticks below it.
+      float tickWidth = 0.0f;
+      for (const std::string& label : ticks.labels) tickWidth = std::max(tickWidth, ImGui::CalcTextSize(label.c_str()).x);
+      const float frameLeft = origin.x + std::max(labelWidth, tickWidth + 0.3f * line);
+      const ImVec2 a(frameLeft, origin.y + (ownLine ? frameTopLines + 1.0f : frameTopLines) * line);
+      const ImVec2 b(origin.x + innerWidth, origin.y + plotHeight - 1.4f * line);
+      lo = static_cast<float>(ticks.lo);
+      hi = static_cast<float>(ticks.hi);
+      draw->AddRect(a, b, grid);
+      const float pixelsPerTick = (b.y - a.y) / std::max<float>(1.0f, static_cast<float>(ticks.values.size()) - 1.0f);
+      const std::size_t every = pixelsPerTick >= line ? 1 : static_cast<std::size_t>(std::ceil(line / std::max(pixelsPerTick, 1.0f)));
+      for (std::size_t k = 0; k < ticks.values.size(); ++k) {
+        const float y = b.y - static_cast<float>((ticks.values[k] - ticks.lo) / (ticks.hi - ticks.lo)) * (b.y - a.y);
+        if (k > 0 && k + 1 < ticks.values.size()) draw->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), grid);
+        if (k % every != 0) continue;
+        const std::string& label = ticks.labels[k];
+        const float labelY = std::clamp(y - 0.5f * line, a.y - 0.5f * line, b.y - 0.5f * line);
+        draw->AddText(ImVec2(a.x - ImGui::CalcTextSize(label.c_str()).x - 0.3f * line, labelY), dim, label.c_str());
+      }
+      // Time: ticks in whole seconds (or 1-2-5 parts of one) over the plot's window.
+      const float timeLabelWidth = ImGui::CalcTextSize("000.0 s").x;
+      const int maxTimeTicks = std::max(2, static_cast<int>((b.x - a.x) / (kTimeTickSpacingLabels * timeLabelWidth)) + 1);
+      const AxisTicks time = niceTicks(plot.tMin, plot.tMax, maxTimeTicks, plot.tMin >= 0.0f);
+      for (std::size_t k = 0; k < time.values.size(); ++k) {
+        if (time.values[k] < plot.tMin - 1e-6 || time.values[k] > plot.tMax + 1e-6) continue;
+        const float x = a.x + static_cast<float>((time.values[k] - plot.tMin) / std::max(plot.tMax - plot.tMin, 1e-6f)) * (b.x - a.x);
+        const std::string label = time.labels[k] + (k + 1 == time.values.size() || time.values[k + 1] > plot.tMax + 1e-6 ? " s" : "");
+        const float w = ImGui::CalcTextSize(label.c_str()).x;
+        draw->AddLine(ImVec2(x, b.y), ImVec2(x, b.y + 0.2f * line), grid);
+        draw->AddText(ImVec2(std::clamp(x - 0.5f * w, a.x - 0.5f * w, b.x - w), b.y + 0.1f * line), dim, label.c_str());
+      }
       const float tSpan = std::max(plot.tMax - plot.tMin, 1e-6f);
       draw->PushClipRect(a, b, true);
       for (std::size_t s = 0; s < plot.values.size(); ++s) {

@@ -27,10 +27,10 @@ void compareWithBruteForce(const World& world, render::OverlayData& overlay) {
   const double sapMs = sap.runs > 0 ? 1e3 * sap.seconds / static_cast<double>(sap.runs) : 0.0;
   const std::vector<ProxyPair>& pairs = candidatePairs(world);
   const bool same = brute == pairs;
-  overlay.rows.push_back({"bodies", format("%.0f", static_cast<double>(world.bodies().size()))});
-  overlay.rows.push_back({"pairs: sweep and prune", format("%.0f (%.3f ms per step, mean)", static_cast<double>(pairs.size()), sapMs)});
-  overlay.rows.push_back({"pairs: brute force", format("%.0f (%.3f ms, this frame)", static_cast<double>(brute.size()), bruteMs)});
-  overlay.rows.push_back({"pair sets equal", same ? "yes" : "NO"});
+  overlay.rows.push_back({"bodies", format("%.0f", static_cast<double>(world.bodies().size())), render::RowLevel::Useful});
+  overlay.rows.push_back({"pairs: sweep and prune", format("%.0f (%.3f ms per step, mean)", static_cast<double>(pairs.size()), sapMs), render::RowLevel::Essential});
+  overlay.rows.push_back({"pairs: brute force", format("%.0f (%.3f ms, this frame)", static_cast<double>(brute.size()), bruteMs), render::RowLevel::Essential});
+  overlay.rows.push_back({"pair sets equal", same ? "yes" : "NO", render::RowLevel::Essential});
 }
 
 constexpr std::size_t kListedContacts = 6;  // overlay rows of per-contact detail
@@ -57,12 +57,12 @@ void drawImpulses(const World& world, render::FrameData& frame) {
     potential -= body.mass() * world.settings().gravity.dot(body.position());
   }
   // Short labels and one figure per row: the panel is at most 45 % of the frame wide.
-  frame.overlay.rows.push_back({"normal impulse", format("%.4f N s (this step)", normalTotal)});
-  frame.overlay.rows.push_back({"friction impulse", format("%.4f N s (this step)", frictionTotal)});
-  frame.overlay.rows.push_back({"points sticking", format("%.0f of %.0f", sticking, static_cast<double>(world.contactPoints().size()))});
-  frame.overlay.rows.push_back({"all: kinetic energy", format("%.3f J", kinetic)});
-  frame.overlay.rows.push_back({"all: + potential", format("%.3f J", kinetic + potential)});
-  frame.overlay.rows.push_back({"awake bodies", format("%.0f of %.0f", static_cast<double>(awakeCount(world)), static_cast<double>(world.bodies().size()))});
+  frame.overlay.rows.push_back({"normal impulse", format("%.4f N s (this step)", normalTotal), render::RowLevel::Useful});
+  frame.overlay.rows.push_back({"friction impulse", format("%.4f N s (this step)", frictionTotal), render::RowLevel::Detail});
+  frame.overlay.rows.push_back({"points sticking", format("%.0f of %.0f", sticking, static_cast<double>(world.contactPoints().size())), render::RowLevel::Detail});
+  frame.overlay.rows.push_back({"all: kinetic energy", format("%.3f J", kinetic), render::RowLevel::Detail});
+  frame.overlay.rows.push_back({"all: + potential", format("%.3f J", kinetic + potential), render::RowLevel::Useful});
+  frame.overlay.rows.push_back({"awake bodies", format("%.0f of %.0f", static_cast<double>(awakeCount(world)), static_cast<double>(world.bodies().size())), render::RowLevel::Detail});
 }
 
 }  // namespace
@@ -98,19 +98,19 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
       ++points;
     }
   }
-  frame.overlay.rows.push_back({"contacts", format("%.0f manifolds, %.0f points", static_cast<double>(world.contacts().size()), points)});
+  frame.overlay.rows.push_back({"contacts", format("%.0f manifolds, %.0f points", static_cast<double>(world.contacts().size()), points), render::RowLevel::Essential});
   if (fromGrids > 0) {
     // Pairs of non-convex bodies: surface samples against grids, or crossing triangles (Moller).
     const bool triangles = world.settings().meshContact == Settings::MeshContact::Triangles;
     frame.overlay.rows.push_back({triangles ? "non-convex pairs" : "from SDF grids",
                                   format(triangles ? "%.0f manifolds, green normals (meshes: crossing triangles)" : "%.0f manifolds, green normals", fromGrids)});
   }
-  if (points > 0) frame.overlay.rows.push_back({"deepest penetration", format("%.4f m", deepest)});
+  if (points > 0) frame.overlay.rows.push_back({"deepest penetration", format("%.4f m", deepest), render::RowLevel::Useful});
   drawImpulses(world, frame);
   std::size_t listed = 0;
   for (const Contact& c : world.contacts()) {
     if (++listed > kListedContacts) {
-      frame.overlay.rows.push_back({"  ...", format("and %.0f more", static_cast<double>(world.contacts().size() - kListedContacts))});
+      frame.overlay.rows.push_back({"  ...", format("and %.0f more", static_cast<double>(world.contacts().size() - kListedContacts)), render::RowLevel::Detail});
       break;
     }
     const std::string who = c.kind == Contact::Kind::PlaneBody ? "plane-" + world.bodies()[c.b].name()
@@ -118,7 +118,7 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
     char row[128];
     const Vec3& n = c.manifold.normal;
     std::snprintf(row, sizeof row, "n (%+.2f %+.2f %+.2f) %.4f m deep", n.x(), n.y(), n.z(), c.manifold.maxDepth());
-    frame.overlay.rows.push_back({"  " + who, row});
+    frame.overlay.rows.push_back({"  " + who, row, render::RowLevel::Detail});
   }
 
   // Distance from the selected body to the nearest other body (GJK), drawn as a segment.
@@ -133,7 +133,7 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
     }
   }
   if (std::isfinite(nearest)) {
-    frame.overlay.rows.push_back({"distance to nearest", best.overlap ? "overlapping" : format("%.4f m", nearest)});
+    frame.overlay.rows.push_back({"distance to nearest", best.overlap ? "overlapping" : format("%.4f m", nearest), render::RowLevel::Useful});
     if (!best.overlap) frame.lines.push_back({toGlm(best.pointA), toGlm(best.pointB), glm::vec3(0.2f, 1.0f, 0.3f), true});
   }
 
@@ -149,7 +149,7 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
     ghost.color = toGlm(body.color());
     ghost.opacity = kGhostOpacity;
     frame.bodies.push_back(std::move(ghost));
-    frame.overlay.rows.push_back({"stopped at impact", body.name() + format(" at s = %.3f of the step", impact.fraction)});
+    frame.overlay.rows.push_back({"stopped at impact", body.name() + format(" at s = %.3f of the step", impact.fraction), render::RowLevel::Essential});
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "render/pane_layout.h"
 #include "rbsim/world/queries.h"
 #include "rbsim/world/systems.h"
 #include "run/collision_view.h"
@@ -28,6 +29,15 @@ std::string formatNumber(double value, const char* unit) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6g %s", value, unit);
   return buffer;
+}
+
+render::PanelMode panelMode(ViewDesc::Panel panel) {
+  switch (panel) {
+    case ViewDesc::Panel::Full: return render::PanelMode::Full;
+    case ViewDesc::Panel::Off: return render::PanelMode::Off;
+    case ViewDesc::Panel::Compact: break;
+  }
+  return render::PanelMode::Compact;
 }
 
 render::Camera sceneCamera(const ViewDesc& view) {
@@ -83,11 +93,33 @@ std::string restitutionThresholdRow(const World& world) {
   return buffer;
 }
 
-render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
+void placeBesidePanel(render::FrameData& frame, const ViewDesc& view) {
+  const bool panel = view.overlay && view.panel != ViewDesc::Panel::Off;
+  if (!panel && view.plots.empty()) return;
+  const render::PaneRect rect = render::paneLayout(1, view.width, view.height, true, frame.overlay.panel).front();
+  render::FrameData pane;
+  pane.bodies = std::move(frame.bodies);
+  pane.forces = std::move(frame.forces);
+  pane.lines = std::move(frame.lines);
+  pane.points = std::move(frame.points);
+  pane.sprites = std::move(frame.sprites);
+  pane.options = frame.options;
+  pane.camera = render::paneCamera(frame.camera, view.width, view.height, rect);
+  frame.panes.push_back(std::move(pane));
+  frame.infoColumn = true;
+  frame.overlay.plotsUnderPanel = true;
+}
+render::FrameData buildFrame(const World& world
+, const Scene& scene, const std::string& demoTitle,
                              bool selectedBodyRows, const FreeFlightError* freeFlight) {
   render::FrameData frame;
   const ViewDesc& view = scene.view;
   frame.camera = sceneCamera(view);
+  if (view.follow && view.selected < world.bodies().size()) {
+    const glm::vec3 shift = toGlm(world.bodies()[view.selected].position()) - frame.camera.target;
+    frame.camera.eye += shift;
+    frame.camera.target += shift;
+  }
   frame.options.grid = view.grid;
   frame.options.wireframe = view.wireframe;
   frame.options.axes = view.axes;
@@ -120,13 +152,20 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
   render::OverlayData& overlay = frame.overlay;
   overlay.title = demoTitle.empty() ? scene.title : demoTitle;
   overlay.caption = view.caption;
-  overlay.rows = {
-      {"time t", formatNumber(t, "s")},
-      {"integrator", std::string(integratorName(world.settings().integrator)) + ", dt " +
-                         formatNumber(world.settings().timeStep, "s")},
-  };
+  overlay.panel = panelMode(view.panel);
+  using render::RowLevel;
+  // In a scene of particles, soft bodies or 2D bodies the rigid bodies are the set, not the
+  // subject: their rows are for the full panel.
+  const bool rigidSubject = particleSystems(world).empty() && softBodies(world).empty() && planarWorld(world) == nullptr;
+  const RowLevel rigid = rigidSubject ? RowLevel::Useful : RowLevel::Detail;
+  overlay.rows = {{"time t", formatNumber(t, "s"), RowLevel::Essential}};
+  if (!world.bodies().empty()) {
+    overlay.rows.push_back({"integrator", std::string(integratorName(world.settings().integrator)) + ", dt " +
+                                              formatNumber(world.settings().timeStep, "s"),
+                            rigid});
+  }
   if (const std::string threshold = restitutionThresholdRow(world); !threshold.empty()) {
-    overlay.rows.push_back({"restitution below", threshold});
+    overlay.rows.push_back({"restitution below", threshold, RowLevel::Detail});
   }
   if (selectedBodyRows && view.selected < world.bodies().size()) {  // a scene of particles alone has no bodies
     const RigidBody& body = world.bodies()[view.selected];
@@ -134,21 +173,25 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
     const Quat& q = body.orientation();
     char quat[96];
     std::snprintf(quat, sizeof quat, "%+.4f %+.4f %+.4f %+.4f", q.w(), q.x(), q.y(), q.z());
+    const RowLevel main = rigidSubject ? RowLevel::Essential : RowLevel::Detail;
     overlay.rows.insert(overlay.rows.end(), {
         {"body", body.name() + " (" + scene.inertiaMethods[view.selected] + " inertia, " +
-                     formatNumber(body.mass(), "kg") + (body.awake() ? ")" : ", asleep)")},
-        {"x", formatVec(body.position(), "m")},
-        {"R row 1", formatVec(R.row(0).transpose(), "")},
-        {"R row 2", formatVec(R.row(1).transpose(), "")},
-        {"R row 3", formatVec(R.row(2).transpose(), "")},
-        {"q (w x y z)", quat},
-        {"v", formatVec(body.velocity(), "m/s")},
-        {"omega", formatVec(body.angularVelocity(), "rad/s")},
-        {"P", formatVec(body.state().linearMomentum, "kg m/s")},
-        {"L", formatVec(body.state().angularMomentum, "kg m^2/s")},
-        {"kinetic energy", formatNumber(body.kineticEnergy(), "J")},
+                     formatNumber(body.mass(), "kg") + (body.awake() ? ")" : ", asleep)"), main},
+        {"x", formatVec(body.position(), "m"), main},
+        {"R row 1", formatVec(R.row(0).transpose(), ""), RowLevel::Detail},
+        {"R row 2", formatVec(R.row(1).transpose(), ""), RowLevel::Detail},
+        {"R row 3", formatVec(R.row(2).transpose(), ""), RowLevel::Detail},
+        {"q (w x y z)", quat, RowLevel::Detail},
+        {"v", formatVec(body.velocity(), "m/s"), rigid},
+        {"omega", formatVec(body.angularVelocity(), "rad/s"), rigid},
+        {"P", formatVec(body.state().linearMomentum, "kg m/s"), RowLevel::Detail},
+        {"L", formatVec(body.state().angularMomentum, "kg m^2/s"), RowLevel::Detail},
+        {"kinetic energy", formatNumber(body.kineticEnergy(), "J"), rigid},
     });
-    if (freeFlight != nullptr) overlay.rows.push_back({"vs exact spin", formatFreeFlightError(freeFlight->read(world))});
+    if (freeFlight != nullptr) {
+      // Kept whether or not the body flies free just now, so that the panel does not jump.
+      overlay.rows.push_back({"vs exact spin", formatFreeFlightError(freeFlight->read(world)), main});
+    }
   }
   if (!particleSystems(world).empty()) addParticleView(world, scene, frame);
   if (!softBodies(world).empty()) addSoftView(world, frame);

@@ -12,6 +12,7 @@
 namespace rbsim::app {
 
 render::Camera sceneCamera(const ViewDesc& view);
+render::PanelMode panelMode(ViewDesc::Panel panel);
 
 // `selectedBodyRows` false leaves the selected body's variables out of the overlay's rows (a
 // compared phase, compare_view.h, shows its own rows of every world instead). With
@@ -19,6 +20,11 @@ render::Camera sceneCamera(const ViewDesc& view);
 // torque-free motion.
 render::FrameData buildFrame(const World& world, const Scene& scene, const std::string& demoTitle,
                              bool selectedBodyRows = true, const FreeFlightError* freeFlight = nullptr);
+
+// With the panel or plots shown, the scene's own fields of `frame` (built by buildFrame) moved into
+// a pane of their own right of the info column (pane_layout.h), so that the panel and the plots
+// never cover the bodies (issue 38); otherwise nothing changes.
+void placeBesidePanel(render::FrameData& frame, const ViewDesc& view);
 
 // "0.0123 rad, dE/E +1.2e-05, since 3.2 s" (the time the spin was last torqued), or why the
 // body is not compared.

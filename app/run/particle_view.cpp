@@ -66,7 +66,7 @@ void addParticleView(const World& world, const Scene& scene, render::FrameData& 
     std::string value = std::to_string(system.particles().count()) + " live, " + std::to_string(system.emitted()) +
                         " born, " + particleIntegratorName(system.def().integrator);
     if (system.lost() > 0) value += ", " + std::to_string(system.lost()) + " refused (full)";
-    frame.overlay.rows.push_back({"particles " + system.def().name, value});
+    frame.overlay.rows.push_back({"particles " + system.def().name, value, render::RowLevel::Essential});
   }
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // One phase of a video: a scene file run as one World or, when the scene has a "compare" block,
 // as one World per value of one scene key, stepped in lockstep and drawn side by side in one
-// frame, each in a pane of its own under a caption naming its value (README "Comparing
-// settings side by side"):
+// frame, each in a pane of its own under a caption naming its value (docs/scene-format.md,
+// "Comparing settings side by side"):
 //
 //   "compare": {"key": "world.solver", "values": ["pgs", "soft-step"], "labels": ["PGS", "soft step"]}
 //

@@ -10,6 +10,9 @@ namespace rbsim::app {
 
 namespace {
 
+// The window of a scene without an end (the window mode's): the last this many seconds [s].
+constexpr double kScrollingSeconds = 10.0;
+
 double potentialEnergy(const World& world, const RigidBody& body) {
   return -body.mass() * world.settings().gravity.dot(body.position());
 }
@@ -76,7 +79,12 @@ TimePlots::TimePlots(const Phase& phase) {
   const ViewDesc& view = phase.scene().view;
   names_ = view.plots;
   selectedOnly_ = view.plotSelected;
-  seconds_ = view.plotSeconds;
+  // The time axis spans the whole scene unless view.plot_seconds asks for a window that scrolls.
+  double duration = 0.0;
+  for (const PhaseWorld& w : phase.worlds) {
+    duration = std::max(duration, static_cast<double>(w.scene.stepCount()) * w.scene.settings.timeStep);
+  }
+  seconds_ = view.plotSeconds > 0.0 ? view.plotSeconds : std::isfinite(duration) && duration > 0.0 ? duration : kScrollingSeconds;
   for (const PhaseWorld& w : phase.worlds) {
     selected_.push_back(w.scene.view.selected);
     // "world.integrator = dlm" is "dlm" in a legend whose plot the panel names.
@@ -122,6 +130,7 @@ std::vector<render::OverlayPlot> TimePlots::plotsAt(double t) const {
     plot.legend = legend_;
     plot.tMax = tMax;
     plot.tMin = tMin;
+    plot.nonNegative = names_[p] != "pe" && names_[p] != "E";  // the rest are lengths, counts, kinetic energy
     for (const Series& s : series_[p]) {
       // The samples in [t - seconds, t] (all of them, unless history is kept).
       const auto first = std::lower_bound(s.t.begin(), s.t.end(), static_cast<float>(t - seconds_));

@@ -27,16 +27,17 @@ void addSoftView(const World& world, render::FrameData& frame) {
   }
   if (softBodies(world).empty()) return;
   const SoftBody& soft = softBodies(world).front();
-  std::vector<std::pair<std::string, std::string>>& rows = frame.overlay.rows;
-  rows.push_back({"soft body", soft.name() + format(" (%.0f tetrahedra, %.3g kg)", static_cast<double>(soft.tetCount()), soft.mass())});
-  rows.push_back({"model", constitutiveModelName(soft.elasticity().model)});
-  rows.push_back({"Lame mu, lambda", format("%.3g Pa, %.3g Pa", soft.elasticity().lame.mu, soft.elasticity().lame.lambda)});
+  std::vector<render::OverlayRow>& rows = frame.overlay.rows;
+  using render::RowLevel;
+  rows.push_back({"soft body", soft.name() + format(" (%.0f tetrahedra, %.3g kg)", static_cast<double>(soft.tetCount()), soft.mass()), RowLevel::Essential});
+  rows.push_back({"model", constitutiveModelName(soft.elasticity().model), RowLevel::Useful});
+  rows.push_back({"Lame mu, lambda", format("%.3g Pa, %.3g Pa", soft.elasticity().lame.mu, soft.elasticity().lame.lambda), RowLevel::Detail});
   std::string integrator = softIntegratorName(soft.integrator());
   if (soft.integrator() == SoftIntegrator::BackwardEuler) integrator += format(", %.0f CG iterations", soft.lastIterations());
-  rows.push_back({"soft integrator", integrator});
-  rows.push_back({"stable explicit dt", format("%.3g s (dt %.3g s)", soft.stableTimeStep(), world.settings().timeStep)});
-  rows.push_back({"elastic energy", format("%.4g J", soft.elasticEnergy())});
-  rows.push_back({"kinetic energy (soft)", format("%.4g J", soft.kineticEnergy())});
+  rows.push_back({"soft integrator", integrator, RowLevel::Useful});
+  rows.push_back({"stable explicit dt", format("%.3g s (dt %.3g s)", soft.stableTimeStep(), world.settings().timeStep), RowLevel::Detail});
+  rows.push_back({"elastic energy", format("%.4g J", soft.elasticEnergy()), RowLevel::Essential});
+  rows.push_back({"kinetic energy (soft)", format("%.4g J", soft.kineticEnergy()), RowLevel::Useful});
 }
 
 }  // namespace rbsim::app

@@ -244,8 +244,8 @@ class Session {
       render::appendArrowLines(f.lines, toGlm(point), toGlm(Vec3(point + force / weight)), kDragForceColor);
       render::appendArrowLines(f.lines, toGlm(body.position()), toGlm(Vec3(body.position() + torque / weight)),
                                kDragTorqueColor);
-      f.overlay.rows.push_back({"drag force", format3(force, "N")});
-      f.overlay.rows.push_back({"drag torque", format3(torque, "N m")});
+      f.overlay.rows.push_back({"drag force", format3(force, "N"), render::RowLevel::Action});
+      f.overlay.rows.push_back({"drag torque", format3(torque, "N m"), render::RowLevel::Action});
     }
     return f;
   }

@@ -11,6 +11,7 @@
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
 #include "render/render_error.h"
+#include "cli/scene_catalogue.h"
 #include "run/phase.h"
 
 namespace py = pybind11;
@@ -86,7 +87,7 @@ PYBIND11_MODULE(rbsim, m) {
   // pybind11's would show "object" for the parameters arguments.h converts by hand.
   py::options options;
   options.disable_function_signatures();
-  m.doc() = "rbsim: rigid bodies for physically based animation coursework (see README, \"Python\")";
+  m.doc() = "rbsim: rigid bodies for physically based animation coursework (see docs/python.md)";
 
   inputErrorType = PyErr_NewException("rbsim.InputError", PyExc_ValueError, nullptr);
   simulationErrorType = PyErr_NewException("rbsim.SimulationError", PyExc_RuntimeError, nullptr);
@@ -122,12 +123,13 @@ PYBIND11_MODULE(rbsim, m) {
       .def("world", [](const rbsim::Scene& s) { return PyWorld(s); }, "world() -> World: a new World holding the scene");
 
   // Through the program's phase loader (app/run/phase.h), so a scene file means what it means to
-  // `rbsim run`, "compare" block and its messages included.
+  // `rbsim run`, "compare" block and its messages included; a shipped scene may be named alone.
   m.def(
       "load_scene",
       [](const py::object& pathArg, const py::object& overridesArg) {
-        const std::string path = pathArgument(pathArg, "rbsim.load_scene()", "path");
+        const std::string given = pathArgument(pathArg, "rbsim.load_scene()", "path");
         const auto overrides = stringListArgument(overridesArg, "rbsim.load_scene()", "overrides");
+        const std::string path = rbsim::app::resolveScene(given);  // after every argument is checked
         rbsim::app::Phase phase = rbsim::app::loadPhase(path, overrides);
         if (phase.compared()) {
           throw rbsim::InputError(path, "compare", "the scene compares " + phase.compareKey + " over " +
@@ -137,12 +139,14 @@ PYBIND11_MODULE(rbsim, m) {
         return std::move(phase.worlds.front().scene);
       },
       py::arg("path"), py::arg("overrides") = py::list(),
-      "load_scene(path, overrides=[\"world.dt=0.01\", ...]) -> Scene: a scene file with --set overrides");
+      "load_scene(path, overrides=[\"world.dt=0.01\", ...]) -> Scene: a scene file (or a shipped scene's name, "
+      "as in `rbsim list`) with --set overrides");
   m.def(
       "load_comparison",
       [](const py::object& pathArg, const py::object& overridesArg) {
-        const std::string path = pathArgument(pathArg, "rbsim.load_comparison()", "path");
+        const std::string given = pathArgument(pathArg, "rbsim.load_comparison()", "path");
         const auto overrides = stringListArgument(overridesArg, "rbsim.load_comparison()", "overrides");
+        const std::string path = rbsim::app::resolveScene(given);  // after every argument is checked
         rbsim::app::Phase phase = rbsim::app::loadPhase(path, overrides);
         std::vector<std::pair<std::string, rbsim::Scene>> scenes;
         for (rbsim::app::PhaseWorld& w : phase.worlds) scenes.emplace_back(w.label, std::move(w.scene));

@@ -64,7 +64,8 @@ class PyRenderer {
     Scene scene = world.scene();
     parseViewBlock(toJson(view, kRenderCall, ""), kRenderCall, "", scene.view);
     if (!selected.is_none()) scene.view.selected = world.index(bodyArgument(selected, kRenderCall, "selected"), kRenderCall);
-    const render::FrameData frame = app::buildFrame(world.world(), scene, "");
+    render::FrameData frame = app::buildFrame(world.world(), scene, "");
+    app::placeBesidePanel(frame, scene.view);
     const std::vector<std::uint8_t>& rgba = renderer_->render(frame);
     py::array_t<std::uint8_t> out({py::ssize_t{renderer_->height()}, py::ssize_t{renderer_->width()}, py::ssize_t{4}});
     std::uint8_t* pixels = out.mutable_data();

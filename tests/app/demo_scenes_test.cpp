@@ -109,10 +109,10 @@ TEST(ComparedPhase, EachWorldGetsItsOwnSolverAndIsOtherwiseTheSame) {
   EXPECT_NE(pgs.stateHash(), soft.stateHash());  // the solver is all that differs, and it shows
 }
 
-// What README says the phase shows, over its full 10 s at dt = 1/60 s: the soft-step column of 20
+// What docs/scene-format.md ("Comparing settings side by side") says the phase shows, over its full 10 s at dt = 1/60 s: the soft-step column of 20
 // stands, sagging by about the 7 mm engine/include/rbsim/settings/settings.h quotes for 8 substeps of 120 Hz
 // contacts, while the PGS column (10 sweeps) buckles and falls. A solver change that alters
-// either outcome fails here, so the demo's caption and README get revisited with it.
+// either outcome fails here, so the demo's caption and that text get revisited with it.
 TEST(ComparedPhase, TheSoftStepColumnStandsAndThePgsColumnFalls) {
   if (test::kSanitizedBuild) GTEST_SKIP() << "a 10 s outcome; the sanitizers run this scene for 0.25 s above";
   const Phase phase = loadPhase(assetDir() + "/scenes/contact_solvers.json");
@@ -167,7 +167,7 @@ TEST(ComparedPhase, OneFrameDrawsEveryWorldInItsPaneWithItsCaption) {
   const ViewDesc& view = phase.scene().view;
   EXPECT_TRUE(frame.infoColumn);
   EXPECT_TRUE(frame.overlay.plotsUnderPanel);
-  const std::vector<render::PaneRect> rects = render::paneLayout(2, view.width, view.height, true);
+  const std::vector<render::PaneRect> rects = render::paneLayout(2, view.width, view.height, true, frame.overlay.panel);
   for (std::size_t k = 0; k < 2; ++k) {
     const render::OverlayLabel& label = frame.overlay.labels[k];
     EXPECT_TRUE(label.leftAligned);
@@ -175,7 +175,7 @@ TEST(ComparedPhase, OneFrameDrawsEveryWorldInItsPaneWithItsCaption) {
     EXPECT_LT(label.pixel.x, static_cast<float>(rects[k].x + rects[k].width / 4));
     EXPECT_GT(label.pixel.y, static_cast<float>(rects[k].y));
     EXPECT_LT(label.pixel.y, static_cast<float>(rects[k].y + rects[k].height / 4));
-    EXPECT_GE(static_cast<float>(rects[k].x), render::infoColumnWidth(view.width, view.height) - 1.0f);
+    EXPECT_GE(static_cast<float>(rects[k].x), render::infoColumnWidth(view.width, view.height, frame.overlay.panel) - 1.0f);
   }
 }
 

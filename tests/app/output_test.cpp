@@ -20,7 +20,7 @@
 
 #include "shell_command.h"
 
-#include "flag_values.h"
+#include "cli/flag_values.h"
 #include "rbsim/io/input_error.h"
 #include "render/checked_file.h"
 #include "render/frame_sink.h"

@@ -28,7 +28,7 @@ TEST(OverlayRows, TheFrameCarriesTheRow) {
   const World world = ballWorld(1.0, 0.25);
   const render::FrameData frame = buildFrame(world, Scene{}, "", /*selectedBodyRows=*/false);
   bool found = false;
-  for (const auto& row : frame.overlay.rows) found = found || (row.first == "restitution below" && row.second == "0.25 m/s approach: none");
+  for (const auto& row : frame.overlay.rows) found = found || (row.label == "restitution below" && row.value == "0.25 m/s approach: none");
   EXPECT_TRUE(found);
 }
 

@@ -58,14 +58,16 @@ class WindowMode : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = fs::temp_directory_path() / ("rbsim_window_test_" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    // A 24-bit screen: xvfb-run's default is 8 bits, which has no TrueColor visual.
+    // A 24-bit screen: xvfb-run's default is 8 bits, which has no TrueColor visual. Without the
+    // variables panel, the video draws the scene over the whole frame (with it, beside the panel's
+    // column), as the window does behind its control panel.
     const std::string window = "xvfb-run -a -s '-screen 0 1280x1024x24' '" + std::string(RBSIM_BINARY) + "' run '" +
                                kScene + "' --window --window-frames " + std::to_string(kFramesShown) +
-                               " --screenshot '" + (dir_ / "window.png").string() + "' --quiet";
+                               " --screenshot '" + (dir_ / "window.png").string() + "' --quiet --set view.panel=off";
     windowRun_ = run(window);
     const std::string offscreen = "'" + std::string(RBSIM_BINARY) + "' run '" + kScene + "' --frames '" +
                                   (dir_ / "frames").string() + "' --video '" + (dir_ / "offscreen.mp4").string() +
-                                  "' --quiet";
+                                  "' --quiet --set view.panel=off";
     offscreenRun_ = run(offscreen);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
@@ -213,13 +215,16 @@ TEST(DragInWindow, PressDragAndReleaseMoveTheBodyAndThePanelShowsTheForce) {
   const double stillRow = redRow(still.image);
   EXPECT_NEAR(stillRow, 204.0, 5.0);
   // Held: pulled up until the grabbed point is at the pointer (row 60; the centre within the
-  // box's half diagonal, about 50 px, of it), and two more panel rows.
+  // box's half diagonal, about 50 px, of it), and two more panel rows (Action rows, beside the
+  // compact panel's budget).
   const double heldRow = redRow(held.image);
   EXPECT_GT(heldRow, 0.0) << "the box left the view";
   EXPECT_LT(heldRow, stillRow - 50.0) << "the box did not follow the spring up";
   EXPECT_GE(panelBottom(held.image), panelBottom(still.image) + 20) << "the panel lacks the drag force rows";
   // Released: the rows are gone, and the box flies on with what the spring gave it.
-  EXPECT_NEAR(panelBottom(released.image), panelBottom(still.image), 2);
+  // (Not back to the still panel's height to the pixel: its "vs exact spin" row reads "not compared"
+  // at rest and the error in flight, which wrap to different line counts.)
+  EXPECT_LE(panelBottom(released.image), panelBottom(held.image) - 20) << "the drag rows stayed";
   const double releasedRow = redRow(released.image);
   EXPECT_TRUE(releasedRow < 0.0 || std::abs(releasedRow - stillRow) > 20.0) << releasedRow;
 }

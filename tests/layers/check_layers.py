@@ -29,12 +29,14 @@ LAYERS = [
 ]
 LAYER_OF = {module: level for level, modules in enumerate(LAYERS) for module in modules}
 # The app's folders, lowest first: the renderer knows no physics, a recording is a file format,
-# a run builds frames from both, the window drives runs and replays, and main.cpp everything. The
+# a run builds frames from both, the window drives runs and replays, the command line's flags and
+# messages sit above them, and main.cpp everything. The
 # engine's public headers lie below all of them.
 APP_LAYERS = [
     ["render", "record", "demos"],
     ["run"],
     ["window"],
+    ["cli"],
     ["."],
 ]
 # Systems beside the rigid bodies, stepped through the step hook (dynamics/step_listener.h), and

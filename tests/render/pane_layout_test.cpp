@@ -23,7 +23,7 @@ TEST(PaneLayout, PanesTileTheImageRightOfTheInfoColumnWithoutOverlapping) {
       for (const bool info : {false, true}) {
         const std::vector<PaneRect> panes = paneLayout(n, width, height, info);
         ASSERT_EQ(panes.size(), n);
-        const int left = info ? infoColumnWidth(width, height) : 0;
+        const int left = info ? infoColumnWidth(width, height, PanelMode::Compact) : 0;
         long area = 0;
         for (std::size_t k = 0; k < n; ++k) {
           const PaneRect& p = panes[k];
@@ -40,8 +40,8 @@ TEST(PaneLayout, PanesTileTheImageRightOfTheInfoColumnWithoutOverlapping) {
       }
     }
   }
-  // Two worlds beside a 1280x720 panel column: one above the other, each nearly 16:9.
-  const std::vector<PaneRect> two = paneLayout(2, 1280, 720, true);
+  // Two worlds beside a 1280x720 full panel's column: one above the other, each nearly 16:9.
+  const std::vector<PaneRect> two = paneLayout(2, 1280, 720, true, PanelMode::Full);
   EXPECT_EQ(two[0].x, two[1].x);
   EXPECT_LT(two[0].y + two[0].height, two[1].y);
   const double aspect = static_cast<double>(two[0].width) / two[0].height;

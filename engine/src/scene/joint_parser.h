@@ -1,6 +1,6 @@
 #pragma once
-// Scene-file parsing of the "joints" array into JointDef (keys in README.md, "Joints"). Internal
-// to scene/; bodies and the world block must be parsed first.
+// Scene-file parsing of the "joints" array into JointDef (keys in docs/scene-format.md,
+// "Joints"). Internal to scene/; bodies and the world block must be parsed first.
 #include <string>
 #include <unordered_map>
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
 // Scene-file parsing of "particles" blocks into ParticleSystemDef and ParticleLook (keys in
-// README.md, "Scene format"). Internal to scene/; bodies and planes must be parsed first.
+// docs/scene-format.md, "Particle systems"). Internal to scene/; bodies and planes must be parsed
+// first.
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
 

@@ -144,12 +144,20 @@ void parseViewFields(const JsonObject& v, ViewDesc& view) {
   view.fps = v.positiveInt("fps", view.fps);
   if (view.fps > kMaxFramesPerSecond) v.fail("fps", "expected at most " + std::to_string(kMaxFramesPerSecond) + " frames per second");
   view.overlay = v.boolean("overlay", view.overlay);
+  if (v.has("panel")) {
+    const std::string panel = v.string("panel", "");
+    if (panel == "compact") view.panel = ViewDesc::Panel::Compact;
+    else if (panel == "full") view.panel = ViewDesc::Panel::Full;
+    else if (panel == "off") view.panel = ViewDesc::Panel::Off;
+    else v.fail("panel", "expected \"compact\", \"full\" or \"off\", got \"" + panel + "\"");
+  }
   view.wireframe = v.boolean("wireframe", view.wireframe);
   view.axes = v.boolean("axes", view.axes);
   view.grid = v.boolean("grid", view.grid);
   view.aabbs = v.boolean("aabbs", view.aabbs);
   view.contacts = v.boolean("contacts", view.contacts);
   view.vertices = v.boolean("vertices", view.vertices);
+  view.follow = v.boolean("follow", view.follow);
   view.caption = v.string("caption", view.caption);
   if (v.has("plots")) {
     const nlohmann::json& plots = v.raw("plots");
@@ -171,7 +179,7 @@ void parseViewFields(const JsonObject& v, ViewDesc& view) {
   const std::string of = v.string("plot_of", view.plotSelected ? "selected" : "scene");
   if (of != "scene" && of != "selected") v.fail("plot_of", "expected \"scene\" or \"selected\", got \"" + of + "\"");
   view.plotSelected = of == "selected";
-  view.plotSeconds = v.positiveNumber("plot_seconds", view.plotSeconds);
+  if (v.has("plot_seconds")) view.plotSeconds = v.positiveNumber("plot_seconds", view.plotSeconds);
   if (view.plotSeconds > kMaxPlotSeconds) v.fail("plot_seconds", "expected at most " + formatNumber(kMaxPlotSeconds) + " s of history");
 }
 

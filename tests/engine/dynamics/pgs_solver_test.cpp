@@ -178,7 +178,7 @@ TEST(PgsSolver, SolvedImpulsesSatisfySeed001sThreeConditions) {
     s.solver = Settings::ContactSolverMethod::Pgs;  // its sweeps converge; soft_step_test.cpp has soft step's bound
     // PGS integrates before it solves (Catto 2005): these figures are its own with the
     // forward-Euler drift x += dt v it was tuned with; exact's drift carries g dt^2 / 2 more a
-    // step, which PGS pushes back out (README, "Integrators").
+    // step, which PGS pushes back out (docs/integrators.md).
     s.integrator = Integrator::ExpMap;
     s.velocityIterations = iterations;
     World world(s);

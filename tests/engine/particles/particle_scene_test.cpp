@@ -81,15 +81,16 @@ TEST(ParticleScene, WorldParticleIntegratorIsTheDefaultASystemMayOverride) {
   EXPECT_EQ(scene.particleSystems[1].integrator, ParticleIntegrator::SemiImplicitEuler);
 }
 
-TEST(ParticleScene, TheReadmeExampleParsesAndRuns) {
-  // README.md's "Particle systems" block, from its "particles" key to the end of the code block.
-  std::ifstream in(std::string(RBSIM_TEST_DATA_DIR) + "/../../../README.md");
-  ASSERT_TRUE(in) << "README.md not found";
-  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t first = readme.find("\"particles\": [ {");
+TEST(ParticleScene, TheSceneFormatExampleParsesAndRuns) {
+  // The "particles" example of docs/scene-format.md, "Particle systems" (README.md's until issue 38),
+  // from its "particles" key to the end of the code block.
+  std::ifstream in(std::string(RBSIM_TEST_DATA_DIR) + "/../../../docs/scene-format.md");
+  ASSERT_TRUE(in) << "docs/scene-format.md not found";
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t first = doc.find("\"particles\": [ {");
   ASSERT_NE(first, std::string::npos);
-  const std::size_t last = readme.find("```", first);
-  const Scene scene = parse("{" + readme.substr(first, last - first) + ", \"world\": {\"duration\": 0.1}}");
+  const std::size_t last = doc.find("```", first);
+  const Scene scene = parse("{" + doc.substr(first, last - first) + ", \"world\": {\"duration\": 0.1}}");
   ASSERT_EQ(scene.particleSystems.size(), 1u);
   World world = buildWorld(scene);
   for (int i = 0; i < 24; ++i) world.step();

@@ -166,7 +166,7 @@ TEST(CollisionWorld, WithResponseAFastThinPlateLandsAndRestsOnThePlane) {
       s.velocityIterations = 50;
       // PGS integrates before it solves (Catto 2005): these figures are its own with the
       // forward-Euler drift x += dt v it was tuned with; exact's drift carries g dt^2 / 2 more a
-      // step, which PGS pushes back out (README, "Integrators").
+      // step, which PGS pushes back out (docs/integrators.md).
       s.integrator = Integrator::ExpMap;
     }
     World world(s);

@@ -32,7 +32,7 @@ class RoundBodies : public testing::TestWithParam<Case> {
     s.solver = GetParam().solver;
     // PGS integrates before it solves (Catto 2005): these figures are its own with the
     // forward-Euler drift x += dt v it was tuned with; exact's drift carries g dt^2 / 2 more a
-    // step, which PGS pushes back out (README, "Integrators").
+    // step, which PGS pushes back out (docs/integrators.md).
     if (s.solver == Settings::ContactSolverMethod::Pgs) s.integrator = Integrator::ExpMap;
     s.allowSleep = false;  // the figures are about the solver, not about sleeping
     return s;

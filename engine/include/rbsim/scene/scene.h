@@ -1,6 +1,6 @@
 #pragma once
-// A scene file (JSON) parsed into plain engine data. The format is documented in README.md
-// ("Scene format"); every error names the file, the JSON path and what was expected.
+// A scene file (JSON) parsed into plain engine data. The format is documented in
+// docs/scene-format.md; every error names the file, the JSON path and what was expected.
 #include <optional>
 #include <string>
 #include <vector>

@@ -20,6 +20,10 @@ struct ViewDesc {
   int height = 720;                    // [px]
   int fps = 30;                        // frames per simulated second
   bool overlay = true;
+  // How much of the variables panel shows: compact, the title, the caption and about 8 rows chosen
+  // for the scene; full, every row; off, none (plots and captions stay).
+  enum class Panel { Compact, Full, Off };
+  Panel panel = Panel::Compact;
   bool wireframe = false;
   bool axes = true;
   bool grid = true;
@@ -29,12 +33,15 @@ struct ViewDesc {
   // this transform yourself"), as dots over the body the renderer drew from R and x.
   bool vertices = false;
   std::size_t selected = 0;            // body shown in the overlay
+  // The camera moves with the selected body (eye and target keep their offset from it), so a
+  // body that rolls or flies away stays in view.
+  bool follow = false;
   std::string caption;
   // Time plots in the overlay (app/run/plot_history.h): names of kPlotQuantities, of the whole
-  // scene or (plotSelected) of the selected body, over the last plotSeconds.
+  // scene or (plotSelected) of the selected body, over the last plotSeconds (0: the whole scene).
   std::vector<std::string> plots;
   bool plotSelected = false;
-  double plotSeconds = 10.0;  // [s]
+  double plotSeconds = 0.0;  // [s]
 };
 
 // The quantities view.plots may name.

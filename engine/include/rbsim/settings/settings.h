@@ -31,7 +31,8 @@ int machineThreads();
 struct Settings {
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);      // [m/s^2], y is up
   double timeStep = 1.0 / 240.0;             // dt [s], in [kMinTimeStep, kMaxTimeStep]
-  // The most accurate at every cost on the error-against-time front (REPORT section 6, README).
+  // The most accurate at every cost on the error-against-time front (REPORT section 6,
+  // docs/integrators.md).
   Integrator integrator = Integrator::Exact;
   InertiaMethod inertia = InertiaMethod::Exact;  // default for bodies that do not choose
 
@@ -88,11 +89,12 @@ struct Settings {
   double contactHertz = 120.0;        // [Hz]
   double contactDampingRatio = 10.0;  // [1]
   double contactPushSpeed = 3.0;      // [m/s]
-  // Friction of both solvers (README "Friction"). Cone: the tangential impulse that stops the slip,
-  // scaled onto the cone of mu_s or mu_k, the coefficient chosen by the regime the last step
-  // ended in (soft step per point, PGS per patch at its centroid with a twist). Seed000: seed 000
-  // "Friction" at every point in every sweep, after its normal row, with the point's K_T: the
-  // sticking impulse if inside the mu_s cone, else -mu_k j_n T (engine/src/dynamics/friction_law.h).
+  // Friction of both solvers (docs/scene-format.md, `friction`; docs/contact.md). Cone: the
+  // tangential impulse that stops the slip, scaled onto the cone of mu_s or mu_k, the coefficient
+  // chosen by the regime the last step ended in (soft step per point, PGS per patch at its centroid
+  // with a twist). Seed000: seed 000 "Friction" at every point in every sweep, after its normal
+  // row, with the point's K_T: the sticking impulse if inside the mu_s cone, else -mu_k j_n T
+  // (engine/src/dynamics/friction_law.h).
   // Both meet the analytic slide and incline; cone stacks better with PGS (REPORT section 5).
   enum class FrictionModel { Cone, Seed000 };
   FrictionModel friction = FrictionModel::Cone;
