@@ -16,7 +16,7 @@ inline constexpr double kCaseKineticFriction = 0.5;  // mu_k [1]; the friction a
 
 // The solver and friction asked for at `dt`, sleep off (the figures are the solver's, not
 // sleeping's). PGS integrates before it solves: its friction is measured with the forward-Euler
-// drift it was tuned with (README, "Integrators"), as in its other suites; the exact integrator's
+// drift it was tuned with (docs/integrators.md), as in its other suites; the exact integrator's
 // drift of g dt^2 / 2 more a step, pushed back out, creeps down an incline (35 cm in 10 s at 25
 // degrees, 1/60 s). Bounces are measured with the default integrator (restitutionSettings).
 inline Settings frictionCaseSettings(Settings::ContactSolverMethod solver, Settings::FrictionModel friction, double dt) {
