@@ -1,9 +1,14 @@
 // The command line as a student meets it (issue 38): --version, help that lists only what a
 // subcommand accepts with typed values, `list` naming the shipped scenes, and a scene run by name
 // being the same run as by path.
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
+#include <sstream>
+#include <vector>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -93,6 +98,47 @@ TEST(Cli, ParseErrorsOpenWithTheSamePrefixAsEveryOtherError) {
     EXPECT_EQ(output.rfind("rbsim: error: ", 0), 0u) << "`rbsim " << args << "`: " << output;
     EXPECT_NE(output.find("--help` lists what it accepts"), std::string::npos) << output;
   }
+}
+
+// Every `build/rbsim ...` command README.md shows still parses: its subcommand exists, each flag is
+// one its --help lists, and a command without placeholders (FILE, N) runs for one step.
+TEST(Cli, EveryCommandInTheReadmeStillParses) {
+  std::istringstream readme(readAll(fs::path(RBSIM_SOURCE_DIR) / "README.md"));
+  const std::string marker = "build/rbsim ";
+  int commands = 0, ran = 0;
+  for (std::string line; std::getline(readme, line);) {
+    for (std::size_t at = line.find(marker); at != std::string::npos; at = line.find(marker, at + 1)) {
+      std::string command = line.substr(at + marker.size());
+      command = command.substr(0, std::min({command.find('`'), command.find('#'), command.find("&&")}));
+      std::istringstream words(command);
+      std::vector<std::string> tokens;
+      for (std::string w; words >> w;) tokens.push_back(w);
+      if (tokens.empty()) continue;
+      const std::string sub = tokens.front();
+      ASSERT_TRUE(sub == "demo" || sub == "run" || sub == "replay" || sub == "list") << line;
+      ++commands;
+      const std::string help = rbsim(sub + " --help").second;
+      bool placeholder = false, window = false;
+      for (std::size_t k = 1; k < tokens.size(); ++k) {
+        const std::string& t = tokens[k];
+        if (t.rfind("--", 0) == 0) {
+          EXPECT_NE(help.find(t + " "), std::string::npos) << "`rbsim " << sub << "` has no " << t << ": " << line;
+          window = window || t == "--window";
+        }
+        placeholder = placeholder || std::any_of(t.begin(), t.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); });
+      }
+      if (placeholder || window || sub == "replay" || (sub == "demo" && tokens.size() > 1 && tokens[1] == "all")) continue;
+      std::string run;
+      for (const std::string& t : tokens) run += " " + rbsim::test::shellQuote(t);
+      if (sub != "list") run += " --steps 1 --no-render --quiet";
+      const auto [code, output] = rbsim::test::runCommand("cd " + rbsim::test::shellQuote(RBSIM_SOURCE_DIR) + " && " +
+                                                          rbsim::test::shellQuote(RBSIM_BINARY) + run + " 2>&1 > /dev/null");
+      EXPECT_EQ(code, 0) << "README's `build/rbsim" << run << "`: " << output;
+      ++ran;
+    }
+  }
+  EXPECT_GE(commands, 8);
+  EXPECT_GE(ran, 4);
 }
 
 }  // namespace
