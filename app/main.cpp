@@ -13,7 +13,7 @@
 #include "demos/demo.h"
 #include "cli/cli_messages.h"
 #include "cli/flags.h"
-#include "cli/scene_catalogue.h"
+#include "run/scene_catalogue.h"
 #include "cli/flag_values.h"
 #include "record/recording.h"
 #include "rbsim/integrate/integrator.h"

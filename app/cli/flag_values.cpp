@@ -1,6 +1,7 @@
 #include "cli/flag_values.h"
 
 #include <charconv>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,21 @@ std::uint64_t parseFlagInteger(const std::string& flag, const std::string& text,
   if (!fitsIn64Bits(text, value)) throw InputError("", flag, got + text + " (more than 64 bits hold), " + range);
   if (value < min || value > max) throw InputError("", flag, got + text + ", " + range);
   return value;
+}
+
+double parseFlagNumber(const std::string& flag, const std::string& text, double min, double max,
+                       const std::string& expected) {
+  // A JSON number, as --set reads numbers: no "inf", "nan", hex or trailing text.
+  const nlohmann::json value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  const std::string got = "expected " + expected + "; got \"" + text + "\"";
+  if (!value.is_number()) throw InputError("", flag, got + ", not a number");
+  const double number = value.get<double>();
+  if (!(number >= min && number <= max)) {
+    std::ostringstream range;
+    range << ", not in range " << min << " to " << max;
+    throw InputError("", flag, got + range.str());
+  }
+  return number;
 }
 
 std::pair<std::uint64_t, std::uint64_t> parseImageSize(const std::string& flag, const std::string& text) {

@@ -14,6 +14,11 @@ namespace rbsim::app {
 std::uint64_t parseFlagInteger(const std::string& flag, const std::string& text, std::uint64_t min,
                                std::uint64_t max, const std::string& expected);
 
+// Reads `text` as a decimal number in [min, max] (a plain number: no "inf", "nan" or hex);
+// throws InputError naming the flag, what it expects and the text given otherwise.
+double parseFlagNumber(const std::string& flag, const std::string& text, double min, double max,
+                       const std::string& expected);
+
 // Reads "WIDTHxHEIGHT" (decimal digits only); throws InputError naming `flag` otherwise or when a
 // side does not fit 64 bits. The range of each side is the scene's (view.size) to check.
 std::pair<std::uint64_t, std::uint64_t> parseImageSize(const std::string& flag, const std::string& text);

@@ -8,6 +8,7 @@
 #include "cli/flag_values.h"
 #include "render/gl_context.h"
 #include "render/png_file.h"
+#include "window/control_panel.h"
 
 namespace rbsim::app {
 namespace {
@@ -61,6 +62,10 @@ void Flags::attach(CLI::App& cmd, FlagSet set) {
   cmd.add_flag("--window", window, "open an X11 window with controls instead of writing a video");
   option("--window-frames", windowFrames, "N", "with --window: close after N frames (scripted runs), N >= 1");
   option("--screenshot", windowOptions.screenshot, "FILE.png", "with --window: PNG of the window's last frame");
+  if (simulate) {
+    option("--speed", speed, "X",
+           "with --window: playback speed, simulated seconds per second, 0.1 (slow motion) to 4; default 1, real time");
+  }
   option("--gl", gl, render::glBackendChoices().c_str(),
          std::string("off-screen OpenGL (default ") + render::glBackendName(render::defaultGlBackend()) +
              "; both are Mesa's llvmpipe, egl on the surfaceless platform)");
@@ -85,6 +90,10 @@ RunOptions Flags::finish(const std::string& defaultVideo, bool framesByDefault) 
     if (!backend) throw InputError("", "--gl " + gl, "expected " + render::glBackendChoices());
     run.glBackend = *backend;
     windowOptions.glBackend = *backend;
+  }
+  if (!speed.empty()) {
+    windowOptions.speed = parseFlagNumber("--speed", speed, kMinPlaybackSpeed, kMaxPlaybackSpeed,
+                                          "simulated seconds per second (1: real time)");
   }
   refuseIgnoredFlags(framesByDefault);
   auto add = [&](const std::string& key, const std::string& value, const std::string& flag) {
@@ -157,7 +166,8 @@ void Flags::refuseIgnoredFlags(bool framesByDefault) const {
     throw InputError("", "--trace-every without --trace", "it only thins the trace; add --trace FILE.csv");
   }
   for (const auto& [flag, given] : {std::pair<const char*, bool>{"--window-frames", !windowFrames.empty()},
-                                    std::pair<const char*, bool>{"--screenshot", !windowOptions.screenshot.empty()}}) {
+                                    std::pair<const char*, bool>{"--screenshot", !windowOptions.screenshot.empty()},
+                                    std::pair<const char*, bool>{"--speed", !speed.empty()}}) {
     if (given && !window) throw InputError("", std::string(flag) + " without --window", "it only acts on the window; add --window");
   }
 }

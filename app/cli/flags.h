@@ -22,7 +22,7 @@ enum class FlagSet { Simulate, Replay };
 struct Flags {
   RunOptions run;
   std::string dt, steps, fps, size, integrator, inertia, particleIntegrator;
-  std::string pngLevel, traceEvery, windowFrames;  // numbers, parsed by flag_values.h
+  std::string pngLevel, traceEvery, windowFrames, speed;  // numbers, parsed by flag_values.h
   std::string gl;                                  // off-screen GL backend, render/gl_context.h
   std::string compare;                             // KEY=V1,V2[,...]: a compare block
   std::string plot;                                // Q1,Q2,...: view.plots

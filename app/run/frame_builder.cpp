@@ -93,10 +93,25 @@ std::string restitutionThresholdRow(const World& world) {
   return buffer;
 }
 
-void placeBesidePanel(render::FrameData& frame, const ViewDesc& view) {
+std::optional<render::PaneRect> scenePane(const ViewDesc& view, int right) {
   const bool panel = view.overlay && view.panel != ViewDesc::Panel::Off;
-  if (!panel && view.plots.empty()) return;
-  const render::PaneRect rect = render::paneLayout(1, view.width, view.height, true, frame.overlay.panel).front();
+  if (!panel && view.plots.empty()) return std::nullopt;
+  return render::paneLayout(1, view.width, view.height, true, panelMode(view.panel), right).front();
+}
+
+render::Camera viewCamera(const World& world, const ViewDesc& view) {
+  render::Camera camera = sceneCamera(view);
+  if (view.follow && view.selected < world.bodies().size()) {
+    const glm::vec3 shift = toGlm(world.bodies()[view.selected].position()) - camera.target;
+    camera.eye += shift;
+    camera.target += shift;
+  }
+  return camera;
+}
+
+void placeBesidePanel(render::FrameData& frame, const ViewDesc& view, int right) {
+  const std::optional<render::PaneRect> rect = scenePane(view, right);
+  if (!rect) return;
   render::FrameData pane;
   pane.bodies = std::move(frame.bodies);
   pane.forces = std::move(frame.forces);
@@ -104,22 +119,19 @@ void placeBesidePanel(render::FrameData& frame, const ViewDesc& view) {
   pane.points = std::move(frame.points);
   pane.sprites = std::move(frame.sprites);
   pane.options = frame.options;
-  pane.camera = render::paneCamera(frame.camera, view.width, view.height, rect);
+  pane.camera = render::paneCamera(frame.camera, view.width, view.height, *rect);
   frame.panes.push_back(std::move(pane));
   frame.infoColumn = true;
+  frame.panesRight = right;
   frame.overlay.plotsUnderPanel = true;
 }
+
 render::FrameData buildFrame(const World& world
 , const Scene& scene, const std::string& demoTitle,
                              bool selectedBodyRows, const FreeFlightError* freeFlight) {
   render::FrameData frame;
   const ViewDesc& view = scene.view;
-  frame.camera = sceneCamera(view);
-  if (view.follow && view.selected < world.bodies().size()) {
-    const glm::vec3 shift = toGlm(world.bodies()[view.selected].position()) - frame.camera.target;
-    frame.camera.eye += shift;
-    frame.camera.target += shift;
-  }
+  frame.camera = viewCamera(world, view);
   frame.options.grid = view.grid;
   frame.options.wireframe = view.wireframe;
   frame.options.axes = view.axes;

@@ -88,6 +88,16 @@ PanelRequests drawControlPanel(const PanelView& view, int imageWidth, int imageH
   }
   ImGui::PushItemWidth(-0.45f * rect.width);
 
+  if (!view.scenes.empty()) {
+    const std::string current = std::filesystem::path(view.phases[view.phase]).stem().string();
+    if (ImGui::BeginCombo("scene", current.c_str())) {
+      for (const SceneEntry& entry : view.scenes) {
+        if (ImGui::Selectable(entry.name.c_str(), entry.path == view.phases[view.phase])) out.scene = entry.path;
+        if (ImGui::IsItemHovered() && !entry.title.empty()) ImGui::SetTooltip("%s", entry.title.c_str());
+      }
+      ImGui::EndCombo();
+    }
+  }
   if (view.phases.size() > 1) {
     const std::string current = std::filesystem::path(view.phases[view.phase]).stem().string();
     if (ImGui::BeginCombo("phase", current.c_str())) {
@@ -106,7 +116,16 @@ PanelRequests drawControlPanel(const PanelView& view, int imageWidth, int imageH
   if (ImGui::Button("Reset (r)")) out.reset = true;
   if (ImGui::Button(view.recording ? "Stop recording" : "Record video")) out.toggleRecording = true;
   ImGui::SameLine();
-  if (ImGui::Button("Copy as command line")) out.copyCommand = true;
+  if (ImGui::Button("Copy as command (c)")) out.copyCommand = true;
+  float speed = static_cast<float>(view.speed);
+  if (ImGui::SliderFloat("speed", &speed, static_cast<float>(kMinPlaybackSpeed), static_cast<float>(kMaxPlaybackSpeed),
+                         "%.2fx", ImGuiSliderFlags_Logarithmic)) {
+    out.speed = speed;
+  }
+  // Frames slower than 1/fps to simulate and draw hold the playback below the speed asked for.
+  if (!view.paused && view.shownRate < 0.95 * view.speed) {
+    ImGui::TextDisabled("shown at %.2fx: frames take longer than 1/fps", view.shownRate);
+  }
   if (view.recording) ImGui::TextWrapped("recording to %s", view.recordingPath.c_str());
   if (!view.message.empty()) ImGui::TextWrapped("%s", view.message.c_str());
 
@@ -120,6 +139,13 @@ PanelRequests drawControlPanel(const PanelView& view, int imageWidth, int imageH
     if (ImGui::BeginCombo("integrator", integrator.c_str())) {
       for (const std::string& name : names) {
         if (ImGui::Selectable(name.c_str(), name == integrator)) out.assignments.push_back({"world.integrator", quoted(name), true});
+      }
+      ImGui::EndCombo();
+    }
+    const std::string solver = scene.settings.solver == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
+    if (ImGui::BeginCombo("solver", solver.c_str())) {
+      for (const char* name : {"soft-step", "pgs"}) {
+        if (ImGui::Selectable(name, solver == name)) out.assignments.push_back({"world.solver", quoted(name), true});
       }
       ImGui::EndCombo();
     }

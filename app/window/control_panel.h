@@ -9,10 +9,15 @@
 
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/world.h"
+#include "run/scene_catalogue.h"
 
 namespace rbsim::app {
 
 inline constexpr std::size_t kPlotSamples = 240;  // frames of history in the plots
+// The playback speed's range: from slow motion to a fast forward the renderer can keep up with at
+// small sizes [simulated seconds per second].
+inline constexpr double kMinPlaybackSpeed = 0.1;
+inline constexpr double kMaxPlaybackSpeed = 4.0;
 
 // Per-frame history of the selected body, for the plots.
 struct PlotHistory {
@@ -25,6 +30,7 @@ struct PlotHistory {
 
 struct PanelView {  // what the panel shows
   const Scene* scene = nullptr;
+  std::vector<SceneEntry> scenes;   // the shipped scenes, for the scene picker
   const World* world = nullptr;
   const PlotHistory* history = nullptr;
   std::vector<std::string> phases;  // scene files of a demo (one for `rbsim run`)
@@ -33,11 +39,15 @@ struct PanelView {  // what the panel shows
   bool recording = false;
   std::string recordingPath;
   std::string message;  // the last error or the copied command line
+  double speed = 1.0;   // playback speed asked for: simulated seconds per second [1]
+  double shownRate = 1.0;  // what the window achieves: simulated seconds per real second [1]
 };
 
 struct PanelRequests {  // what the user asked for this frame
   bool togglePause = false, step = false, reset = false, toggleRecording = false, copyCommand = false;
   int phase = -1;  // switch to this demo phase
+  std::string scene;  // open this scene file instead (the scene picker)
+  double speed = 0.0;  // a new playback speed; 0: unchanged
   // Scene-key assignments: `restart` ones (physics) rebuild the World from t = 0, the others
   // (view) take effect at once.
   struct Assignment {

@@ -42,18 +42,27 @@ constexpr double kDragDampingRatio = 0.7;     // [1] of critical damping 2 sqrt(
 // Arrows of the drag: the force is drawn 1 m long per body weight m|g| (or per m * 9.81 N when
 // there is no gravity), the torque about the centre of mass 1 m per weight times metre.
 constexpr double kStandardGravity = 9.81;     // [m/s^2]
+// The shown rate is averaged over about this many frames' worth: 1 / kRateSmoothing [1].
+constexpr double kRateSmoothing = 0.1;
+
 // ImGui asserts on a zero frame time; frames closer than this are counted as this long.
 constexpr float kMinFrameSeconds = 1e-3f;  // [s]
 constexpr glm::vec3 kDragForceColor{1.0f, 1.0f, 1.0f};
 constexpr glm::vec3 kDragTorqueColor{0.3f, 1.0f, 0.4f};
 
-std::string shellQuoted(const std::string& s) { return "'" + s + "'"; }
+// `s` as one single-quoted word for a POSIX shell; a quote inside closes, escapes and reopens.
+std::string shellQuoted(const std::string& s) {
+  std::string out = "'";
+  for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
 
 }  // namespace
 
 class Session {
  public:
-  Session(const SceneSource& source, const WindowOptions& options) : source_(source), options_(options) {
+  Session(const SceneSource& source, const WindowOptions& options)
+      : source_(source), options_(options), speed_(options.speed) {
     scene_ = load(phase_, {});
     world_ = std::make_unique<World>(buildWorld(scene_));
     watchFreeFlight();
@@ -67,6 +76,7 @@ class Session {
       throw render::RenderError("cannot write the screenshot " + shot.string() + ": it is a folder");
     }
     X11Window window(scene_.view.width, scene_.view.height, "rbsim: " + title());
+    window_ = &window;
     render::OffscreenRenderer renderer(scene_.view.width, scene_.view.height, render::defaultShaderDir(),
                                        render::OffscreenRenderer::kDefaultSamples, options_.glBackend);
     WindowInput input;
@@ -91,11 +101,15 @@ class Session {
       window.present(pixels);
       if (recorder_) recorder_->submit(pixels);
       apply(requests);
-      if (options_.frames == 0) {
-        const auto period = std::chrono::duration<double>(1.0 / scene_.view.fps);
-        std::this_thread::sleep_until(frameStart + std::chrono::duration_cast<Clock::duration>(period));
-      }
+      // Real time (times the speed) in scripted runs too: frame k waits for its time, 1/fps
+      // after the previous one; a frame that takes longer only slows the playback.
+      const auto period = std::chrono::duration<double>(1.0 / scene_.view.fps);
+      std::this_thread::sleep_until(frameStart + std::chrono::duration_cast<Clock::duration>(period));
+      const double realSeconds = std::chrono::duration<double>(Clock::now() - frameStart).count();
+      const double rate = paused_ ? speed_ : speed_ * period.count() / std::max(realSeconds, period.count());
+      shownRate_ += kRateSmoothing * (rate - shownRate_);
     }
+    window_ = nullptr;
     if (recorder_) stopRecording();
     if (!options_.screenshot.empty()) {
       render::writePng(options_.screenshot, window.width(), window.height(), window.capture());
@@ -127,10 +141,12 @@ class Session {
 
   // Frame k shows the step nearest k / fps, as in the off-screen runner, so that the window and
   // the video agree frame for frame.
+  // At a speed other than 1 the playhead moves by `speed` frames a frame: in slow motion the
+  // steps between two video frames are shown one by one, fast forward skips frames.
   void advanceOneFrame() {
-    const std::uint64_t target = stepOfFrame(frameIndex_, scene_.view.fps, scene_.settings.timeStep);
-    stepUntil(target);
-    ++frameIndex_;
+    const double step = std::round(playhead_ / (scene_.view.fps * scene_.settings.timeStep));
+    stepUntil(step >= static_cast<double>(kHugeCount) ? kHugeCount : static_cast<std::uint64_t>(step));
+    playhead_ += speed_;
   }
 
   void stepUntil(std::uint64_t target) {
@@ -150,15 +166,15 @@ class Session {
   void stepOnce() {
     stepUntil(world_->stepCount() + 1);
     // The next frame is the first one at or after this step.
-    frameIndex_ = std::max(frameIndex_,
-                           firstFrameShowing(world_->stepCount(), scene_.view.fps, scene_.settings.timeStep));
+    playhead_ = std::max(playhead_, static_cast<double>(firstFrameShowing(world_->stepCount(), scene_.view.fps,
+                                                                         scene_.settings.timeStep)));
   }
 
   void restart() {
     drag_.reset();
     world_ = std::make_unique<World>(buildWorld(scene_));
     watchFreeFlight();
-    frameIndex_ = 0;
+    playhead_ = 0.0;
     history_.clear();
   }
 
@@ -169,11 +185,16 @@ class Session {
       if (key == ' ') paused_ = !paused_;
       if (key == 's') stepOnce();
       if (key == 'r') restart();
+      if (key == 'c') copyCommandLine();
     }
     return true;
   }
 
-  render::Camera camera() const { return orbit_ ? orbit_->camera() : sceneCamera(scene_.view); }
+  render::Camera camera() const { return orbit_ ? orbit_->camera() : viewCamera(*world_, scene_.view); }
+
+  // The ray through window pixel (x, y). The window draws the scene over the whole image, its
+  // panels over it: the user moves the camera where they cover a body.
+  Ray sceneRay(double x, double y) const { return pixelRay(camera(), scene_.view.width, scene_.view.height, x, y); }
 
   OrbitCamera& orbit() {
     if (!orbit_) orbit_.emplace(camera());
@@ -191,7 +212,7 @@ class Session {
       orbitingWithLeft_ = false;
     }
     if (drag_) {
-      const Ray ray = pixelRay(camera(), scene_.view.width, scene_.view.height, input.mouseX, input.mouseY);
+      const Ray ray = sceneRay(input.mouseX, input.mouseY);
       if (const auto anchor = rayPlane(ray, drag_->planePoint, drag_->planeNormal)) world_->moveSpringAnchor(drag_->spring, *anchor);
     }
     if (input.mouseX < 0 || (overPanel && !orbitingWithLeft_ && !input.down[1] && !input.down[2])) return;
@@ -203,7 +224,7 @@ class Session {
   // A left press on a body selects it and, unless it is static, starts dragging it; on empty
   // space it starts orbiting.
   void grab(int x, int y) {
-    const Ray ray = pixelRay(camera(), scene_.view.width, scene_.view.height, x, y);
+    const Ray ray = sceneRay(x, y);
     const std::optional<Pick> pick = pickBody(*world_, ray);
     if (!pick) {
       orbitingWithLeft_ = true;
@@ -226,11 +247,7 @@ class Session {
 
   render::FrameData frame() {
     render::FrameData f = buildFrame(*world_, scene_, title(), true, &*freeFlight_);
-    if (!plots_->empty()) {
-      f.overlay.plots = plots_->plots();
-      // Left of the control panel, which holds the right-hand side of the window.
-      f.overlay.plotsRight = panelRect(scene_.view.width, scene_.view.height).x - 8.0f;
-    }
+    if (!plots_->empty()) f.overlay.plots = plots_->plots();
     if (orbit_) f.camera = orbit_->camera();
     if (drag_) {
       const Spring& spring = world_->springs()[drag_->spring];
@@ -267,6 +284,9 @@ class Session {
     v.recording = recorder_ != nullptr;
     v.recordingPath = recordingPath_;
     v.message = message_;
+    v.scenes = scenes_;
+    v.speed = speed_;
+    v.shownRate = shownRate_;
     return v;
   }
 
@@ -285,13 +305,41 @@ class Session {
     if (r.step) stepOnce();
     if (r.reset) restart();
     if (r.phase >= 0 && static_cast<std::size_t>(r.phase) != phase_) switchPhase(static_cast<std::size_t>(r.phase));
+    if (!r.scene.empty() && r.scene != source_.files[phase_]) switchScene(r.scene);
+    if (r.speed > 0.0) speed_ = std::clamp(r.speed, kMinPlaybackSpeed, kMaxPlaybackSpeed);
     for (const PanelRequests::Assignment& a : r.assignments) assign(a);
     if (r.toggleRecording) recorder_ ? stopRecording() : startRecording();
-    if (r.copyCommand) {
-      message_ = commandLine();
-      std::printf("%s\n", message_.c_str());
-      std::fflush(stdout);
+    if (r.copyCommand) copyCommandLine();
+  }
+
+  // The command that reruns what the window shows: on the clipboard (paste it into a terminal)
+  // and printed.
+  void copyCommandLine() {
+    const std::string line = commandLine();
+    if (window_ != nullptr) window_->setClipboard(line);
+    message_ = "copied: " + line;
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  }
+
+  // The scene picker: another scene file, from t = 0 with its own settings.
+  void switchScene(const std::string& file) {
+    const SceneSource before = source_;
+    try {
+      source_.files = {file};
+      source_.title.clear();
+      scene_ = load(0, {});
+    } catch (const InputError& e) {
+      source_ = before;
+      message_ = e.what();
+      return;
     }
+    phase_ = 0;
+    panel_.clear();
+    message_.clear();
+    drag_.reset();
+    orbit_.reset();
+    restart();
   }
 
   // Every change goes through the scene parser, exactly as the same --set would: a bad value is
@@ -386,7 +434,11 @@ class Session {
     freeFlight_->observe(*world_);
     plots_.emplace(singleWorldPhase(scene_));
   }
-  std::uint64_t frameIndex_ = 0;
+  double playhead_ = 0.0;  // the video frame shown next [frames]; moves by speed_ a frame
+  double speed_ = 1.0;
+  double shownRate_ = 1.0;  // simulated seconds per real second, smoothed
+  X11Window* window_ = nullptr;  // while run() has one open
+  std::vector<SceneEntry> scenes_ = shippedScenes();
   bool paused_ = false;
   std::optional<OrbitCamera> orbit_;  // unset until the user moves the camera
   std::optional<Drag> drag_;

@@ -17,6 +17,7 @@ struct SceneSource {
 
 struct WindowOptions {
   std::uint64_t frames = 0;  // close after this many frames (0: when the user closes it)
+  double speed = 1.0;        // playback: simulated seconds per second, in [kMinPlaybackSpeed, kMaxPlaybackSpeed]
   std::string screenshot;    // write the window's last frame here as PNG (read back from X)
   render::GlBackend glBackend = render::defaultGlBackend();  // --gl
   bool quiet = false;

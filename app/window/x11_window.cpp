@@ -3,9 +3,11 @@
 // Xlib's macros (None, Bool, Status) stay inside this file.
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
+#include <X11/Xatom.h>
 #include <X11/keysym.h>
 
 #include <cstdlib>
+#include <string>
 
 namespace rbsim::app {
 
@@ -31,6 +33,33 @@ struct X11Window::Impl {
   XImage* image = nullptr;  // owns `pixels` (XDestroyImage frees it)
   int redShift = 0, greenShift = 0, blueShift = 0;
   bool releaseNext[3] = {false, false, false};
+  Atom clipboard = 0, utf8 = 0, targets = 0;
+  std::string selection;  // what setClipboard offers; empty: nothing
+
+  // Another client asks for the selection as `request.target`: the text, or the list of the
+  // targets it can be had as, written to the requestor's property (ICCCM 2.2).
+  void answer(const XSelectionRequestEvent& request) {
+    XSelectionEvent reply{};
+    reply.type = SelectionNotify;
+    reply.display = request.display;
+    reply.requestor = request.requestor;
+    reply.selection = request.selection;
+    reply.target = request.target;
+    reply.time = request.time;
+    reply.property = None;
+    const Atom property = request.property != None ? request.property : request.target;  // obsolete clients
+    if (!selection.empty() && request.target == targets) {
+      const Atom offered[] = {targets, utf8, XA_STRING};
+      XChangeProperty(display, request.requestor, property, XA_ATOM, 32, PropModeReplace,
+                      reinterpret_cast<const unsigned char*>(offered), 3);
+      reply.property = property;
+    } else if (!selection.empty() && (request.target == utf8 || request.target == XA_STRING)) {
+      XChangeProperty(display, request.requestor, property, request.target, 8, PropModeReplace,
+                      reinterpret_cast<const unsigned char*>(selection.data()), static_cast<int>(selection.size()));
+      reply.property = property;
+    }
+    XSendEvent(display, request.requestor, False, 0, reinterpret_cast<XEvent*>(&reply));
+  }
 };
 
 X11Window::X11Window(int width, int height, const std::string& title)
@@ -64,6 +93,9 @@ X11Window::X11Window(int width, int height, const std::string& title)
   XSetWMNormalHints(d.display, d.window, hints);
   XFree(hints);
   d.deleteMessage = XInternAtom(d.display, "WM_DELETE_WINDOW", False);
+  d.clipboard = XInternAtom(d.display, "CLIPBOARD", False);
+  d.utf8 = XInternAtom(d.display, "UTF8_STRING", False);
+  d.targets = XInternAtom(d.display, "TARGETS", False);
   XSetWMProtocols(d.display, d.window, &d.deleteMessage, 1);
   XMapWindow(d.display, d.window);
   XEvent event;
@@ -151,6 +183,12 @@ void X11Window::poll(WindowInput& input) {
       case ClientMessage:
         if (static_cast<Atom>(event.xclient.data.l[0]) == d.deleteMessage) input.closed = true;
         break;
+      case SelectionRequest:
+        d.answer(event.xselectionrequest);
+        break;
+      case SelectionClear:  // another program took the clipboard
+        if (event.xselectionclear.selection == d.clipboard) d.selection.clear();
+        break;
       default:
         break;
     }
@@ -169,6 +207,14 @@ void X11Window::present(const std::vector<std::uint8_t>& rgba) {
   XPutImage(d.display, d.window, DefaultGC(d.display, DefaultScreen(d.display)), d.image, 0, 0, 0, 0,
             static_cast<unsigned>(width_), static_cast<unsigned>(height_));
   XSync(d.display, False);  // the frame is on screen before the next one is simulated
+}
+
+void X11Window::setClipboard(const std::string& text) {
+  Impl& d = *impl_;
+  d.selection = text;
+  XSetSelectionOwner(d.display, d.clipboard, d.window, CurrentTime);
+  XSetSelectionOwner(d.display, XA_PRIMARY, d.window, CurrentTime);
+  XFlush(d.display);
 }
 
 std::vector<std::uint8_t> X11Window::capture() const {

@@ -42,6 +42,9 @@ class X11Window {
   void present(const std::vector<std::uint8_t>& rgba);
   // What the X server holds for the window now, RGBA top row first (a screenshot).
   std::vector<std::uint8_t> capture() const;
+  // Offers `text` as the CLIPBOARD and PRIMARY selections (ICCCM section 2): other programs paste
+  // it while the window is open; poll() answers their requests.
+  void setClipboard(const std::string& text);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -103,21 +103,21 @@ TEST_F(WindowMode, ShowsTheBodyWhereTheCameraProjectsIt) {
   EXPECT_GT(p[0], p[2] + 60) << "pixel (" << x << ", " << y << ")";
 }
 
-TEST_F(WindowMode, ShowsTheControlPanelAndOtherwiseTheOffscreenFrame) {
-  ASSERT_EQ(offscreenRun_.first, 0) << offscreenRun_.second;
-  const Image shot = readPng(dir_ / "window.png");
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%06d.png", kFramesShown - 1);
-  const Image frame = readPng(dir_ / "frames" / name);
-  ASSERT_EQ(shot.width, kWidth) << windowRun_.second;
-  ASSERT_EQ(frame.width, kWidth) << offscreenRun_.second;
-  const rbsim::app::PanelRect panel = rbsim::app::panelRect(kWidth, kHeight);
+// Mean difference per channel between a window screenshot and an off-screen frame outside the
+// control panel, the pixels off by more than 8 levels there, and the mean difference inside it.
+struct PanelComparison {
+  double outsideMean = 0.0, insideMean = 0.0;
+  long outside = 0, outsideOff = 0;
+};
+PanelComparison compareOutsidePanel(const Image& shot, const Image& frame) {
+  const rbsim::app::PanelRect panel = rbsim::app::panelRect(shot.width, shot.height);
+  PanelComparison c;
   double outsideDiff = 0.0, insideDiff = 0.0;
-  long outside = 0, inside = 0, outsideOff = 0;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
+  long inside = 0;
+  for (int y = 0; y < shot.height; ++y) {
+    for (int x = 0; x < shot.width; ++x) {
       int diff = 0;
-      for (int c = 0; c < 3; ++c) diff += std::abs(shot.at(x, y)[c] - frame.at(x, y)[c]);
+      for (int k = 0; k < 3; ++k) diff += std::abs(shot.at(x, y)[k] - frame.at(x, y)[k]);
       const bool inPanel = x >= panel.x - 1 && x <= panel.x + panel.width + 1 && y >= panel.y - 1 &&
                            y <= panel.y + panel.height + 1;
       if (inPanel) {
@@ -125,17 +125,86 @@ TEST_F(WindowMode, ShowsTheControlPanelAndOtherwiseTheOffscreenFrame) {
         ++inside;
       } else {
         outsideDiff += diff;
-        ++outside;
-        if (diff > 3 * 8) ++outsideOff;
+        ++c.outside;
+        if (diff > 3 * 8) ++c.outsideOff;
       }
     }
   }
+  c.outsideMean = outsideDiff / (3.0 * static_cast<double>(c.outside));
+  c.insideMean = insideDiff / (3.0 * static_cast<double>(inside));
+  return c;
+}
+
+std::string frameName(int k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06d.png", k);
+  return name;
+}
+
+TEST_F(WindowMode, ShowsTheControlPanelAndOtherwiseTheOffscreenFrame) {
+  ASSERT_EQ(offscreenRun_.first, 0) << offscreenRun_.second;
+  const Image shot = readPng(dir_ / "window.png");
+  const Image frame = readPng(dir_ / "frames" / frameName(kFramesShown - 1));
+  ASSERT_EQ(shot.width, kWidth) << windowRun_.second;
+  ASSERT_EQ(frame.width, kWidth) << offscreenRun_.second;
+  const PanelComparison c = compareOutsidePanel(shot, frame);
   // Same renderer, same step, same camera: equal but for rounding (the panel's ImGui frame is
   // shared with the variables panel, nothing else differs).
-  EXPECT_LT(outsideDiff / (3.0 * outside), 0.5) << "mean difference per channel outside the control panel";
-  EXPECT_LT(outsideOff, outside / 1000) << "pixels off by more than 8 levels";
+  EXPECT_LT(c.outsideMean, 0.5) << "mean difference per channel outside the control panel";
+  EXPECT_LT(c.outsideOff, c.outside / 1000) << "pixels off by more than 8 levels";
   // The panel is drawn: its area is clearly not the scene behind it.
-  EXPECT_GT(insideDiff / (3.0 * inside), 10.0) << "mean difference per channel inside the control panel";
+  EXPECT_GT(c.insideMean, 10.0) << "mean difference per channel inside the control panel";
+}
+
+// The playback speed (issue 38): at half speed the window's 9th frame shows the video's 5th (the
+// playhead moves half a frame a frame), at double speed its 3rd does; both are the off-screen
+// frame outside the control panel. At a second size the window and the video agree as well.
+TEST_F(WindowMode, PlaysAtTheSpeedAskedForAndAtAnySize) {
+  ASSERT_EQ(offscreenRun_.first, 0) << offscreenRun_.second;
+  const Image frame = readPng(dir_ / "frames" / frameName(kFramesShown - 1));
+  for (const auto& [speed, frames] : {std::pair{"0.5", 2 * kFramesShown - 1}, std::pair{"2", (kFramesShown + 1) / 2}}) {
+    const fs::path shot = dir_ / (std::string("speed_") + speed + ".png");
+    const auto [code, output] = run("xvfb-run -a -s '-screen 0 1280x1024x24' '" + std::string(RBSIM_BINARY) + "' run '" +
+                                    kScene + "' --window --speed " + speed + " --window-frames " + std::to_string(frames) +
+                                    " --screenshot '" + shot.string() + "' --quiet --set view.panel=off");
+    ASSERT_EQ(code, 0) << output;
+    const PanelComparison c = compareOutsidePanel(readPng(shot), frame);
+    EXPECT_LT(c.outsideMean, 0.5) << "--speed " << speed << ": not the video's frame " << kFramesShown - 1;
+  }
+  // At 1280x720 too. (Without the variables panel: the video then draws the scene over the whole
+  // frame, as the window does under its panels.)
+  const fs::path shot = dir_ / "large.png", frames = dir_ / "large";
+  const std::string size = " --size 1280x720 --quiet --set view.panel=off";
+  ASSERT_EQ(run("xvfb-run -a -s '-screen 0 1920x1080x24' '" + std::string(RBSIM_BINARY) + "' run '" + kScene +
+                "' --window --window-frames " + std::to_string(kFramesShown) + " --screenshot '" + shot.string() + "'" + size)
+                .first,
+            0);
+  ASSERT_EQ(run("'" + std::string(RBSIM_BINARY) + "' run '" + kScene + "' --frames '" + frames.string() + "' --video '" +
+                (dir_ / "large.mp4").string() + "'" + size)
+                .first,
+            0);
+  const Image large = readPng(shot);
+  ASSERT_EQ(large.width, 1280);
+  ASSERT_EQ(large.height, 720);
+  const PanelComparison c = compareOutsidePanel(large, readPng(frames / frameName(kFramesShown - 1)));
+  EXPECT_LT(c.outsideMean, 0.5);
+  EXPECT_GT(c.insideMean, 10.0);
+}
+
+// "Copy as command" (the c key) puts the command line on the X clipboard, where another program
+// (xclip) reads it while the window is open.
+TEST(WindowClipboard, CopyAsCommandPutsTheCommandLineOnTheClipboard) {
+  const fs::path out = fs::temp_directory_path() / ("rbsim_clipboard_" + std::to_string(::getpid()) + ".txt");
+  const auto [code, output] = run("xvfb-run -a -s '-screen 0 1280x1024x24' bash '" + std::string(RBSIM_CLIPBOARD_SESSION) +
+                                  "' '" + std::string(RBSIM_BINARY) + "' '" + kScene + "' '" + out.string() + "'");
+  ASSERT_EQ(code, 0) << output;
+  std::FILE* file = std::fopen(out.c_str(), "r");
+  ASSERT_NE(file, nullptr);
+  char text[4096] = {};
+  const std::size_t n = std::fread(text, 1, sizeof text - 1, file);
+  std::fclose(file);
+  fs::remove(out);
+  EXPECT_EQ(std::string(text, n), "rbsim run '" + kScene + "'");
 }
 
 // Pressing on a body, dragging and releasing, end to end (issue 36): synthetic pointer events

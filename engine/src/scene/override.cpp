@@ -34,6 +34,14 @@ std::vector<std::string> splitScenePath(const std::string& path) {
 }
 
 void applyOverride(nlohmann::json& document, const std::string& assignment) {
+  // Keys and bare-word values go into the document as they are; a scene file's text is checked for
+  // UTF-8 by the JSON parser, and so must these be, or the document could not be written out again
+  // (nlohmann's dump throws on the first invalid byte; found by tests/fuzz's set fuzzer).
+  try {
+    static_cast<void>(nlohmann::json(assignment).dump());
+  } catch (const nlohmann::json::type_error&) {
+    throw InputError("", "--set", "expected UTF-8 text; the assignment has a byte that is not");
+  }
   const std::size_t eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
     throw InputError("", "--set", "expected key=value (e.g. world.dt=0.001), got \"" + assignment + "\"");

@@ -37,7 +37,14 @@ inline constexpr int kMaxCsgDepth = 16;  // [1]
 // 24 to 27 ns in trees of 4096 tori, spheres or boxes and 38 ns in one of 4096 ellipsoids, the
 // slowest (bench/csg_stress.py, one thread, the machine of bench/results/machine.csv): the budget
 // is ~8 s of loading, ~10 s with the rest of the scene's work.
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+// libFuzzer's build (tests/fuzz/run_fuzz.sh: -O1, AddressSanitizer, coverage on every comparison)
+// runs these loops 12 to 15 times slower: the demo mug loads in 0.85 s here and over 10 s there.
+// A budget 20 times smaller keeps the fuzzer's 10 s timeout for hangs, not for shapes within it.
+inline constexpr double kMaxImplicitEvaluations = 1e7;  // [primitive evaluations]
+#else
 inline constexpr double kMaxImplicitEvaluations = 2e8;  // [primitive evaluations]
+#endif
 // The slowest measured cost, rounded up, to say the budget in seconds.
 inline constexpr double kImplicitSecondsPerEvaluation = 4e-8;  // [s / primitive evaluation]
 // A triangle of the mesh costs its closure and self-crossing checks, mass properties, search tree

@@ -275,6 +275,24 @@ TEST_F(SceneFiles, NaNIsAJsonSyntaxError) {
   }
 }
 
+// A --set key or bare value with a byte that is not UTF-8 was put into the document as it was, and
+// writing the shape's cache key threw nlohmann's type_error 316 past every handler (the set
+// fuzzer's crash, tests/fuzz/corpus/set): refused as bad input now, naming --set.
+TEST(ParseScene, AnOverrideThatIsNotUtf8IsRefused) {
+  for (const std::string assignment : {std::string("bodies[0]shape.t\x87\x87=[1,2,3]"), std::string("bodies.box.name=\xff"),
+                                       std::string("title=caf\xc3")}) {
+    try {
+      parseSceneText(minimalScene().dump(), "test.json", RBSIM_TEST_DATA_DIR, {assignment});
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "--set " + assignment);
+      EXPECT_TRUE(contains(e.problem(), "UTF-8")) << e.what();
+    }
+  }
+  // UTF-8 itself is fine.
+  EXPECT_NO_THROW(parseSceneText(minimalScene().dump(), "test.json", RBSIM_TEST_DATA_DIR, {"title=caf\xc3\xa9"}));
+}
+
 TEST_F(SceneFiles, MissingSceneFile) {
   EXPECT_THROW(loadScene((dir_ / "absent.json").string()), InputError);
 }
