@@ -11,7 +11,7 @@
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
 #include "render/render_error.h"
-#include "cli/scene_catalogue.h"
+#include "run/scene_catalogue.h"
 #include "run/phase.h"
 
 namespace py = pybind11;
