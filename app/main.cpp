@@ -98,12 +98,15 @@ int renderAllDemos(const CLI::App& demo, Flags& flags) {
     }
   }
   rbsim::app::ReelOptions reel;
-  const RunOptions run = flags.finish("", true);
+  const RunOptions run = flags.finish("");
   reel.overrides = run.overrides;
   reel.quiet = run.quiet;
   reel.pngLevel = run.pngLevel;
   reel.glBackend = run.glBackend;
-  if (!run.framesDir.empty()) reel.framesBase = run.framesDir;
+  if (!run.framesDir.empty()) {
+    reel.framesBase = run.framesDir;
+    reel.writeFrames = true;
+  }
   const rbsim::app::ReelPlan plan = rbsim::app::planReel(rbsim::app::allDemos(), reel);
   if (!reel.quiet) {
     std::fprintf(stderr, "rbsim: %zu demos, %llu frames (%s of video at %dx%d, %d fps)\n", plan.demos.size(),

@@ -71,7 +71,7 @@ void Flags::attach(CLI::App& cmd, FlagSet set) {
              "; both are Mesa's llvmpipe, egl on the surfaceless platform)");
 }
 
-RunOptions Flags::finish(const std::string& defaultVideo, bool framesByDefault) {
+RunOptions Flags::finish(const std::string& defaultVideo) {
   if (!pngLevel.empty()) {
     run.pngLevel = static_cast<int>(parseFlagInteger(
         "--png-level", pngLevel, render::kMinPngLevel, render::kMaxPngLevel,
@@ -95,7 +95,7 @@ RunOptions Flags::finish(const std::string& defaultVideo, bool framesByDefault) 
     windowOptions.speed = parseFlagNumber("--speed", speed, kMinPlaybackSpeed, kMaxPlaybackSpeed,
                                           "simulated seconds per second (1: real time)");
   }
-  refuseIgnoredFlags(framesByDefault);
+  refuseIgnoredFlags();
   auto add = [&](const std::string& key, const std::string& value, const std::string& flag) {
     if (value.empty()) return;
     run.overrides.push_back(key + "=" + value);
@@ -136,7 +136,7 @@ RunOptions Flags::finish(const std::string& defaultVideo, bool framesByDefault) 
 }
 
 // A flag that the others make pointless would be ignored without a word: refused instead.
-void Flags::refuseIgnoredFlags(bool framesByDefault) const {
+void Flags::refuseIgnoredFlags() const {
   const std::pair<const char*, bool> imageFlags[] = {
       {"--frames", !run.framesDir.empty()}, {"--video", !run.videoPath.empty()}, {"--png-level", !pngLevel.empty()}};
   const std::pair<const char*, bool> runFlags[] = {{"--trace", !run.tracePath.empty()},
@@ -159,7 +159,7 @@ void Flags::refuseIgnoredFlags(bool framesByDefault) const {
   if (!gl.empty() && noRender) {
     throw InputError("", "--gl with --no-render", "contradictory: --no-render makes no OpenGL context");
   }
-  if (!pngLevel.empty() && run.framesDir.empty() && !framesByDefault) {
+  if (!pngLevel.empty() && run.framesDir.empty()) {
     throw InputError("", "--png-level without --frames", "it sets the PNG frames' compression; add --frames DIR");
   }
   if (!traceEvery.empty() && run.tracePath.empty()) {

@@ -35,15 +35,14 @@ struct Flags {
 
   void attach(CLI::App& cmd, FlagSet set);
 
-  // Checks the flags against each other and returns the run options; `framesByDefault`: `demo all`
-  // writes PNG frames without --frames (so --png-level applies).
-  RunOptions finish(const std::string& defaultVideo, bool framesByDefault = false);
+  // Checks the flags against each other and returns the run options.
+  RunOptions finish(const std::string& defaultVideo);
 
   // The flag behind a scene error's field, as " (from --size 0x0)", or "" when no flag set it.
   std::string origin(const InputError& e) const;
 
  private:
-  void refuseIgnoredFlags(bool framesByDefault) const;
+  void refuseIgnoredFlags() const;
 };
 
 }  // namespace rbsim::app

@@ -222,8 +222,10 @@ ReelPlan planReel(const std::vector<Demo>& demos, const ReelOptions& options) {
   for (const ReelDemo& d : plan.demos) demoFrames += d.frames;
   checkOutputBudget("", "`demo all`, every demo and its title card, at view.fps " + std::to_string(options.fps),
                     plan.totalFrames, options.width, options.height, options.fps, "", options.pngLevel);
-  checkOutputBudget("", "", demoFrames, options.width, options.height, options.fps, options.framesBase.string(),
-                    options.pngLevel);
+  if (options.writeFrames) {
+    checkOutputBudget("", "", demoFrames, options.width, options.height, options.fps, options.framesBase.string(),
+                      options.pngLevel);
+  }
   return plan;
 }
 
@@ -279,7 +281,7 @@ ReelResult renderReel(const ReelPlan& plan, const ReelOptions& options) {
     std::snprintf(still, sizeof still, "%02zu_", item);
     playCard(demoCard(plan, i, options), still + d.demo.name);
     RunOptions run;
-    run.framesDir = (options.framesBase / d.demo.name).string();
+    if (options.writeFrames) run.framesDir = (options.framesBase / d.demo.name).string();
     run.videoPath = (options.videoDir / (d.demo.name + ".mp4")).string();
     run.pngLevel = options.pngLevel;
     run.glBackend = options.glBackend;

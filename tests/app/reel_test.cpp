@@ -225,6 +225,7 @@ TEST(Reel, PlanMatchesTheFramesAShortRunWrites) {
   options.cardSeconds = 0.05;  // 3 frames at 60 fps
   options.overrides = {"world.duration=0.1"};
   options.framesBase = dir / "frames";
+  options.writeFrames = true;
   options.videoDir = dir / "videos";
   options.quiet = true;
   // Every phase its own chapter, with no minimum length (YouTube's 10 s is for the real reel,
