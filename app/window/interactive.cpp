@@ -247,7 +247,11 @@ class Session {
 
   render::FrameData frame() {
     render::FrameData f = buildFrame(*world_, scene_, title(), true, &*freeFlight_);
-    if (!plots_->empty()) f.overlay.plots = plots_->plots();
+    if (!plots_->empty()) {
+      f.overlay.plots = plots_->plots();
+      // Left of the control panel, which holds the right-hand side of the window.
+      f.overlay.plotsRight = panelRect(scene_.view.width, scene_.view.height).x - 8.0f;
+    }
     if (orbit_) f.camera = orbit_->camera();
     if (drag_) {
       const Spring& spring = world_->springs()[drag_->spring];
