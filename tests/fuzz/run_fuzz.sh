@@ -69,8 +69,11 @@ run() {  # target
   local target=$1 fuzzer="$build/tests/fuzz/$1_fuzzer"
   local log="$build/$target.log" work="$build/corpus/$target"
   mkdir -p "$work" "$kept/$target"
-  local before
-  before=$(ls "$build/crashes" | grep -c "^$target-" || true)
+  # Findings are crash-, timeout-, oom- and leak- files; libFuzzer also writes a slow-unit- file
+  # for an input over 10 s but under the timeout, counted apart: slow, not hung.
+  local findings="^$target-(crash|timeout|oom|leak)-" slow="^$target-slow-unit-" before slow_before
+  before=$(ls "$build/crashes" | grep -cE "$findings" || true)
+  slow_before=$(ls "$build/crashes" | grep -cE "$slow" || true)
   echo "+ $target for ${seconds} s (log: $log)"
   # shellcheck disable=SC2046
   if ! nice -n 19 "$fuzzer" -max_total_time="$seconds" -timeout=$timeout -rss_limit_mb=2048 -max_len=$max_len \
@@ -79,7 +82,8 @@ run() {  # target
     status=1
     grep -m5 -E "ERROR|runtime error|==ABORTING|terminate called" "$log" || true
   fi
-  local artifacts=$(( $(ls "$build/crashes" | grep -c "^$target-" || true) - before ))
+  local artifacts=$(( $(ls "$build/crashes" | grep -cE "$findings" || true) - before ))
+  local slow_units=$(( $(ls "$build/crashes" | grep -cE "$slow" || true) - slow_before ))
   [ "$artifacts" -eq 0 ] || status=1
   local runs
   runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' | tail -1 || true)
@@ -93,7 +97,7 @@ run() {  # target
     -artifact_prefix="$build/crashes/merge-$target-" "$merged" "$kept/$target" "$work" > "$build/$target.merge.log" 2>&1 || {
     echo "run_fuzz.sh: merging the $target corpus failed (see $build/$target.merge.log); kept corpus unchanged" >&2
     status=1
-    summary+=("$target: ${runs:-?} executions in ${seconds} s, $artifacts artifacts, merge failed")
+    summary+=("$target: ${runs:-?} executions in ${seconds} s, $artifacts artifacts ($slow_units slow units), merge failed")
     return
   }
   find "$merged" -type f -size +${max_len}c -delete
@@ -101,7 +105,7 @@ run() {  # target
   local files size
   files=$(find "$kept/$target" -type f | wc -l)
   size=$(( $(du -sb "$kept/$target" | cut -f1) / 1024 ))
-  summary+=("$target: ${runs:-?} executions in ${seconds} s, $artifacts artifacts; kept corpus $files files, ${size} KB")
+  summary+=("$target: ${runs:-?} executions in ${seconds} s, $artifacts artifacts ($slow_units slow units); kept corpus $files files, ${size} KB")
 }
 
 for target in "${targets[@]}"; do run "$target"; done
