@@ -164,7 +164,6 @@ struct FrameData {
   // scene fields are then unused, and its overlay is drawn once over the whole image.
   std::vector<FrameData> panes;
   bool infoColumn = false;  // the panes leave a column on the left to the panel and plots
-  int panesRight = 0;       // > 0: the panes end there, not at the image's edge [px] (pane_layout.h)
   std::vector<BodyView> bodies;
   std::vector<ForceArrow> forces;
   std::vector<DebugLine> lines;    // all drawn with one upload and at most two draw calls

@@ -293,7 +293,7 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClearColor(kPaneGapColor.r, kPaneGapColor.g, kPaneGapColor.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    const std::vector<PaneRect> rects = paneLayout(frame.panes.size(), width_, height_, frame.infoColumn, frame.overlay.panel, frame.panesRight);
+    const std::vector<PaneRect> rects = paneLayout(frame.panes.size(), width_, height_, frame.infoColumn, frame.overlay.panel);
     for (std::size_t k = 0; k < frame.panes.size(); ++k) drawView(frame.panes[k], rects[k], frameTarget, clock);
   }
   glDisable(GL_SCISSOR_TEST);

@@ -28,13 +28,11 @@ int infoColumnWidth(int imageWidth, int imageHeight, PanelMode panel) {
   return static_cast<int>(std::lround(fraction * static_cast<float>(imageWidth) + 2.0f * overlayMargin(imageHeight)));
 }
 
-std::vector<PaneRect> paneLayout(std::size_t count, int imageWidth, int imageHeight, bool infoColumn, PanelMode panel,
-                                 int right) {
+std::vector<PaneRect> paneLayout(std::size_t count, int imageWidth, int imageHeight, bool infoColumn, PanelMode panel) {
   std::vector<PaneRect> panes;
   if (count == 0 || imageWidth <= 0 || imageHeight <= 0) return panes;
   const int left = infoColumn ? std::min(infoColumnWidth(imageWidth, imageHeight, panel), imageWidth / 2) : 0;
-  const int end = right > left && right < imageWidth ? right : imageWidth;
-  const int areaWidth = end - left;
+  const int areaWidth = imageWidth - left;
   const double imageAspect = static_cast<double>(imageWidth) / imageHeight;
   std::size_t bestColumns = 1;
   double bestMismatch = std::numeric_limits<double>::infinity();

@@ -26,10 +26,8 @@ int infoColumnWidth(int imageWidth, int imageHeight, PanelMode panel);
 // grids with room for all, the one whose panes' width/height is nearest the image's own (so the
 // scene's camera, framed for the whole image, fits each pane), filled row by row; panes are
 // separated by kPaneGap pixels.
-// `right` > 0: the panes end there instead of at the image's right edge (the window's control
-// panel stands right of it) [px].
 std::vector<PaneRect> paneLayout(std::size_t count, int imageWidth, int imageHeight, bool infoColumn,
-                                 PanelMode panel = PanelMode::Compact, int right = 0);
+                                 PanelMode panel = PanelMode::Compact);
 
 // The camera for a pane: the scene's, with a taller field of view when the pane is narrower than
 // the image, so a pane shows at least the width the whole image would.

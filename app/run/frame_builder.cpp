@@ -93,10 +93,10 @@ std::string restitutionThresholdRow(const World& world) {
   return buffer;
 }
 
-std::optional<render::PaneRect> scenePane(const ViewDesc& view, int right) {
+std::optional<render::PaneRect> scenePane(const ViewDesc& view) {
   const bool panel = view.overlay && view.panel != ViewDesc::Panel::Off;
   if (!panel && view.plots.empty()) return std::nullopt;
-  return render::paneLayout(1, view.width, view.height, true, panelMode(view.panel), right).front();
+  return render::paneLayout(1, view.width, view.height, true, panelMode(view.panel)).front();
 }
 
 render::Camera viewCamera(const World& world, const ViewDesc& view) {
@@ -109,8 +109,8 @@ render::Camera viewCamera(const World& world, const ViewDesc& view) {
   return camera;
 }
 
-void placeBesidePanel(render::FrameData& frame, const ViewDesc& view, int right) {
-  const std::optional<render::PaneRect> rect = scenePane(view, right);
+void placeBesidePanel(render::FrameData& frame, const ViewDesc& view) {
+  const std::optional<render::PaneRect> rect = scenePane(view);
   if (!rect) return;
   render::FrameData pane;
   pane.bodies = std::move(frame.bodies);
@@ -122,7 +122,6 @@ void placeBesidePanel(render::FrameData& frame, const ViewDesc& view, int right)
   pane.camera = render::paneCamera(frame.camera, view.width, view.height, *rect);
   frame.panes.push_back(std::move(pane));
   frame.infoColumn = true;
-  frame.panesRight = right;
   frame.overlay.plotsUnderPanel = true;
 }
 

@@ -25,14 +25,13 @@ render::FrameData buildFrame(const World& world, const Scene& scene, const std::
 
 // Where a scene alone is drawn when its panel or plots show: a pane right of the info column
 // (pane_layout.h), so that the panel and the plots never cover the bodies (issue 38); nullopt when
-// the scene has the whole image. `right`, when inside the pane, is where it ends instead of the
-// image's edge [px] (the window's control panel stands there).
-std::optional<render::PaneRect> scenePane(const ViewDesc& view, int right = 0);
+// the scene has the whole image.
+std::optional<render::PaneRect> scenePane(const ViewDesc& view);
 // The scene's camera, moved with the selected body under view.follow.
 render::Camera viewCamera(const World& world, const ViewDesc& view);
 // The scene's own fields of `frame` (built by buildFrame) moved into scenePane(view), seen
 // through the pane's camera (render::paneCamera); nothing changes without a pane.
-void placeBesidePanel(render::FrameData& frame, const ViewDesc& view, int right = 0);
+void placeBesidePanel(render::FrameData& frame, const ViewDesc& view);
 
 // "0.0123 rad, dE/E +1.2e-05, since 3.2 s" (the time the spin was last torqued), or why the
 // body is not compared.

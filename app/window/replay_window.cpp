@@ -82,7 +82,7 @@ class ReplayWindow {
     if (orbit_) {
       const ViewDesc& view = phase.scene().view;
       f.camera = orbit_->camera();
-      const std::vector<render::PaneRect> rects = render::paneLayout(f.panes.size(), view.width, view.height, f.infoColumn, f.overlay.panel, f.panesRight);
+      const std::vector<render::PaneRect> rects = render::paneLayout(f.panes.size(), view.width, view.height, f.infoColumn, f.overlay.panel);
       for (std::size_t k = 0; k < f.panes.size(); ++k) {
         f.panes[k].camera = render::paneCamera(orbit_->camera(), view.width, view.height, rects[k]);
       }
