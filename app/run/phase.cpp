@@ -136,4 +136,11 @@ std::uint64_t frameCount(const Phase& phase) {
   return frames;
 }
 
+World buildFramedWorld(const Scene& scene) {
+  if (scene.threadsGiven || scene.settings.threads == 1) return buildWorld(scene);
+  Scene oneThread = scene;
+  oneThread.settings.threads = 1;
+  return buildWorld(oneThread);
+}
+
 }  // namespace rbsim::app

@@ -58,4 +58,11 @@ inline BodyId selectedBodyId(const World& world, std::size_t selected) {
 // Frames a phase renders: those of its longest world (runner.h's frameCount).
 std::uint64_t frameCount(const Phase& phase);
 
+// The world of a scene whose frames are drawn (video, PNGs, window): on one thread unless the
+// scene gives world.threads. While frames are made, llvmpipe's rasterising threads and x264's
+// encoder keep every core busy, and more physics threads only wait for a core (`rbsim demo 3`,
+// 721 frames at 60 fps: 26.2 s on two threads, 15.9 s on one; docs/speed.md). A step's result
+// is the same, bit for bit, on any number of threads (Settings::threads).
+World buildFramedWorld(const Scene& scene);
+
 }  // namespace rbsim::app

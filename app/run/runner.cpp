@@ -222,7 +222,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     progress.name = std::filesystem::path(phase.file).stem().string();
     std::vector<World> worlds;
     worlds.reserve(phase.worlds.size());
-    for (const PhaseWorld& w : phase.worlds) worlds.push_back(buildWorld(w.scene));
+    for (const PhaseWorld& w : phase.worlds) worlds.push_back(renderer ? buildFramedWorld(w.scene) : buildWorld(w.scene));
     // The overlay's error against the exact spin, of each world's selected body.
     std::vector<FreeFlightError> freeFlight;
     for (std::size_t k = 0; k < worlds.size(); ++k) {

@@ -64,7 +64,7 @@ class Session {
   Session(const SceneSource& source, const WindowOptions& options)
       : source_(source), options_(options), speed_(options.speed) {
     scene_ = load(phase_, {});
-    world_ = std::make_unique<World>(buildWorld(scene_));
+    world_ = std::make_unique<World>(buildFramedWorld(scene_));
     watchFreeFlight();
   }
 
@@ -172,7 +172,7 @@ class Session {
 
   void restart() {
     drag_.reset();
-    world_ = std::make_unique<World>(buildWorld(scene_));
+    world_ = std::make_unique<World>(buildFramedWorld(scene_));
     watchFreeFlight();
     playhead_ = 0.0;
     history_.clear();

@@ -205,5 +205,25 @@ TEST(ComparedPhase, AnyKeyWorksAndWorldsOfDifferentStepsKeepTheSameTime) {
   EXPECT_THROW(parsePhaseText(text, "inline.json", ".", {"world.dt=0.02"}), InputError);
 }
 
+
+// A world whose frames are drawn steps on one thread (the rasteriser and the encoder have the
+// cores), unless the scene gives world.threads, in its file or by --set: then it keeps that.
+TEST(FramedWorld, StepsOnOneThreadUnlessTheSceneGivesThreads) {
+  const std::string text = R"({"world": {"dt": 0.01, "duration": 0.1},
+    "bodies": [{"name": "a", "shape": {"type": "box", "extents": [1, 1, 1]}, "mass": 1}]})";
+  const Scene plain = parsePhaseText(text, "inline.json", ".").worlds[0].scene;
+  EXPECT_FALSE(plain.threadsGiven);
+  EXPECT_EQ(buildWorld(plain).settings().threads, machineThreads());
+  EXPECT_EQ(buildFramedWorld(plain).settings().threads, 1);
+
+  const Scene set = parsePhaseText(text, "inline.json", ".", {"world.threads=3"}).worlds[0].scene;
+  EXPECT_TRUE(set.threadsGiven);
+  EXPECT_EQ(buildFramedWorld(set).settings().threads, 3);
+
+  const std::string given = R"({"world": {"dt": 0.01, "duration": 0.1, "threads": 2},
+    "bodies": [{"name": "a", "shape": {"type": "box", "extents": [1, 1, 1]}, "mass": 1}]})";
+  EXPECT_EQ(buildFramedWorld(parsePhaseText(given, "inline.json", ".").worlds[0].scene).settings().threads, 2);
+}
+
 }  // namespace
 }  // namespace rbsim::app

@@ -71,6 +71,7 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
       w.fail("threads", "expected a whole number of threads in [1, " + std::to_string(kMaxThreads) + "]");
     }
     s.threads = static_cast<int>(threads);
+    scene.threadsGiven = true;
   }
   s.contactHertz = w.number("contact_hertz", s.contactHertz);
   s.contactDampingRatio = w.number("contact_damping_ratio", s.contactDampingRatio);

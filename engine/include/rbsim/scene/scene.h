@@ -31,6 +31,9 @@ struct Scene {
   std::vector<std::string> files;  // every other file it read (meshes), as opened
   std::string title;
   Settings settings;
+  // world.threads was given (in the file or by --set). Without it a run that renders gives the
+  // physics one thread (app/run/runner.cpp): the rasteriser and the encoder use every core.
+  bool threadsGiven = false;
   double duration = 5.0;   // simulated time to run [s]
   std::vector<BodyDef> bodies;
   std::vector<std::string> inertiaMethods;  // per body, as resolved ("cube" or "exact")
