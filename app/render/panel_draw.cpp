@@ -13,6 +13,7 @@
 #include "overlay.h"
 #include "pane_layout.h"
 #include "panel_rows.h"
+#include "text_wrap.h"
 
 namespace rbsim::render {
 
@@ -22,60 +23,6 @@ const ImVec4 kTitleColor(1.0f, 0.82f, 0.35f, 1.0f);    // amber, as the captions
 const ImVec4 kCaptionColor(0.78f, 0.82f, 0.88f, 1.0f);
 const ImVec4 kLabelColor(0.70f, 0.76f, 0.84f, 1.0f);
 const ImVec4 kMoreColor(0.60f, 0.65f, 0.72f, 1.0f);
-
-float textWidth(ImFont* font, const std::string& text) {
-  return font->CalcTextSizeA(font->FontSize, FLT_MAX, 0.0f, text.c_str()).x;
-}
-
-// The longest prefix of `word` (at a UTF-8 character boundary, at least one character) that is at
-// most maxWidth wide.
-std::size_t fittingPrefix(ImFont* font, const std::string& word, float maxWidth) {
-  std::size_t end = 0, best = 0;
-  while (end < word.size()) {
-    std::size_t next = end + 1;
-    while (next < word.size() && (static_cast<unsigned char>(word[next]) & 0xC0) == 0x80) ++next;
-    if (best > 0 && textWidth(font, word.substr(0, next)) > maxWidth) break;
-    best = end = next;
-  }
-  return best;
-}
-
-// `text` in lines at most maxWidth wide: broken at spaces and newlines, and a word wider than a
-// line (a path, a long number) between characters. ImGui's own wrapping also breaks after '.'
-// and ',', which tears numbers such as "1.5" across two lines.
-std::vector<std::string> wrapLines(ImFont* font, const std::string& text, float maxWidth) {
-  std::vector<std::string> lines;
-  std::string line;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find_first_of(" \n", start);
-    if (end == std::string::npos) end = text.size();
-    std::string word = text.substr(start, end - start);
-    while (true) {
-      const std::string candidate = line.empty() ? word : line + " " + word;
-      if (textWidth(font, candidate) <= maxWidth) {
-        line = candidate;
-        break;
-      }
-      if (!line.empty()) {
-        lines.push_back(line);
-        line.clear();
-        continue;
-      }
-      const std::size_t cut = fittingPrefix(font, word, maxWidth);
-      lines.push_back(word.substr(0, cut));
-      word = word.substr(cut);
-      if (word.empty()) break;
-    }
-    if (end < text.size() && text[end] == '\n') {
-      lines.push_back(line);
-      line.clear();
-    }
-    start = end + 1;
-  }
-  if (!line.empty() || lines.empty()) lines.push_back(line);
-  return lines;
-}
 
 // A row measured: its label's lines, and its value's lines beside the label (one) or below it.
 struct MeasuredRow {

@@ -12,6 +12,7 @@
 #include "overlay.h"
 #include "pane_layout.h"
 #include "plot_ticks.h"
+#include "text_wrap.h"
 
 namespace rbsim::render {
 
@@ -94,11 +95,18 @@ void Overlay::drawPlots(const OverlayData& data, float top) {
       const float frameHeightGuess = plotHeight - (frameTopLines + 1.4f) * line;
       const int maxTicks = std::max(2, static_cast<int>(frameHeightGuess / (kTickSpacingLines * line)) + 1);
       const AxisTicks ticks = niceTicks(lo, hi, std::min(maxTicks, 5), plot.nonNegative);
-      const std::string title = plot.title + axisUnit(ticks, plot.unit);
-      draw->AddText(origin, text, title.c_str());
-      const float titleWidth = ImGui::CalcTextSize(title.c_str()).x + line;
+      // A title wider than the plot wraps (no text is cut off); the frame moves down by the lines
+      // it adds, which the plot's fixed height takes from the frame.
+      const std::vector<std::string> titleLines =
+          wrapLines(ImGui::GetFont(), plot.title + axisUnit(ticks, plot.unit), innerWidth);
+      for (std::size_t k = 0; k < titleLines.size(); ++k) {
+        draw->AddText(ImVec2(origin.x, origin.y + static_cast<float>(k) * line), text, titleLines[k].c_str());
+      }
+      const float extraLines = static_cast<float>(titleLines.size() - 1);
+      const float lastTop = origin.y + extraLines * line;
+      const float titleWidth = ImGui::CalcTextSize(titleLines.back().c_str()).x + line;
       const bool ownLine = legendWidth > 0.0f && titleWidth + legendWidth > innerWidth;
-      ImVec2 at(ownLine ? origin.x : origin.x + titleWidth, ownLine ? origin.y + line : origin.y);
+      ImVec2 at(ownLine ? origin.x : origin.x + titleWidth, ownLine ? lastTop + line : lastTop);
       for (std::size_t s = 0; s < plot.legend.size(); ++s) {
         if (plot.legend[s].empty()) continue;
         const ImU32 color = kSeriesColors[s % std::size(kSeriesColors)];
@@ -109,7 +117,7 @@ void Overlay::drawPlots(const OverlayData& data, float top) {
       float tickWidth = 0.0f;
       for (const std::string& label : ticks.labels) tickWidth = std::max(tickWidth, ImGui::CalcTextSize(label.c_str()).x);
       const float frameLeft = origin.x + std::max(labelWidth, tickWidth + 0.3f * line);
-      const ImVec2 a(frameLeft, origin.y + (ownLine ? frameTopLines + 1.0f : frameTopLines) * line);
+      const ImVec2 a(frameLeft, origin.y + (extraLines + (ownLine ? frameTopLines + 1.0f : frameTopLines)) * line);
       const ImVec2 b(origin.x + innerWidth, origin.y + plotHeight - 1.4f * line);
       lo = static_cast<float>(ticks.lo);
       hi = static_cast<float>(ticks.hi);

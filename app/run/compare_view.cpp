@@ -45,7 +45,7 @@ std::vector<render::OverlayRow> selectedBodyRows(const std::vector<World>& world
       [](const RigidBody& b) { return formatNumber(b.kineticEnergy(), b.awake() ? "J" : "J (asleep)"); });
   if (measured) {
     for (std::size_t k = 0; k < worlds.size() && k < freeFlight->size(); ++k) {
-      rows.push_back({"vs exact spin  " + phase.worlds[k].label, formatFreeFlightError((*freeFlight)[k].read(worlds[k])), RowLevel::Essential});
+      rows.push_back({"vs exact spin  " + phase.worlds[k].label, freeFlightRow((*freeFlight)[k], worlds[k]), RowLevel::Essential});
     }
   }
   return rows;

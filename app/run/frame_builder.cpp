@@ -49,8 +49,19 @@ render::Camera sceneCamera(const ViewDesc& view) {
   return camera;
 }
 
-std::string formatFreeFlightError(const FreeFlightError::Reading& reading) {
-  if (!reading.tracked) return "not compared (asleep, static, kinematic)";
+std::string freeFlightRow(const FreeFlightError& error, const World& world) {
+  const FreeFlightError::Reading reading = error.read(world);
+  if (!reading.tracked) {
+    if (!world.isValid(error.body())) return "not compared (no body)";
+    const RigidBody& body = world.body(error.body());
+    return body.isStatic() ? "not compared (static)" : body.isKinematic() ? "not compared (kinematic)"
+                                                          : "not compared (asleep)";
+  }
+  // An epoch at this very step: a contact, spring, joint or force turned it just now, and the
+  // exact motion has not had a step to differ yet (half a step of slack for rounding).
+  if (reading.since > world.time() - 0.5 * world.settings().timeStep) {
+    return "not compared (torqued this step)";
+  }
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "%.3g rad, dE/E %+.2g, since %.3g s", reading.angle, reading.energy, reading.since);
   return buffer;
@@ -201,7 +212,7 @@ render::FrameData buildFrame(const World& world
     });
     if (freeFlight != nullptr) {
       // Kept whether or not the body flies free just now, so that the panel does not jump.
-      overlay.rows.push_back({"vs exact spin", formatFreeFlightError(freeFlight->read(world)), main});
+      overlay.rows.push_back({"vs exact spin", freeFlightRow(*freeFlight, world), main});
     }
   }
   if (!particleSystems(world).empty()) addParticleView(world, scene, frame);

@@ -33,9 +33,9 @@ render::Camera viewCamera(const World& world, const ViewDesc& view);
 // through the pane's camera (render::paneCamera); nothing changes without a pane.
 void placeBesidePanel(render::FrameData& frame, const ViewDesc& view);
 
-// "0.0123 rad, dE/E +1.2e-05, since 3.2 s" (the time the spin was last torqued), or why the
-// body is not compared.
-std::string formatFreeFlightError(const FreeFlightError::Reading& reading);
+// "0.0123 rad, dE/E +1.2e-05, since 3.2 s" (the time the spin was last torqued), or the one
+// reason the body is not compared: static, kinematic, asleep, or torqued this step.
+std::string freeFlightRow(const FreeFlightError& error, const World& world);
 
 // The overlay's row "restitution below" when a body has restitution > 0: "0.5 m/s approach:
 // none" (Settings::restitutionThreshold: slower approaches do not bounce), or that it is off.

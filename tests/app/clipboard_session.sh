@@ -11,8 +11,12 @@ window=$(timeout 30 xdotool search --sync --onlyvisible --name "rbsim" | head -1
 [ -n "$window" ] || { echo "clipboard_session: the window did not appear" >&2; exit 1; }
 sleep 0.5
 xdotool key --window "$window" c
-sleep 1  # a few frames: the key is read at the next poll
-timeout 10 xclip -o -selection clipboard > "$out"
+# The key is read at the next poll, a frame or more later (longer on a loaded machine): ask for
+# the selection until its owner answers, for at most 20 s.
+for _ in $(seq 40); do
+  sleep 0.5
+  if timeout 10 xclip -o -selection clipboard > "$out" 2> /dev/null && [ -s "$out" ]; then break; fi
+done
 xdotool key --window "$window" q 2> /dev/null
 wait $pid
 trap - EXIT
