@@ -72,16 +72,20 @@ void addPlanarView(const World& world, const Scene& scene, render::FrameData& fr
   char text[128];
   std::snprintf(text, sizeof text, "%s (%.3g kg, I %.3g kg m^2)", first.name().c_str(), first.mass(), first.inertia());
   frame.overlay.rows.push_back({"2D body", text, render::RowLevel::Essential});
-  std::snprintf(text, sizeof text, "%+.4f %+.4f m, theta %+.4f rad", first.state().position.x(), first.state().position.y(),
-                first.state().angle);
-  frame.overlay.rows.push_back({"x, theta", text, render::RowLevel::Essential});
-  std::snprintf(text, sizeof text, "omega %+.4f rad/s, L = I omega %+.4f", first.angularVelocity(), first.state().angularMomentum);
-  frame.overlay.rows.push_back({"omega, L", text, render::RowLevel::Useful});
+  std::snprintf(text, sizeof text, "%+.4f %+.4f m", first.state().position.x(), first.state().position.y());
+  frame.overlay.rows.push_back({"x", text, render::RowLevel::Essential});
+  std::snprintf(text, sizeof text, "%+.4f rad", first.state().angle);
+  frame.overlay.rows.push_back({"theta", text, render::RowLevel::Essential});
+  std::snprintf(text, sizeof text, "%+.4f rad/s", first.angularVelocity());
+  frame.overlay.rows.push_back({"omega", text, render::RowLevel::Useful});
+  std::snprintf(text, sizeof text, "%+.4f kg m^2/s", first.state().angularMomentum);
+  frame.overlay.rows.push_back({"L = I omega", text, render::RowLevel::Useful});
   double energy = 0.0;
   for (const PlanarBody& body : planar->bodies()) energy += body.kineticEnergy();
-  std::snprintf(text, sizeof text, "%zu bodies, %zu contact points, kinetic %.4g J", planar->bodies().size(),
-                planar->contacts().size(), energy);
+  std::snprintf(text, sizeof text, "%zu bodies, %zu contact points", planar->bodies().size(), planar->contacts().size());
   frame.overlay.rows.push_back({"2D world", text, render::RowLevel::Useful});
+  std::snprintf(text, sizeof text, "%.4g J", energy);
+  frame.overlay.rows.push_back({"kinetic energy (2D)", text, render::RowLevel::Useful});
 }
 
 }  // namespace rbsim::app
