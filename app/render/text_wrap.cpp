@@ -8,12 +8,12 @@ namespace {
 
 // The longest prefix of `word` (at a UTF-8 character boundary, at least one character) that is at
 // most maxWidth wide.
-std::size_t fittingPrefix(ImFont* font, const std::string& word, float maxWidth) {
+std::size_t fittingPrefix(const ImFont* font, float size, const std::string& word, float maxWidth) {
   std::size_t end = 0, best = 0;
   while (end < word.size()) {
     std::size_t next = end + 1;
     while (next < word.size() && (static_cast<unsigned char>(word[next]) & 0xC0) == 0x80) ++next;
-    if (best > 0 && textWidth(font, word.substr(0, next)) > maxWidth) break;
+    if (best > 0 && textWidth(font, size, word.substr(0, next)) > maxWidth) break;
     best = end = next;
   }
   return best;
@@ -21,11 +21,11 @@ std::size_t fittingPrefix(ImFont* font, const std::string& word, float maxWidth)
 
 }  // namespace
 
-float textWidth(ImFont* font, const std::string& text) {
-  return font->CalcTextSizeA(font->FontSize, FLT_MAX, 0.0f, text.c_str()).x;
+float textWidth(const ImFont* font, float size, const std::string& text) {
+  return font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str()).x;
 }
 
-std::vector<std::string> wrapLines(ImFont* font, const std::string& text, float maxWidth) {
+std::vector<std::string> wrapLines(const ImFont* font, float size, const std::string& text, float maxWidth) {
   std::vector<std::string> lines;
   std::string line;
   std::size_t start = 0;
@@ -35,7 +35,7 @@ std::vector<std::string> wrapLines(ImFont* font, const std::string& text, float 
     std::string word = text.substr(start, end - start);
     while (true) {
       const std::string candidate = line.empty() ? word : line + " " + word;
-      if (textWidth(font, candidate) <= maxWidth) {
+      if (textWidth(font, size, candidate) <= maxWidth) {
         line = candidate;
         break;
       }
@@ -44,7 +44,7 @@ std::vector<std::string> wrapLines(ImFont* font, const std::string& text, float 
         line.clear();
         continue;
       }
-      const std::size_t cut = fittingPrefix(font, word, maxWidth);
+      const std::size_t cut = fittingPrefix(font, size, word, maxWidth);
       lines.push_back(word.substr(0, cut));
       word = word.substr(cut);
       if (word.empty()) break;

@@ -12,6 +12,7 @@
 #include "gl_api.h"
 #include "gl_context.h"
 #include "render_error.h"
+#include "text_wrap.h"
 
 namespace rbsim::render {
 
@@ -43,32 +44,6 @@ ImFont* loadFont(ImGuiIO& io, const char* file, float sizePx) {
   ImFontConfig config;  // ImGui's own 13 px font, in whole steps to keep it crisp
   config.SizePixels = 13.0f * std::max(1.0f, std::round(sizePx / 13.0f));
   return io.Fonts->AddFontDefault(&config);
-}
-
-// Greedy wrap at spaces (ImGui's own wrapping also breaks after '.' and ',' inside numbers).
-std::vector<std::string> wrapLines(const ImFont* font, float size, const std::string& text, float maxWidth) {
-  std::vector<std::string> lines;
-  std::string line;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find(' ', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string candidate = line.empty() ? word : line + " " + word;
-    if (!line.empty() && font->CalcTextSizeA(size, FLT_MAX, 0.0f, candidate.c_str()).x > maxWidth) {
-      lines.push_back(line);
-      line = word;
-    } else {
-      line = candidate;
-    }
-    start = end + 1;
-  }
-  if (!line.empty()) lines.push_back(line);
-  return lines;
-}
-
-float textWidth(const ImFont* font, float size, const std::string& text) {
-  return font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str()).x;
 }
 
 // The text, or its longest prefix ending at a word that fits with "..." after it.
