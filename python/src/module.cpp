@@ -10,7 +10,9 @@
 #include "rbsim/integrate/simulation_error.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
+#include "render/offscreen_renderer.h"
 #include "render/render_error.h"
+#include "run/paths.h"
 #include "run/scene_catalogue.h"
 #include "run/phase.h"
 
@@ -88,6 +90,14 @@ PYBIND11_MODULE(rbsim, m) {
   py::options options;
   options.disable_function_signatures();
   m.doc() = "rbsim: rigid bodies for physically based animation coursework (see docs/python.md)";
+  m.attr("__version__") = RBSIM_VERSION;
+  // The state arrays are NumPy arrays: without NumPy the import fails here, saying so, and not
+  // at the first w.x with "No module named 'numpy'".
+  try {
+    py::module_::import("numpy");
+  } catch (py::error_already_set&) {
+    throw py::import_error("rbsim needs NumPy: apt-get install python3-numpy (Debian), or pip install numpy in a venv");
+  }
 
   inputErrorType = PyErr_NewException("rbsim.InputError", PyExc_ValueError, nullptr);
   simulationErrorType = PyErr_NewException("rbsim.SimulationError", PyExc_RuntimeError, nullptr);
@@ -97,6 +107,16 @@ PYBIND11_MODULE(rbsim, m) {
   m.attr("RenderError") = py::handle(renderErrorType);
   py::register_exception_translator(translate);
 
+  m.def(
+      "data_dirs",
+      [] {
+        py::dict d;
+        d["assets"] = rbsim::app::assetDir();
+        d["shaders"] = rbsim::render::defaultShaderDir();
+        return d;
+      },
+      "data_dirs() -> {\"assets\": path, \"shaders\": path}: the folders the module reads scenes by name and shaders "
+      "from (<prefix>/share/rbsim when installed; `rbsim list` prints the program's)");
   m.def("integrators", &rbsim::integratorNames, "integrators() -> [str]: the names world.integrator accepts");
   m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs"}; },
         "solvers() -> [str]: the names world.solver accepts");
@@ -214,6 +234,14 @@ PYBIND11_MODULE(rbsim, m) {
            "reference for integrator errors")
       .def("step", [](PyWorld& w, const py::object& steps) { w.step(intArgument(steps, "World.step()", "steps")); },
            py::arg("steps") = 1, "step(steps: int = 1): advance by steps x dt")
+      .def("ray_cast",
+           [](const PyWorld& w, const py::object& origin, const py::object& direction, const py::object& maxDistance) {
+             return w.rayCast(origin, direction, maxDistance);
+           },
+           py::arg("origin"), py::arg("direction"), py::arg("max_distance") = py::none(),
+           "ray_cast(origin=(x, y, z), direction=(dx, dy, dz), max_distance: float = inf) -> dict | None: the first "
+           "body or plane the ray meets (asleep and static ones too): {\"body\": BodyId | None, \"plane\": int | None, "
+           "\"distance\": m, \"point\": (x, y, z), \"normal\": (x, y, z)}; a start inside hits at distance 0")
       .def("is_valid",
            [](const PyWorld& w, const py::object& body) {
              const PyBodyId& id = bodyArgument(body, "World.is_valid()");
@@ -243,10 +271,9 @@ PYBIND11_MODULE(rbsim, m) {
         for (const rbsim::RigidBody& b : w.world().bodies()) names.push_back(b.name());
         return names;
       })
-      .def_property_readonly("contact_count", [](const PyWorld& w) { return w.world().contactPoints().size(); },
-                             "contact points of the last step")
       .def("state_hash", [](const PyWorld& w) { return w.world().stateHash(); },
            "state_hash() -> int: FNV-1a of every state's bits: equal hashes, identical runs");
   rbsim::python::bindStateArrays(world);
+  rbsim::python::bindContacts(world);
   rbsim::python::bindRendering(m);
 }

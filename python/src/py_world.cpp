@@ -1,6 +1,8 @@
 #include "py_world.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <pybind11/stl.h>
@@ -8,6 +10,7 @@
 #include "rbsim/integrate/free_rigid_body.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene_parts.h"
+#include "rbsim/world/ray_cast.h"
 #include "to_json.h"
 
 namespace py = pybind11;
@@ -28,13 +31,13 @@ constexpr const char* kPoseCall = "World.set_pose()";
 constexpr long long kStepsBetweenSignalChecks = 256;
 
 // `count` finite numbers from a sequence or array, or InputError naming the keyword.
-Eigen::VectorXd finiteNumbers(const py::object& value, std::size_t count, const char* field) {
-  const nlohmann::json j = toJson(value, kPoseCall, field);
+Eigen::VectorXd finiteNumbers(const py::object& value, std::size_t count, const char* field, const char* call = kPoseCall) {
+  const nlohmann::json j = toJson(value, call, field);
   const std::string expected = "expected " + std::to_string(count) + " finite numbers";
-  if (!j.is_array() || j.size() != count) throw InputError(kPoseCall, field, expected);
+  if (!j.is_array() || j.size() != count) throw InputError(call, field, expected);
   Eigen::VectorXd out(static_cast<Eigen::Index>(count));
   for (std::size_t i = 0; i < count; ++i) {
-    if (!j[i].is_number() || !std::isfinite(j[i].get<double>())) throw InputError(kPoseCall, field, expected);
+    if (!j[i].is_number() || !std::isfinite(j[i].get<double>())) throw InputError(call, field, expected);
     out[static_cast<Eigen::Index>(i)] = j[i].get<double>();
   }
   return out;
@@ -169,11 +172,39 @@ void PyWorld::setPose(const PyBodyId& id, const py::object& position, const py::
 
 void PyWorld::step(long long steps) {
   if (steps < 0) throw InputError("World.step()", "steps", "expected a number of steps >= 0, got " + std::to_string(steps));
-  for (long long i = 0; i < steps; ++i) {
-    world_.step();
+  for (long long done = 0; done < steps;) {
+    const long long chunk = std::min(kStepsBetweenSignalChecks, steps - done);
+    {
+      // Other Python threads run while this World steps (as MuJoCo's mj_step lets them); the
+      // World itself is not for two threads at once.
+      py::gil_scoped_release release;
+      for (long long i = 0; i < chunk; ++i) world_.step();
+    }
+    done += chunk;
     // Ctrl-C in a notebook stops a long run between two steps (the World stays consistent).
-    if ((i + 1) % kStepsBetweenSignalChecks == 0 && PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   }
+}
+
+py::object PyWorld::rayCast(const py::object& origin, const py::object& direction, const py::object& maxDistance) const {
+  constexpr const char* kCall = "World.ray_cast()";
+  const Vec3 o(finiteNumbers(origin, 3, "origin", kCall));
+  const Vec3 d(finiteNumbers(direction, 3, "direction", kCall));
+  if (d.squaredNorm() == 0.0) throw InputError(kCall, "direction", "expected a non-zero direction");
+  double reach = std::numeric_limits<double>::infinity();
+  if (!maxDistance.is_none()) {
+    reach = finiteNumbers(py::make_tuple(maxDistance), 1, "max_distance", kCall)[0];
+    if (!(reach >= 0.0)) throw InputError(kCall, "max_distance", "expected a distance >= 0 [m], got " + formatNumber(reach));
+  }
+  const std::optional<WorldRayHit> hit = rbsim::rayCast(world_, o, d, reach);
+  if (!hit) return py::none();
+  py::dict out;
+  out["body"] = hit->isPlane ? py::object(py::none()) : py::cast(wrap(hit->body));
+  out["plane"] = hit->isPlane ? py::object(py::int_(hit->plane)) : py::object(py::none());
+  out["distance"] = hit->distance;
+  out["point"] = py::make_tuple(hit->point.x(), hit->point.y(), hit->point.z());
+  out["normal"] = py::make_tuple(hit->normal.x(), hit->normal.y(), hit->normal.z());
+  return std::move(out);
 }
 
 py::array_t<double> PyWorld::exactRotation(const PyBodyId& id, const py::array_t<double, py::array::c_style | py::array::forcecast>& times) const {

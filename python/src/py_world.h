@@ -41,7 +41,10 @@ class PyWorld {
   // scene's ranges: coordinates within 1e6 m, speeds and the surface's speed of turning below c.
   void setPose(const PyBodyId& id, const pybind11::object& position, const pybind11::object& orientation,
                const pybind11::object& velocity, const pybind11::object& angularVelocity);
-  void step(long long steps);  // steps >= 0
+  void step(long long steps);  // steps >= 0; releases the GIL while stepping
+  // The first body or plane on the ray (rbsim/world/ray_cast.h), as a dict, or None.
+  pybind11::object rayCast(const pybind11::object& origin, const pybind11::object& direction,
+                           const pybind11::object& maxDistance) const;
   // The body's orientation (w, x, y, z) t [s] from now for each t of `times`, by the closed-form
   // torque-free motion (integrate/free_rigid_body.h) from its state now: the reference the
   // integrators' errors are measured against.
@@ -65,5 +68,6 @@ class PyWorld {
 
 // Every body's state as NumPy arrays, one row per body in World order (python/src/state_arrays.cpp).
 void bindStateArrays(pybind11::class_<PyWorld>& world);
+void bindContacts(pybind11::class_<PyWorld>& world);  // contact_arrays.cpp
 
 }  // namespace rbsim::python
