@@ -1,17 +1,42 @@
 #include "render/data_dir.h"
 
+#include <dlfcn.h>
+
 #include <filesystem>
 #include <system_error>
+#include <vector>
 
 namespace rbsim::render {
+
+namespace {
+
+// The file this code was loaded from: the rbsim program, or the Python module (a shared object
+// inside python3, whose /proc/self/exe is the interpreter).
+std::filesystem::path loadedFrom() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&besideExecutable), &info) == 0 || info.dli_fname == nullptr) return {};
+  std::error_code error;
+  const std::filesystem::path path = std::filesystem::canonical(info.dli_fname, error);
+  return error ? std::filesystem::path() : path;
+}
+
+}  // namespace
 
 std::string besideExecutable(const std::string& name) {
   namespace fs = std::filesystem;
   std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (error) return {};
-  const fs::path dir = exe.parent_path();
-  for (const fs::path& candidate : {dir / name, dir / ".." / "share" / "rbsim" / name}) {
+  std::vector<fs::path> candidates;
+  // The program: <dir>/name (an unpacked bundle), <prefix>/bin -> <prefix>/share/rbsim.
+  if (const fs::path exe = fs::read_symlink("/proc/self/exe", error); !error) {
+    candidates.push_back(exe.parent_path() / name);
+    candidates.push_back(exe.parent_path() / ".." / "share" / "rbsim" / name);
+  }
+  // The Python module: <prefix>/lib/python3/dist-packages (cmake --install) or a venv's
+  // lib/python3.X/site-packages (pip install .), three folders below <prefix>/share/rbsim.
+  if (const fs::path module = loadedFrom(); !module.empty() && module.extension() == ".so") {
+    candidates.push_back(module.parent_path() / ".." / ".." / ".." / "share" / "rbsim" / name);
+  }
+  for (const fs::path& candidate : candidates) {
     if (fs::is_directory(candidate, error)) return fs::weakly_canonical(candidate, error).string();
   }
   return {};

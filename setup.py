@@ -1,0 +1,60 @@
+"""`pip install .` (issue 39): builds the module `rbsim` with the project's CMake build, the same
+one `cmake --build` runs (the target rbsim_python alone), and installs it with the program's
+shaders and assets in <prefix>/share/rbsim, where the module finds them (app/render/data_dir.h).
+The interpreter that runs pip is the one the module is built for."""
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+ROOT = pathlib.Path(__file__).resolve().parent
+
+
+def project_version():
+    text = (ROOT / "CMakeLists.txt").read_text()
+    return re.search(r"project\(rbsim VERSION ([0-9.]+)", text).group(1)
+
+
+def data_files():
+    """(share/rbsim/<folder>, [files]) for every folder of shaders/ and assets/."""
+    out = []
+    for top in ("shaders", "assets"):
+        for folder, _, files in os.walk(ROOT / top):
+            if files:
+                relative = pathlib.Path(folder).relative_to(ROOT)
+                out.append((str(pathlib.Path("share/rbsim") / relative),
+                            [str(pathlib.Path(folder, f).relative_to(ROOT)) for f in sorted(files)]))
+    return out
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext):
+        target = pathlib.Path(self.get_ext_fullpath(ext.name)).resolve()
+        build = pathlib.Path(self.build_temp).resolve() / "cmake"
+        jobs = str(os.cpu_count() or 2)
+        configure = subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+                                    f"-DPython_EXECUTABLE={sys.executable}", "-DRBSIM_BUILD_TESTS=OFF",
+                                    "-DRBSIM_BUILD_BENCH=OFF"], capture_output=True, text=True)
+        print(configure.stdout, configure.stderr, sep="\n")
+        if configure.returncode != 0:
+            sys.exit("setup.py: CMake could not configure rbsim (its message is above)")
+        if "rbsim: Python module for" not in configure.stdout:
+            sys.exit(f"setup.py: no Python module can be built for {sys.executable}: it needs python3-dev, "
+                     "python3-numpy and pybind11-dev (apt-get install), and NumPy visible to it (a venv made "
+                     "with --system-site-packages)")
+        subprocess.run(["cmake", "--build", str(build), "--target", "rbsim_python", "-j", jobs], check=True)
+        built = sorted((build / "python").glob("rbsim*.so"))
+        if not built:
+            sys.exit(f"setup.py: the CMake build made no module in {build / 'python'}")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(built[0], target)
+
+
+# setuptools' own build folder is build-pip/, apart from the CMake build/ that README's commands use.
+setup(version=project_version(), ext_modules=[Extension("rbsim", sources=[])], cmdclass={"build_ext": CMakeBuild},
+      data_files=data_files(), options={"build": {"build_base": "build-pip"}})
