@@ -53,6 +53,7 @@ class CMakeBuild(build_ext):
             sys.exit(f"setup.py: the CMake build made no module in {build / 'python'}")
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[0], target)
+        shutil.copyfile(ROOT / "python" / "stubs" / "rbsim.pyi", target.parent / "rbsim.pyi")  # type stubs beside it
 
 
 # setuptools' own build folder is build-pip/, apart from the CMake build/ that README's commands use.

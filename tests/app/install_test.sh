@@ -25,6 +25,7 @@ env -u RBSIM_ASSET_DIR -u RBSIM_SHADER_DIR "$prefix/bin/rbsim" demo 2 --phase 1 
 if [ -n "$python" ]; then
   module_dir=$prefix/lib/python3/dist-packages
   ls "$module_dir"/rbsim*.so > /dev/null 2>&1 || fail "the Python module is not in lib/python3/dist-packages"
+  [ -f "$module_dir/rbsim.pyi" ] || fail "the type stubs are not beside the module"
   env -u RBSIM_ASSET_DIR -u RBSIM_SHADER_DIR PYTHONPATH="$module_dir" "$python" - "$prefix" <<'PY' || fail "the installed Python module failed"
 import sys
 import rbsim
