@@ -58,4 +58,5 @@ class CMakeBuild(build_ext):
 
 # setuptools' own build folder is build-pip/, apart from the CMake build/ that README's commands use.
 setup(version=project_version(), ext_modules=[Extension("rbsim", sources=[])], cmdclass={"build_ext": CMakeBuild},
-      data_files=data_files(), options={"build": {"build_base": "build-pip"}})
+      data_files=data_files(), options={"build": {"build_base": "build-pip"}},
+      packages=[], py_modules=[])  # the module is the extension alone; no folder here is a package
