@@ -58,8 +58,10 @@ std::string freeFlightRow(const FreeFlightError& error, const World& world) {
                                                           : "not compared (asleep)";
   }
   // An epoch at this very step: a contact, spring, joint or force turned it just now, and the
-  // exact motion has not had a step to differ yet (half a step of slack for rounding).
-  if (reading.since > world.time() - 0.5 * world.settings().timeStep) {
+  // exact motion has not had a step to differ yet. Times are step counts times dt, so half a step
+  // of slack tells this step from the last one whatever the rounding.
+  constexpr double kThisStepSlack = 0.5;  // [steps]
+  if (reading.since > world.time() - kThisStepSlack * world.settings().timeStep) {
     return "not compared (torqued this step)";
   }
   char buffer[96];
