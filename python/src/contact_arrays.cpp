@@ -4,6 +4,7 @@
 // impulses are NaN, and `awake` says so.
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -53,6 +54,8 @@ void bindContacts(py::class_<PyWorld>& c) {
         for (const Contact& contact : contacts) total += static_cast<std::size_t>(contact.manifold.count);
         py::array_t<ContactRow> out(static_cast<py::ssize_t>(total));
         ContactRow* row = out.mutable_data();
+        // The bytes after `awake` are padding: zeroed, so equal contacts are equal bytes (tobytes()).
+        if (total > 0) std::memset(static_cast<void*>(row), 0, total * sizeof(ContactRow));
         const double nan = std::numeric_limits<double>::quiet_NaN();
         for (std::size_t k = 0; k < contacts.size(); ++k) {
           const Contact& contact = contacts[k];

@@ -264,7 +264,6 @@ PYBIND11_MODULE(rbsim, m) {
       .def("__len__", [](const PyWorld& w) { return w.world().bodies().size(); })
       .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); }, "[s]")
       .def_property_readonly("step_count", [](const PyWorld& w) { return w.world().stepCount(); })
-      .def_property_readonly("dt", [](const PyWorld& w) { return w.world().settings().timeStep; }, "[s]")
       .def_property_readonly("settings", [](const PyWorld& w) { return settingsDict(w.world().settings()); })
       .def_property_readonly("names", [](const PyWorld& w) {
         std::vector<std::string> names;
@@ -275,5 +274,6 @@ PYBIND11_MODULE(rbsim, m) {
            "state_hash() -> int: FNV-1a of every state's bits: equal hashes, identical runs");
   rbsim::python::bindStateArrays(world);
   rbsim::python::bindContacts(world);
+  rbsim::python::bindWorldState(m, world);
   rbsim::python::bindRendering(m);
 }

@@ -4,6 +4,7 @@
 // the scene format (engine/include/rbsim/scene/scene_parts.h), so Python meets the same keys and messages as
 // the command line.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -50,6 +51,21 @@ class PyWorld {
   // integrators' errors are measured against.
   pybind11::array_t<double> exactRotation(const PyBodyId& id, const pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>& times) const;
 
+  // World.<key> = value for a key of a scene's "world" block that a running World takes
+  // (World::setSettings): read and checked as in a scene file, InputError naming the key.
+  void setSetting(const char* key, const pybind11::handle& value);
+
+  // A saved state (World.get_state): the whole World copied, with the Scene and names beside it.
+  struct Saved {
+    Scene scene;
+    World world;
+    std::unordered_set<std::string> names;
+    std::uint64_t serial;  // the World it was taken from
+  };
+  std::shared_ptr<Saved> save() const;
+  // Back to `saved`, bit for bit (World.set_state); InputError for a state of another World.
+  void restore(const Saved& saved);
+
   World& world() { return world_; }
   const World& world() const { return world_; }
   const Scene& scene() const { return scene_; }
@@ -69,5 +85,8 @@ class PyWorld {
 // Every body's state as NumPy arrays, one row per body in World order (python/src/state_arrays.cpp).
 void bindStateArrays(pybind11::class_<PyWorld>& world);
 void bindContacts(pybind11::class_<PyWorld>& world);  // contact_arrays.cpp
+// World.get_state and set_state, and the settings a running World takes as properties
+// (world_state.cpp).
+void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);
 
 }  // namespace rbsim::python

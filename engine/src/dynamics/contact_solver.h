@@ -50,6 +50,8 @@ class ContactSolver {
   virtual const std::vector<SolvedContactPoint>& points() const = 0;
   // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
   virtual void forget() = 0;
+  // A deep copy, warm starts included (World's copy, a saved state).
+  virtual std::unique_ptr<ContactSolver> clone() const = 0;
 
   // Order::CollideFirst: the World bodies the last solve advanced, which the integrator must
   // leave alone, as a list and as flags per body. Empty for a solver that advances none.

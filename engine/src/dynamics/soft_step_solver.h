@@ -53,6 +53,7 @@ class SoftStepSolver final : public ContactSolver {
   }
   const std::vector<std::size_t>& advancedBodies() const override { return advancedList_; }
   const std::vector<char>& advancedFlags() const override { return advanced_; }  // per World body
+  std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<SoftStepSolver>(*this); }
   const std::vector<SolvedContactPoint>& points() const override { return solved_; }
 
  private:

@@ -23,9 +23,8 @@ constexpr double kMaxPlotSeconds = 3600.0;  // [s]
 
 }  // namespace
 
-void parseWorldBlock(const JsonObject& w, Scene& scene) {
+void parseWorldSettings(const JsonObject& w, Settings& s) {
   // Every Settings field, read as the type it is; the ranges are checkSettings's alone.
-  Settings& s = scene.settings;
   s.gravity = w.vec3("gravity", s.gravity);
   s.timeStep = w.number("dt", s.timeStep);
   s.allowSleep = w.boolean("sleep", s.allowSleep);
@@ -35,27 +34,29 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
   s.detectCollisions = w.boolean("collisions", s.detectCollisions);
   s.continuousCollision = w.boolean("ccd", s.continuousCollision);
   s.ccdMotionFraction = w.number("ccd_motion_fraction", s.ccdMotionFraction);
-  const std::string broad = w.string("broad_phase", "sap");
-  if (broad == "brute-force") {
-    s.broadPhase = Settings::BroadPhaseMethod::BruteForce;
-  } else if (broad != "sap") {
+  const std::string broad =
+      w.string("broad_phase", s.broadPhase == Settings::BroadPhaseMethod::BruteForce ? "brute-force" : "sap");
+  if (broad == "brute-force" || broad == "sap") {
+    s.broadPhase = broad == "sap" ? Settings::BroadPhaseMethod::SweepAndPrune : Settings::BroadPhaseMethod::BruteForce;
+  } else {
     w.fail("broad_phase", "expected \"sap\" or \"brute-force\", got \"" + broad + "\"");
   }
   s.contactMargin = w.number("contact_margin", s.contactMargin);
-  const std::string solver = w.string("solver", "soft-step");
-  if (solver == "pgs") {
-    s.solver = Settings::ContactSolverMethod::Pgs;
-  } else if (solver != "soft-step") {
+  const std::string solver = w.string("solver", s.solver == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step");
+  if (solver == "pgs" || solver == "soft-step") {
+    s.solver = solver == "pgs" ? Settings::ContactSolverMethod::Pgs : Settings::ContactSolverMethod::SoftStep;
+  } else {
     w.fail("solver", "expected \"soft-step\" or \"pgs\", got \"" + solver + "\"");
   }
   const std::string friction = w.string("friction", frictionModelName(s.friction));
   if (!parseFrictionModel(friction, s.friction)) {
     w.fail("friction", "expected \"cone\" or \"seed000\", got \"" + friction + "\"");
   }
-  const std::string meshContact = w.string("mesh_contact", "samples");
-  if (meshContact == "triangles") {
-    s.meshContact = Settings::MeshContact::Triangles;
-  } else if (meshContact != "samples") {
+  const std::string meshContact =
+      w.string("mesh_contact", s.meshContact == Settings::MeshContact::Triangles ? "triangles" : "samples");
+  if (meshContact == "triangles" || meshContact == "samples") {
+    s.meshContact = meshContact == "triangles" ? Settings::MeshContact::Triangles : Settings::MeshContact::Samples;
+  } else {
     w.fail("mesh_contact", "expected \"samples\" or \"triangles\", got \"" + meshContact + "\"");
   }
   const auto integer = [&](const char* key, int fallback) {
@@ -71,7 +72,6 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
       w.fail("threads", "expected a whole number of threads in [1, " + std::to_string(kMaxThreads) + "]");
     }
     s.threads = static_cast<int>(threads);
-    scene.threadsGiven = true;
   }
   s.contactHertz = w.number("contact_hertz", s.contactHertz);
   s.contactDampingRatio = w.number("contact_damping_ratio", s.contactDampingRatio);
@@ -89,14 +89,19 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
   s.queryLogCapacity = capacity < 1 ? 0 : static_cast<std::size_t>(capacity);
   s.skipIdleStages = w.boolean("skip_idle_stages", s.skipIdleStages);
   if (const SettingsProblem problem = checkSettings(s)) w.fail(problem.key.c_str(), problem.expectation);
-  const std::string integrator = w.string("integrator", integratorName(scene.settings.integrator));
-  if (!parseIntegrator(integrator, scene.settings.integrator)) {
+  const std::string integrator = w.string("integrator", integratorName(s.integrator));
+  if (!parseIntegrator(integrator, s.integrator)) {
     std::string names;
     for (const std::string& n : integratorNames()) names += (names.empty() ? "" : ", ") + n;
     const std::string near = nearestKey(integrator, integratorNames());
     const std::string hint = near.empty() ? "" : " (did you mean \"" + near + "\"?)";
     w.fail("integrator", "unknown integrator \"" + integrator + "\"" + hint + "; expected one of " + names);
   }
+}
+
+void parseWorldBlock(const JsonObject& w, Scene& scene) {
+  parseWorldSettings(w, scene.settings);
+  scene.threadsGiven = w.has("threads");
   const std::string particles = w.string("particle_integrator", particleIntegratorName(scene.particleIntegrator));
   if (!parseParticleIntegrator(particles, scene.particleIntegrator)) {
     w.fail("particle_integrator", "unknown particle integrator \"" + particles + "\"; expected explicit-euler or semi-implicit-euler");

@@ -144,6 +144,8 @@ void World::restore(std::uint64_t stepCount, const std::vector<BodyState>& state
     }
   }
   stepCount_ = stepCount;
+  timeOrigin_ = 0.0;  // a recording's steps all have its one time step
+  stepsAtOrigin_ = 0;
 }
 
 }  // namespace rbsim

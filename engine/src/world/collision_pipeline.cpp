@@ -87,6 +87,31 @@ SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) 
 CollisionPipeline::CollisionPipeline(const Settings& settings)
     : settings_(settings), broad_(makeBroadPhase(settings.broadPhase)), log_(settings.queryLogCapacity) {}
 
+CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
+    : settings_(other.settings_),
+      broad_(other.broad_->clone()),
+      proxies_(other.proxies_),
+      bodyOfProxy_(other.bodyOfProxy_),
+      radius_(other.radius_),
+      thickness_(other.thickness_),
+      reach_(other.reach_),
+      start_(other.start_),
+      fast_(other.fast_),
+      hasGrid_(other.hasGrid_),
+      gap_(other.gap_),
+      haveStart_(other.haveStart_),
+      boxes_(other.boxes_),
+      ignored_(other.ignored_),
+      ignoredSorted_(other.ignoredSorted_),
+      contacts_(other.contacts_),
+      previous_(other.previous_),
+      asleep_(other.asleep_),
+      pairSlots_(other.pairSlots_),
+      planeSlots_(other.planeSlots_),
+      sdfPair_(other.sdfPair_),
+      impacts_(other.impacts_),
+      log_(other.log_) {}
+
 void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const BodySolid& solid) {
   hasGrid_[index] = solid.sdf ? 1 : 0;
   gap_[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;

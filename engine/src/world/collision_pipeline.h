@@ -21,6 +21,11 @@ namespace rbsim {
 class CollisionPipeline {
  public:
   explicit CollisionPipeline(const Settings& settings);
+  // A deep copy (World's copy): its broad phase, contacts and kept sleeping contacts too.
+  CollisionPipeline(const CollisionPipeline& other);
+  CollisionPipeline& operator=(const CollisionPipeline&) = delete;
+  // World::setSettings: every setting but the broad phase method, which the World refuses to change.
+  void setSettings(const Settings& settings) { settings_ = settings; }
 
   // Bodies are added in World order (each the last of the World's bodies), with their solids
   // (a body with a grid, BodySolid::sdf, is not its convex hull; an implicit body's display mesh

@@ -18,6 +18,7 @@ class ParticleSystems final : public StepListener {
  public:
   std::vector<ParticleSystem> systems;
 
+  std::unique_ptr<StepListener> clone() const override { return std::make_unique<ParticleSystems>(*this); }
   bool idle() const override { return systems.empty(); }
   void step(const StepContext& c) override {
     for (ParticleSystem& system : systems) {
@@ -38,6 +39,7 @@ class SoftBodies final : public StepListener {
  public:
   std::vector<SoftBody> bodies;
 
+  std::unique_ptr<StepListener> clone() const override { return std::make_unique<SoftBodies>(*this); }
   bool idle() const override { return bodies.empty(); }
   void step(const StepContext& c) override {
     for (SoftBody& soft : bodies) {
@@ -70,6 +72,7 @@ class PlanarSystem final : public StepListener {
   explicit PlanarSystem(const PlanarSettings& settings) : world(settings) {}
   PlanarWorld world;
 
+  std::unique_ptr<StepListener> clone() const override { return std::make_unique<PlanarSystem>(*this); }
   bool idle() const override { return false; }
   void step(const StepContext&) override { world.step(); }
   std::uint64_t hashState(std::uint64_t hash) const override {

@@ -72,6 +72,74 @@ World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
+namespace {
+std::vector<std::unique_ptr<StepListener>> cloned(const std::vector<std::unique_ptr<StepListener>>& listeners) {
+  std::vector<std::unique_ptr<StepListener>> copies;
+  for (const std::unique_ptr<StepListener>& listener : listeners) {
+    copies.push_back(listener->clone());
+    if (!copies.back()) throw std::invalid_argument("World: a step listener that cannot be copied (StepListener::clone)");
+  }
+  return copies;
+}
+}  // namespace
+
+// Member by member: the three owned polymorphic parts are cloned, the rest are values (shapes,
+// grids and fracture patterns are shared, immutable).
+World::World(const World& other)
+    : settings_(other.settings_),
+      bodies_(other.bodies_),
+      slots_(other.slots_),
+      slotOfBody_(other.slotOfBody_),
+      freeSlot_(other.freeSlot_),
+      forces_(other.forces_),
+      springs_(other.springs_),
+      planes_(other.planes_),
+      bodyMaterials_(other.bodyMaterials_),
+      planeMaterials_(other.planeMaterials_),
+      listeners_(cloned(other.listeners_)),
+      bodySolids_(other.bodySolids_),
+      fracturePatterns_(other.fracturePatterns_),
+      breakableBodies_(other.breakableBodies_),
+      receivedImpulse_(other.receivedImpulse_),
+      fractureEvents_(other.fractureEvents_),
+      collision_(std::make_unique<CollisionPipeline>(*other.collision_)),
+      solver_(other.solver_->clone()),
+      islandRestingTime_(other.islandRestingTime_),
+      joints_(other.joints_),
+      pendingEvents_(other.pendingEvents_),
+      stepCount_(other.stepCount_),
+      timeOrigin_(other.timeOrigin_),
+      stepsAtOrigin_(other.stepsAtOrigin_),
+      stats_(other.stats_),
+      stageClock_(other.stageClock_) {}
+
+World& World::operator=(const World& other) {
+  if (this != &other) *this = World(other);
+  return *this;
+}
+
+void World::setSettings(const Settings& settings) {
+  checked(settings);
+  if (settings.broadPhase != settings_.broadPhase) {
+    throw std::invalid_argument("the broad phase method cannot change on a running World (its proxies are built for one)");
+  }
+  std::unique_ptr<ContactSolver> solver;
+  if (settings.solver != settings_.solver) {
+    solver = makeContactSolver(settings.solver);
+    if (!joints_.empty() && !solver->solvesJoints()) {
+      throw std::invalid_argument("the World has " + std::to_string(joints_.size()) +
+                                  " joints, and the PGS solver solves none (keep the soft-step solver)");
+    }
+  }
+  if (settings.timeStep != settings_.timeStep) {
+    timeOrigin_ = time();
+    stepsAtOrigin_ = stepCount_;
+  }
+  settings_ = settings;
+  collision_->setSettings(settings_);
+  if (solver) solver_ = std::move(solver);
+}
+
 const std::vector<Contact>& World::contacts() const { return collision_->contacts(); }
 const std::vector<SolvedContactPoint>& World::contactPoints() const { return solver_->points(); }
 

@@ -4,6 +4,7 @@
 // (world/systems.h), so the World knows them only through this seam (docs/architecture.md).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "rbsim/body/material.h"
@@ -40,6 +41,9 @@ class StepListener {
   }
   // FNV-1a over the bits of the system's state, continuing from `hash` (World::stateHash).
   virtual std::uint64_t hashState(std::uint64_t hash) const { return hash; }
+  // A deep copy going on alone, for World's copy (a saved state); null: the system cannot be
+  // copied, and copying its World throws.
+  virtual std::unique_ptr<StepListener> clone() const { return nullptr; }
 };
 
 }  // namespace rbsim

@@ -24,6 +24,10 @@ inline constexpr std::initializer_list<const char*> kWorldKeys = {
 
 // The "world" block into scene.settings, scene.duration and scene.particleIntegrator.
 void parseWorldBlock(const JsonObject& w, Scene& scene);
+// The Settings keys of a "world" block onto `settings`, absent keys keeping its values, then
+// checked as a whole (checkSettings): what a running World's settings may take (Python's
+// World.dt = ..., World.gravity = ...).
+void parseWorldSettings(const JsonObject& w, Settings& settings);
 
 // A body block (the keys of one entry of "bodies") and what hangs on it, for the body that will
 // be number `index` of a World whose settings are `settings` (its default inertia method).

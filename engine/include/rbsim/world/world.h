@@ -70,6 +70,13 @@ class World {
   ~World();
   World(World&&) noexcept;
   World& operator=(World&&) noexcept;
+  // A deep copy that goes on alone: bodies, ids, contacts, the solver's warm starts, sleep timers
+  // and the step systems. Stepping the copy gives bit for bit what stepping the original would
+  // (a saved state, as Jolt's PhysicsSystem::SaveState and MuJoCo's mj_copyData). Throws
+  // std::invalid_argument for a World with a step listener that cannot be copied
+  // (StepListener::clone).
+  World(const World& other);
+  World& operator=(const World& other);
 
   // Throws std::invalid_argument on an invalid def, naming the body (also for a fracture pattern
   // that does not fit it: fracture/fracture.h checkFracturePattern). The new body is the last of
@@ -117,7 +124,17 @@ class World {
   void restore(std::uint64_t stepCount, const std::vector<BodyState>& states, const std::vector<char>& awake);
 
   const Settings& settings() const { return settings_; }
-  double time() const { return static_cast<double>(stepCount_) * settings_.timeStep; }
+  // Changes the settings of a running World (Jolt's PhysicsSystem::SetPhysicsSettings): checked
+  // as a scene's (checkSettings), std::invalid_argument otherwise, and then also when it changes
+  // the broad phase method (its proxies are built for one) or asks for the PGS solver with joints
+  // (it solves none). A new solver starts without warm starts. A new time step counts from now:
+  // time() goes on from where it is.
+  void setSettings(const Settings& settings);
+  // The time step changes only through setSettings, so time() is the time when it last changed
+  // plus the steps since at the current step (both 0 before: stepCount x dt, as always).
+  double time() const {
+    return timeOrigin_ + static_cast<double>(stepCount_ - stepsAtOrigin_) * settings_.timeStep;
+  }
   std::uint64_t stepCount() const { return stepCount_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
@@ -186,6 +203,8 @@ class World {
   std::vector<Joint> joints_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::uint64_t stepCount_ = 0;
+  double timeOrigin_ = 0.0;            // time() when the time step last changed [s]
+  std::uint64_t stepsAtOrigin_ = 0;    // stepCount_ then
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};
   std::chrono::steady_clock::time_point stageClock_;  // when the running stage's time began
 };

@@ -17,6 +17,7 @@ class BruteForce final : public BroadPhase {
   void move(ProxyId id, const Aabb& box) override;
   void update() override;
   const std::vector<ProxyPair>& pairs() const override { return pairs_; }
+  std::unique_ptr<BroadPhase> clone() const override { return std::make_unique<BruteForce>(*this); }
   std::size_t proxyCount() const override { return ids_.count(); }
 
  private:

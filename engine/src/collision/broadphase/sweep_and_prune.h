@@ -47,6 +47,7 @@ class SweepAndPrune final : public BroadPhase {
   void move(ProxyId id, const Aabb& box) override;
   void update() override;
   const std::vector<ProxyPair>& pairs() const override { return pairs_; }
+  std::unique_ptr<BroadPhase> clone() const override { return std::make_unique<SweepAndPrune>(*this); }
   std::size_t proxyCount() const override { return ids_.count(); }
 
   // How the last update() went: which path it took and what it cost. For tests and benchmarks.

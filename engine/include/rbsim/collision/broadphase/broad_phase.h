@@ -3,6 +3,7 @@
 // in, the set of overlapping proxy pairs out. SweepAndPrune is the fast one, BruteForce the
 // O(n^2) reference the tests and benchmarks compare it with; both give exactly the same pairs.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "rbsim/geometry/aabb.h"
@@ -31,6 +32,8 @@ class BroadPhase {
   // The overlapping pairs after the last update(), sorted by (a, b), no duplicates.
   virtual const std::vector<ProxyPair>& pairs() const = 0;
   virtual std::size_t proxyCount() const = 0;
+  // A deep copy: the same proxies, boxes and pairs, going on alone (World's copy, a saved state).
+  virtual std::unique_ptr<BroadPhase> clone() const = 0;
 };
 
 }  // namespace rbsim
