@@ -274,6 +274,8 @@ PYBIND11_MODULE(rbsim, m) {
            "state_hash() -> int: FNV-1a of every state's bits: equal hashes, identical runs");
   rbsim::python::bindStateArrays(world);
   rbsim::python::bindContacts(world);
+  rbsim::python::bindJoints(world);
+  rbsim::python::bindParticles(world);
   rbsim::python::bindWorldState(m, world);
   rbsim::python::bindRendering(m);
 }

@@ -85,6 +85,8 @@ class PyWorld {
 // Every body's state as NumPy arrays, one row per body in World order (python/src/state_arrays.cpp).
 void bindStateArrays(pybind11::class_<PyWorld>& world);
 void bindContacts(pybind11::class_<PyWorld>& world);  // contact_arrays.cpp
+void bindJoints(pybind11::class_<PyWorld>& world);     // joint_arrays.cpp
+void bindParticles(pybind11::class_<PyWorld>& world);  // particle_arrays.cpp
 // World.get_state and set_state, and the settings a running World takes as properties
 // (world_state.cpp).
 void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);

@@ -35,3 +35,30 @@ def test_bad_joint_names_the_call_and_the_key():
         world.add_joint(type="ball", body_a="door", anchor=[0, 0, 0])
     with pytest.raises(rbsim.InputError, match=r"World.add_joint\(\): limits"):
         world.add_joint(type="hinge", body_a="rod", anchor=[0, 0, 0], axis=[0, 1, 0], limits=[1, -1])
+
+
+def test_a_hinge_reads_its_speed_angle_and_the_pull_at_the_bottom_of_the_swing():
+    world = pendulum(type="hinge", axis=[0, 0, 1])
+    readings = []
+    for _ in range(240):
+        world.step(1)
+        readings.append((abs(world.omega[0][2]), world.joints()[0], world.omega[0][2]))
+    fastest, joint, omega = max(readings, key=lambda r: r[0])
+    assert joint["speed"] == pytest.approx(omega, abs=1e-12)
+    assert joint["body_a"] == 0 and joint["body_b"] == -1 and joint["hinge"]
+    assert abs(joint["angle"]) == pytest.approx(math.pi / 2, abs=0.02)  # level -> straight down
+    # At the bottom the joint holds the weight and turns the centre on its circle: m (g + w^2 r).
+    assert joint["force"][1] == pytest.approx(1.0 * (9.81 + fastest ** 2 * 0.5), rel=1e-2)
+    assert joint["anchor_b"] == pytest.approx((0, 0, 0), abs=1e-15)
+    assert np.linalg.norm(joint["anchor_a"] - joint["anchor_b"]) < 1e-3
+
+
+def test_a_ball_joint_has_no_angle_and_holds_a_hanging_body_by_its_weight():
+    world = rbsim.World(dt=1 / 60, gravity=[0, -9.81, 0], sleep=False)
+    world.add_body(name="bob", shape={"type": "sphere", "radius": 0.1}, mass=2.0, position=[0, -1, 0])
+    world.add_joint(type="ball", body_a="bob", anchor=[0, 0, 0])
+    world.step(120)
+    joint = world.joints()[0]
+    assert math.isnan(joint["angle"]) and math.isnan(joint["speed"]) and not joint["hinge"]
+    assert joint["force"] == pytest.approx((0, 2.0 * 9.81, 0), abs=1e-6)
+    assert rbsim.World().joints().shape == (0,)
