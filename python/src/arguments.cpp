@@ -81,6 +81,14 @@ py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> byteArrayAr
   return array;
 }
 
+py::kwargs givenKeywords(const py::kwargs& kwargs) {
+  py::dict given;
+  for (const auto& [key, value] : kwargs) {
+    if (!value.is_none()) given[key] = value;
+  }
+  return py::reinterpret_borrow<py::kwargs>(given);
+}
+
 void requireKeywordsOnly(const py::args& args, const char* call, const char* block) {
   if (args.empty()) return;
   throw py::type_error(std::string(call) + " takes keyword arguments only (the keys of " + block + "), got " +

@@ -30,6 +30,9 @@ pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>
     const pybind11::handle& value, const char* call, const char* parameter);
 pybind11::array_t<std::uint8_t, pybind11::array::c_style | pybind11::array::forcecast> byteArrayArgument(
     const pybind11::handle& value, const char* call, const char* parameter);
+// The keyword arguments given as anything but None: in a signature, None stands for the scene
+// format's default (the key left out), so passing it is leaving the key out.
+pybind11::kwargs givenKeywords(const pybind11::kwargs& kwargs);
 // A call that takes keyword arguments only (the keys of a scene block) refuses positional ones.
 void requireKeywordsOnly(const pybind11::args& args, const char* call, const char* block);
 

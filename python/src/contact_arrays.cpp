@@ -80,7 +80,7 @@ void bindContacts(py::class_<PyWorld>& c) {
         }
         return out;
       },
-      "contacts() -> structured array, one row per contact point, sleeping pairs included: body_a (row in the "
+      "contacts(self, /)\n--\n\n-> structured array, one row per contact point, sleeping pairs included: body_a (row in the "
       "state arrays, -1 for a plane), body_b, plane (-1 for two bodies), point (3), normal (3, from A towards B), "
       "depth [m], normal_impulse [N s], friction_impulse (3) [N s] (NaN for a sleeping pair, not solved), awake");
   c.def_property_readonly(

@@ -60,7 +60,7 @@ void bindJoints(py::class_<PyWorld>& c) {
         }
         return out;
       },
-      "joints() -> structured array, one row per joint (the index add_joint returned): body_a, body_b (rows in the "
+      "joints(self, /)\n--\n\n-> structured array, one row per joint (the index add_joint returned): body_a, body_b (rows in the "
       "state arrays, -1 for the world), angle [rad] and speed [rad/s] of a hinge (NaN for a ball joint), axis (3), "
       "anchor_a (3), anchor_b (3) [m], force (3) [N] and torque (3) [N m] the joint puts on body A in the last "
       "substep, hinge");

@@ -10,6 +10,7 @@
 #include "rbsim/integrate/simulation_error.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
+#include "rbsim/scene/scene_parts.h"
 #include "render/offscreen_renderer.h"
 #include "render/render_error.h"
 #include "run/paths.h"
@@ -26,6 +27,7 @@ namespace {
 
 using rbsim::BodyId;
 using rbsim::python::bodyArgument;
+using rbsim::python::givenKeywords;
 using rbsim::python::intArgument;
 using rbsim::python::pathArgument;
 using rbsim::python::PyBodyId;
@@ -60,26 +62,34 @@ std::string idRepr(const PyBodyId& id) {
          ", world=" + std::to_string(id.world) + ")";
 }
 
-py::dict settingsDict(const rbsim::Settings& s) {
-  py::dict d;
-  d["gravity"] = py::make_tuple(s.gravity.x(), s.gravity.y(), s.gravity.z());
-  d["dt"] = s.timeStep;
-  d["integrator"] = rbsim::integratorName(s.integrator);
-  d["inertia"] = rbsim::inertiaMethodName(s.inertia);
-  d["solver"] = s.solver == rbsim::Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
-  d["friction"] = rbsim::frictionModelName(s.friction);
-  d["broad_phase"] = s.broadPhase == rbsim::Settings::BroadPhaseMethod::BruteForce ? "brute-force" : "sap";
-  d["sleep"] = s.allowSleep;
-  d["collisions"] = s.detectCollisions;
-  d["response"] = s.respondToContacts;
-  d["ccd"] = s.continuousCollision;
-  d["substeps"] = s.substeps;
-  d["velocity_iterations"] = s.velocityIterations;
-  d["position_iterations"] = s.positionIterations;
-  d["restitution_threshold"] = s.restitutionThreshold;
-  d["contact_hertz"] = s.contactHertz;
-  d["contact_damping_ratio"] = s.contactDampingRatio;
+// Every key of a scene's "world" block with the value it has (rbsim::worldBlockJson), so World.settings
+// names what World() takes and nothing else.
+py::dict settingsDict(const rbsim::Scene& scene) {
+  py::dict d = py::module_::import("json").attr("loads")(rbsim::worldBlockJson(scene).dump());
+  for (const auto& [key, value] : d) {
+    if (py::isinstance<py::list>(value)) d[key] = py::tuple(py::reinterpret_borrow<py::list>(value));  // gravity, as World.gravity reads
+  }
   return d;
+}
+
+// World()'s signature, "__init__(self, /, *, gravity=(0.0, -9.81, 0.0), dt=..., ...)", from the
+// defaults worldBlockJson writes for a default scene: the parser's own. "threads" (the machine's
+// cores) and "steps" (the duration's) default to None, as every key does that is left out.
+std::string worldInitDoc() {
+  const nlohmann::json defaults = rbsim::worldBlockJson(rbsim::Scene{});
+  const py::object loads = py::module_::import("json").attr("loads");
+  std::string signature = "__init__(self, /, *";
+  for (const char* key : rbsim::kWorldKeys) {
+    std::string value = "None";
+    if (defaults.contains(key) && std::string(key) != "threads") {
+      py::object v = loads(defaults.at(key).dump());
+      if (py::isinstance<py::list>(v)) v = py::tuple(v);
+      value = py::repr(v);
+    }
+    signature += std::string(", ") + key + "=" + value;
+  }
+  return signature + ")\n--\n\nA World from the keys of a scene's \"world\" block (docs/scene-format.md), e.g. " +
+         "World(dt=1/60, integrator=\"rk4\"); None: the default (threads: the machine's cores)";
 }
 
 }  // namespace
@@ -115,11 +125,11 @@ PYBIND11_MODULE(rbsim, m) {
         d["shaders"] = rbsim::render::defaultShaderDir();
         return d;
       },
-      "data_dirs() -> {\"assets\": path, \"shaders\": path}: the folders the module reads scenes by name and shaders "
+      "data_dirs()\n--\n\n-> {\"assets\": path, \"shaders\": path}: the folders the module reads scenes by name and shaders "
       "from (<prefix>/share/rbsim when installed; `rbsim list` prints the program's)");
-  m.def("integrators", &rbsim::integratorNames, "integrators() -> [str]: the names world.integrator accepts");
+  m.def("integrators", &rbsim::integratorNames, "integrators()\n--\n\n-> [str]: the names world.integrator accepts");
   m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs"}; },
-        "solvers() -> [str]: the names world.solver accepts");
+        "solvers()\n--\n\n-> [str]: the names world.solver accepts");
 
   py::class_<PyBodyId>(m, "BodyId",
                        "A body's handle: stays valid while the body exists (Box2D's b2BodyId), in the World that gave it")
@@ -139,8 +149,8 @@ PYBIND11_MODULE(rbsim, m) {
       .def_readonly("title", &rbsim::Scene::title)
       .def_readonly("duration", &rbsim::Scene::duration, "[s]")
       .def_property_readonly("steps", &rbsim::Scene::stepCount, "steps covering the duration")
-      .def_property_readonly("settings", [](const rbsim::Scene& s) { return settingsDict(s.settings); })
-      .def("world", [](const rbsim::Scene& s) { return PyWorld(s); }, "world() -> World: a new World holding the scene");
+      .def_property_readonly("settings", [](const rbsim::Scene& s) { return settingsDict(s); })
+      .def("world", [](const rbsim::Scene& s) { return PyWorld(s); }, "world(self, /)\n--\n\n-> World: a new World holding the scene");
 
   // Through the program's phase loader (app/run/phase.h), so a scene file means what it means to
   // `rbsim run`, "compare" block and its messages included; a shipped scene may be named alone.
@@ -159,8 +169,8 @@ PYBIND11_MODULE(rbsim, m) {
         return std::move(phase.worlds.front().scene);
       },
       py::arg("path"), py::arg("overrides") = py::list(),
-      "load_scene(path, overrides=[\"world.dt=0.01\", ...]) -> Scene: a scene file (or a shipped scene's name, "
-      "as in `rbsim list`) with --set overrides");
+      "load_scene(path, overrides=())\n--\n\n-> Scene: a scene file (or a shipped scene's name, "
+      "as in `rbsim list`) with --set overrides, e.g. overrides=[\"world.dt=0.01\"]");
   m.def(
       "load_comparison",
       [](const py::object& pathArg, const py::object& overridesArg) {
@@ -173,47 +183,57 @@ PYBIND11_MODULE(rbsim, m) {
         return scenes;
       },
       py::arg("path"), py::arg("overrides") = py::list(),
-      "load_comparison(path, overrides=[]) -> [(label, Scene)]: one scene per value of the file's \"compare\" "
+      "load_comparison(path, overrides=())\n--\n\n-> [(label, Scene)]: one scene per value of the file's \"compare\" "
       "block (one, unlabelled, without it)");
 
+  static const std::string worldInit = worldInitDoc();  // the docstring outlives the module's init
   py::class_<PyWorld> world(m, "World",
                             "World(**world): the keys of a scene's \"world\" block, e.g. World(dt=1/60, "
                             "integrator=\"rk4\", solver=\"pgs\")");
   world
       .def(py::init([](const py::args& args, const py::kwargs& kwargs) {
              requireKeywordsOnly(args, "World()", "a scene's \"world\" block");
-             return PyWorld::fromKeywords(kwargs);
+             return PyWorld::fromKeywords(givenKeywords(kwargs));
            }),
-           "World(**world): the keys of a scene's \"world\" block, e.g. World(dt=1/60, integrator=\"rk4\")")
+           worldInit.c_str())
       .def("add_body",
            [](PyWorld& w, const py::args& args, const py::kwargs& body) {
              requireKeywordsOnly(args, "World.add_body()", "an entry of a scene's \"bodies\"");
-             return w.addBody(body);
+             return w.addBody(givenKeywords(body));
            },
-           "add_body(**body) -> BodyId: the keys of an entry of a scene's \"bodies\", e.g. "
-           "shape={\"type\": \"sphere\", \"radius\": 0.25}, mass=1, position=(0, 2, 0)")
+           "add_body(self, /, *, shape, name=None, mass=None, density=None, inertia=None, position=(0.0, 0.0, 0.0), "
+           "orientation=None, velocity=(0.0, 0.0, 0.0), angular_velocity=(0.0, 0.0, 0.0), color=None, static=False, "
+           "kinematic=False, forces=None, set_pose=None, springs=None, restitution=0.0, friction_static=0.6, "
+           "friction_kinetic=0.5, fracture=None, sdf=None)\n--\n\n"
+           "-> BodyId: the keys of an entry of a scene's \"bodies\" (docs/scene-format.md), e.g. "
+           "shape={\"type\": \"sphere\", \"radius\": 0.25}, mass=1, position=(0, 2, 0). None: the key left out (a "
+           "name body<N>, mass from density 1000 kg/m^3, the World's inertia method, no rotation, the default colour)")
       .def("remove_body", [](PyWorld& w, const py::object& body) { w.removeBody(bodyArgument(body, "World.remove_body()")); },
-           py::arg("body"), "remove_body(body: BodyId): the last body takes the removed one's index; ids stay valid")
+           py::arg("body"), "remove_body(self, /, body)\n--\n\nthe last body takes the removed one's index; ids stay valid")
       .def("add_plane",
            [](PyWorld& w, const py::args& args, const py::kwargs& plane) {
              requireKeywordsOnly(args, "World.add_plane()", "an entry of a scene's \"planes\"");
-             return w.addPlane(plane);
+             return w.addPlane(givenKeywords(plane));
            },
-           "add_plane(normal=(0, 1, 0), point=(0, 0, 0), restitution=..., ...) -> int: the plane's index")
+           "add_plane(self, /, *, normal=(0.0, 1.0, 0.0), point=(0.0, 0.0, 0.0), restitution=0.0, friction_static=0.6, "
+           "friction_kinetic=0.5)\n--\n\n-> int: the plane's index; the keys of an entry of a scene's \"planes\"")
       .def("add_joint",
            [](PyWorld& w, const py::args& args, const py::kwargs& joint) {
              requireKeywordsOnly(args, "World.add_joint()", "an entry of a scene's \"joints\"");
-             return w.addJoint(joint);
+             return w.addJoint(givenKeywords(joint));
            },
-           "add_joint(type=\"hinge\"|\"ball\", body_a=NAME, body_b=NAME (absent: the world), anchor=(x, y, z), "
-           "axis=(x, y, z), motor={\"speed\": rad/s, \"max_torque\": N m}, limits=(lo, hi), collide_connected=False) -> int")
+           "add_joint(self, /, *, type, body_a, anchor, body_b=None, axis=None, motor=None, limits=None, "
+           "collide_connected=False, name=None)\n--\n\n-> int: the joint's row in joints(). type \"ball\" or \"hinge\"; "
+           "body_a, body_b: body names (body_b None: the world); anchor (x, y, z) [m] and, for a hinge, axis (x, y, z), "
+           "motor={\"speed\": rad/s, \"max_torque\": N m}, limits=(lo, hi) [rad]")
       .def("add_force",
            [](PyWorld& w, const py::object& body, const py::kwargs& force) {
-             w.addForce(bodyArgument(body, "World.add_force()"), force);
+             w.addForce(bodyArgument(body, "World.add_force()"), givenKeywords(force));
            },
            py::arg("body"),
-           "add_force(body: BodyId, force=(fx, fy, fz), point=(0, 0, 0), force_frame=\"world\", point_frame=\"body\", "
-           "start=0, end=inf)")
+           "add_force(self, /, body, *, force=(0.0, 0.0, 0.0), point=(0.0, 0.0, 0.0), force_frame='world', "
+           "point_frame='body', start=0.0, end=None)\n--\n\nforce [N] at point [m] on the body from start to end [s] "
+           "(None: for ever); frames \"world\" or \"body\"")
       .def("set_pose",
            [](PyWorld& w, const py::object& body, const py::object& position, const py::object& orientation,
               const py::object& velocity, const py::object& angularVelocity) {
@@ -221,35 +241,36 @@ PYBIND11_MODULE(rbsim, m) {
            },
            py::arg("body"), py::arg("position") = py::none(), py::arg("orientation") = py::none(),
            py::arg("velocity") = py::none(), py::arg("angular_velocity") = py::none(),
-           "set_pose(body: BodyId, position=(x, y, z), orientation=(w, x, y, z), velocity=(vx, vy, vz), "
-           "angular_velocity=(wx, wy, wz)): any of them, within a scene's ranges; the body wakes")
+           "set_pose(self, /, body, position=None, orientation=None, velocity=None, angular_velocity=None)\n--\n\n"
+           "position (x, y, z), orientation (w, x, y, z), velocity (vx, vy, vz), angular_velocity (wx, wy, wz): any of them, within a scene's ranges; the body wakes")
       .def("exact_rotation",
            [](const PyWorld& w, const py::object& body, const py::object& times) {
              return w.exactRotation(bodyArgument(body, "World.exact_rotation()"),
                                     rbsim::python::doubleArrayArgument(times, "World.exact_rotation()", "times"));
            },
            py::arg("body"), py::arg("times"),
-           "exact_rotation(body: BodyId, times: [float]) -> (k, 4) the body's orientation (w, x, y, z) t seconds "
+           "exact_rotation(self, /, body, times)\n--\n\n-> (k, 4) the body's orientation (w, x, y, z) t seconds "
            "from now, for each t, by the closed-form torque-free motion (Jacobi elliptic functions): the "
            "reference for integrator errors")
       .def("step", [](PyWorld& w, const py::object& steps) { w.step(intArgument(steps, "World.step()", "steps")); },
-           py::arg("steps") = 1, "step(steps: int = 1): advance by steps x dt")
+           py::arg("steps") = 1, "step(self, /, steps=1)\n--\n\nadvance by steps x dt (other Python threads run meanwhile)")
       .def("ray_cast",
            [](const PyWorld& w, const py::object& origin, const py::object& direction, const py::object& maxDistance) {
              return w.rayCast(origin, direction, maxDistance);
            },
            py::arg("origin"), py::arg("direction"), py::arg("max_distance") = py::none(),
-           "ray_cast(origin=(x, y, z), direction=(dx, dy, dz), max_distance: float = inf) -> dict | None: the first "
+           "ray_cast(self, /, origin, direction, max_distance=None)\n--\n\n-> dict | None: the first "
            "body or plane the ray meets (asleep and static ones too): {\"body\": BodyId | None, \"plane\": int | None, "
-           "\"distance\": m, \"point\": (x, y, z), \"normal\": (x, y, z)}; a start inside hits at distance 0")
+           "\"distance\": m, \"point\": (x, y, z), \"normal\": (x, y, z)}; a start inside hits at distance 0; "
+           "max_distance None: no limit")
       .def("is_valid",
            [](const PyWorld& w, const py::object& body) {
              const PyBodyId& id = bodyArgument(body, "World.is_valid()");
              return id.world == w.serial() && w.world().isValid(id.id);
            },
-           py::arg("body"), "is_valid(body: BodyId) -> bool: the body is in this World")
+           py::arg("body"), "is_valid(self, /, body)\n--\n\n-> bool: the body is in this World")
       .def("index_of", [](const PyWorld& w, const py::object& body) { return w.index(bodyArgument(body, "World.index_of()"), "World.index_of()"); },
-           py::arg("body"), "index_of(body: BodyId) -> int: the body's row in the state arrays now")
+           py::arg("body"), "index_of(self, /, body)\n--\n\n-> int: the body's row in the state arrays now")
       .def("id_at",
            [](const PyWorld& w, const py::object& index) {
              const long long i = intArgument(index, "World.id_at()", "index");
@@ -260,18 +281,19 @@ PYBIND11_MODULE(rbsim, m) {
              }
              return w.wrap(w.world().idAt(static_cast<std::size_t>(i)));
            },
-           py::arg("index"), "id_at(index: int) -> BodyId: the id of the body in that row")
+           py::arg("index"), "id_at(self, /, index)\n--\n\n-> BodyId: the id of the body in that row")
       .def("__len__", [](const PyWorld& w) { return w.world().bodies().size(); })
       .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); }, "[s]")
       .def_property_readonly("step_count", [](const PyWorld& w) { return w.world().stepCount(); })
-      .def_property_readonly("settings", [](const PyWorld& w) { return settingsDict(w.world().settings()); })
+      .def_property_readonly("settings", [](const PyWorld& w) { return settingsDict(w.scene()); },
+                             "every key of a scene's \"world\" block, as World() takes them")
       .def_property_readonly("names", [](const PyWorld& w) {
         std::vector<std::string> names;
         for (const rbsim::RigidBody& b : w.world().bodies()) names.push_back(b.name());
         return names;
       })
       .def("state_hash", [](const PyWorld& w) { return w.world().stateHash(); },
-           "state_hash() -> int: FNV-1a of every state's bits: equal hashes, identical runs");
+           "state_hash(self, /)\n--\n\n-> int: FNV-1a of every state's bits: equal hashes, identical runs");
   rbsim::python::bindStateArrays(world);
   rbsim::python::bindContacts(world);
   rbsim::python::bindJoints(world);

@@ -52,7 +52,7 @@ void bindParticles(py::class_<PyWorld>& c) {
         }
         return out;
       },
-      "particles() -> structured array, one row per live particle: system (its index in the scene's \"particles\"), "
+      "particles(self, /)\n--\n\n-> structured array, one row per live particle: system (its index in the scene's \"particles\"), "
       "x (3) [m], v (3) [m/s], mass [kg] (0 when pinned), age [s], lifetime [s] (inf: never dies)");
 }
 

@@ -133,16 +133,16 @@ void bindRendering(py::module_& m) {
                                                  stringArgument(gl, kRendererCall, "gl"));
            }),
            py::arg("width") = 640, py::arg("height") = 360, py::arg("samples") = 1, py::arg("gl") = "",
-           "Renderer(width: int = 640, height: int = 360, samples: int = 1, gl: str = \"\"): gl \"\" picks the "
-           "program's default backend")
+           "__init__(self, /, width=640, height=360, samples=1, gl='')\n--\n\ngl \"\" picks the program's default "
+           "backend")
       .def("render",
            [](PyRenderer& r, const py::object& world, const py::object& selected, const py::kwargs& view) {
-             return r.render(worldArgument(world, kRenderCall), selected, view);
+             return r.render(worldArgument(world, kRenderCall), selected, givenKeywords(view));
            },
            py::arg("world"), py::arg("selected") = py::none(),
-           "render(world: World, selected: BodyId = None, **view) -> (height, width, 4) uint8 RGBA. view: the keys "
-           "of a scene's \"view\" block (camera={eye, target, up, fov_deg}, overlay, wireframe, axes, grid, caption); "
-           "selected: the BodyId the overlay shows")
+           "render(self, /, world, selected=None, *, camera=None, overlay=None, wireframe=None, axes=None, grid=None, "
+           "caption=None)\n--\n\n-> (height, width, 4) uint8 RGBA. The keywords are those of a scene's \"view\" block "
+           "(camera={eye, target, up, fov_deg}); None: the view's default. selected: the BodyId the overlay shows")
       .def_property_readonly("width", &PyRenderer::width)
       .def_property_readonly("height", &PyRenderer::height);
 
@@ -152,9 +152,9 @@ void bindRendering(py::module_& m) {
                                                     intArgument(height, kVideoCall, "height"), intArgument(fps, kVideoCall, "fps"));
            }),
            py::arg("path"), py::arg("width"), py::arg("height"), py::arg("fps") = 30,
-           "VideoWriter(path: str, width: int, height: int, fps: int = 30)")
-      .def("write", &PyVideoWriter::write, py::arg("frame"), "write(frame: (height, width, 4) uint8 array)")
-      .def("close", &PyVideoWriter::close, "close(): waits for ffmpeg to finish the file")
+           "__init__(self, /, path, width, height, fps=30)\n--\n\nan H.264 MP4 at fps frames per second")
+      .def("write", &PyVideoWriter::write, py::arg("frame"), "write(self, /, frame)\n--\n\nframe: a (height, width, 4) uint8 array, as Renderer.render gives")
+      .def("close", &PyVideoWriter::close, "close(self, /)\n--\n\nwaits for ffmpeg to finish the file")
       .def_property_readonly("frames", &PyVideoWriter::frames)
       .def("__enter__", [](PyVideoWriter& w) -> PyVideoWriter& { return w; })
       .def("__exit__", [](PyVideoWriter& w, const py::args&) { w.close(); });

@@ -143,14 +143,14 @@ void bindStateArrays(py::class_<PyWorld>& c) {
             d["pe"] = potentialEnergies(wd);
             return d;
           },
-          "state() -> dict: every state array at once, with the time t")
+          "state(self, /)\n--\n\n-> dict: every state array at once, with the time t")
       .def(
           "vertices",
           [](const PyWorld& w, const py::object& body) {
             const PyBodyId& id = bodyArgument(body, "World.vertices()");
             return pointArray(w.world().bodies()[w.index(id, "World.vertices()")].worldVertices());
           },
-          py::arg("body"), "vertices(body: BodyId) -> (k, 3) the body's vertices in world frame, p' = R p + x (seed 004) [m]")
+          py::arg("body"), "vertices(self, /, body)\n--\n\n-> (k, 3) the body's vertices in world frame, p' = R p + x (seed 004) [m]")
       .def(
           "body_vertices",
           [](const PyWorld& w, const py::object& body) {
@@ -159,7 +159,7 @@ void bindStateArrays(py::class_<PyWorld>& c) {
             for (std::size_t i = 0; i < points.size(); ++i) points[i] = b.bodyVertex(i);
             return pointArray(points);
           },
-          py::arg("body"), "body_vertices(body: BodyId) -> (k, 3) the body's vertices in body frame (origin at the centre of mass) [m]");
+          py::arg("body"), "body_vertices(self, /, body)\n--\n\n-> (k, 3) the body's vertices in body frame (origin at the centre of mass) [m]");
 }
 
 }  // namespace rbsim::python

@@ -82,7 +82,7 @@ void bindWorldState(py::module_& m, py::class_<PyWorld>& world) {
 
   world
       .def("get_state", [](const PyWorld& w) { return w.save(); },
-           "get_state() -> State: everything the World will step from, copied; set_state(state) goes back to it")
+           "get_state(self, /)\n--\n\n-> State: everything the World will step from, copied; set_state(state) goes back to it")
       .def("set_state",
            [](PyWorld& w, const py::object& state) {
              if (!py::isinstance<PyWorld::Saved>(state)) {
@@ -92,7 +92,7 @@ void bindWorldState(py::module_& m, py::class_<PyWorld>& world) {
              w.restore(state.cast<const PyWorld::Saved&>());
            },
            py::arg("state"),
-           "set_state(state: State): back to a state this World gave, settings included; stepping on from it "
+           "set_state(self, /, state)\n--\n\nback to a state this World gave, settings included; stepping on from it "
            "gives bit for bit what the World gave after it was taken. Ids of bodies added since are no longer valid.");
 
   liveSetting(world, "gravity", [](const Settings& s) { return py::make_tuple(s.gravity.x(), s.gravity.y(), s.gravity.z()); },

@@ -196,10 +196,14 @@ def test_argument_type_errors_name_the_call_the_parameter_and_the_type(call, wor
     assert world.names == ["ball"] and world.step_count == 0
 
 
-def test_signatures_show_the_types():
-    assert rbsim.World.step.__doc__.startswith("step(steps: int = 1)")
-    assert rbsim.World.set_pose.__doc__.startswith("set_pose(body: BodyId")
-    assert "object" not in rbsim.World.exact_rotation.__doc__
+def test_signatures_show_the_parameters_not_pybind11_s_object():
+    """The types are the stubs' (python/stubs/rbsim.pyi, test_stubs.py); help() and inspect show
+    each parameter with its default, never pybind11's "arg0: object"."""
+    import inspect
+    assert str(inspect.signature(rbsim.World.step)) == "(self, /, steps=1)"
+    assert str(inspect.signature(rbsim.World.set_pose)).startswith("(self, /, body, position=None")
+    for name in ("exact_rotation", "ray_cast", "add_force", "step"):
+        assert "object" not in str(inspect.signature(getattr(rbsim.World, name)))
 
 
 def test_paths_may_be_pathlib_paths(tmp_path):

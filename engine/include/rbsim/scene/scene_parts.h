@@ -28,6 +28,9 @@ void parseWorldBlock(const JsonObject& w, Scene& scene);
 // checked as a whole (checkSettings): what a running World's settings may take (Python's
 // World.dt = ..., World.gravity = ...).
 void parseWorldSettings(const JsonObject& w, Settings& settings);
+// The "world" block that parseWorldBlock reads back into the same settings, duration and particle
+// integrator: every key of kWorldKeys but "steps" (the duration says it).
+nlohmann::json worldBlockJson(const Scene& scene);
 
 // A body block (the keys of one entry of "bodies") and what hangs on it, for the body that will
 // be number `index` of a World whose settings are `settings` (its default inertia method).
