@@ -8,6 +8,7 @@ import re
 import shutil
 import subprocess
 import sys
+import sysconfig
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
@@ -32,25 +33,39 @@ def data_files():
     return out
 
 
+def configure(build):
+    done = subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+                           f"-DPython_EXECUTABLE={sys.executable}", "-DRBSIM_BUILD_TESTS=OFF",
+                           "-DRBSIM_BUILD_BENCH=OFF"], capture_output=True, text=True)
+    print(done.stdout, done.stderr, sep="\n")
+    if done.returncode != 0:
+        sys.exit("setup.py: CMake could not configure rbsim (its message is above)")
+    if "rbsim: Python module for" not in done.stdout:
+        sys.exit(f"setup.py: no Python module can be built for {sys.executable}: it needs python3-dev, "
+                 "python3-numpy and pybind11-dev (apt-get install), and NumPy visible to it (a venv made "
+                 "with --system-site-packages)")
+
+
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
         target = pathlib.Path(self.get_ext_fullpath(ext.name)).resolve()
-        build = pathlib.Path(self.build_temp).resolve() / "cmake"
+        # RBSIM_CMAKE_BUILD_DIR: a build tree configured already (README's build/): its module is built
+        # there and packaged, instead of building everything again in a tree of pip's own.
+        given = os.environ.get("RBSIM_CMAKE_BUILD_DIR")
+        build = pathlib.Path(given).resolve() if given else pathlib.Path(self.build_temp).resolve() / "cmake"
+        if given and not (build / "CMakeCache.txt").is_file():
+            sys.exit(f"setup.py: RBSIM_CMAKE_BUILD_DIR={given} is not a configured CMake build tree (no CMakeCache.txt)")
+        if not given:
+            configure(build)
         jobs = str(os.cpu_count() or 2)
-        configure = subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
-                                    f"-DPython_EXECUTABLE={sys.executable}", "-DRBSIM_BUILD_TESTS=OFF",
-                                    "-DRBSIM_BUILD_BENCH=OFF"], capture_output=True, text=True)
-        print(configure.stdout, configure.stderr, sep="\n")
-        if configure.returncode != 0:
-            sys.exit("setup.py: CMake could not configure rbsim (its message is above)")
-        if "rbsim: Python module for" not in configure.stdout:
-            sys.exit(f"setup.py: no Python module can be built for {sys.executable}: it needs python3-dev, "
-                     "python3-numpy and pybind11-dev (apt-get install), and NumPy visible to it (a venv made "
-                     "with --system-site-packages)")
         subprocess.run(["cmake", "--build", str(build), "--target", "rbsim_python", "-j", jobs], check=True)
+        suffix = sysconfig.get_config_var("EXT_SUFFIX")
         built = sorted((build / "python").glob("rbsim*.so"))
         if not built:
             sys.exit(f"setup.py: the CMake build made no module in {build / 'python'}")
+        if not built[0].name.endswith(suffix):
+            sys.exit(f"setup.py: {built[0]} is not for this interpreter ({sys.executable} loads *{suffix}); "
+                     "leave RBSIM_CMAKE_BUILD_DIR unset to build one for it")
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[0], target)
         shutil.copyfile(ROOT / "python" / "stubs" / "rbsim.pyi", target.parent / "rbsim.pyi")  # type stubs beside it
