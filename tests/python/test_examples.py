@@ -33,3 +33,20 @@ def test_readme_example_runs_and_prints_the_free_fall(tmp_path):
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["[0.5", "0.77375", "0.", "]"]
     assert (tmp_path / "videos" / "ball.mp4").stat().st_size > 0
+
+
+def test_first_contact_closes_in_on_the_free_fall_time(tmp_path):
+    """examples/python/first_contact.py: each rewind with an 8 times finer step brackets t* =
+    sqrt(2 gap / g) closer, the last within a step of it (the solver may push a step early)."""
+    import re
+    done = subprocess.run([sys.executable, str(SOURCE / "examples" / "python" / "first_contact.py"), "--out",
+                           str(tmp_path)], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    predicted = float(re.search(r"t\* = ([0-9.]+) s", done.stdout).group(1))
+    brackets = [(float(a), float(b)) for a, b in re.findall(r"step \[([0-9.]+), ([0-9.]+)\]", done.stdout)]
+    assert len(brackets) == 4
+    gaps = [predicted - start for start, _ in brackets]
+    assert all(g > 0 for g in gaps) and all(b < a for a, b in zip(gaps, gaps[1:]))
+    start, end = brackets[-1]
+    assert start <= predicted <= end + (end - start)
+    assert re.search(r"exact: kinetic energy ([0-9.]+) J -> \1 J", done.stdout)  # the saved state replays alike
