@@ -29,11 +29,12 @@ LAYERS = [
 ]
 LAYER_OF = {module: level for level, modules in enumerate(LAYERS) for module in modules}
 # The app's folders, lowest first: the renderer knows no physics, a recording is a file format,
-# a run builds frames from both, the window drives runs and replays, the command line's flags and
-# messages sit above them, and main.cpp everything. The
-# engine's public headers lie below all of them.
+# the glTF export writes the renderer's body meshes and the bodies' poses, a run builds frames
+# from all of them, the window drives runs and replays, the command line's flags and messages sit
+# above them, and main.cpp everything. The engine's public headers lie below all of them.
 APP_LAYERS = [
     ["render", "record", "demos"],
+    ["export"],
     ["run"],
     ["window"],
     ["cli"],
