@@ -90,7 +90,7 @@ int listEverything() {
 // or no rendering contradict that, so they are refused rather than half-applied.
 int renderAllDemos(const CLI::App& demo, Flags& flags) {
   for (const char* name : {"--phase", "--video", "--trace", "--trace-every", "--fps", "--size", "--no-render", "--window",
-                           "--window-frames", "--screenshot", "--record"}) {
+                           "--window-frames", "--screenshot", "--record", "--gltf"}) {
     if (demo.get_option(name)->count() > 0) {
       throw InputError("", std::string(name) + " with `demo all`",
                        "not allowed: `demo all` renders every demo at 1280x720, 60 fps into videos/<name>.mp4 and "

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/flag_values.h"
+#include "export/gltf_file.h"
 #include "render/gl_context.h"
 #include "render/png_file.h"
 #include "window/control_panel.h"
@@ -34,6 +35,8 @@ void Flags::attach(CLI::App& cmd, FlagSet set) {
   option("--png-level", pngLevel, "0-9", "zlib level of the --frames PNGs: 0 stored (fastest) to 9 smallest; default 1");
   option("--trace", run.tracePath, "FILE.csv", "write every body's state, step by step, as CSV");
   option("--trace-every", traceEvery, "K", "with --trace: every K-th step, K from 1 to 1e9");
+  option("--gltf", run.gltfPath, "FILE.glb",
+         "write the bodies' meshes and their motion at every frame as glTF 2.0 (.glb, or .gltf for JSON), with or without --no-render");
   if (simulate) {
     option("--record", run.recordPath, "FILE.rbrec", "record every step's state, for `rbsim replay`");
     option("--steps", steps, "N", "number of steps per scene (world.steps)");
@@ -72,6 +75,7 @@ void Flags::attach(CLI::App& cmd, FlagSet set) {
 }
 
 RunOptions Flags::finish(const std::string& defaultVideo) {
+  if (!run.gltfPath.empty()) gltfFormatOf(run.gltfPath);  // its name, before any scene is read
   if (!pngLevel.empty()) {
     run.pngLevel = static_cast<int>(parseFlagInteger(
         "--png-level", pngLevel, render::kMinPngLevel, render::kMaxPngLevel,
@@ -141,6 +145,7 @@ void Flags::refuseIgnoredFlags() const {
       {"--frames", !run.framesDir.empty()}, {"--video", !run.videoPath.empty()}, {"--png-level", !pngLevel.empty()}};
   const std::pair<const char*, bool> runFlags[] = {{"--trace", !run.tracePath.empty()},
                                                    {"--trace-every", !traceEvery.empty()},
+                                                   {"--gltf", !run.gltfPath.empty()},
                                                    {"--no-render", noRender}};
   for (const auto& [flag, given] : imageFlags) {
     if (given && noRender) {
@@ -153,7 +158,7 @@ void Flags::refuseIgnoredFlags() const {
   }
   for (const auto& [flag, given] : runFlags) {
     if (given && window) {
-      throw InputError("", std::string(flag) + " with --window", "not allowed: --window shows the scene live and writes no trace or video");
+      throw InputError("", std::string(flag) + " with --window", "not allowed: --window shows the scene live and writes no trace, glTF or video");
     }
   }
   if (!gl.empty() && noRender) {

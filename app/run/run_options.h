@@ -18,6 +18,7 @@ struct RunOptions {
   std::string tracePath;               // write the CSV trace here when non-empty
   std::uint64_t traceEvery = 1;        // trace every K-th step
   std::string recordPath;              // record every step's state here when non-empty (record/recording.h)
+  std::string gltfPath;                // write the bodies and their motion as glTF 2.0 here when non-empty (export/)
   int pngLevel = render::kDefaultPngLevel;  // zlib level of the PNG frames, [0, 9]
   render::GlBackend glBackend = render::defaultGlBackend();  // --gl osmesa|egl
   bool render = true;                  // --no-render turns frames and video off

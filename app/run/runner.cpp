@@ -9,6 +9,8 @@
 #include <optional>
 #include <sstream>
 
+#include "export/gltf_file.h"
+#include "export/gltf_track.h"
 #include "rbsim/io/input_error.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
@@ -148,8 +150,25 @@ void checkOutputs(const std::vector<Phase>& phases, const RunOptions& options, b
   if (replay) inputs.push_back({"recording", replay->path()});
   if (!options.tracePath.empty()) outputs.push_back({"--trace", options.tracePath});
   if (!options.recordPath.empty()) outputs.push_back({"--record", options.recordPath});
+  if (!options.gltfPath.empty()) outputs.push_back({"--gltf", options.gltfPath});
   if (wantImages && !options.videoPath.empty()) outputs.push_back({"--video", options.videoPath});
   checkOutputPaths(outputs, inputs, wantImages ? options.framesDir : std::string());
+}
+
+// --gltf: a name it knows, one scene of rigid bodies (export/gltf_track.h), within its budget.
+void checkGltfRun(const std::vector<Phase>& phases, const std::string& path) {
+  gltfFormatOf(path);
+  if (phases.size() > 1) {
+    throw InputError("", "--gltf with " + std::to_string(phases.size()) + " phases",
+                     "a glTF export holds one scene: choose one with --phase K");
+  }
+  const Phase& phase = phases.front();
+  if (phase.compared()) {
+    throw InputError(phase.file, "--gltf", "the scene compares " + phase.compareKey + " in " + std::to_string(phase.worlds.size()) +
+                                               " worlds, and a glTF export holds one: run one value with --set " + phase.compareKey + "=VALUE");
+  }
+  checkGltfScene(phase.scene());
+  checkGltfBudget(phase.file, frameCount(phase), phase.scene().bodies.size());
 }
 
 }  // namespace
@@ -174,6 +193,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
 
   const bool wantImages = options.render && (!options.framesDir.empty() || !options.videoPath.empty());
   checkRunBudgets(phases, *longest, options, wantImages ? totalFrames : 0, totalSteps);
+  if (!options.gltfPath.empty()) checkGltfRun(phases, options.gltfPath);
   checkOutputs(phases, options, wantImages, replay);
   if (wantImages && !options.framesDir.empty()) {
     const std::size_t stale = removeOldFrames(options.framesDir);
@@ -187,6 +207,9 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
   if (!options.tracePath.empty()) trace.emplace(options.tracePath);
   std::optional<RecordWriter> recorder;
   if (!options.recordPath.empty()) recorder.emplace(options.recordPath, recordingHeader(phases, options, title));
+  std::optional<GltfFile> gltfFile;
+  if (!options.gltfPath.empty()) gltfFile.emplace(options.gltfPath);
+  GltfTrack gltfTrack;  // the poses at every frame, for --gltf
   std::unique_ptr<render::OffscreenRenderer> renderer;
   std::unique_ptr<render::FrameSink> sink;
   if (wantImages) {
@@ -283,9 +306,12 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
           if (worlds[k].stepCount() >= scene.stepCount()) continue;
           next = std::min(next, firstFrameShowing(worlds[k].stepCount() + 1, fps, scene.settings.timeStep));
         }
-        f = std::max(f + 1, next);
+        const std::uint64_t after = std::max(f + 1, next);
+        if (gltfFile) gltfTrack.sample(worlds.front(), after - f);
+        f = after;
         continue;
       }
+      if (gltfFile) gltfTrack.sample(worlds.front());
       const auto start = Clock::now();
       render::FrameData frame = buildPhaseFrame(worlds, phase, title, &freeFlight);
       if (!plots.empty()) {
@@ -308,6 +334,11 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
   }
   if (trace) trace->close();
   if (replay != nullptr) replay->expectEnd();
+  if (gltfFile) {  // after a replay's end is checked: a damaged recording leaves the file empty
+    gltfFile->write(gltfTrack, first.fps, title.empty() ? phases.front().scene().title : title);
+    summary.gltfBodies = gltfTrack.bodies().size();
+    summary.gltfFrames = gltfTrack.frames();
+  }
   if (recorder) {
     recorder->close();
     summary.recordBytes = recorder->fileBytes();
@@ -360,6 +391,10 @@ void printSummary(const RunSummary& s, const RunOptions& options) {
   if (!options.videoPath.empty() && s.frames > 0) std::printf("video: %s\n", options.videoPath.c_str());
   if (!options.framesDir.empty() && s.frames > 0) std::printf("frames: %s\n", options.framesDir.c_str());
   if (!options.tracePath.empty()) std::printf("trace: %s\n", options.tracePath.c_str());
+  if (!options.gltfPath.empty()) {
+    std::printf("gltf: %s, %zu bodies, %llu frames\n", options.gltfPath.c_str(), s.gltfBodies,
+                static_cast<unsigned long long>(s.gltfFrames));
+  }
 }
 
 }  // namespace rbsim::app

@@ -31,6 +31,8 @@ struct RunSummary {
   double wallSeconds = 0.0;
   std::uint64_t recordBytes = 0;      // the recording's size (--record) [bytes]
   std::uint64_t recordBodySteps = 0;  // bodies x steps it holds
+  std::size_t gltfBodies = 0;         // the --gltf file's nodes: bodies, and pieces broken off
+  std::uint64_t gltfFrames = 0;       // its keys per node
 };
 
 // Frame k of a scene shows the state at the step nearest to k / fps. When dt does not divide
@@ -70,7 +72,9 @@ using FrameObserver = std::function<void(const std::vector<std::uint8_t>& rgbaTo
 // unless options.quiet. Every output is checked: a failed write throws naming the file.
 // With `replay` (rbsim replay), the worlds are not stepped: each step's state is read from the
 // recording instead, which must be of these phases (InputError otherwise, or when it is cut short).
-// With options.recordPath every step's state is recorded (record/recording.h).
+// With options.recordPath every step's state is recorded (record/recording.h); with
+// options.gltfPath the bodies and their pose at every frame go to a glTF file (export/), which
+// a run of several phases or a compared phase cannot have (InputError).
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
                      const FrameObserver& observer = {}, RecordReader* replay = nullptr);
 
