@@ -43,6 +43,10 @@ constexpr double kPositionTolerance = 1e-6;  // [m]
 // engine's rounding; 1e-6 per component of the unit quaternion (after the sign of q is aligned:
 // q and -q are one rotation).
 constexpr double kQuaternionTolerance = 1e-6;  // [1]
+// A key's time is k / fps in float32: off by its half step, under 1e-6 s for runs under 8 s.
+constexpr double kTimeTolerance = 1e-6;  // [s]
+// A normal is a unit cross product rounded to float32.
+constexpr float kNormalTolerance = 1e-6f;  // [1]
 // contact_response's bouncer is given 0.6 rad/s about z and tumbles as it bounces: at the end it
 // must have turned by more than this, or the rotation check would compare identities.
 constexpr double kMinTurn = 0.1;  // [rad]
@@ -129,7 +133,7 @@ TEST(Gltf, EveryBodysPoseIsTheEnginesAtTheFirstAMiddleAndTheLastFrame) {
       EXPECT_EQ(channel->mNumScalingKeys, 1u) << body.name() << " is there all along: no visibility track";
       EXPECT_TRUE(shownAt(*channel, frame)) << body.name();
       const aiVectorKey& position = channel->mPositionKeys[frame];
-      EXPECT_NEAR(keySeconds(animation, position.mTime), static_cast<double>(frame) / fps, 1e-6) << body.name();
+      EXPECT_NEAR(keySeconds(animation, position.mTime), static_cast<double>(frame) / fps, kTimeTolerance) << body.name();
       const Vec3& x = body.position();
       for (int i = 0; i < 3; ++i) {
         const double tolerance = std::max(kPositionTolerance, std::abs(x[i]) * FLT_EPSILON);
@@ -183,8 +187,8 @@ TEST(Gltf, ABoxIsItsEightCornersWithFlatFacesInItsRenderColour) {
     hi = aiVector3D(std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z));
     corners.insert({p.x, p.y, p.z});
     const aiVector3D& n = mesh.mNormals[v];
-    EXPECT_NEAR(n.Length(), 1.0f, 1e-6f);
-    EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, 1e-6f) << "a box face's normal is an axis";
+    EXPECT_NEAR(n.Length(), 1.0f, kNormalTolerance);
+    EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, kNormalTolerance) << "a box face's normal is an axis";
   }
   EXPECT_EQ(corners.size(), 8u);
   const float half[3] = {0.3f, 0.15f, 0.2f};
