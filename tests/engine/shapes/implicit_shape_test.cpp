@@ -9,10 +9,12 @@
 #include <cstdio>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "geometry/triangle_bvh.h"
 #include "rbsim/mass/mass_model.h"
 #include "rbsim/mass/mass_properties.h"
+#include "../../sanitized_build.h"
 
 namespace rbsim {
 namespace {
@@ -84,7 +86,10 @@ TEST(ImplicitShape, BodyGridPointsHoldTheExactCsgValue) {
 // these resolutions, 11 of the 91 from 40 to 130; with the band at 1e-3 of a cell, none is.
 TEST(ImplicitShape, APlainTorusMeshesWithoutSelfCrossingWhereItUsedTo) {
   const auto torus = std::make_shared<const ImplicitFunction>(ImplicitFunction::primitive(TorusSurface{0.5, 0.15}));
-  for (const int resolution : {54, 65, 75, 78, 81, 91, 100, 104}) {
+  // Under the sanitizers two of them (the same code on other grids; the geometry is the normal build's).
+  const std::vector<int> resolutions = test::kSanitizedBuild ? std::vector<int>{54, 65}
+                                                             : std::vector<int>{54, 65, 75, 78, 81, 91, 100, 104};
+  for (const int resolution : resolutions) {
     const ImplicitMeshing m = meshImplicitShape(ImplicitShape{torus, resolution});
     EXPECT_FALSE(TriangleBvh(m.mesh).selfCrossing(1e9).found) << "resolution " << resolution;
     const double pappus = 2.0 * M_PI * M_PI * 0.5 * 0.15 * 0.15;
@@ -117,7 +122,8 @@ TEST(ImplicitShape, RandomTreesMeshClosedWithoutZeroAreaTriangles) {
     }
   };
   int meshed = 0;
-  for (int n = 0; n < 60; ++n) {
+  const int trees = test::kSanitizedBuild ? 15 : 60;  // a quarter under the sanitizers
+  for (int n = 0; n < trees; ++n) {
     ImplicitFunction f = primitive();
     const int operations = static_cast<int>(3.0 * u(rng));
     for (int k = 0; k < operations; ++k) f = ImplicitFunction::combine(static_cast<CsgOp>(static_cast<int>(3.0 * u(rng))), f, primitive());
@@ -138,7 +144,7 @@ TEST(ImplicitShape, RandomTreesMeshClosedWithoutZeroAreaTriangles) {
     EXPECT_FALSE(TriangleBvh(m.mesh).selfCrossing(1e9).found) << "tree " << n << ", resolution " << shape.resolution;
     ++meshed;
   }
-  EXPECT_GT(meshed, 40);
+  EXPECT_GT(meshed, trees * 2 / 3);  // 40 of 60 mesh (the rest are empty or thinner than a cell)
 }
 
 TEST(ImplicitShape, EmptySolidsAndOverBudgetGridsAreRefused) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include "rbsim/math/uniform_random.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/world.h"
+#include "../../../sanitized_build.h"
 
 namespace rbsim {
 namespace {
@@ -93,7 +95,8 @@ Scene toriScene(const std::string& solver, double dt) {
 
 TEST(MeshMesh, ATorusRestsOnATorusTubeOnTube) {
   for (const char* solver : {"soft-step", "pgs"}) {
-    for (double dt : {1.0 / 60.0, 1.0 / 240.0}) {
+    // Under the sanitizers at 1/60 s alone: 1/240 is the same code four times as often.
+    for (double dt : test::kSanitizedBuild ? std::vector<double>{1.0 / 60.0} : std::vector<double>{1.0 / 60.0, 1.0 / 240.0}) {
       const Scene scene = toriScene(solver, dt);
       ASSERT_TRUE(scene.bodies[1].triangles);
       World world = buildWorld(scene);
