@@ -78,7 +78,9 @@ TEST(ShapeQueries, OneSolidAnswersAlikeWhateverItsType) {
       ASSERT_EQ(ra.has_value(), rb.has_value()) << shapeTypeName(a.type) << " from " << p.transpose();
       if (!ra) continue;
       EXPECT_NEAR(ra->fraction, rb->fraction, 1e-9);
-      if (ra->fraction > 0.0) EXPECT_LT((ra->normal - rb->normal).norm(), 1e-6) << shapeTypeName(a.type);
+      if (ra->fraction > 0.0) {
+        EXPECT_LT((ra->normal - rb->normal).norm(), 1e-6) << shapeTypeName(a.type);
+      }
     }
   }
 }

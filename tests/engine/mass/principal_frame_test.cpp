@@ -40,7 +40,9 @@ TEST(PrincipalFrame, TheLBracketsBodyInertiaIsDiagonal) {
   EXPECT_GT(std::abs(inFile(0, 1)) + std::abs(inFile(0, 2)) + std::abs(inFile(1, 2)), 0.015);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      if (i != j) EXPECT_LE(std::abs(I(i, j)), 1e-12 * I.trace()) << i << j;
+      if (i != j) {
+        EXPECT_LE(std::abs(I(i, j)), 1e-12 * I.trace()) << i << j;
+      }
     }
   }
   EXPECT_NEAR(def.fileFrame.axes.determinant(), 1.0, 1e-14);

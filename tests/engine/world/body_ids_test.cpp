@@ -112,7 +112,9 @@ TEST(BodyIds, CreateDestroyCyclesKeepMemoryFlat) {
   }
   EXPECT_EQ(w.bodies().size(), 1u);
   EXPECT_TRUE(w.bodies()[0].position().allFinite());
-  if (!test::kSanitizedBuild) EXPECT_LE(heap() - afterWarmUp, 16 * 1024) << "bytes grown over 99000 cycles";
+  if (!test::kSanitizedBuild) {
+    EXPECT_LE(heap() - afterWarmUp, 16 * 1024) << "bytes grown over 99000 cycles";
+  }
 }
 
 }  // namespace

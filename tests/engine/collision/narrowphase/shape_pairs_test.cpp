@@ -127,7 +127,9 @@ TEST(ShapePairs, HillClimbingHullsCollideAsScannedOnes) {
     EXPECT_NEAR(scanned.distance, climbed.distance, 1e-9) << i;
     EXPECT_NEAR(scanned.depth, climbed.depth, 1e-7) << i;
     ASSERT_EQ(scanned.manifold.count, climbed.manifold.count) << i;
-    if (scanned.manifold.count > 0) EXPECT_NEAR((scanned.manifold.normal - climbed.manifold.normal).norm(), 0.0, 1e-6) << i;
+    if (scanned.manifold.count > 0) {
+      EXPECT_NEAR((scanned.manifold.normal - climbed.manifold.normal).norm(), 0.0, 1e-6) << i;
+    }
     touching += scanned.overlap ? 1 : 0;
   }
   EXPECT_GT(touching, 50);  // both kinds of pair were tried
