@@ -142,7 +142,7 @@ PanelRequests drawControlPanel(const PanelView& view, int imageWidth, int imageH
       }
       ImGui::EndCombo();
     }
-    const std::string solver = scene.settings.solver == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
+    const std::string solver = contactSolverName(scene.settings.solver);
     if (ImGui::BeginCombo("solver", solver.c_str())) {
       for (const char* name : {"soft-step", "pgs"}) {
         if (ImGui::Selectable(name, solver == name)) out.assignments.push_back({"world.solver", quoted(name), true});

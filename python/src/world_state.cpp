@@ -53,10 +53,6 @@ namespace {
 
 using SavedState = std::shared_ptr<PyWorld::Saved>;
 
-const char* solverName(Settings::ContactSolverMethod m) {
-  return m == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
-}
-
 // A property over one key of the "world" block: read from the World's settings, written through
 // PyWorld::setSetting.
 template <typename Get>
@@ -101,7 +97,7 @@ void bindWorldState(py::module_& m, py::class_<PyWorld>& world) {
               "[s]; settable: World.time goes on from where it is, the new step counts from now");
   liveSetting(world, "integrator", [](const Settings& s) { return std::string(integratorName(s.integrator)); },
               "settable: one of rbsim.integrators(), from the next step");
-  liveSetting(world, "solver", [](const Settings& s) { return std::string(solverName(s.solver)); },
+  liveSetting(world, "solver", [](const Settings& s) { return std::string(contactSolverName(s.solver)); },
               "\"soft-step\" or \"pgs\"; settable (the new solver starts without warm starts; PGS refuses joints)");
   liveSetting(world, "substeps", [](const Settings& s) { return s.substeps; }, "soft-step substeps per step; settable");
   liveSetting(world, "friction", [](const Settings& s) { return std::string(frictionModelName(s.friction)); },

@@ -34,15 +34,14 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
   s.detectCollisions = w.boolean("collisions", s.detectCollisions);
   s.continuousCollision = w.boolean("ccd", s.continuousCollision);
   s.ccdMotionFraction = w.number("ccd_motion_fraction", s.ccdMotionFraction);
-  const std::string broad =
-      w.string("broad_phase", s.broadPhase == Settings::BroadPhaseMethod::BruteForce ? "brute-force" : "sap");
+  const std::string broad = w.string("broad_phase", broadPhaseName(s.broadPhase));
   if (broad == "brute-force" || broad == "sap") {
     s.broadPhase = broad == "sap" ? Settings::BroadPhaseMethod::SweepAndPrune : Settings::BroadPhaseMethod::BruteForce;
   } else {
     w.fail("broad_phase", "expected \"sap\" or \"brute-force\", got \"" + broad + "\"");
   }
   s.contactMargin = w.number("contact_margin", s.contactMargin);
-  const std::string solver = w.string("solver", s.solver == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step");
+  const std::string solver = w.string("solver", contactSolverName(s.solver));
   if (solver == "pgs" || solver == "soft-step") {
     s.solver = solver == "pgs" ? Settings::ContactSolverMethod::Pgs : Settings::ContactSolverMethod::SoftStep;
   } else {
@@ -52,8 +51,7 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
   if (!parseFrictionModel(friction, s.friction)) {
     w.fail("friction", "expected \"cone\" or \"seed000\", got \"" + friction + "\"");
   }
-  const std::string meshContact =
-      w.string("mesh_contact", s.meshContact == Settings::MeshContact::Triangles ? "triangles" : "samples");
+  const std::string meshContact = w.string("mesh_contact", meshContactName(s.meshContact));
   if (meshContact == "triangles" || meshContact == "samples") {
     s.meshContact = meshContact == "triangles" ? Settings::MeshContact::Triangles : Settings::MeshContact::Samples;
   } else {

@@ -25,11 +25,11 @@ nlohmann::json worldBlockJson(const Scene& scene) {
   w["collisions"] = s.detectCollisions;
   w["ccd"] = s.continuousCollision;
   w["ccd_motion_fraction"] = s.ccdMotionFraction;
-  w["broad_phase"] = s.broadPhase == Settings::BroadPhaseMethod::BruteForce ? "brute-force" : "sap";
+  w["broad_phase"] = broadPhaseName(s.broadPhase);
   w["contact_margin"] = s.contactMargin;
-  w["solver"] = s.solver == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
+  w["solver"] = contactSolverName(s.solver);
   w["friction"] = frictionModelName(s.friction);
-  w["mesh_contact"] = s.meshContact == Settings::MeshContact::Triangles ? "triangles" : "samples";
+  w["mesh_contact"] = meshContactName(s.meshContact);
   w["substeps"] = s.substeps;
   w["contact_hertz"] = s.contactHertz;
   w["contact_damping_ratio"] = s.contactDampingRatio;

@@ -76,6 +76,18 @@ SettingsProblem checkSettings(const Settings& s) {
   return {};
 }
 
+const char* contactSolverName(Settings::ContactSolverMethod method) {
+  return method == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
+}
+
+const char* broadPhaseName(Settings::BroadPhaseMethod method) {
+  return method == Settings::BroadPhaseMethod::BruteForce ? "brute-force" : "sap";
+}
+
+const char* meshContactName(Settings::MeshContact method) {
+  return method == Settings::MeshContact::Triangles ? "triangles" : "samples";
+}
+
 const char* frictionModelName(Settings::FrictionModel model) {
   return model == Settings::FrictionModel::Seed000 ? "seed000" : "cone";
 }

@@ -139,6 +139,11 @@ inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
 // A query log longer than this holds more than anyone reads, at ~200 B a record.
 inline constexpr std::size_t kMaxQueryLogCapacity = 1000000;  // [records]
 
+// The scene names of the methods: "soft-step" | "pgs", "sap" | "brute-force", "samples" | "triangles"
+// (scene/scene_parts.cpp reads them, worldBlockJson writes them).
+const char* contactSolverName(Settings::ContactSolverMethod method);
+const char* broadPhaseName(Settings::BroadPhaseMethod method);
+const char* meshContactName(Settings::MeshContact method);
 // The scene names of Settings::FrictionModel: "cone", "seed000".
 const char* frictionModelName(Settings::FrictionModel model);
 // False, leaving `model` alone, for a name that is neither.

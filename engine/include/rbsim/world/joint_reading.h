@@ -21,7 +21,8 @@ struct JointReading {
   Vec3 anchorB = Vec3::Zero();    // B's (or the world's) [m]; |anchorA - anchorB| is the joint's drift
   // On body A, world frame: the joint's last substep impulses over the substep h = dt / substeps
   // (Box2D v3's constraint force and torque). The torque is the constraint's own (keeping the axes
-  // aligned, the motor and the limits), about A's anchor; B feels the opposite [N], [N m].
+  // aligned, the motor and the limits), about A's anchor; B feels the opposite [N], [N m]. h is
+  // taken from the settings now: read before changing dt or substeps (World::setSettings).
   Vec3 force = Vec3::Zero();
   Vec3 torque = Vec3::Zero();
 };
