@@ -199,7 +199,8 @@ render::FrameData buildFrame(const World& world
     std::snprintf(quat, sizeof quat, "%+.4f %+.4f %+.4f %+.4f", q.w(), q.x(), q.y(), q.z());
     const RowLevel main = rigidSubject ? RowLevel::Essential : RowLevel::Detail;
     overlay.rows.insert(overlay.rows.end(), {
-        {"body", body.name() + " (" + scene.inertiaMethods[view.selected] + " inertia, " +
+        // A body spawned while the World stepped has no inertia method in the scene's list.
+        {"body", body.name() + " (" + (view.selected < scene.inertiaMethods.size() ? scene.inertiaMethods[view.selected] + " inertia, " : std::string()) +
                      formatNumber(body.mass(), "kg") + (body.awake() ? ")" : ", asleep)"), main},
         {"x", formatVec(body.position(), "m"), main},
         {"R row 1", formatVec(R.row(0).transpose(), ""), RowLevel::Detail},

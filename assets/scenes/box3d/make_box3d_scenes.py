@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-# Writes four of Box3D's benchmark scenes as rbsim scene files, next to this script:
+# Writes five of Box3D's benchmark scenes as rbsim scene files, next to this script:
 #
 #   large_pyramid.json    CreateLargePyramid: a 2D pyramid of 100 rows, 5050 unit cubes
 #   many_pyramids.json    CreateManyPyramids + CreateSmallPyramid: 14 x 14 pyramids of 10 rows, 10780 cubes
 #   joint_grid.json       CreateJointGrid: 100 x 100 spheres joined by ball joints, top row static
 #   convex_pile.json      CreateConvexPile: 8 x 8 x 80 copies of one 32-point hull (+ convex_pile_hull.obj)
+#   washer.json           CreateWasher: a kinematic drum of 40 hulls turning, 20 x 20 x 20 cubes inside
 #
 # Layouts follow Box3D (github.com/erincatto/box3d) at commit
 # 30c67b5e6d0a3a66f0f506c69ce9e9e0587e3b7c, shared/benchmarks.c: CreateLargePyramid,
@@ -335,7 +336,83 @@ def convex_pile():
     return points, faces, centroid
 
 
+# ---------------------------------------------------------------------------------------------
+# CreateWasher: a kinematic drum at (0, 21, 0) turning at 25 degrees/s about z, made of 36 staves
+# (hexahedra between radii 16 and 18 m, z from -10 to 10, each a tenth of its 10 degrees short at
+# both ends) and 4 paddles (radii 14 to 16, at staves 0, 9, 18, 27): one compound body of 40
+# hulls. Inside, 20 x 20 x 20 cubes of half extent 0.2 spaced 0.8 m. Box3D also gives the drum a
+# drift of (0.001, -0.002, 0) m/s; here it turns about its axis through (0, 21, 0) and nothing
+# else ("motion": "pivot").
+def hexahedron_triangles(points):
+    """Outward-wound triangles of a hexahedron whose points are Box3D's p1..p8 order: (near, r_in,
+    a1), (near, r_out, a1), (near, r_in, a2), (near, r_out, a2), then the same on the far side."""
+    quads = [(0, 1, 3, 2), (4, 5, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5), (0, 1, 5, 4), (2, 3, 7, 6)]
+    centre = [sum(p[a] for p in points) / 8.0 for a in range(3)]
+    triangles = []
+    for q in quads:
+        for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+            a, b, c = (points[i] for i in tri)
+            outward = dot(cross(sub(b, a), sub(c, a)), sub(a, centre)) > 0.0
+            triangles.append(list(tri) if outward else [tri[0], tri[2], tri[1]])
+    return triangles
+
+
+def washer():
+    r0, r1, r2 = 14.0, 16.0, 18.0
+    near, far = -10.0, 10.0
+    angle = math.pi / 18.0
+    speed = math.radians(25.0)
+    rot = lambda v, t: [v[0] * math.cos(t) - v[1] * math.sin(t), v[0] * math.sin(t) + v[1] * math.cos(t), 0.0]
+    at = lambda z, r, u: [r * u[0], r * u[1], z]
+    shapes = []
+    u1 = [1.0, 0.0, 0.0]
+    for i in range(36):
+        u2 = [1.0, 0.0, 0.0] if i == 35 else rot(u1, angle)
+        a1, a2 = rot(u1, -0.1 * angle), rot(u2, 0.1 * angle)
+        points = [at(near, r1, a1), at(near, r2, a1), at(near, r1, a2), at(near, r2, a2),
+                  at(far, r1, a1), at(far, r2, a1), at(far, r1, a2), at(far, r2, a2)]
+        shapes.append({"type": "hull", "vertices": [vec(p) for p in points], "triangles": hexahedron_triangles(points),
+                       "friction_static": FRICTION, "friction_kinetic": FRICTION})
+        if i % 9 == 0:
+            points = [at(near, r0, u1), at(near, r1, u1), at(near, r0, u2), at(near, r1, u2),
+                      at(far, r0, u1), at(far, r1, u1), at(far, r0, u2), at(far, r1, u2)]
+            shapes.append({"type": "hull", "vertices": [vec(p) for p in points],
+                           "triangles": hexahedron_triangles(points),
+                           "friction_static": FRICTION, "friction_kinetic": FRICTION})
+        u1 = u2
+    assert len(shapes) == 40
+    drum = {"name": "drum", "shapes": shapes, "kinematic": True, "position": [0, 21, 0], "color": [0.6, 0.6, 0.65],
+            "motion": {"pivot": [0, 21, 0], "angular_velocity": [0, 0, num(speed, 9)]}}
+    grid, a = 20, 0.2
+    bodies = [drum]
+    x = -2.0 * a * grid
+    for i in range(grid):
+        y = -2.0 * a * grid + 21.0
+        for j in range(grid):
+            z = -2.0 * a * grid
+            for k in range(grid):
+                bodies.append({"shape": {"type": "box", "extents": [2 * a, 2 * a, 2 * a]}, "density": 1000,
+                               "friction_static": FRICTION, "friction_kinetic": FRICTION, "position": vec((x, y, z)),
+                               "color": ROW_COLORS[(i + j + k) % 2]})
+                z += 4.0 * a
+            y += 4.0 * a
+        x += 4.0 * a
+    assert len(bodies) == 8001
+    head = {
+        "title": "Box3D benchmark washer: a drum of 40 hulls turning, tumbling 8000 cubes",
+        "world": world_block(1000, True),
+        "view": view_block([0, 24, 75], [0, 19, 0],
+                           "Box3D %s shared/benchmarks.c CreateWasher: a kinematic drum of 36 staves and 4 paddles "
+                           "(40 hulls, one compound body) turning at 25 degrees/s about its axis; 20 x 20 x 20 cubes "
+                           "of half extent 0.2, density 1000, friction 0.6, dt 1/60 s, sleep on, 1000 steps; ground: "
+                           "the plane y = 0 (Box3D: a static box 120 x 2 x 120 m, top at y = 0)" % BOX3D_COMMIT[:7]),
+        "planes": [ground_plane()],
+    }
+    write_scene("washer.json", head, bodies)
+
+
 if __name__ == "__main__":
+    washer()
     large_pyramid()
     many_pyramids()
     joint_grid()

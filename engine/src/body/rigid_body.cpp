@@ -2,12 +2,41 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/Eigenvalues>
 
 #include "rbsim/math/rotation.h"
 
 namespace rbsim {
+
+namespace {
+
+// A compound's children: each convex or round (a grid body is one body of its own), posed by a
+// rotation, with a display mesh, and few enough to name a pair of them in a contact key.
+void checkChildren(const BodyDef& def) {
+  if (def.children.size() > static_cast<std::size_t>(kMaxCompoundChildren)) {
+    throw std::invalid_argument("body '" + def.name + "': " + std::to_string(def.children.size()) +
+                                " shapes; expected at most " + std::to_string(kMaxCompoundChildren));
+  }
+  if (!def.children.empty() && (def.sdf || def.implicit || def.fracture)) {
+    throw std::invalid_argument("body '" + def.name + "': a compound body cannot have a grid, an implicit solid or a fracture pattern");
+  }
+  for (std::size_t i = 0; i < def.children.size(); ++i) {
+    const ChildShape& c = def.children[i];
+    const std::string where = "body '" + def.name + "', shape " + std::to_string(i) + ": ";
+    if (c.shape.type == ShapeType::Mesh) throw std::invalid_argument(where + "a non-convex mesh cannot be a compound's part");
+    if (!c.mesh) throw std::invalid_argument(where + "no display mesh");
+    if (!c.position.allFinite()) throw std::invalid_argument(where + "position must be finite");
+    if (!(std::abs(c.orientation.norm() - 1.0) <= kRotationTolerance)) {
+      throw std::invalid_argument(where + "orientation must be a unit quaternion");
+    }
+    const std::string material = checkMaterial(c.material);
+    if (!material.empty()) throw std::invalid_argument(where + material);
+  }
+}
+
+}  // namespace
 
 RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), isKinematic_(def.isKinematic), mass_(def.mass) {
   if (def.isStatic && def.isKinematic) {
@@ -24,6 +53,9 @@ RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), isKinematic_
   const std::string& name = cold->name;
   if (!cold->mesh) throw std::invalid_argument("body '" + name + "': no mesh");
   cold->shape = def.shape ? *def.shape : shapeOfMesh(*cold->mesh, def.sdf != nullptr);
+  cold->filter = def.filter;
+  checkChildren(def);
+  cold->children = def.children;
   if (!(mass_ > 0.0) || !std::isfinite(mass_)) {
     throw std::invalid_argument("body '" + name + "': mass must be a positive finite number");
   }

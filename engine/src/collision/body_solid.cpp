@@ -10,25 +10,60 @@
 namespace rbsim {
 
 BodySolid bodySolidOf(const BodyDef& def) {
+  if (!def.children.empty()) {
+    auto children = std::make_shared<std::vector<ChildSolid>>();
+    BodySolid out{FacePlanes{}, nullptr, def.surfaceSamples, std::nullopt, nullptr, nullptr, nullptr};
+    for (const ChildShape& c : def.children) {
+      ChildSolid part;
+      part.rotation = c.orientation.toRotationMatrix();
+      part.position = c.position;
+      if (c.shape.isRound()) {
+        part.round = c.shape;
+      } else {
+        part.convex = facePlanesOf(*c.mesh);
+      }
+      out.convex.boundingRadius = std::max(out.convex.boundingRadius, c.position.norm() + c.shape.boundingRadius());
+      children->push_back(std::move(part));
+    }
+    out.children = std::move(children);
+    return out;
+  }
   // A sphere's or capsule's display mesh is inscribed in it: the exact surface answers instead,
   // and the faces of its 48 x 24 tessellation are never asked for (finding them took 2 ms a
   // ball, most of what adding one cost).
   if (def.shape && def.shape->isRound()) {
-    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, *def.shape, nullptr, nullptr};
+    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, *def.shape, nullptr, nullptr, nullptr};
     out.convex.boundingRadius = def.shape->boundingRadius();
     return out;
   }
   // A body with a grid is asked through it (querySurface): its faces would never be read, and
   // finding them took 44% of loading a 600,000-triangle implicit torus (issue 37).
   if (def.sdf) {
-    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, std::nullopt, def.implicit, def.triangles};
+    BodySolid out{FacePlanes{}, def.sdf, def.surfaceSamples, std::nullopt, def.implicit, def.triangles, nullptr};
     for (const Vec3& p : def.mesh->vertices) out.convex.boundingRadius = std::max(out.convex.boundingRadius, p.norm());
     return out;
   }
-  return BodySolid{facePlanesOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt, def.implicit, def.triangles};
+  return BodySolid{facePlanesOf(*def.mesh), def.sdf, def.surfaceSamples, std::nullopt, def.implicit, def.triangles, nullptr};
 }
 
 SurfaceQuery querySurface(const BodySolid& shape, const Vec3& local) {
+  if (shape.children) {
+    // The union of the children: the least of their signed distances, with that child's normal.
+    SurfaceQuery nearest{std::numeric_limits<double>::infinity(), Vec3::UnitY()};
+    for (const ChildSolid& child : *shape.children) {
+      const Vec3 inChild = child.rotation.transpose() * (local - child.position);
+      SurfaceQuery q;
+      if (child.round) {
+        const auto [distance, normal] = child.round->roundDistance(inChild);
+        q = {distance, normal};
+      } else {
+        const auto [face, distance] = nearestFace(child.convex, inChild);
+        q = {distance, child.convex.normals[face]};
+      }
+      if (q.distance < nearest.distance) nearest = {q.distance, child.rotation * q.normal};
+    }
+    return nearest;
+  }
   if (shape.round) {
     const auto [distance, normal] = shape.round->roundDistance(local);
     return {distance, normal};

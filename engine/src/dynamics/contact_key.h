@@ -8,13 +8,14 @@
 
 namespace rbsim {
 
-// Kind (1 bit), the manifold's part of the pair (7 bits), then a and b (28 bits each: 268 M
-// bodies, far beyond what a step can hold): the key under which a manifold's impulses are kept
-// for the next step's warm start.
+// Kind (1 bit), the manifold's part of the pair (15 bits: a compound's pair of children,
+// contact.h compoundPart), then a and b (24 bits each: 16.7 M bodies, beyond what a step can
+// hold): the key under which a manifold's impulses are kept for the next step's warm start.
 inline std::uint64_t pairKey(const Contact& c) {
   const std::uint64_t kind = c.kind == Contact::Kind::PlaneBody ? 1u : 0u;
-  return (kind << 63) | (static_cast<std::uint64_t>(c.part & 0x7f) << 56) | (static_cast<std::uint64_t>(c.a) << 28) |
-         static_cast<std::uint64_t>(c.b);
+  constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << 24) - 1;
+  return (kind << 63) | (static_cast<std::uint64_t>(c.part & 0x7fff) << 48) |
+         ((static_cast<std::uint64_t>(c.a) & kIndexMask) << 24) | (static_cast<std::uint64_t>(c.b) & kIndexMask);
 }
 
 // Two unit tangents completing the normal to a right-handed basis.

@@ -30,6 +30,16 @@ struct SolverInput {
   bool addGravity = true;
 };
 
+// The material of a contact: the two sides' (a compound body's touching child's), combined.
+inline Material contactMaterial(const SolverInput& input, const Contact& contact) {
+  const auto of = [&](std::size_t body, std::uint16_t child) -> const Material& {
+    const RigidBody& b = input.bodies[body];
+    return b.isCompound() ? b.children()[child].material : input.bodyMaterials[body];
+  };
+  const bool plane = contact.kind == Contact::Kind::PlaneBody;
+  return combine(of(contact.b, contact.childB), plane ? input.planeMaterials[contact.a] : of(contact.a, contact.childA));
+}
+
 class ContactSolver {
  public:
   // The two orders of World::step's middle stages.

@@ -293,8 +293,6 @@ void PgsSolver::remember(const std::vector<Contact>& contacts) {
 void PgsSolver::solve(const SolverInput& input) {
   std::vector<RigidBody>& bodies = input.bodies;
   const std::vector<Contact>& contacts = input.contacts;
-  const std::vector<Material>& bodyMaterials = input.bodyMaterials;
-  const std::vector<Material>& planeMaterials = input.planeMaterials;
   const Settings& settings = input.settings;
   bodies_.assign(1, SolverBody{});
   velocities_.assign(1, Velocity{});
@@ -306,8 +304,7 @@ void PgsSolver::solve(const SolverInput& input) {
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     const Contact& contact = contacts[c];
     const bool plane = contact.kind == Contact::Kind::PlaneBody;
-    const Material material =
-        combine(bodyMaterials[contact.b], plane ? planeMaterials[contact.a] : bodyMaterials[contact.a]);
+    const Material material = contactMaterial(input, contact);
     // A sleeping pair receives nothing (World wakes the sleeping side of a pair with an awake one).
     const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
     if (contact.manifold.count > 0 && awake) buildPatch(bodies, contact, c, material, settings);

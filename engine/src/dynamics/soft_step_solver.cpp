@@ -90,13 +90,14 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     const double separation = -m.points[i].depth;
     // A round side's surface point lies r - depth / 2 from its core along the normal
     // (collision/narrowphase/shape_pairs.h puts the point midway between the surfaces).
-    const auto roundOffset = [&](int slot) {
+    const auto roundOffset = [&](int slot, std::uint16_t child) {
       if (slot == 0) return 0.0;
-      const Shape& shape = bodies[sims_[slot].body].shape();
+      const RigidBody& body = bodies[sims_[slot].body];
+      const Shape& shape = body.isCompound() ? body.children()[child].shape : body.shape();
       return shape.isRound() ? shape.radius + 0.5 * separation : 0.0;
     };
-    f.roundA = roundOffset(c.a) * n;
-    f.roundB = -roundOffset(c.b) * n;
+    f.roundA = roundOffset(c.a, contact.childA) * n;
+    f.roundB = -roundOffset(c.b, contact.childB) * n;
     // The ground's slot never moves, so its anchors are their own body-frame coordinates.
     f.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - f.roundA - xA));
     f.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - f.roundB - xB));
@@ -398,8 +399,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
     const int b = slotOfBody_[contact.b], a = plane ? 0 : slotOfBody_[contact.a];
     if (a == 0 && b == 0) continue;  // asleep, or static against static
     if (sims_[a].inverseMass == 0.0 && sims_[b].inverseMass == 0.0) continue;  // kinematic against static
-    const Material material =
-        combine(input.bodyMaterials[contact.b], plane ? input.planeMaterials[contact.a] : input.bodyMaterials[contact.a]);
+    const Material material = contactMaterial(input, contact);
     prepare(bodies, contact, i, material, settings);
   }
 

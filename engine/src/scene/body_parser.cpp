@@ -18,6 +18,7 @@
 #include "geometry/surface_samples.h"
 #include "geometry/triangle_bvh.h"
 #include "rbsim/mass/mass_model.h"
+#include "scene/compound_parser.h"
 #include "scene/fracture_parser.h"
 #include "scene/implicit_parser.h"
 #include "scene/input_ranges.h"
@@ -308,7 +309,10 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
       scene.files.push_back((std::filesystem::path(baseDir) / file->get<std::string>()).lexically_normal().string());
     }
   }
-  if (const BodyDef* built = key.empty() ? nullptr : shapes->find(key)) {
+  if (b.has("shapes")) {
+    parseCompoundShapes(b, def);
+    checkMassScale(b, def);
+  } else if (const BodyDef* built = key.empty() ? nullptr : shapes->find(key)) {
     // The same keys were built and checked before: share what they made (pointers, not copies).
     def.mesh = built->mesh;
     def.fileFrame = built->fileFrame;
@@ -357,9 +361,18 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
   def.isKinematic = b.boolean("kinematic", false);
   if (def.isStatic && def.isKinematic) b.fail("kinematic", "a body is static or kinematic, not both");
   def.material = parseMaterial(b);
+  if (b.has("filter")) {
+    if (!def.children.empty()) b.fail("filter", "a compound body's filters are its shapes'; expected \"filter\" in each");
+    def.filter = parseFilter(b);
+  }
+  if (!def.children.empty() && (b.has("restitution") || b.has("friction_static") || b.has("friction_kinetic"))) {
+    b.fail(b.has("restitution") ? "restitution" : b.has("friction_static") ? "friction_static" : "friction_kinetic",
+           "a compound body's materials are its shapes'; expected the key in each");
+  }
   if (def.isStatic && (def.velocity != Vec3::Zero() || def.angularVelocity != Vec3::Zero())) {
     b.fail(def.velocity != Vec3::Zero() ? "velocity" : "angular_velocity", "a static body cannot move; expected zero");
   }
+  if (b.has("fracture") && !def.children.empty()) b.fail("fracture", "a compound body does not break; expected one \"shape\"");
   if (b.has("fracture")) def.fracture = parseFracture(b, def);
   scene.bodies.push_back(def);
   scene.inertiaMethods.emplace_back(inertiaMethodName(method));
@@ -405,6 +418,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     if (isStatic && (event.velocity || event.angularVelocity)) p.fail("velocity", "a static body cannot move");
     scene.poseEvents.push_back(event);
   }
+  if (b.has("motion")) parseMotion(b, index, scene);
   for (const JsonObject& s : b.objectArray("springs", {"anchor", "point", "stiffness", "rest_length", "damping"})) {
     if (forcesIgnored) b.fail("springs", ignoredBecause);
     Spring spring;

@@ -14,7 +14,7 @@ namespace rbsim::scene_detail {
 inline constexpr std::initializer_list<const char*> kBodyKeys = {
     "name", "shape", "mass", "density", "inertia", "position", "orientation", "velocity",
     "angular_velocity", "color", "static", "kinematic", "forces", "set_pose", "springs", "restitution",
-    "friction_static", "friction_kinetic", "fracture", "sdf"};
+    "friction_static", "friction_kinetic", "fracture", "sdf", "shapes", "filter", "motion"};
 
 // The material keys of a body or a plane ("restitution", "friction_static", "friction_kinetic"),
 // each defaulting to Material's.
@@ -62,5 +62,9 @@ void parsePlanes(const JsonObject& root, Scene& scene);
 //            "angular_speed": [lo, hi]}, ...]
 // Each block's template is parsed once (through `shapes`, when given) and its bodies copy it.
 void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
+inline constexpr std::initializer_list<const char*> kSpawnKeys = {
+    "count", "seed", "name", "body", "region", "speed", "angular_speed", "random_orientation", "period", "start", "end"};
+// One spawn block; `spawnedVertices` counts the vertices of every block so far (a budget).
+void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices);
 
 }  // namespace rbsim::scene_detail

@@ -1,6 +1,7 @@
 #include "rbsim/world/systems.h"
 #include "rbsim/scene/scene.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <cmath>
 #include <filesystem>
@@ -43,10 +44,16 @@ void parseView(const JsonObject& root, Scene& scene) {
 }
 
 void checkWorkBudget(const JsonObject& root, const Scene& scene) {
-  const double work = static_cast<double>(scene.bodies.size()) * static_cast<double>(scene.stepCount());
+  // Spawners count with every body they will have added by the end (none removed: a bound).
+  double bodies = static_cast<double>(scene.bodies.size());
+  for (const SpawnerDef& s : scene.spawners) {
+    const double span = std::min(s.end, scene.duration) - s.start;
+    if (span > 0.0) bodies += s.count * std::ceil(span / s.period);
+  }
+  const double work = bodies * static_cast<double>(scene.stepCount());
   if (work <= kMaxBodySteps) return;
   std::ostringstream problem;
-  problem << scene.bodies.size() << " bodies x " << scene.stepCount() << " steps = " << work
+  problem << bodies << " bodies x " << scene.stepCount() << " steps = " << work
           << " body-steps, about " << work * kSecondsPerBodyStep / 3600.0 << " hours at the "
           << kSecondsPerBodyStep * 1e6 << " us a body-step a pile of boxes costs; the limit is " << kMaxBodySteps
           << " (about a day): expected fewer steps or bodies";
@@ -61,7 +68,8 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "particles", "soft_bodies", "planar", "joints"});
+  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "kill_volume", "particles",
+                                                 "soft_bodies", "planar", "joints"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -72,7 +80,13 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
   scene_detail::parseSpawns(root, baseDir, scene, &shapes);
   const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };
-  if (scene.bodies.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies") && !root.has("planar")) {
+  if (root.has("kill_volume")) {
+    const JsonObject k = root.object("kill_volume", {"min", "max"});
+    scene.killVolume.min = k.boundedVec3("min", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
+    scene.killVolume.max = k.boundedVec3("max", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
+    if (!(scene.killVolume.min.array() < scene.killVolume.max.array()).all()) k.fail("max", "expected every component > min's");
+  }
+  if (scene.bodies.empty() && scene.spawners.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies") && !root.has("planar")) {
     throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, particles, soft bodies or a planar world)");
   }
   std::unordered_map<std::string, std::size_t> names;
@@ -121,6 +135,9 @@ World buildWorld(const Scene& scene) {
   }
   for (const ScriptedForce& f : scene.forces) world.addForce(f);
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
+  for (const KinematicMotion& m : scene.motions) world.setKinematicMotion(m);
+  for (const SpawnerDef& s : scene.spawners) world.addSpawner(s);
+  if (!scene.killVolume.empty()) world.setKillVolume(scene.killVolume);
   for (const Spring& s : scene.springs) world.addSpring(s);
   for (const JointDef& j : scene.joints) world.addJoint(j);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);

@@ -200,11 +200,26 @@ BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, co
   scene.duration = std::numeric_limits<double>::infinity();
   scene_detail::parseBody(b, baseDir, scene);
   scene_detail::parseScripts(b, 0, scene);
-  BodyBlock block{scene.bodies.front(), scene.inertiaMethods.front(), std::move(scene.forces), std::move(scene.poseEvents), std::move(scene.springs)};
+  BodyBlock block{scene.bodies.front(), scene.inertiaMethods.front(), std::move(scene.forces), std::move(scene.poseEvents), std::move(scene.springs),
+                   std::move(scene.motions)};
   for (ScriptedForce& f : block.forces) f.body = sceneBodyId(index);
   for (PoseEvent& e : block.poseEvents) e.body = sceneBodyId(index);
   for (Spring& s : block.springs) s.body = sceneBodyId(index);
+  for (KinematicMotion& m : block.motions) m.body = sceneBodyId(index);
   return block;
+}
+
+SpawnerDef parseSpawnerBlock(const nlohmann::json& block, const std::string& file, const std::string& path,
+                             const std::string& baseDir, const Settings& settings) {
+  const JsonObject s(block, file, path, scene_detail::kSpawnKeys);
+  if (!s.has("period")) s.fail("period", "expected the time between bursts [s] (a spawner adds bodies while the World steps)");
+  Scene scene;
+  scene.file = file;
+  scene.settings = settings;
+  scene.duration = std::numeric_limits<double>::infinity();
+  double vertices = 0.0;
+  scene_detail::parseSpawn(s, baseDir, scene, nullptr, vertices);
+  return scene.spawners.at(0);
 }
 
 ScriptedForce parseForceBlock(const nlohmann::json& force, const std::string& file, const std::string& path,

@@ -1,11 +1,14 @@
 // "spawn" blocks: many bodies from one template, with positions, velocities and orientations
 // drawn from a seeded generator so that a scene file describes a reproducible crowd.
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
 
 #include "rbsim/math/uniform_random.h"
+#include "rbsim/world/spawner.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
 
@@ -40,10 +43,31 @@ std::pair<double, double> range(const JsonObject& o, const char* key, const char
 
 void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
   double spawnedVertices = 0.0;  // over every block so far
-  for (const JsonObject& s : root.objectArray("spawn", {"count", "seed", "name", "body", "region", "speed",
-                                                        "angular_speed", "random_orientation"})) {
+  for (const JsonObject& s : root.objectArray("spawn", kSpawnKeys)) parseSpawn(s, baseDir, scene, shapes, spawnedVertices);
+}
+
+void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices) {
+  {
     const int count = s.positiveInt("count", 1);
     if (count > kMaxSpawnCount) s.fail("count", "expected at most " + std::to_string(kMaxSpawnCount) + " bodies per block");
+    // With a period the block spawns `count` bodies at start, start + period, ... while the World
+    // steps (world/spawner.h); without, all of them at load.
+    const bool periodic = s.has("period");
+    const double period = periodic ? s.positiveNumber("period", 1.0) : 0.0;
+    const double start = s.number("start", 0.0);
+    if (!(start >= 0.0)) s.fail("start", "expected a time >= 0 s");
+    const double end = s.number("end", std::numeric_limits<double>::infinity());
+    if (!(end > start)) s.fail("end", "expected a time after start");
+    if (!periodic && (s.has("start") || s.has("end"))) s.fail(s.has("start") ? "start" : "end", "only a block with a \"period\" spawns over time");
+    // Bursts within the run: what the block adds in all, held to the same budget as one at load.
+    const double span = std::min(end, scene.duration) - start;
+    // (A World stepped without end, from Python, holds each burst to it.)
+    const double bursts = !periodic || !std::isfinite(span) ? 1.0 : span > 0.0 ? std::ceil(span / period) : 0.0;
+    if (static_cast<double>(count) * bursts > kMaxSpawnCount) {
+      s.fail("period", std::to_string(count) + " bodies every " + shortNumber(period) + " s for " + shortNumber(span) +
+                           " s add " + shortNumber(count * bursts) + " bodies; expected at most " +
+                           std::to_string(kMaxSpawnCount) + " (a longer period, fewer bodies, or an end)");
+    }
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
     const std::string prefix = s.string("name", "spawn");
     const JsonObject region = s.object("region", {"min", "max"});
@@ -65,10 +89,11 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs",
                                                "restitution", "friction_static", "friction_kinetic", "fracture", "sdf"});
     const std::size_t first = scene.bodies.size();
+    const std::size_t springsBefore = scene.springs.size();
     parseBody(body, baseDir, scene, shapes);
     parseScripts(body, first, scene);
     const BodyDef prototype = scene.bodies[first];
-    spawnedVertices += static_cast<double>(count) * static_cast<double>(prototype.mesh->vertices.size());
+    spawnedVertices += static_cast<double>(count) * bursts * static_cast<double>(prototype.mesh->vertices.size());
     if (spawnedVertices > kMaxSpawnedVertices) {
       s.fail("count", std::to_string(count) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
                           " vertices bring the spawned bodies to " + shortNumber(spawnedVertices) +
@@ -86,15 +111,32 @@ void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scen
     const std::size_t springsOfPrototype = scene.springs.size();
     scene.bodies.pop_back();
     scene.inertiaMethods.pop_back();
-
-    UniformRandom random(static_cast<std::uint64_t>(seed));
+    SpawnerDef spawner;
+    spawner.name = prefix;
+    spawner.prototype = prototype;
+    spawner.count = count;
+    spawner.start = start;
+    spawner.period = periodic ? period : 1.0;
+    spawner.end = end;
+    spawner.regionMin = lo;
+    spawner.regionMax = hi;
+    spawner.speedMin = speedLo;
+    spawner.speedMax = speedHi;
+    spawner.spinMin = spinLo;
+    spawner.spinMax = spinHi;
+    spawner.randomOrientation = randomOrientation;
+    spawner.seed = static_cast<std::uint64_t>(seed);
+    if (periodic) {
+      if (scene.springs.size() > springsBefore) s.fail("body", "a body spawned over time cannot have springs");
+      scene.spawners.push_back(spawner);
+      return;
+    }
+    // At load, the same draws a spawner's first burst makes (world/spawner.h drawSpawn).
+    Spawner draws;
+    draws.def = spawner;
+    draws.random = UniformRandom(spawner.seed);
     for (int k = 0; k < count; ++k) {
-      BodyDef def = prototype;
-      def.name = prefix + "_" + std::to_string(k);
-      def.position = Vec3(random.between(lo.x(), hi.x()), random.between(lo.y(), hi.y()), random.between(lo.z(), hi.z()));
-      if (randomOrientation) def.orientation = random.rotation() * prototype.orientation;
-      def.velocity = random.between(speedLo, speedHi) * random.direction();
-      def.angularVelocity = random.between(spinLo, spinHi) * random.direction();
+      const BodyDef def = drawSpawn(draws);
       const std::size_t index = scene.bodies.size();
       scene.bodies.push_back(def);
       scene.inertiaMethods.push_back(inertia);

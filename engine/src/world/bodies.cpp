@@ -17,6 +17,8 @@ namespace rbsim {
 namespace {
 
 constexpr std::uint32_t kNoSlot = UINT32_MAX;
+// The contact solvers key a pair's manifolds by 24-bit body indices (dynamics/contact_key.h).
+constexpr std::size_t kMaxBodies = (std::size_t{1} << 24) - 1;
 
 // Removes the entries naming the body `removed`; the others name theirs by id, which stays.
 template <typename T>
@@ -35,6 +37,9 @@ void swapRemove(std::vector<T>& items, std::size_t to) {
 }  // namespace
 
 BodyId World::addBody(const BodyDef& def) {
+  if (bodies_.size() >= kMaxBodies) {
+    throw std::invalid_argument("body '" + def.name + "': a World holds at most " + std::to_string(kMaxBodies) + " bodies");
+  }
   const std::string problem = checkMaterial(def.material);
   if (!problem.empty()) throw std::invalid_argument("body '" + def.name + "': " + problem);
   if (def.fracture) {
@@ -91,6 +96,7 @@ void World::destroyBody(BodyId id) {
   removeNaming(forces_, id);
   removeNaming(springs_, id);
   removeNaming(pendingEvents_, id);
+  removeNaming(motions_, id);
   // A joint goes with either of its bodies; its other body wakes to fall free.
   for (const Joint& joint : joints_) {
     const bool names = joint.a == removed || joint.b == removed;

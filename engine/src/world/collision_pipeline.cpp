@@ -13,6 +13,7 @@
 #include "collision/narrowphase/sdf_contact.h"
 #include "shapes/implicit_shape.h"
 #include "collision/narrowphase/shape_pairs.h"
+#include "world/compound_contacts.h"
 #include "world/continuous_collision.h"
 #include "rbsim/integrate/simulation_error.h"
 #include "rbsim/math/parallel.h"
@@ -42,6 +43,7 @@ bool aabbNearPlane(const Aabb& box, const Plane& plane, double margin) {
 // The body's bounding box where it is: a round shape's exact one (its display mesh is inscribed
 // in it), the vertices' for the others, whose shape is the hull of those vertices.
 Aabb boundsOf(const RigidBody& body) {
+  if (body.isCompound()) return compoundBounds(body);
   if (!body.shape().isRound()) return Aabb::of(body.worldVertices());
   const auto [lo, hi] = body.shape().worldBounds(body.rotation(), body.position());
   return {lo, hi};
@@ -108,12 +110,15 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       asleep_(other.asleep_),
       pairSlots_(other.pairSlots_),
       planeSlots_(other.planeSlots_),
-      sdfPair_(other.sdfPair_),
+      later_(other.later_),
+      compoundSlots_(other.compoundSlots_),
+      compoundPlaneSlots_(other.compoundPlaneSlots_),
+      compoundWork_(other.compoundWork_),
       impacts_(other.impacts_),
       log_(other.log_) {}
 
 void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const BodySolid& solid) {
-  hasGrid_[index] = solid.sdf ? 1 : 0;
+  hasGrid_[index] = solid.sdf || body.isCompound() ? 1 : 0;
   gap_[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;
   double radius = 0.0;
   Aabb local;
@@ -125,6 +130,10 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const 
     radius = body.shape().boundingRadius();
     const auto [lo, hi] = body.shape().worldBounds(Mat3::Identity(), Vec3::Zero());
     local = {lo, hi};
+  }
+  if (body.isCompound()) {  // its children, not their display meshes
+    radius = compoundRadius(body);
+    local = compoundBounds(body);
   }
   radius_[index] = radius;
   thickness_[index] = local.extents().minCoeff();
@@ -301,8 +310,8 @@ void CollisionPipeline::ignorePair(std::size_t a, std::size_t b) {
   ignoredSorted_ = false;
 }
 
-bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
-                                    const std::vector<BodySolid>& shapes, double time, Contact& out) {
+CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
+                                                       const std::vector<BodySolid>& shapes, double time, Contact& out) {
   out.manifold.count = 0;
   // Body indices, the lower first (a destroyed body's index goes to the last body, whose proxy id
   // stays as it was).
@@ -310,28 +319,33 @@ bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<
   if (pair.a > pair.b) std::swap(pair.a, pair.b);
   if (!ignored_.empty() &&
       std::binary_search(ignored_.begin(), ignored_.end(), (std::uint64_t{pair.a} << 32) | std::uint64_t{pair.b})) {
-    return false;
+    return Later::Nothing;
   }
   const RigidBody& a = bodies[pair.a];
   const RigidBody& b = bodies[pair.b];
+  // A compound's children are filtered one by one (compound_contacts.h).
+  const bool compound = a.isCompound() || b.isCompound();
+  if (!compound && !shouldCollide(a.filter(), b.filter())) return Later::Nothing;
   if (!a.awake() && !b.awake()) {
     // Both asleep: the contact they fell asleep with (Box2D keeps a sleeping set's contacts,
     // solver_set.c), so that an island woken this step has its inner contacts in place; without
     // them each body it woke fell a step unsupported, and sleep cost a 4000-box pile time.
     const bool grid = shapes[pair.a].sdf || shapes[pair.b].sdf;  // several manifolds: left out, as before
+    if (compound) return Later::Compound;
     if (!grid) kept(Contact::Kind::BodyBody, pair.a, pair.b, out);
-    return false;
+    return Later::Nothing;
   }
   // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
   // K = 0), so no impulse could separate them.
-  if (!a.isDynamic() && !b.isDynamic()) return false;
-  if (shapes[pair.a].sdf || shapes[pair.b].sdf) return true;
+  if (!a.isDynamic() && !b.isDynamic()) return Later::Nothing;
+  if (shapes[pair.a].sdf || shapes[pair.b].sdf) return Later::Grid;
+  if (compound) return Later::Compound;
   const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
   if (a.shape().isRound() || b.shape().isRound()) {
     const ContactManifold m = collideRoundPair(posed(a), posed(b), margin);
     if (settings_.logQueries) log_.record(summarize(QueryKind::Round, pair.a, pair.b, m, 0.0, time));
     out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, m};
-    return false;
+    return Later::Nothing;
   }
   std::optional<OrientedBox> boxA, boxB;
   if (a.shape().type == ShapeType::Box && b.shape().type == ShapeType::Box) {
@@ -351,7 +365,7 @@ bool CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<
     log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold, c.distance, time));
   }
   out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold};
-  return false;
+  return Later::Nothing;
 }
 
 std::uint64_t CollisionPipeline::keptKey(Contact::Kind kind, std::size_t a, std::size_t b) {
@@ -366,6 +380,14 @@ void CollisionPipeline::kept(Contact::Kind kind, std::size_t a, std::size_t b, C
   if (it != asleep_.end() && it->first == key) out = previous_[it->second];
 }
 
+void CollisionPipeline::keptAll(Contact::Kind kind, std::size_t a, std::size_t b, std::vector<Contact>& out) const {
+  const std::uint64_t key = keptKey(kind, a, b);
+  for (auto it = std::lower_bound(asleep_.begin(), asleep_.end(), std::make_pair(key, std::uint32_t{0}));
+       it != asleep_.end() && it->first == key; ++it) {
+    out.push_back(previous_[it->second]);
+  }
+}
+
 void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                                     const std::vector<Plane>& planes, double time) {
   previous_.swap(contacts_);
@@ -374,7 +396,8 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   for (std::size_t i = 0; i < previous_.size(); ++i) {
     const Contact& c = previous_[i];
     const bool plane = c.kind == Contact::Kind::PlaneBody;
-    if (c.part == 0 && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
+    const bool compound = bodies[c.b].isCompound() || (!plane && bodies[c.a].isCompound());
+    if ((c.part == 0 || compound) && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
       asleep_.emplace_back(keptKey(c.kind, c.a, c.b), static_cast<std::uint32_t>(i));
     }
   }
@@ -388,17 +411,22 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   // RigidBody::worldVertices() fills its body's cache on first use: filled here, one body per
   // item, so that the pairs below, which share bodies across threads, only read it.
   parallelFor(bodies.size(), threads, [&](std::size_t i) {
-    if (!bodies[i].shape().isRound()) bodies[i].worldVertices();
+    if (!bodies[i].shape().isRound() && !bodies[i].isCompound()) bodies[i].worldVertices();
   });
   const std::vector<ProxyPair>& pairs = broad_->pairs();
   pairSlots_.resize(pairs.size());
-  sdfPair_.assign(pairs.size(), 0);
+  later_.assign(pairs.size(), Later::Nothing);
   parallelFor(pairs.size(), threads, [&](std::size_t k) {
-    sdfPair_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k]) ? 1 : 0;
+    later_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k]);
   });
+  collideCompounds(pairs, bodies, threads);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    if (!sdfPair_[k]) {
+    if (later_[k] == Later::Nothing) {
       if (pairSlots_[k].manifold.count > 0) contacts_.push_back(pairSlots_[k]);
+      continue;
+    }
+    if (later_[k] == Later::Compound) {
+      contacts_.insert(contacts_.end(), compoundSlots_[k].begin(), compoundSlots_[k].end());
       continue;
     }
     ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[pairs[k].a]), static_cast<ProxyId>(bodyOfProxy_[pairs[k].b])};
@@ -419,17 +447,30 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   }
   const std::size_t n = bodies.size();
   planeSlots_.resize(planes.size() * n);
+  const CollisionFilter planeFilter;  // planes are in the default category and accept every one
+  compoundPlaneSlots_.resize(planes.size() * n);
   parallelFor(planes.size() * n, threads, [&](std::size_t k) {
     const std::size_t p = k / n, i = k % n;
     Contact& out = planeSlots_[k];
     out.manifold.count = 0;
     if (!bodies[i].isDynamic()) return;
+    const bool compound = bodies[i].isCompound();
+    if (compound) compoundPlaneSlots_[k].clear();
     if (!bodies[i].awake()) {  // the contact it fell asleep with, as for two sleeping bodies
-      kept(Contact::Kind::PlaneBody, p, i, out);
+      if (compound) {
+        keptAll(Contact::Kind::PlaneBody, p, i, compoundPlaneSlots_[k]);
+      } else {
+        kept(Contact::Kind::PlaneBody, p, i, out);
+      }
       return;
     }
     if (!aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
     const double margin = settings_.contactMargin + reach_[i];
+    if (compound) {
+      collidePlaneCompound(planes[p], p, bodies[i], i, margin, reach_[i] + kPlaneSupportSlack, compoundPlaneSlots_[k]);
+      return;
+    }
+    if (!shouldCollide(planeFilter, bodies[i].filter())) return;
     const bool round = bodies[i].shape().isRound();
     // An implicit body meets a plane with its samples on the exact surface, whose corners are
     // sharp; its display mesh's are bevelled.
@@ -443,9 +484,36 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     }
     out = {Contact::Kind::PlaneBody, p, i, 0, m};
   });
-  for (const Contact& c : planeSlots_) {
-    if (c.manifold.count > 0) contacts_.push_back(c);
+  for (std::size_t k = 0; k < planeSlots_.size(); ++k) {
+    if (planeSlots_[k].manifold.count > 0) contacts_.push_back(planeSlots_[k]);
+    if (bodies[k % n].isCompound()) {
+      contacts_.insert(contacts_.end(), compoundPlaneSlots_[k].begin(), compoundPlaneSlots_[k].end());
+    }
   }
+}
+
+void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
+                                         int threads) {
+  compoundWork_.clear();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (later_[k] == Later::Compound) compoundWork_.push_back(k);
+  }
+  if (compoundWork_.empty()) return;
+  if (compoundSlots_.size() < pairs.size()) compoundSlots_.resize(pairs.size());
+  parallelFor(compoundWork_.size(), threads, [&](std::size_t w) {
+    const std::size_t k = compoundWork_[w];
+    std::vector<Contact>& out = compoundSlots_[k];
+    out.clear();
+    ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[pairs[k].a]), static_cast<ProxyId>(bodyOfProxy_[pairs[k].b])};
+    if (pair.a > pair.b) std::swap(pair.a, pair.b);
+    const RigidBody& a = bodies[pair.a];
+    const RigidBody& b = bodies[pair.b];
+    if (!a.awake() && !b.awake()) {
+      keptAll(Contact::Kind::BodyBody, pair.a, pair.b, out);
+      return;
+    }
+    collideCompoundPair(a, pair.a, b, pair.b, settings_.contactMargin + reach_[pair.a] + reach_[pair.b], out);
+  });
 }
 
 }  // namespace rbsim

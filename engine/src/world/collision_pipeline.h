@@ -76,15 +76,22 @@ class CollisionPipeline {
 
  private:
   bool isFast(std::size_t body) const;
+  // What collidePair left for later: nothing, a pair with a grid (collided on the calling
+  // thread: it gives several manifolds), or a pair with a compound body (compoundSlots_).
+  enum class Later : char { Nothing, Grid, Compound };
   // The convex or round contact of candidate pair `proxies` into `out` (count 0: none, or a pair
-  // to skip); true when the pair has a grid and is left to collideSdfPair.
-  bool collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
+  // to skip), or what is left for later.
+  Later collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                    double time, Contact& out);
+  // The pairs collidePair left to the compound pass, on `threads` threads into compoundSlots_.
+  void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies, int threads);
   void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // radius_, thickness_, boxes_ of a body
   // The last step's contact of a sleeping pair (body and body, or plane and body) into `out`, if
   // it had one; asleep_ is keyed by keptKey.
   static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
   void kept(Contact::Kind kind, std::size_t a, std::size_t b, Contact& out) const;
+  // All of them, for a pair with a compound body (one contact per pair of children).
+  void keptAll(Contact::Kind kind, std::size_t a, std::size_t b, std::vector<Contact>& out) const;
 
   Settings settings_;
   std::unique_ptr<BroadPhase> broad_;
@@ -102,8 +109,9 @@ class CollisionPipeline {
   std::vector<double> reach_;
   std::vector<BodyState> start_;        // per body, before Integrate
   std::vector<char> fast_;              // per body: swept this step
-  // Per body: shaped by a grid. Continuous collision sweeps convex hulls, so it leaves such bodies
-  // and their partners alone (a hull would stop a body at a bowl's rim, above its cavity).
+  // Per body: shaped by a grid, or compound. Continuous collision sweeps convex hulls, so it leaves
+  // such bodies and their partners alone (a hull would stop a body at a bowl's rim, above its
+  // cavity, or at a table's hull, under its top).
   std::vector<char> hasGrid_;
   // Per body: how far its solid may reach beyond its display mesh's vertices [m] (an implicit
   // body's: a cell's diagonal), added to its box.
@@ -118,10 +126,14 @@ class CollisionPipeline {
   std::vector<Contact> previous_;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> asleep_;
   // Per candidate pair and per (plane, body): this step's contact, computed on any thread into its
-  // own slot and gathered in order (manifold.count 0: none). sdfPair_ marks pairs with a grid,
-  // which may give several manifolds and are collided on the calling thread.
+  // own slot and gathered in order (manifold.count 0: none). later_ marks the pairs collided
+  // after them.
   std::vector<Contact> pairSlots_, planeSlots_;
-  std::vector<char> sdfPair_;
+  std::vector<Later> later_;
+  // Per candidate pair and per (plane, body) with a compound body: its contacts, one per pair of
+  // children, computed on any thread into their own slot.
+  std::vector<std::vector<Contact>> compoundSlots_, compoundPlaneSlots_;
+  std::vector<std::size_t> compoundWork_;  // this step's pairs, then (plane, body) items, with a compound
   std::vector<Impact> impacts_;
   QueryLog log_;
 };

@@ -63,7 +63,19 @@ std::optional<WorldRayHit> rayCast(const World& world, const Vec3& origin, const
   for (std::size_t i = 0; i < world.bodies().size(); ++i) {
     const RigidBody& body = world.bodies()[i];
     std::optional<WorldRayHit> hit;
-    if (body.shape().type == ShapeType::Mesh) {
+    if (body.isCompound()) {
+      // Each child in its own frame, the nearest hit of them.
+      for (const ChildShape& child : body.children()) {
+        const Mat3 R = body.rotation() * child.orientation.toRotationMatrix();
+        const Vec3 localOrigin = R.transpose() * (origin - body.bodyToWorld(child.position));
+        const double limit = hit ? hit->distance : reach;
+        if (const std::optional<RayHit> local = rbsim::rayCast(child.shape, localOrigin, R.transpose() * d, limit)) {
+          hit = WorldRayHit{};
+          hit->distance = local->fraction;
+          hit->normal = R * local->normal;
+        }
+      }
+    } else if (body.shape().type == ShapeType::Mesh) {
       hit = meshHit(body, origin, d, reach);
     } else {
       // In the body's frame, p_local = R^T (p - x) (seed 004's p' = R p + x, inverted).

@@ -41,6 +41,7 @@ bool isFinite(const BodyState& s) {
 
 const char* stageName(Stage stage) {
   switch (stage) {
+    case Stage::SpawnAndRemove: return "spawn-and-remove";
     case Stage::ApplyPoseEvents: return "apply-pose-events";
     case Stage::AccumulateForces: return "accumulate-forces";
     case Stage::Integrate: return "integrate";
@@ -107,6 +108,11 @@ World::World(const World& other)
       islandRestingTime_(other.islandRestingTime_),
       joints_(other.joints_),
       pendingEvents_(other.pendingEvents_),
+      motions_(other.motions_),
+      spawners_(other.spawners_),
+      killVolume_(other.killVolume_),
+      spawnedNow_(other.spawnedNow_),
+      removedNow_(other.removedNow_),
       stepCount_(other.stepCount_),
       timeOrigin_(other.timeOrigin_),
       stepsAtOrigin_(other.stepsAtOrigin_),
@@ -201,11 +207,17 @@ void World::addPoseEvent(const PoseEvent& event) {
 void World::step() {
   const double t = time();
   stageClock_ = std::chrono::steady_clock::now();
+  spawnedNow_.clear();
+  removedNow_.clear();
+  runStage(Stage::SpawnAndRemove, !spawners_.empty() || !killVolume_.empty(), [&] { spawnAndRemove(); });
   const bool anyAwake = std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); });
   const std::uint64_t solveRunsBefore = stats_[static_cast<int>(Stage::SolveContacts)].runs;
   const bool anyForce = std::any_of(forces_.begin(), forces_.end(), [t](const ScriptedForce& f) { return isActive(f, t); });
-  const bool posed = runStage(Stage::ApplyPoseEvents, !pendingEvents_.empty() && pendingEvents_.front().time <= t,
-                              [&] { applyPoseEvents(); });
+  const bool posed = runStage(Stage::ApplyPoseEvents,
+                              !motions_.empty() || (!pendingEvents_.empty() && pendingEvents_.front().time <= t), [&] {
+                                applyPoseEvents();
+                                driveKinematicBodies();
+                              });
   // Gravity acts on every awake body; the Integrate pass adds it itself, sparing a pass over all
   // bodies, unless scripted forces or springs act: then AccumulateForces adds it before them, so
   // that F sums in the order it always has (and the result is bit for bit the same).

@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "rbsim/body/child_shape.h"
 #include "rbsim/body/material.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/math/types.h"
+#include "rbsim/shapes/collision_filter.h"
 #include "rbsim/shapes/shape.h"
 
 namespace rbsim {
@@ -50,6 +52,13 @@ struct BodyDef {
   // as shapeOfMesh does (a box's eight corners make a box, a body with a grid is a mesh, any
   // other mesh its convex hull), so a body built in C++ collides as the same body read from JSON.
   std::optional<Shape> shape;
+  // What the shape collides with (shapes/collision_filter.h); a compound's children have their own.
+  CollisionFilter filter;
+  // A compound body: its shapes in the body frame (body/compound_body.h builds one, with the mass
+  // properties summed about the centre of mass). Empty: the body is its one `shape`. A compound
+  // body's `mesh` is its children's display meshes together, and `shape` their convex hull, which
+  // only what has no use for the children reads (the continuous stage leaves compounds alone).
+  std::vector<ChildShape> children;
   // Set for a body that breaks into these pieces when a contact impulse exceeds the pattern's
   // threshold (seed 000 "Fracture"; World stage BreakBodies).
   std::shared_ptr<const FracturePattern> fracture;

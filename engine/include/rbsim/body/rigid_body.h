@@ -35,6 +35,10 @@ class alignas(64) RigidBody {
   bool isKinematic() const { return isKinematic_; }  // moves as prescribed (BodyDef::isKinematic)
   bool isDynamic() const { return !isStatic_ && !isKinematic_; }  // moved by forces and contacts
   const Shape& shape() const { return cold_->shape; }  // collision shape, body frame
+  const CollisionFilter& filter() const { return cold_->filter; }  // the shape's (BodyDef::filter)
+  // A compound body's shapes (BodyDef::children); empty for a body of one shape.
+  const std::vector<ChildShape>& children() const { return cold_->children; }
+  bool isCompound() const { return !cold_->children.empty(); }
 
   // State Y(t).
   const BodyState& state() const { return state_; }
@@ -128,6 +132,8 @@ class alignas(64) RigidBody {
     std::shared_ptr<const Mesh> mesh;
     Vec3 color = Vec3::Ones();
     Shape shape;
+    CollisionFilter filter;
+    std::vector<ChildShape> children;
     FileFrame fileFrame;
     BodyInertia inertia;  // what implicit-gyro and dlm read besides StepInputs' own fields
   };

@@ -17,6 +17,14 @@ namespace rbsim {
 struct ImplicitSolid;  // shapes/implicit_shape.h (private)
 class TriangleBvh;     // geometry/triangle_bvh.h (private)
 
+// One child of a compound body for point queries: its pose in the body frame and its solid.
+struct ChildSolid {
+  Mat3 rotation = Mat3::Identity();  // child frame to body frame
+  Vec3 position = Vec3::Zero();      // the child frame's origin, body frame [m]
+  FacePlanes convex;                 // a box's or hull's faces
+  std::optional<Shape> round;        // set for a round child
+};
+
 // What the World keeps per body for point queries: the face planes, and for a body of any shape
 // (a bowl, a torus) its signed distance grid and the surface points it tests against others.
 struct BodySolid {
@@ -26,6 +34,8 @@ struct BodySolid {
   std::optional<Shape> round;                        // set for a round shape: its exact surface
   std::shared_ptr<const ImplicitSolid> implicit;     // set for an implicit body: its exact solid
   std::shared_ptr<const TriangleBvh> triangles;      // set for a non-convex mesh body (BodyDef::triangles)
+  // Set for a compound body: its children, whose union is the solid (the nearest child answers).
+  std::shared_ptr<const std::vector<ChildSolid>> children;
 };
 BodySolid bodySolidOf(const BodyDef& def);
 

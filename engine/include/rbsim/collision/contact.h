@@ -42,9 +42,19 @@ struct Contact {
   enum class Kind { BodyBody, PlaneBody } kind = Kind::BodyBody;
   std::size_t a = 0, b = 0;
   // Which of the pair's manifolds (a body of any shape may touch another along several normals:
-  // collision/narrowphase/sdf_contact.h); part of the warm-start key.
-  std::uint8_t part = 0;
+  // collision/narrowphase/sdf_contact.h; a compound's children each touch on their own:
+  // compoundPart); part of the warm-start key, below 2^15.
+  std::uint16_t part = 0;
   ContactManifold manifold;
+  // The child shapes of a and b that touch (body/child_shape.h), whose materials the solvers
+  // combine; 0 for a body of one shape and for a plane.
+  std::uint16_t childA = 0, childB = 0;
 };
+
+// The part of a pair of compound children: distinct for every pair of children.
+inline std::uint16_t compoundPart(std::size_t childA, std::size_t childB) {
+  constexpr std::size_t kChildren = 128;  // body/child_shape.h kMaxCompoundChildren
+  return static_cast<std::uint16_t>(childA * kChildren + childB);
+}
 
 }  // namespace rbsim

@@ -40,6 +40,9 @@ struct Scene {
   std::vector<ScriptedForce> forces;
   std::vector<PoseEvent> poseEvents;
   std::vector<Spring> springs;
+  std::vector<KinematicMotion> motions;  // kinematic bodies' prescribed motions
+  std::vector<SpawnerDef> spawners;      // "spawn" blocks with a "period": bodies added while stepping
+  Aabb killVolume;                       // "kill_volume"; empty: none
   std::vector<JointDef> joints;  // ball and hinge joints (dynamics/joint.h)
   std::vector<Plane> planes;  // static, infinite
   std::vector<Material> planeMaterials;  // per plane

@@ -42,9 +42,16 @@ struct BodyBlock {
   std::vector<ScriptedForce> forces;  // each acting on `index`
   std::vector<PoseEvent> poseEvents;
   std::vector<Spring> springs;
+  std::vector<KinematicMotion> motions;  // at most one
 };
 BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, const std::string& path,
                          const std::string& baseDir, const Settings& settings, std::size_t index);
+
+// A spawn block (the keys of one entry of "spawn") with a "period": the spawner it describes, for a
+// World whose settings are `settings` (its default inertia method). Without "period" it is an
+// InputError: a World adds bodies now with addBody.
+SpawnerDef parseSpawnerBlock(const nlohmann::json& block, const std::string& file, const std::string& path,
+                             const std::string& baseDir, const Settings& settings);
 
 // A force block (the keys of one entry of a body's "forces") on body `index`, whose file axes
 // are `fileAxes` (FileFrame::axes); without "end" it acts for ever.

@@ -15,7 +15,9 @@
 #include "rbsim/body/material.h"
 #include "rbsim/dynamics/step_listener.h"
 #include "rbsim/body/body_id.h"
+#include "rbsim/world/kinematic_motion.h"
 #include "rbsim/world/scripts.h"
+#include "rbsim/world/spawner.h"
 #include "rbsim/world/spring.h"
 #include "rbsim/settings/settings.h"
 
@@ -29,7 +31,10 @@ struct WorldAccess;        // the internals tests read (engine/src/world/world_a
 // Stages of World::step, in order (as Box2D v3's b2SolverStageType): names for timing and for
 // skipping.
 enum class Stage : int {
-  ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step
+  SpawnAndRemove,    // bodies that left the kill volume are removed, spawners' due bursts added
+                     // (world/spawner.h); skipped when there are neither
+  ApplyPoseEvents,   // manual sets of x, R, v, omega due at this step, and the velocities of
+                     // kinematic bodies on a prescribed motion (world/kinematic_motion.h)
   AccumulateForces,  // scripted forces and springs (and gravity, when they act) into F and tau
   Integrate,         // the chosen integrator advances awake bodies (adding gravity when no other
                      // force acts), with soft step only those the solver did not; accumulators
@@ -97,6 +102,22 @@ class World {
   const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
+  // A kinematic body's prescribed motion, from the next step on; replaces the body's earlier one.
+  // Throws std::invalid_argument on a bad motion (checkKinematicMotion) or a body not kinematic.
+  void setKinematicMotion(const KinematicMotion& motion);
+  const std::vector<KinematicMotion>& kinematicMotions() const { return motions_; }
+  // Bodies born while the World steps: copies of def.prototype in bursts (world/spawner.h), from
+  // the step at or after def.start. Throws std::invalid_argument on a bad def (checkSpawner).
+  std::size_t addSpawner(const SpawnerDef& def);
+  const std::vector<Spawner>& spawners() const { return spawners_; }
+  // Bodies whose centre of mass is outside `volume` at the start of a step are destroyed (static
+  // ones too). An empty box removes the volume. Throws std::invalid_argument on a box with a NaN.
+  void setKillVolume(const Aabb& volume);
+  const Aabb& killVolume() const { return killVolume_; }
+  // What stage SpawnAndRemove did in the last step: the bodies it added (valid ids) and the ids
+  // of those it removed (stale now).
+  const std::vector<BodyId>& spawnedBodies() const { return spawnedNow_; }
+  const std::vector<BodyId>& removedBodies() const { return removedNow_; }
   std::size_t addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
   // A spring whose anchor is moved by hand (window mode drags a body by one, as Box2D's mouse
   // joint): wakes the body, as every manual change does. Throws on a bad index or anchor.
@@ -157,6 +178,8 @@ class World {
 
  private:
   void applyPoseEvents();
+  void driveKinematicBodies();  // world/kinematic_motion.cpp
+  void spawnAndRemove();        // world/spawning.cpp
   void accumulateForces(bool withGravity);  // scripted forces and springs, after gravity if asked
   void integrateBodies(bool withGravity);   // adds m g to F first if asked
   // The middle of step() in the solver's order (ContactSolver::Order).
@@ -202,6 +225,10 @@ class World {
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
   std::vector<Joint> joints_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
+  std::vector<KinematicMotion> motions_;  // at most one per body
+  std::vector<Spawner> spawners_;
+  Aabb killVolume_;                    // empty: none
+  std::vector<BodyId> spawnedNow_, removedNow_;  // stage SpawnAndRemove's, last step
   std::uint64_t stepCount_ = 0;
   double timeOrigin_ = 0.0;            // time() when the time step last changed [s]
   std::uint64_t stepsAtOrigin_ = 0;    // stepCount_ then
