@@ -11,19 +11,12 @@
 import json
 import math
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-
-
-def num(x, digits=6):
-    x = round(float(x), digits)
-    if x == 0.0:
-        return 0
-    return int(x) if x == int(x) else x
-
-
-def vec(v, digits=6):
-    return [num(c, digits) for c in v]
+sys.path.insert(0, os.path.join(HERE, "box3d"))
+sys.dont_write_bytecode = True  # no __pycache__ beside the scenes
+from make_box3d_scenes import num, vec, washer_drum_shapes  # noqa: E402  (the washer's drum, smaller)
 
 
 def write(name, scene):
@@ -87,8 +80,8 @@ def table_scene():
     return {
         "title": "Compound bodies and machinery: a table of five boxes, a hammer, a dumbbell, a turntable, a lift",
         "world": {"dt": 1 / 60, "duration": 8.0},
-        "view": {"camera": {"eye": [1.0, 4.2, 8.5], "target": [0.2, 0.6, 0], "fov_deg": 50}, "size": [1280, 720],
-                 "fps": 30, "axes": False, "contacts": True,
+        "view": {"camera": {"eye": [-0.3, 2.3, 4.6], "target": [-0.5, 0.5, 0], "fov_deg": 55}, "size": [1280, 720],
+                 "fps": 30, "axes": False, "contacts": False,
                  "caption": "one body, many shapes: the table stands on four legs, the hammer lands on its head, "
                             "the dumbbell rolls on its balls; the turntable and the lift carry boxes by friction; "
                             "the two violet balls share a negative group and pass through each other"},
@@ -97,48 +90,19 @@ def table_scene():
     }
 
 
-def hexahedron_triangles(points):
-    quads = [(0, 1, 3, 2), (4, 5, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5), (0, 1, 5, 4), (2, 3, 7, 6)]
-    centre = [sum(p[a] for p in points) / 8.0 for a in range(3)]
-    sub = lambda a, b: [a[i] - b[i] for i in range(3)]
-    cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-    dot = lambda a, b: sum(a[i] * b[i] for i in range(3))
-    triangles = []
-    for q in quads:
-        for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
-            a, b, c = (points[i] for i in tri)
-            outward = dot(cross(sub(b, a), sub(c, a)), sub(a, centre)) > 0.0
-            triangles.append(list(tri) if outward else [tri[0], tri[2], tri[1]])
-    return triangles
-
-
 def washer_scene():
-    # Box3D's CreateWasher at a quarter of its size: radii 3.5, 4, 4.5 m, 5 m deep, 36 staves of 10
-    # degrees (each a tenth short at both ends) and a paddle at every ninth.
-    r0, r1, r2, half_depth = 3.5, 4.0, 4.5, 2.5
+    # Box3D's CreateWasher at a quarter of its size: radii 3.5, 4, 4.5 m, 8 m deep, 36 staves of 10
+    # degrees (each a tenth short at both ends) and a paddle at every ninth; a static wall closes
+    # the back (Box3D's drum is open at both ends, 20 m deep for 16 m of boxes).
+    r0, r1, r2, half_depth = 3.5, 4.0, 4.5, 4.0
     centre_y = 5.0
-    angle = math.pi / 18.0
-    rot = lambda v, t: [v[0] * math.cos(t) - v[1] * math.sin(t), v[0] * math.sin(t) + v[1] * math.cos(t), 0.0]
-    at = lambda z, r, u: [r * u[0], r * u[1], z]
-    shapes = []
-    u1 = [1.0, 0.0, 0.0]
-    for i in range(36):
-        u2 = [1.0, 0.0, 0.0] if i == 35 else rot(u1, angle)
-        for inner, outer, a1, a2, take in ((r1, r2, rot(u1, -0.1 * angle), rot(u2, 0.1 * angle), True),
-                                           (r0, r1, u1, u2, i % 9 == 0)):
-            if not take:
-                continue
-            points = [at(-half_depth, inner, a1), at(-half_depth, outer, a1), at(-half_depth, inner, a2),
-                      at(-half_depth, outer, a2), at(half_depth, inner, a1), at(half_depth, outer, a1),
-                      at(half_depth, inner, a2), at(half_depth, outer, a2)]
-            shapes.append({"type": "hull", "vertices": [vec(p) for p in points],
-                           "triangles": hexahedron_triangles(points)})
-        u1 = u2
-    assert len(shapes) == 40
+    shapes = washer_drum_shapes(r0, r1, r2, -half_depth, half_depth)
     drum = {"name": "drum", "shapes": shapes, "kinematic": True, "position": [0, centre_y, 0],
             "color": [0.6, 0.62, 0.68],
             "motion": {"pivot": [0, centre_y, 0], "angular_velocity": [0, 0, num(math.radians(45.0), 9)]}}
-    bodies = [drum]
+    wall = {"name": "back_wall", "shape": {"type": "box", "extents": [10, 10, 0.4]}, "mass": 1, "static": True,
+            "position": [0, centre_y, -half_depth - 0.2], "color": [0.45, 0.47, 0.52]}
+    bodies = [drum, wall]
     colors = [[0.85, 0.45, 0.25], [0.3, 0.55, 0.9], [0.5, 0.75, 0.4]]
     n, spacing = 6, 0.8
     for i in range(n):
@@ -151,8 +115,8 @@ def washer_scene():
     return {
         "title": "A washer: a drum of 40 hulls turning about its axis, tumbling 216 boxes",
         "world": {"dt": 1 / 60, "duration": 10.0},
-        "view": {"camera": {"eye": [0, 6.0, 16.0], "target": [0, 5.0, 0], "fov_deg": 50}, "size": [1280, 720],
-                 "fps": 30, "axes": False,
+        "view": {"camera": {"eye": [0, 6.0, 19.0], "target": [0, 5.0, 0], "fov_deg": 50}, "size": [1280, 720],
+                 "fps": 30, "axes": False, "selected": "box100",
                  "caption": "Box3D's washer, a quarter of its size: one kinematic body of 36 staves and 4 paddles "
                             "turning at 45 degrees/s about its axis lifts the boxes and lets them fall"},
         "planes": [{"normal": [0, 1, 0], "point": [0, 0, 0]}],

@@ -25,6 +25,8 @@ struct ContactRow {
   std::int64_t body_a;   // row of body A in the state arrays, -1 when A is a plane
   std::int64_t body_b;   // row of body B
   std::int64_t plane;    // index of the plane A, -1 for two bodies
+  std::int64_t shape_a;  // which of a compound A's shapes touches (0 for a body of one shape, -1 for a plane)
+  std::int64_t shape_b;  // which of a compound B's shapes touches (0 for a body of one shape)
   double point[3];       // world frame [m], midway between the surfaces
   double normal[3];      // unit, from A towards B
   double depth;          // [m], > 0 overlapping, <= 0 apart (speculative, within the margin)
@@ -36,7 +38,7 @@ struct ContactRow {
 }  // namespace
 
 void bindContacts(py::class_<PyWorld>& c) {
-  PYBIND11_NUMPY_DTYPE(ContactRow, body_a, body_b, plane, point, normal, depth, normal_impulse, friction_impulse, awake);
+  PYBIND11_NUMPY_DTYPE(ContactRow, body_a, body_b, plane, shape_a, shape_b, point, normal, depth, normal_impulse, friction_impulse, awake);
   c.def(
       "contacts",
       [](const PyWorld& w) {
@@ -67,6 +69,8 @@ void bindContacts(py::class_<PyWorld>& c) {
             row->body_a = plane ? -1 : static_cast<std::int64_t>(contact.a);
             row->body_b = static_cast<std::int64_t>(contact.b);
             row->plane = plane ? static_cast<std::int64_t>(contact.a) : -1;
+            row->shape_a = plane ? -1 : static_cast<std::int64_t>(contact.childA);
+            row->shape_b = static_cast<std::int64_t>(contact.childB);
             for (int i = 0; i < 3; ++i) {
               row->point[i] = point.position[i];
               row->normal[i] = contact.manifold.normal[i];
@@ -82,7 +86,7 @@ void bindContacts(py::class_<PyWorld>& c) {
       },
       "contacts(self, /)\n--\n\n-> structured array, one row per contact point, sleeping pairs included: body_a (row in the "
       "state arrays, -1 for a plane), body_b, plane (-1 for two bodies), point (3), normal (3, from A towards B), "
-      "depth [m], normal_impulse [N s], friction_impulse (3) [N s] (NaN for a sleeping pair, not solved), awake");
+      "shape_a, shape_b (which of a compound body's shapes: 0 for a body of one shape, -1 for a plane), depth [m], normal_impulse [N s], friction_impulse (3) [N s] (NaN for a sleeping pair, not solved), awake");
   c.def_property_readonly(
       "contact_count",
       [](const PyWorld& w) {

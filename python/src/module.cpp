@@ -201,15 +201,33 @@ PYBIND11_MODULE(rbsim, m) {
              requireKeywordsOnly(args, "World.add_body()", "an entry of a scene's \"bodies\"");
              return w.addBody(givenKeywords(body));
            },
-           "add_body(self, /, *, shape, name=None, mass=None, density=None, inertia=None, position=(0.0, 0.0, 0.0), "
-           "orientation=None, velocity=(0.0, 0.0, 0.0), angular_velocity=(0.0, 0.0, 0.0), color=None, static=False, "
-           "kinematic=False, forces=None, set_pose=None, springs=None, restitution=0.0, friction_static=0.6, "
-           "friction_kinetic=0.5, fracture=None, sdf=None)\n--\n\n"
+           "add_body(self, /, *, shape=None, shapes=None, name=None, mass=None, density=None, inertia=None, "
+           "position=(0.0, 0.0, 0.0), orientation=None, velocity=(0.0, 0.0, 0.0), angular_velocity=(0.0, 0.0, 0.0), "
+           "color=None, static=False, kinematic=False, forces=None, set_pose=None, springs=None, restitution=0.0, "
+           "friction_static=0.6, friction_kinetic=0.5, fracture=None, sdf=None, filter=None, motion=None)\n--\n\n"
            "-> BodyId: the keys of an entry of a scene's \"bodies\" (docs/scene-format.md), e.g. "
-           "shape={\"type\": \"sphere\", \"radius\": 0.25}, mass=1, position=(0, 2, 0). None: the key left out (a "
-           "name body<N>, mass from density 1000 kg/m^3, the World's inertia method, no rotation, the default colour)")
+           "shape={\"type\": \"sphere\", \"radius\": 0.25}, mass=1, position=(0, 2, 0); a compound body gives "
+           "shapes=[{\"type\": \"box\", \"extents\": (1, 0.1, 1), \"position\": (0, 1, 0)}, ...] instead of shape; "
+           "filter={\"category\": 2, \"mask\": 5, \"group\": -1}; a kinematic body's motion={\"pivot\": p, "
+           "\"angular_velocity\": w} or {\"keyframes\": [{\"time\", \"position\", \"orientation\"}, ...], \"loop\": "
+           "False}. None: the key left out (a name body<N>, mass from density 1000 kg/m^3, the World's inertia method, "
+           "no rotation, the default colour)")
       .def("remove_body", [](PyWorld& w, const py::object& body) { w.removeBody(bodyArgument(body, "World.remove_body()")); },
            py::arg("body"), "remove_body(self, /, body)\n--\n\nthe last body takes the removed one's index; ids stay valid")
+      .def("add_spawner",
+           [](PyWorld& w, const py::args& args, const py::kwargs& spawn) {
+             requireKeywordsOnly(args, "World.add_spawner()", "an entry of a scene's \"spawn\"");
+             return w.addSpawner(givenKeywords(spawn));
+           },
+           "add_spawner(self, /, *, period, body, region, count=1, seed=1, name=None, speed=None, "
+           "angular_speed=None, random_orientation=True, start=0.0, end=None)\n--\n\n"
+           "-> int: the spawner's index; the keys of an entry of a scene's \"spawn\" with a period [s]: count bodies "
+           "like body (the keys of an entry of \"bodies\" but name and pose) every period from start until end, "
+           "drawn in region={\"min\": (x, y, z), \"max\": (x, y, z)} with speed=(lo, hi) [m/s] and angular_speed "
+           "(lo, hi) [rad/s] by a generator seeded with seed, named <name>_<n>")
+      .def_property("kill_volume", &PyWorld::killVolume, &PyWorld::setKillVolume,
+                    "(min x, min y, min z, max x, max y, max z) [m] or None: bodies whose centre of mass is outside "
+                    "it at the start of a step are removed (their ids go stale)")
       .def("add_plane",
            [](PyWorld& w, const py::args& args, const py::kwargs& plane) {
              requireKeywordsOnly(args, "World.add_plane()", "an entry of a scene's \"planes\"");

@@ -23,6 +23,7 @@ namespace {
 constexpr const char* kWorldCall = "World()";
 constexpr const char* kBodyCall = "World.add_body()";
 constexpr const char* kPlaneCall = "World.add_plane()";
+constexpr const char* kSpawnerCall = "World.add_spawner()";
 constexpr const char* kForceCall = "World.add_force()";
 constexpr const char* kJointCall = "World.add_joint()";
 constexpr const char* kPoseCall = "World.set_pose()";
@@ -101,6 +102,10 @@ PyBodyId PyWorld::addBody(const py::kwargs& body) {
     s.body = id;
     world_.addSpring(s);
   }
+  for (KinematicMotion m : block.motions) {
+    m.body = id;
+    world_.setKinematicMotion(m);
+  }
   return wrap(id);
 }
 
@@ -111,6 +116,31 @@ void PyWorld::removeBody(const PyBodyId& id) {
   // The World moved its last body into the hole (world.h); the names of inertia methods follow.
   scene_.inertiaMethods[i] = scene_.inertiaMethods.back();
   scene_.inertiaMethods.pop_back();
+}
+
+std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
+  world_.addSpawner(parseSpawnerBlock(toJson(spawn, kSpawnerCall, ""), kSpawnerCall, "", "", world_.settings()));
+  return world_.spawners().size() - 1;
+}
+
+void PyWorld::setKillVolume(const py::object& volume) {
+  constexpr const char* kCall = "World.kill_volume";
+  Aabb box;
+  if (!volume.is_none()) {
+    const Eigen::VectorXd corners = finiteNumbers(volume, 6, "kill_volume", kCall);
+    box.min = Vec3(corners[0], corners[1], corners[2]);
+    box.max = Vec3(corners[3], corners[4], corners[5]);
+    if (!(box.min.array() < box.max.array()).all()) {
+      throw InputError(kCall, "kill_volume", "expected (min x, min y, min z, max x, max y, max z) with min < max along every axis");
+    }
+  }
+  world_.setKillVolume(box);
+}
+
+py::object PyWorld::killVolume() const {
+  const Aabb& box = world_.killVolume();
+  if (box.empty()) return py::none();
+  return py::make_tuple(box.min.x(), box.min.y(), box.min.z(), box.max.x(), box.max.y(), box.max.z());
 }
 
 std::size_t PyWorld::addPlane(const py::kwargs& plane) {
@@ -181,6 +211,11 @@ void PyWorld::step(long long steps) {
       for (long long i = 0; i < chunk; ++i) world_.step();
     }
     done += chunk;
+    // Spawners and the kill volume add and remove bodies as the World steps: the names follow.
+    if (!world_.spawners().empty() || !world_.killVolume().empty()) {
+      names_.clear();
+      for (const RigidBody& body : world_.bodies()) names_.insert(body.name());
+    }
     // Ctrl-C in a notebook stops a long run between two steps (the World stays consistent).
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   }

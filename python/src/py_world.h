@@ -35,6 +35,11 @@ class PyWorld {
   PyBodyId addBody(const pybind11::kwargs& body);
   void removeBody(const PyBodyId& id);
   std::size_t addPlane(const pybind11::kwargs& plane);  // the keys of one entry of "planes"
+  // The keys of one entry of "spawn", with a "period": bodies added while the World steps.
+  std::size_t addSpawner(const pybind11::kwargs& spawn);
+  // (min x, min y, min z, max x, max y, max z) [m] or None: bodies whose centre leaves it are removed.
+  void setKillVolume(const pybind11::object& volume);
+  pybind11::object killVolume() const;
   void addForce(const PyBodyId& id, const pybind11::kwargs& force);  // the keys of one entry of "forces"
   std::size_t addJoint(const pybind11::kwargs& joint);      // the keys of one entry of "joints"
   // Sets any of x, q (w, x, y, z: the state's own, as World.q reads), v and omega now, as seed

@@ -66,14 +66,24 @@ class World:
                  particle_integrator: str = 'semi-implicit-euler') -> None: ...
     def __len__(self) -> int: ...
     # The keys of an entry of a scene's "bodies", "planes" and "joints"; None leaves a key out.
-    def add_body(self, /, *, shape: Dict[str, Any], name: Optional[str] = None, mass: Optional[float] = None,
+    def add_body(self, /, *, shape: Optional[Dict[str, Any]] = None, shapes: Optional[List[Dict[str, Any]]] = None,
+                 name: Optional[str] = None, mass: Optional[float] = None,
                  density: Optional[float] = None, inertia: Optional[str] = None, position: Vec3 = (0.0, 0.0, 0.0),
                  orientation: Optional[Dict[str, Any]] = None, velocity: Vec3 = (0.0, 0.0, 0.0),
                  angular_velocity: Vec3 = (0.0, 0.0, 0.0), color: Optional[Vec3] = None, static: bool = False,
                  kinematic: bool = False, forces: Optional[List[Dict[str, Any]]] = None,
                  set_pose: Optional[List[Dict[str, Any]]] = None, springs: Optional[List[Dict[str, Any]]] = None,
                  restitution: float = 0.0, friction_static: float = 0.6, friction_kinetic: float = 0.5,
-                 fracture: Optional[Dict[str, Any]] = None, sdf: Optional[Dict[str, Any]] = None) -> BodyId: ...
+                 fracture: Optional[Dict[str, Any]] = None, sdf: Optional[Dict[str, Any]] = None,
+                 filter: Optional[Dict[str, Any]] = None, motion: Optional[Dict[str, Any]] = None) -> BodyId: ...
+    def add_spawner(self, /, *, period: float, body: Dict[str, Any], region: Dict[str, Vec3], count: int = 1,
+                    seed: int = 1, name: Optional[str] = None,
+                    speed: Optional[Sequence[float]] = None, angular_speed: Optional[Sequence[float]] = None,
+                    random_orientation: bool = True, start: float = 0.0, end: Optional[float] = None) -> int: ...
+    @property
+    def kill_volume(self) -> Optional[Tuple[float, float, float, float, float, float]]: ...
+    @kill_volume.setter
+    def kill_volume(self, value: Optional[Sequence[float]]) -> None: ...
     def add_plane(self, /, *, normal: Vec3 = (0.0, 1.0, 0.0), point: Vec3 = (0.0, 0.0, 0.0), restitution: float = 0.0,
                   friction_static: float = 0.6, friction_kinetic: float = 0.5) -> int: ...
     def add_joint(self, /, *, type: str, body_a: str, anchor: Vec3, body_b: Optional[str] = None,

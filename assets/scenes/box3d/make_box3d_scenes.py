@@ -357,30 +357,33 @@ def hexahedron_triangles(points):
     return triangles
 
 
-def washer():
-    r0, r1, r2 = 14.0, 16.0, 18.0
-    near, far = -10.0, 10.0
+def washer_drum_shapes(r0, r1, r2, near, far, **material):
+    """The drum's 40 hulls: 36 staves between r1 and r2, each a tenth of its 10 degrees short at
+    both ends, and a paddle between r0 and r1 at every ninth, from z = near to far."""
     angle = math.pi / 18.0
-    speed = math.radians(25.0)
     rot = lambda v, t: [v[0] * math.cos(t) - v[1] * math.sin(t), v[0] * math.sin(t) + v[1] * math.cos(t), 0.0]
     at = lambda z, r, u: [r * u[0], r * u[1], z]
     shapes = []
     u1 = [1.0, 0.0, 0.0]
     for i in range(36):
         u2 = [1.0, 0.0, 0.0] if i == 35 else rot(u1, angle)
-        a1, a2 = rot(u1, -0.1 * angle), rot(u2, 0.1 * angle)
-        points = [at(near, r1, a1), at(near, r2, a1), at(near, r1, a2), at(near, r2, a2),
-                  at(far, r1, a1), at(far, r2, a1), at(far, r1, a2), at(far, r2, a2)]
-        shapes.append({"type": "hull", "vertices": [vec(p) for p in points], "triangles": hexahedron_triangles(points),
-                       "friction_static": FRICTION, "friction_kinetic": FRICTION})
-        if i % 9 == 0:
-            points = [at(near, r0, u1), at(near, r1, u1), at(near, r0, u2), at(near, r1, u2),
-                      at(far, r0, u1), at(far, r1, u1), at(far, r0, u2), at(far, r1, u2)]
-            shapes.append({"type": "hull", "vertices": [vec(p) for p in points],
-                           "triangles": hexahedron_triangles(points),
-                           "friction_static": FRICTION, "friction_kinetic": FRICTION})
+        for inner, outer, a1, a2, take in ((r1, r2, rot(u1, -0.1 * angle), rot(u2, 0.1 * angle), True),
+                                           (r0, r1, u1, u2, i % 9 == 0)):
+            if not take:
+                continue
+            points = [at(near, inner, a1), at(near, outer, a1), at(near, inner, a2), at(near, outer, a2),
+                      at(far, inner, a1), at(far, outer, a1), at(far, inner, a2), at(far, outer, a2)]
+            shape = {"type": "hull", "vertices": [vec(p) for p in points], "triangles": hexahedron_triangles(points)}
+            shape.update(material)
+            shapes.append(shape)
         u1 = u2
     assert len(shapes) == 40
+    return shapes
+
+
+def washer():
+    speed = math.radians(25.0)
+    shapes = washer_drum_shapes(14.0, 16.0, 18.0, -10.0, 10.0, friction_static=FRICTION, friction_kinetic=FRICTION)
     drum = {"name": "drum", "shapes": shapes, "kinematic": True, "position": [0, 21, 0], "color": [0.6, 0.6, 0.65],
             "motion": {"pivot": [0, 21, 0], "angular_velocity": [0, 0, num(speed, 9)]}}
     grid, a = 20, 0.2

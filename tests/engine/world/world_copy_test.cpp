@@ -84,7 +84,12 @@ INSTANTIATE_TEST_SUITE_P(
                       CopyCase{"ExactIntegrator", "assignment2_b_velocity.json", {"world.integrator=\"exact\""}},
                       CopyCase{"Particles", "particles_fountain.json", {}}, CopyCase{"SoftBodies", "soft_jelly.json", {}},
                       CopyCase{"World2D", "planar_tumbling.json", {}}, CopyCase{"Fracture", "fracture_wall.json", {}},
-                      CopyCase{"Grids", "sdf_pour.json", {}}, CopyCase{"RoundShapes", "round_shapes.json", {}}),
+                      CopyCase{"Grids", "sdf_pour.json", {}}, CopyCase{"RoundShapes", "round_shapes.json", {}},
+                      CopyCase{"CompoundsAndMotions", "machinery_table.json", {}},
+                      CopyCase{"SpawnerAndKillVolume", "machinery_table.json",
+                               {R"(spawn=[{"name": "rock", "count": 2, "period": 0.5, "region": {"min": [-1, 3, -1], "max": [1, 4, 1]},
+                                           "body": {"shape": {"type": "box", "extents": [0.2, 0.2, 0.2]}, "mass": 1}}])",
+                                R"(kill_volume={"min": [-1, -1, -1], "max": [1, 5, 1]})"}}),
     [](const ::testing::TestParamInfo<CopyCase>& info) { return std::string(info.param.label); });
 
 // One falling sphere, no contacts: each setting's effect has a closed form.

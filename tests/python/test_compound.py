@@ -1,0 +1,86 @@
+"""Compound bodies, collision filters and kinematic motion from Python: the keys "shapes",
+"filter" and "motion" of World.add_body, as in a scene's "bodies"."""
+import math
+
+import numpy as np
+import pytest
+import rbsim
+
+
+def table_shapes():
+    shapes = [{"type": "box", "extents": [1.2, 0.06, 0.8], "position": [0, 0.73, 0]}]
+    for x in (-0.55, 0.55):
+        for z in (-0.35, 0.35):
+            shapes.append({"type": "box", "extents": [0.06, 0.7, 0.06], "position": [x, 0.35, z]})
+    return shapes
+
+
+@pytest.mark.parametrize("dt", [1 / 60, 1 / 240])
+def test_a_table_of_five_boxes_stands_on_its_four_legs(dt):
+    world = rbsim.World(dt=dt)
+    world.add_plane()
+    table = world.add_body(name="table", shapes=table_shapes(), mass=12.0, position=[0, 0.5, 0])
+    world.step(round(2.0 / dt))
+    i = world.index_of(table)
+    # The centre of mass: the top's 0.0576 m^3 at 0.73 m and four legs' 0.00252 m^3 each at 0.35 m.
+    top, leg = 1.2 * 0.06 * 0.8, 0.06 * 0.7 * 0.06
+    centre = (top * 0.73 + 4 * leg * 0.35) / (top + 4 * leg)
+    assert world.x[i][1] == pytest.approx(centre, abs=1e-3)
+    c = world.contacts()
+    legs = c[c["plane"] == 0]
+    assert sorted(set(legs["shape_b"].tolist())) == [1, 2, 3, 4]
+    assert np.allclose(legs["normal"], [0, 1, 0])
+
+
+def test_filters_let_a_group_pass_through_itself():
+    world = rbsim.World(dt=1 / 240)
+    world.add_plane()
+    world.add_body(name="low", shape={"type": "sphere", "radius": 0.5}, mass=1.0, position=[0, 0.5, 0],
+                   filter={"group": -1})
+    world.add_body(name="high", shape={"type": "sphere", "radius": 0.5}, mass=1.0, position=[0, 1.6, 0],
+                   filter={"group": -1})
+    world.add_body(name="other", shape={"type": "sphere", "radius": 0.5}, mass=1.0, position=[3, 0.5, 0],
+                   filter={"category": 2, "mask": 1})
+    world.step(240)
+    # The two of group -1 overlap on the ground, the other rests on it.
+    assert world.x[0][1] == pytest.approx(0.5, abs=1e-3)
+    assert world.x[1][1] == pytest.approx(0.5, abs=1e-3)
+    assert world.x[2][1] == pytest.approx(0.5, abs=1e-3)
+    with pytest.raises(rbsim.InputError, match=r"filter.group"):
+        world.add_body(shape={"type": "sphere", "radius": 0.5}, mass=1.0, filter={"group": 1.5})
+
+
+def test_a_turntable_carries_a_box_round():
+    world = rbsim.World(dt=1 / 240)
+    world.add_body(name="table", shape={"type": "box", "extents": [2, 0.2, 2]}, mass=10.0, kinematic=True,
+                   motion={"pivot": [0, 0, 0], "angular_velocity": [0, 1, 0]})
+    world.add_body(name="box", shape={"type": "box", "extents": [0.2, 0.2, 0.2]}, mass=1.0, position=[0.5, 0.2, 0])
+    world.step(480)
+    x, v = world.x[1], world.v[1]
+    assert math.hypot(x[0], x[2]) == pytest.approx(0.5, abs=0.01)
+    assert np.linalg.norm(v) == pytest.approx(0.5, rel=0.01)  # omega r
+    with pytest.raises(rbsim.InputError, match=r"motion"):
+        world.add_body(shape={"type": "sphere", "radius": 0.5}, mass=1.0, motion={"pivot": [0, 0, 0]})
+
+
+def test_a_spawner_rains_balls_and_the_kill_volume_takes_them_away():
+    world = rbsim.World(dt=1 / 60)
+    world.add_spawner(name="ball", period=0.25, count=2, seed=3, end=2.0,
+                      body={"shape": {"type": "sphere", "radius": 0.1}, "mass": 1.0},
+                      region={"min": [-1, 4, -1], "max": [1, 5, 1]})
+    world.kill_volume = (-5, -1, -5, 5, 6, 5)
+    assert world.kill_volume == (-5.0, -1.0, -5.0, 5.0, 6.0, 5.0)
+    world.step(30)  # 0.5 s: bursts at 0, 0.25 s
+    assert len(world) == 4
+    first = world.id_at(0)
+    world.step(90)  # a ball from 4-5 m falls below -1 m after about 1.1 s
+    assert not world.is_valid(first)
+    assert len(world) < 16
+    assert all(x[1] >= -1.5 for x in world.x)
+    with pytest.raises(rbsim.InputError, match=r"World.add_spawner\(\): period"):
+        world.add_spawner(body={"shape": {"type": "sphere", "radius": 0.1}, "mass": 1.0},
+                          region={"min": [0, 0, 0], "max": [0, 0, 0]})
+    with pytest.raises(rbsim.InputError, match=r"kill_volume"):
+        world.kill_volume = (0, 0, 0, -1, 1, 1)
+    world.kill_volume = None
+    assert world.kill_volume is None
