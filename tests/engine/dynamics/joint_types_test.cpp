@@ -130,6 +130,50 @@ TEST(JointTypes, SliderLimitsStopItAndItsMotorDrivesIt) {
   }
 }
 
+// A slider between two free bodies without gravity: a 2 kg base turning at 1 rad/s about z and a
+// 1 kg cart sliding out along the base's x axis at 0.3 m/s. The joint's forces are internal, so
+// momentum and angular momentum about the centre of mass stay what they were (to the soft
+// rows' give), and the cart stays on the turning axis.
+TEST(JointTypes, SliderBetweenTwoBodiesKeepsMomentaAndItsAxis) {
+  for (double dt : kSteps) {
+    World world(jointSettings(dt, 0.0));
+    BodyDef base = boxDef(Vec3(2.0, 0.2, 0.2), 2.0, "base");
+    base.angularVelocity = Vec3(0.0, 0.0, 1.0);
+    world.addBody(base);
+    BodyDef cart = boxDef(Vec3(0.2, 0.2, 0.2), 1.0, "cart");
+    cart.position = Vec3(0.2, 0.0, 0.0);
+    cart.angularVelocity = Vec3(0.0, 0.0, 1.0);
+    cart.velocity = Vec3(0.3, 0.0, 0.0) + cart.angularVelocity.cross(cart.position);
+    world.addBody(cart);
+    JointDef slider;
+    slider.type = JointDef::Type::Prismatic;
+    slider.bodyA = world.idAt(1);
+    slider.bodyB = world.idAt(0);
+    slider.anchor = cart.position;
+    slider.axis = Vec3::UnitX();
+    world.addJoint(slider);
+    const auto momenta = [&] {
+      const RigidBody& a = world.bodies()[0];
+      const RigidBody& b = world.bodies()[1];
+      const Vec3 p = a.mass() * a.velocity() + b.mass() * b.velocity();
+      const Vec3 centre = (a.mass() * a.position() + b.mass() * b.position()) / (a.mass() + b.mass());
+      const Vec3 l = a.inertiaWorld() * a.angularVelocity() + b.inertiaWorld() * b.angularVelocity() + (a.position() - centre).cross(a.mass() * a.velocity()) +
+                     (b.position() - centre).cross(b.mass() * b.velocity());
+      return std::make_pair(p, l);
+    };
+    const auto [p0, l0] = momenta();
+    runFor(world, 1.0);
+    const auto [p1, l1] = momenta();
+    const JointReading r = readJoint(world, 0);
+    std::printf("slider on a turning base, dt %.5f s: |dP| %.3g N s, |dL| %.3g N m s, off the axis %.3g m, translation %.4f m\n",
+                dt, (p1 - p0).norm(), (l1 - l0).norm(), (r.anchorA - r.anchorB - r.translation * r.axis).norm(), r.translation);
+    EXPECT_LT((p1 - p0).norm(), 1e-9);
+    EXPECT_LT((l1 - l0).norm(), 1e-9);
+    EXPECT_LT((r.anchorA - r.anchorB - r.translation * r.axis).norm(), 1e-3);
+    EXPECT_GT(r.translation, 0.3);  // flung outward by the turning
+  }
+}
+
 // A cantilever: a 1 x 0.1 x 0.1 m box of 1 kg welded to the world by its end at the origin. At
 // rest the weld's soft rows carry m g and the torque m g L / 2; a soft constraint of frequency f
 // holds a static load F with error K F / omega^2 (K its inverse effective mass; softness.h's
