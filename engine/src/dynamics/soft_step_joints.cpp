@@ -60,6 +60,7 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
     JointConstraint c;
     c.joint = i;
     c.data = &joint;
+    c.type = joint.def.type;
     c.moving = slotOfBody_[a];
     c.base = b == kWorldIndex ? 0 : slotOfBody_[b];
     // Body A is dynamic (scene/joint_parser.cpp, World::addJoint), and the World wakes both
@@ -88,10 +89,11 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
     }
     if (!def.motor) joint.motorImpulse = 0.0;
     if (!def.limits) joint.lowerImpulse = joint.upperImpulse = 0.0;
-    if (!def.coneLimit) joint.swingImpulse = 0.0;
-    if (!def.spring) joint.springImpulse.setZero();
-    if (!(def.friction > 0.0)) joint.frictionImpulse.setZero();
+    // A joint without extras never writes their impulses: they stay zero.
     if (needsExtra(def)) {
+      if (!def.coneLimit) joint.swingImpulse = 0.0;
+      if (!def.spring) joint.springImpulse.setZero();
+      if (!(def.friction > 0.0)) joint.frictionImpulse.setZero();
       joint_rows::Extra extra;
       if (def.spring) extra.spring = makeSoftness(def.springHertz, def.springDampingRatio, h);
       if (def.linearHertz > 0.0) extra.weldLinear = makeSoftness(def.linearHertz, def.linearDampingRatio, h);
@@ -116,30 +118,33 @@ void SoftStepSolver::warmStartJoints(std::size_t island) {
     SolverState& B = states_[c.moving];
     const Vec3 rA = A.orientation * c.localAnchorBase;
     const Vec3 rB = B.orientation * c.localAnchorMoving;
-    const Vec3 axis = A.orientation * c.localAxisBase;
-    const double axial = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
     Vec3 linear = joint.linearImpulse, angular = joint.angularImpulse;
     Vec3 armA = rA;  // where A feels the linear impulse, from its centre
-    switch (joint.def.type) {
-      case JointDef::Type::Hinge:
-        angular += axial * axis + joint.springImpulse + joint.frictionImpulse;
-        break;
-      case JointDef::Type::Ball:
-        if (c.extra >= 0) {
+    // A plain ball joint has its point's impulse only.
+    if (c.type != JointDef::Type::Ball || c.extra >= 0) {
+      const Vec3 axis = A.orientation * c.localAxisBase;
+      const double axial = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+      switch (c.type) {
+        case JointDef::Type::Hinge:
+          angular += axial * axis;
+          if (c.extra >= 0) angular += joint.springImpulse + joint.frictionImpulse;
+          break;
+        case JointDef::Type::Ball: {
           const joint_rows::Extra& extra = jointExtras_[static_cast<std::size_t>(c.extra)];
           angular += joint.springImpulse + joint.frictionImpulse + (joint.lowerImpulse - joint.upperImpulse) * extra.twistJacobian -
                      joint.swingImpulse * extra.swingAxis;
+          break;
         }
-        break;
-      case JointDef::Type::Prismatic: {
-        // Box2D v3's prismatic_joint.c: A's lever arm reaches B's anchor, d + rA.
-        linear += axial * axis + joint.springImpulse + joint.frictionImpulse;
-        const Vec3 xA = sims_[c.base].position0 + A.deltaPosition, xB = sims_[c.moving].position0 + B.deltaPosition;
-        armA = (xB + rB) - xA;
-        break;
+        case JointDef::Type::Prismatic: {
+          // Box2D v3's prismatic_joint.c: A's lever arm reaches B's anchor, d + rA.
+          linear += axial * axis + joint.springImpulse + joint.frictionImpulse;
+          const Vec3 xA = sims_[c.base].position0 + A.deltaPosition, xB = sims_[c.moving].position0 + B.deltaPosition;
+          armA = (xB + rB) - xA;
+          break;
+        }
+        case JointDef::Type::Weld:
+          break;
       }
-      case JointDef::Type::Weld:
-        break;
     }
     if (c.base != 0) {
       A.linearVelocity -= sims_[c.base].inverseMass * linear;
@@ -175,7 +180,7 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
       const joint_rows::Frame f{xA, xB, rA, rB, (A.orientation * c.localAxisBase).normalized(),
                                 c.base == 0 ? c.baseOrientation : A.orientation, B.orientation};
       joint_rows::Pair p{vA, wA, vB, wB, mA, mB, &iA, &iB};
-      switch (def.type) {
+      switch (c.type) {
         case JointDef::Type::Hinge:
           joint_rows::solveHingeExtras(joint, extra, f, h, p);
           break;
@@ -199,7 +204,7 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
       wB = p.wB;
     }
 
-    if (def.type == JointDef::Type::Hinge) {
+    if (c.type == JointDef::Type::Hinge) {
       const Vec3 axis = (A.orientation * c.localAxisBase).normalized();
       const double axialInverse = axis.dot((iA + iB) * axis);
       const double axialMass = axialInverse > 0.0 ? 1.0 / axialInverse : 0.0;
@@ -246,7 +251,7 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
       }
     }
 
-    if (def.type == JointDef::Type::Ball) {
+    if (c.type == JointDef::Type::Ball) {
       // The point's three rows alone, written out (the block below, for R = 3, with its zero
       // blocks left out): K = (mA + mB) 1 + [rA] iA [rA]^T + [rB] iB [rB]^T,
       // Cdot = (vB + wB x rB) - (vA + wA x rA); the impulse acts +lambda at B's anchor and

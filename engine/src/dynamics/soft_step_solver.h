@@ -150,6 +150,9 @@ class SoftStepSolver final : public ContactSolver {
     // Index into jointExtras_ for a joint with more than a plain ball's or hinge's rows (a spring,
     // friction, ball limits, prismatic, weld), else -1: plain joints read nothing more.
     int extra = -1;
+    // The joint's type, here so that a plain ball joint's sweep reads only its impulses from
+    // the Joint (19701 of them on Box3D's joint grid).
+    JointDef::Type type = JointDef::Type::Ball;
   };
 
   int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
