@@ -18,15 +18,30 @@ namespace {
 struct JointRow {
   std::int64_t body_a;  // row of body A in the state arrays
   std::int64_t body_b;  // row of body B, -1 for the world
-  double angle;         // hinge: A relative to B about the axis, from where it was added [rad]; NaN for a ball
-  double speed;         // hinge: A's turning relative to B about the axis [rad/s]; NaN for a ball
+  double angle;         // hinge: A relative to B about the axis, from where it was added [rad]; NaN otherwise
+  double speed;         // hinge: A's turning relative to B about the axis [rad/s]; NaN otherwise
+  double translation;   // prismatic: A's anchor from B's along the axis [m]; NaN otherwise
+  double translation_speed;  // prismatic: its rate [m/s]; NaN otherwise
+  double swing;         // ball: the angle between B's and A's copies of the axis [rad]; NaN otherwise
+  double twist;         // ball: A's turning about the axis [rad]; NaN otherwise
   double axis[3];       // world frame, unit
   double anchor_a[3];   // A's copy of the pivot [m]
   double anchor_b[3];   // B's or the world's [m]
   double force[3];      // on A by the joint [N]
   double torque[3];     // on A by the joint, about its anchor [N m]
-  bool hinge;           // a hinge (else a ball joint)
+  char type[10];        // "ball", "hinge", "prismatic" or "weld"
+  bool hinge;           // a hinge
 };
+
+const char* typeName(JointDef::Type type) {
+  switch (type) {
+    case JointDef::Type::Ball: return "ball";
+    case JointDef::Type::Hinge: return "hinge";
+    case JointDef::Type::Prismatic: return "prismatic";
+    case JointDef::Type::Weld: return "weld";
+  }
+  return "";
+}
 
 void copy3(double (&out)[3], const Vec3& v) {
   for (int i = 0; i < 3; ++i) out[i] = v[i];
@@ -35,7 +50,8 @@ void copy3(double (&out)[3], const Vec3& v) {
 }  // namespace
 
 void bindJoints(py::class_<PyWorld>& c) {
-  PYBIND11_NUMPY_DTYPE(JointRow, body_a, body_b, angle, speed, axis, anchor_a, anchor_b, force, torque, hinge);
+  PYBIND11_NUMPY_DTYPE(JointRow, body_a, body_b, angle, speed, translation, translation_speed, swing, twist, axis, anchor_a,
+                       anchor_b, force, torque, type, hinge);
   c.def(
       "joints",
       [](const PyWorld& w) {
@@ -51,6 +67,11 @@ void bindJoints(py::class_<PyWorld>& c) {
           row->body_b = joint.b == kWorldIndex ? -1 : static_cast<std::int64_t>(joint.b);
           row->angle = r.angle;
           row->speed = r.speed;
+          row->translation = r.translation;
+          row->translation_speed = r.translationSpeed;
+          row->swing = r.swing;
+          row->twist = r.twist;
+          std::strncpy(row->type, typeName(joint.def.type), sizeof(row->type));
           copy3(row->axis, r.axis);
           copy3(row->anchor_a, r.anchorA);
           copy3(row->anchor_b, r.anchorB);
@@ -61,9 +82,10 @@ void bindJoints(py::class_<PyWorld>& c) {
         return out;
       },
       "joints(self, /)\n--\n\n-> structured array, one row per joint (the index add_joint returned): body_a, body_b (rows in the "
-      "state arrays, -1 for the world), angle [rad] and speed [rad/s] of a hinge (NaN for a ball joint), axis (3), "
-      "anchor_a (3), anchor_b (3) [m], force (3) [N] and torque (3) [N m] the joint puts on body A in the last "
-      "substep, hinge");
+      "state arrays, -1 for the world), angle [rad] and speed [rad/s] of a hinge, translation [m] and "
+      "translation_speed [m/s] of a prismatic joint, swing and twist [rad] of a ball joint (each NaN for the other types), "
+      "axis (3), anchor_a (3), anchor_b (3) [m], force (3) [N] and torque (3) [N m] the joint puts on body A in the last "
+      "substep, type (b\"ball\", b\"hinge\", b\"prismatic\", b\"weld\"), hinge");
 }
 
 }  // namespace rbsim::python

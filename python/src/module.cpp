@@ -240,10 +240,14 @@ PYBIND11_MODULE(rbsim, m) {
              requireKeywordsOnly(args, "World.add_joint()", "an entry of a scene's \"joints\"");
              return w.addJoint(givenKeywords(joint));
            },
-           "add_joint(self, /, *, type, body_a, anchor, body_b=None, axis=None, motor=None, limits=None, "
-           "collide_connected=False, name=None)\n--\n\n-> int: the joint's row in joints(). type \"ball\" or \"hinge\"; "
-           "body_a, body_b: body names (body_b None: the world); anchor (x, y, z) [m] and, for a hinge, axis (x, y, z), "
-           "motor={\"speed\": rad/s, \"max_torque\": N m}, limits=(lo, hi) [rad]")
+           "add_joint(self, /, *, type, body_a, anchor, body_b=None, axis=None, motor=None, limits=None, cone=None, "
+           "twist=None, spring=None, friction=None, linear_hertz=None, linear_damping_ratio=None, angular_hertz=None, "
+           "angular_damping_ratio=None, collide_connected=False, name=None)\n--\n\n-> int: the joint's row in joints(). "
+           "type \"ball\", \"hinge\", \"prismatic\" or \"weld\"; body_a, body_b: body names (body_b None: the world); "
+           "anchor (x, y, z) [m]; axis (x, y, z) of a hinge, a slider, or a ball's cone and twist; "
+           "motor={\"speed\": rad/s or m/s, \"max_torque\": N m (slider: \"max_force\": N)}, limits=(lo, hi) [rad] "
+           "(slider: [m]); a ball's cone half-angle [rad] and twist=(lo, hi) [rad]; spring={\"hertz\": Hz, "
+           "\"damping_ratio\": 1}; friction [N m] (slider: [N]); a weld's linear_/angular_hertz [Hz] and damping ratios")
       .def("add_force",
            [](PyWorld& w, const py::object& body, const py::kwargs& force) {
              w.addForce(bodyArgument(body, "World.add_force()"), givenKeywords(force));

@@ -88,7 +88,11 @@ class World:
                   friction_static: float = 0.6, friction_kinetic: float = 0.5) -> int: ...
     def add_joint(self, /, *, type: str, body_a: str, anchor: Vec3, body_b: Optional[str] = None,
                   axis: Optional[Vec3] = None, motor: Optional[Dict[str, float]] = None,
-                  limits: Optional[Sequence[float]] = None, collide_connected: bool = False,
+                  limits: Optional[Sequence[float]] = None, cone: Optional[float] = None,
+                  twist: Optional[Sequence[float]] = None, spring: Optional[Dict[str, float]] = None,
+                  friction: Optional[float] = None, linear_hertz: Optional[float] = None,
+                  linear_damping_ratio: Optional[float] = None, angular_hertz: Optional[float] = None,
+                  angular_damping_ratio: Optional[float] = None, collide_connected: bool = False,
                   name: Optional[str] = None) -> int: ...
     def add_force(self, /, body: BodyId, *, force: Vec3 = (0.0, 0.0, 0.0), point: Vec3 = (0.0, 0.0, 0.0),
                   force_frame: str = 'world', point_frame: str = 'body', start: float = 0.0,

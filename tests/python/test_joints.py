@@ -62,3 +62,36 @@ def test_a_ball_joint_has_no_angle_and_holds_a_hanging_body_by_its_weight():
     assert math.isnan(joint["angle"]) and math.isnan(joint["speed"]) and not joint["hinge"]
     assert joint["force"] == pytest.approx((0, 2.0 * 9.81, 0), abs=1e-6)
     assert rbsim.World().joints().shape == (0,)
+
+
+def test_a_slider_on_an_incline_reads_its_translation_and_accelerates_at_g_sin_a():
+    world = rbsim.World(dt=1 / 60, gravity=[0, -9.81, 0], sleep=False)
+    world.add_body(name="cart", shape={"type": "box", "extents": [0.4, 0.2, 0.3]}, mass=1.0)
+    slope = math.radians(30)
+    world.add_joint(type="prismatic", body_a="cart", anchor=[0, 0, 0], axis=[math.cos(slope), -math.sin(slope), 0])
+    world.step(60)
+    joint = world.joints()[0]
+    assert joint["type"] == b"prismatic" and not joint["hinge"] and math.isnan(joint["angle"])
+    assert joint["translation_speed"] == pytest.approx(9.81 * math.sin(slope) * 1.0, rel=1e-9)
+    assert joint["translation"] == pytest.approx(np.linalg.norm(world.x[0]), rel=1e-6)
+
+
+def test_the_joint_family_takes_its_keys_and_refuses_the_others():
+    world = rbsim.World(dt=1 / 60, gravity=[0, -9.81, 0], sleep=False)
+    world.add_body(name="arm", shape={"type": "box", "extents": [1.0, 0.1, 0.1]}, mass=1.0, position=[0.5, 0, 0])
+    world.add_body(name="beam", shape={"type": "box", "extents": [1.0, 0.1, 0.1]}, mass=1.0, position=[0.5, 2, 0])
+    world.add_joint(type="ball", body_a="arm", anchor=[0, 0, 0], axis=[1, 0, 0], cone=math.radians(30),
+                    twist=[-0.2, 0.2], friction=0.01)
+    world.add_joint(type="weld", body_a="beam", anchor=[0, 2, 0], linear_hertz=8, angular_hertz=8,
+                    linear_damping_ratio=1, angular_damping_ratio=1)
+    world.step(180)
+    arm, beam = world.joints()
+    assert arm["type"] == b"ball" and arm["swing"] == pytest.approx(math.radians(30), abs=1e-3)
+    assert abs(arm["twist"]) < 1e-6
+    assert beam["type"] == b"weld" and math.isnan(beam["swing"])
+    assert -world.x[1][1] + 2 > 0  # the soft weld droops, and holds
+    assert np.linalg.norm(world.v[1]) < 1e-3
+    with pytest.raises(rbsim.InputError, match=r"World.add_joint\(\): friction"):
+        world.add_joint(type="weld", body_a="arm", anchor=[0, 0, 0], friction=1.0)
+    with pytest.raises(rbsim.InputError, match=r"World.add_joint\(\): cone"):
+        world.add_joint(type="hinge", body_a="arm", anchor=[0, 0, 0], axis=[0, 0, 1], cone=0.5)

@@ -15,4 +15,21 @@ double hingeAngle(const Joint& joint, const Quat& base, const Quat& moving) {
   return angle;
 }
 
+Vec3 relativeRotation(const Joint& joint, const Quat& base, const Quat& moving) {
+  // q_A (q_base q_ref)^-1 = q_base d q_base^-1 with d as in hingeAngle: d's rotation vector, taken
+  // into world frame by the base. The short way round (w >= 0), so the angle is at most pi.
+  Quat d = base.conjugate() * moving * joint.referenceRotation.conjugate();
+  if (d.w() < 0.0) d.coeffs() = -d.coeffs();
+  const double sine = d.vec().norm();
+  // Below sin(angle / 2) ~ 1e-8 the log is 2 v to double precision (the next term is v^3 / 3).
+  constexpr double kSmallHalfAngle = 1e-8;  // [1]
+  const Vec3 local = sine < kSmallHalfAngle ? Vec3(2.0 * d.vec()) : Vec3(d.vec() * (2.0 * std::atan2(sine, d.w()) / sine));
+  return base * local;
+}
+
+double swingAngle(const Joint& joint, const Quat& base, const Quat& moving) {
+  const Vec3 a = base * joint.localAxisBase, b = moving * joint.localAxisMoving;
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
 }  // namespace rbsim

@@ -2,7 +2,8 @@
 // two angular rows, motor and limits, in 3D after Box2D v3's src/revolute_joint.c (warm start,
 // then per sweep motor, limits, point) and src/solver.c (joint softness, soft with bias and
 // rigid in the relax). Each joint is solved as one block: the point's 3 x 3 effective mass and
-// the axis's 2 x 2 are inverted exactly, so a single joint is satisfied in one sweep.
+// the axis's 2 x 2 are inverted exactly, so a single joint is satisfied in one sweep. Springs,
+// friction, the ball's cone and twist, the prismatic and weld joints are in joints/*.cpp.
 #include <algorithm>
 #include <cmath>
 
@@ -22,6 +23,12 @@ namespace {
 constexpr double kJointHertz = 120.0;                // [Hz]
 constexpr double kJointDampingRatio = 0.5;           // [1]
 constexpr double kMaxJointHertzPerSubstepRate = 0.25;  // [1]
+
+// Whether a joint needs more than a plain ball's or hinge's rows (SoftStepSolver::jointExtras_).
+bool needsExtra(const JointDef& def) {
+  return def.spring || def.friction > 0.0 || def.coneLimit || (def.type == JointDef::Type::Ball && def.limits) ||
+         def.type == JointDef::Type::Prismatic || def.type == JointDef::Type::Weld;
+}
 
 Mat3 skew(const Vec3& r) {
   Mat3 m;
@@ -46,12 +53,14 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
                                    const Settings& settings) {
   const double h = settings.timeStep / settings.substeps;
   jointSoftness_ = makeSoftness(std::min(kJointHertz, kMaxJointHertzPerSubstepRate / h), kJointDampingRatio, h);
+  jointExtras_.clear();
   for (std::size_t i = 0; i < joints.size(); ++i) {
     Joint& joint = joints[i];
     const std::size_t a = joint.a, b = joint.b;
     JointConstraint c;
     c.joint = i;
     c.data = &joint;
+    c.type = joint.def.type;
     c.moving = slotOfBody_[a];
     c.base = b == kWorldIndex ? 0 : slotOfBody_[b];
     // Body A is dynamic (scene/joint_parser.cpp, World::addJoint), and the World wakes both
@@ -70,13 +79,33 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
       c.localAxisBase = bodies[b].rotation() * joint.localAxisBase;
       c.baseOrientation = bodies[b].orientation();
     }
+    const JointDef& def = joint.def;
     if (!settings.warmStarting) {
       joint.linearImpulse.setZero();
       joint.angularImpulse.setZero();
-      joint.motorImpulse = joint.lowerImpulse = joint.upperImpulse = 0.0;
+      joint.motorImpulse = joint.lowerImpulse = joint.upperImpulse = joint.swingImpulse = 0.0;
+      joint.springImpulse.setZero();
+      joint.frictionImpulse.setZero();
     }
-    if (!joint.def.motor) joint.motorImpulse = 0.0;
-    if (!joint.def.limits) joint.lowerImpulse = joint.upperImpulse = 0.0;
+    if (!def.motor) joint.motorImpulse = 0.0;
+    if (!def.limits) joint.lowerImpulse = joint.upperImpulse = 0.0;
+    // A joint without extras never writes their impulses: they stay zero.
+    if (needsExtra(def)) {
+      if (!def.coneLimit) joint.swingImpulse = 0.0;
+      if (!def.spring) joint.springImpulse.setZero();
+      if (!(def.friction > 0.0)) joint.frictionImpulse.setZero();
+      joint_rows::Extra extra;
+      if (def.spring) extra.spring = makeSoftness(def.springHertz, def.springDampingRatio, h);
+      if (def.linearHertz > 0.0) extra.weldLinear = makeSoftness(def.linearHertz, def.linearDampingRatio, h);
+      if (def.angularHertz > 0.0) extra.weldAngular = makeSoftness(def.angularHertz, def.angularDampingRatio, h);
+      if (def.type == JointDef::Type::Ball && (def.limits || def.coneLimit)) {
+        const Quat base = b == kWorldIndex ? Quat::Identity() : bodies[b].orientation();
+        const Vec3 coneAxis = base * joint.localAxisBase, twistAxis = bodies[a].orientation() * joint.localAxisMoving;
+        joint_rows::prepareBallLimits(coneAxis, twistAxis, extra);
+      }
+      c.extra = static_cast<int>(jointExtras_.size());
+      jointExtras_.push_back(extra);
+    }
     joints_.push_back(c);
   }
 }
@@ -89,15 +118,41 @@ void SoftStepSolver::warmStartJoints(std::size_t island) {
     SolverState& B = states_[c.moving];
     const Vec3 rA = A.orientation * c.localAnchorBase;
     const Vec3 rB = B.orientation * c.localAnchorMoving;
-    const Vec3 axis = A.orientation * c.localAxisBase;
-    const Vec3 angular = joint.angularImpulse + (joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse) * axis;
+    Vec3 linear = joint.linearImpulse, angular = joint.angularImpulse;
+    Vec3 armA = rA;  // where A feels the linear impulse, from its centre
+    // A plain ball joint has its point's impulse only.
+    if (c.type != JointDef::Type::Ball || c.extra >= 0) {
+      const Vec3 axis = A.orientation * c.localAxisBase;
+      const double axial = joint.motorImpulse + joint.lowerImpulse - joint.upperImpulse;
+      switch (c.type) {
+        case JointDef::Type::Hinge:
+          angular += axial * axis;
+          if (c.extra >= 0) angular += joint.springImpulse + joint.frictionImpulse;
+          break;
+        case JointDef::Type::Ball: {
+          const joint_rows::Extra& extra = jointExtras_[static_cast<std::size_t>(c.extra)];
+          angular += joint.springImpulse + joint.frictionImpulse + (joint.lowerImpulse - joint.upperImpulse) * extra.twistJacobian -
+                     joint.swingImpulse * extra.swingAxis;
+          break;
+        }
+        case JointDef::Type::Prismatic: {
+          // Box2D v3's prismatic_joint.c: A's lever arm reaches B's anchor, d + rA.
+          linear += axial * axis + joint.springImpulse + joint.frictionImpulse;
+          const Vec3 xA = sims_[c.base].position0 + A.deltaPosition, xB = sims_[c.moving].position0 + B.deltaPosition;
+          armA = (xB + rB) - xA;
+          break;
+        }
+        case JointDef::Type::Weld:
+          break;
+      }
+    }
     if (c.base != 0) {
-      A.linearVelocity -= sims_[c.base].inverseMass * joint.linearImpulse;
-      A.angularVelocity -= sims_[c.base].inverseInertiaNow * (rA.cross(joint.linearImpulse) + angular);
+      A.linearVelocity -= sims_[c.base].inverseMass * linear;
+      A.angularVelocity -= sims_[c.base].inverseInertiaNow * (armA.cross(linear) + angular);
     }
     if (c.moving != 0) {
-      B.linearVelocity += sims_[c.moving].inverseMass * joint.linearImpulse;
-      B.angularVelocity += sims_[c.moving].inverseInertiaNow * (rB.cross(joint.linearImpulse) + angular);
+      B.linearVelocity += sims_[c.moving].inverseMass * linear;
+      B.angularVelocity += sims_[c.moving].inverseInertiaNow * (rB.cross(linear) + angular);
     }
   });
 }
@@ -120,7 +175,36 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
     const Vec3 rA = A.orientation * c.localAnchorBase, rB = B.orientation * c.localAnchorMoving;
     const Softness soft = useBias ? jointSoftness_ : Softness{};
 
-    if (def.type == JointDef::Type::Hinge) {
+    if (c.extra >= 0) {
+      const joint_rows::Extra& extra = jointExtras_[static_cast<std::size_t>(c.extra)];
+      const joint_rows::Frame f{xA, xB, rA, rB, (A.orientation * c.localAxisBase).normalized(),
+                                c.base == 0 ? c.baseOrientation : A.orientation, B.orientation};
+      joint_rows::Pair p{vA, wA, vB, wB, mA, mB, &iA, &iB};
+      switch (c.type) {
+        case JointDef::Type::Hinge:
+          joint_rows::solveHingeExtras(joint, extra, f, h, p);
+          break;
+        case JointDef::Type::Ball:
+          joint_rows::solveBallAngular(joint, extra, f, h, soft, useBias, p);
+          break;
+        case JointDef::Type::Prismatic:
+          joint_rows::solvePrismatic(joint, extra, f, h, soft, useBias, p);
+          storeVelocities(c.base, p.vA, p.wA);
+          storeVelocities(c.moving, p.vB, p.wB);
+          return;
+        case JointDef::Type::Weld:
+          joint_rows::solveWeld(joint, extra, f, soft, p);
+          storeVelocities(c.base, p.vA, p.wA);
+          storeVelocities(c.moving, p.vB, p.wB);
+          return;
+      }
+      vA = p.vA;
+      wA = p.wA;
+      vB = p.vB;
+      wB = p.wB;
+    }
+
+    if (c.type == JointDef::Type::Hinge) {
       const Vec3 axis = (A.orientation * c.localAxisBase).normalized();
       const double axialInverse = axis.dot((iA + iB) * axis);
       const double axialMass = axialInverse > 0.0 ? 1.0 / axialInverse : 0.0;
@@ -167,7 +251,7 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
       }
     }
 
-    if (def.type == JointDef::Type::Ball) {
+    if (c.type == JointDef::Type::Ball) {
       // The point's three rows alone, written out (the block below, for R = 3, with its zero
       // blocks left out): K = (mA + mB) 1 + [rA] iA [rA]^T + [rB] iB [rB]^T,
       // Cdot = (vB + wB x rB) - (vA + wA x rA); the impulse acts +lambda at B's anchor and

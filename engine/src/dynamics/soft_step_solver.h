@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "dynamics/contact_solver.h"
+#include "dynamics/joints/joint_rows.h"
 #include "rbsim/dynamics/softness.h"
 #include "rbsim/dynamics/solver_islands.h"
 #include "rbsim/math/parallel.h"
@@ -146,6 +147,12 @@ class SoftStepSolver final : public ContactSolver {
     Vec3 localAxisMoving = Vec3::UnitZ();
     Quat baseOrientation = Quat::Identity();  // of a base without a slot, for the hinge angle
     Joint* data = nullptr;  // definition and accumulated impulses
+    // Index into jointExtras_ for a joint with more than a plain ball's or hinge's rows (a spring,
+    // friction, ball limits, prismatic, weld), else -1: plain joints read nothing more.
+    int extra = -1;
+    // The joint's type, here so that a plain ball joint's sweep reads only its impulses from
+    // the Joint (19701 of them on Box3D's joint grid).
+    JointDef::Type type = JointDef::Type::Ball;
   };
 
   int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
@@ -211,6 +218,7 @@ class SoftStepSolver final : public ContactSolver {
   Softness softness_;  // of every contact this step
   std::vector<JointConstraint> joints_;
   Softness jointSoftness_;  // of every joint this step
+  std::vector<joint_rows::Extra> jointExtras_;  // JointConstraint::extra
   SolverIslands islands_;
   int threads_ = 1;  // Settings::threads of this step
 };

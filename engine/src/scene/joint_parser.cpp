@@ -1,8 +1,12 @@
-// The "joints" array of a scene (dynamics/joint.h): a ball or hinge joint per entry, each naming
-// its bodies, its world anchor at t = 0 and, for a hinge, its axis, motor and limits.
+// The "joints" array of a scene (dynamics/joint.h): a ball, hinge, prismatic or weld joint per
+// entry, each naming its bodies, its world anchor at t = 0 and, by type, its axis, motor, limits,
+// cone, twist, spring, friction or weld softness (docs/scene-format.md, "Joints").
 #include "scene/joint_parser.h"
 
 #include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
 
 #include "scene/input_ranges.h"
 
@@ -20,44 +24,104 @@ std::size_t bodyNamed(const JsonObject& j, const char* key, const JointBodies& b
 }
 
 void parseMotor(const JsonObject& j, JointDef& def) {
-  const JsonObject m = j.object("motor", {"speed", "max_torque"});
+  const bool slider = def.type == JointDef::Type::Prismatic;
+  const char* maxKey = slider ? "max_force" : "max_torque";
+  const JsonObject m = slider ? j.object("motor", {"speed", "max_force"}) : j.object("motor", {"speed", "max_torque"});
   def.motor = true;
-  if (!m.has("speed")) m.fail("speed", "missing; the motor's target speed in rad/s is required");
-  if (!m.has("max_torque")) m.fail("max_torque", "missing; the motor's largest torque in N m (>= 0) is required");
+  if (!m.has("speed")) m.fail("speed", slider ? "missing; the motor's target speed in m/s is required" : "missing; the motor's target speed in rad/s is required");
+  if (!m.has(maxKey)) {
+    m.fail(maxKey, slider ? "missing; the motor's largest force in N (>= 0) is required" : "missing; the motor's largest torque in N m (>= 0) is required");
+  }
   def.motorSpeed = m.requiredNumber("speed");
-  def.maxMotorTorque = m.requiredNumber("max_torque");
+  const double max = m.requiredNumber(maxKey);
+  const char* speedUnit = slider ? " m/s" : " rad/s";
   if (!(std::abs(def.motorSpeed) <= kMaxMotorSpeed)) {
-    m.fail("speed", "expected a speed of at most " + formatNumber(kMaxMotorSpeed) + " rad/s either way, got " + formatNumber(def.motorSpeed));
+    m.fail("speed", "expected a speed of at most " + formatNumber(kMaxMotorSpeed) + speedUnit + " either way, got " + formatNumber(def.motorSpeed));
   }
-  if (!(def.maxMotorTorque >= 0.0 && def.maxMotorTorque <= kMaxMotorTorque)) {
-    m.fail("max_torque", "expected a torque from 0 to " + formatNumber(kMaxMotorTorque) + " N m, got " + formatNumber(def.maxMotorTorque));
+  const double bound = slider ? kMaxMotorForce : kMaxMotorTorque;
+  if (!(max >= 0.0 && max <= bound)) {
+    m.fail(maxKey, std::string(slider ? "expected a force from 0 to " : "expected a torque from 0 to ") + formatNumber(bound) +
+                       (slider ? " N, got " : " N m, got ") + formatNumber(max));
   }
+  (slider ? def.maxMotorForce : def.maxMotorTorque) = max;
+}
+
+// [lower, upper] with lower <= upper, within +-bound when bound > 0.
+std::pair<double, double> parseRange(const JsonObject& j, const char* key, double bound, const std::string& expected) {
+  const nlohmann::json& r = j.raw(key);
+  const bool numbers = r.is_array() && r.size() == 2 && r[0].is_number() && r[1].is_number();
+  const double lo = numbers ? r[0].get<double>() : 0.0, hi = numbers ? r[1].get<double>() : 0.0;
+  if (!numbers || !(lo >= -bound && lo <= hi && hi <= bound)) j.fail(key, expected);
+  return {lo, hi};
 }
 
 void parseLimits(const JsonObject& j, JointDef& def) {
-  const nlohmann::json& r = j.raw("limits");
-  const bool numbers = r.is_array() && r.size() == 2 && r[0].is_number() && r[1].is_number();
-  const double lo = numbers ? r[0].get<double>() : 0.0, hi = numbers ? r[1].get<double>() : 0.0;
-  if (!numbers || !(lo >= -M_PI && lo <= hi && hi <= M_PI)) {
-    j.fail("limits", "expected [lower, upper] angles in radians with -pi <= lower <= upper <= pi");
-  }
   def.limits = true;
-  def.lowerAngle = lo;
-  def.upperAngle = hi;
+  if (def.type == JointDef::Type::Prismatic) {
+    std::tie(def.lowerTranslation, def.upperTranslation) =
+        parseRange(j, "limits", kMaxCoordinate, "expected [lower, upper] translations in m with lower <= upper, each within " +
+                                                    formatNumber(kMaxCoordinate) + " m");
+  } else {
+    std::tie(def.lowerAngle, def.upperAngle) =
+        parseRange(j, "limits", M_PI, "expected [lower, upper] angles in radians with -pi <= lower <= upper <= pi");
+  }
+}
+
+void parseTwist(const JsonObject& j, JointDef& def) {
+  def.limits = true;
+  std::tie(def.lowerAngle, def.upperAngle) =
+      parseRange(j, "twist", M_PI, "expected [lower, upper] twist angles in radians with -pi <= lower <= upper <= pi");
+}
+
+void parseCone(const JsonObject& j, JointDef& def) {
+  const nlohmann::json& c = j.raw("cone");
+  if (!c.is_number() || !(c.get<double>() >= 0.0 && c.get<double>() <= M_PI)) {
+    j.fail("cone", "expected the cone's half-angle in radians, from 0 to pi");
+  }
+  def.coneLimit = true;
+  def.coneAngle = c.get<double>();
+}
+
+double boundedNumber(const JsonObject& j, const char* key, double fallback, double bound, const char* unit) {
+  const double x = j.number(key, fallback);
+  if (!(x >= 0.0 && x <= bound)) j.fail(key, "expected a number from 0 to " + formatNumber(bound) + unit + ", got " + formatNumber(x));
+  return x;
+}
+
+void parseSpring(const JsonObject& j, JointDef& def) {
+  const JsonObject s = j.object("spring", {"hertz", "damping_ratio"});
+  if (!s.has("hertz")) s.fail("hertz", "missing; the spring's natural frequency in Hz (> 0) is required");
+  def.spring = true;
+  def.springHertz = boundedNumber(s, "hertz", 0.0, kMaxJointHertz, " Hz");
+  if (!(def.springHertz > 0.0)) s.fail("hertz", "expected a frequency > 0 Hz; leave the spring out for none");
+  def.springDampingRatio = boundedNumber(s, "damping_ratio", 0.0, kMaxJointDampingRatio, "");
 }
 
 }  // namespace
 
 JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settings& settings) {
+  using Type = JointDef::Type;
   JointDef def;
   const std::string type = j.requiredString("type");
   if (type == "ball") {
-    def.type = JointDef::Type::Ball;
-    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "collide_connected"}, "a \"ball\" joint");
+    def.type = Type::Ball;
+    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "axis", "cone", "twist", "spring", "friction", "collide_connected"},
+                "a \"ball\" joint");
   } else if (type == "hinge") {
-    def.type = JointDef::Type::Hinge;
+    def.type = Type::Hinge;
+    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "axis", "motor", "limits", "spring", "friction", "collide_connected"},
+                "a \"hinge\" joint");
+  } else if (type == "prismatic") {
+    def.type = Type::Prismatic;
+    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "axis", "motor", "limits", "spring", "friction", "collide_connected"},
+                "a \"prismatic\" joint");
+  } else if (type == "weld") {
+    def.type = Type::Weld;
+    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "linear_hertz", "linear_damping_ratio", "angular_hertz",
+                 "angular_damping_ratio", "collide_connected"},
+                "a \"weld\" joint");
   } else {
-    j.fail("type", "expected \"ball\" or \"hinge\", got \"" + type + "\"");
+    j.fail("type", "expected \"ball\", \"hinge\", \"prismatic\" or \"weld\", got \"" + type + "\"");
   }
   def.name = j.string("name", "");
   if (settings.solver == Settings::ContactSolverMethod::Pgs) {
@@ -74,15 +138,28 @@ JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settin
   }
   if (!j.has("anchor")) j.fail("anchor", "missing; the joint's world point at t = 0 in m is required");
   def.anchor = j.boundedVec3("anchor", Vec3::Zero(), kMaxCoordinate, "m", "the largest coordinate a scene may use");
-  if (def.type == JointDef::Type::Hinge) {
-    if (!j.has("axis")) j.fail("axis", "missing; a hinge's axis (world frame at t = 0) is required");
+  // A hinge and a slider need their axis; a ball needs one only for its cone or twist.
+  const bool needsAxis = def.type == Type::Hinge || def.type == Type::Prismatic || j.has("cone") || j.has("twist");
+  if (needsAxis || j.has("axis")) {
+    if (!j.has("axis")) {
+      j.fail("axis", def.type == Type::Ball ? "missing; a ball joint's cone or twist needs its axis (world frame at t = 0)"
+                                            : "missing; the joint's axis (world frame at t = 0) is required");
+    }
     const Vec3 axis = j.vec3("axis", Vec3::UnitZ());
     const double length = axis.stableNorm();
     if (!(length > 0.0) || !std::isfinite(length)) j.fail("axis", "expected a non-zero direction");
     def.axis = axis / length;
-    if (j.has("motor")) parseMotor(j, def);
-    if (j.has("limits")) parseLimits(j, def);
   }
+  if (j.has("motor")) parseMotor(j, def);
+  if (j.has("limits")) parseLimits(j, def);
+  if (j.has("cone")) parseCone(j, def);
+  if (j.has("twist")) parseTwist(j, def);
+  if (j.has("spring")) parseSpring(j, def);
+  def.friction = boundedNumber(j, "friction", 0.0, kMaxJointFriction, def.type == Type::Prismatic ? " N" : " N m");
+  def.linearHertz = boundedNumber(j, "linear_hertz", 0.0, kMaxJointHertz, " Hz");
+  def.linearDampingRatio = boundedNumber(j, "linear_damping_ratio", 0.0, kMaxJointDampingRatio, "");
+  def.angularHertz = boundedNumber(j, "angular_hertz", 0.0, kMaxJointHertz, " Hz");
+  def.angularDampingRatio = boundedNumber(j, "angular_damping_ratio", 0.0, kMaxJointDampingRatio, "");
   def.collideConnected = j.boolean("collide_connected", false);
   return def;
 }

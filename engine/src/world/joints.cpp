@@ -27,11 +27,38 @@ std::size_t World::addJoint(const JointDef& def) {
   if (!def.anchor.allFinite() || !def.axis.allFinite() || !(def.axis.norm() > 0.0)) {
     throw std::invalid_argument(who + ": expected a finite anchor and a finite, non-zero axis");
   }
-  if (def.motor && (!std::isfinite(def.motorSpeed) || !std::isfinite(def.maxMotorTorque) || !(def.maxMotorTorque >= 0.0))) {
-    throw std::invalid_argument(who + ": expected a finite motor speed and a finite max torque >= 0");
+  using Type = JointDef::Type;
+  const bool prismatic = def.type == Type::Prismatic;
+  const auto nonNegative = [](double x) { return std::isfinite(x) && x >= 0.0; };
+  if (def.motor && (def.type == Type::Ball || def.type == Type::Weld)) {
+    throw std::invalid_argument(who + ": only a hinge or a prismatic joint takes a motor");
   }
-  if (def.limits && !(def.lowerAngle >= -M_PI && def.lowerAngle <= def.upperAngle && def.upperAngle <= M_PI)) {
+  if (def.motor && (!std::isfinite(def.motorSpeed) || !nonNegative(prismatic ? def.maxMotorForce : def.maxMotorTorque))) {
+    throw std::invalid_argument(who + (prismatic ? ": expected a finite motor speed and a finite max force >= 0"
+                                                 : ": expected a finite motor speed and a finite max torque >= 0"));
+  }
+  if (def.limits && def.type == Type::Weld) throw std::invalid_argument(who + ": a weld joint takes no limits");
+  if (def.limits && prismatic &&
+      !(std::isfinite(def.lowerTranslation) && std::isfinite(def.upperTranslation) && def.lowerTranslation <= def.upperTranslation)) {
+    throw std::invalid_argument(who + ": expected finite translation limits lower <= upper");
+  }
+  if (def.limits && !prismatic && !(def.lowerAngle >= -M_PI && def.lowerAngle <= def.upperAngle && def.upperAngle <= M_PI)) {
     throw std::invalid_argument(who + ": expected limits -pi <= lower <= upper <= pi");
+  }
+  if (def.coneLimit && def.type != Type::Ball) throw std::invalid_argument(who + ": only a ball joint takes a cone limit");
+  if (def.coneLimit && !(def.coneAngle >= 0.0 && def.coneAngle <= M_PI)) {
+    throw std::invalid_argument(who + ": expected a cone half-angle from 0 to pi");
+  }
+  if ((def.spring || def.friction != 0.0) && def.type == Type::Weld) {
+    throw std::invalid_argument(who + ": a weld joint takes no spring or friction; its softness is linear_hertz and angular_hertz");
+  }
+  if (def.spring && !(nonNegative(def.springHertz) && def.springHertz > 0.0 && nonNegative(def.springDampingRatio))) {
+    throw std::invalid_argument(who + ": expected a spring of finite hertz > 0 and a finite damping ratio >= 0");
+  }
+  if (!nonNegative(def.friction)) throw std::invalid_argument(who + ": expected a finite friction >= 0");
+  if (!nonNegative(def.linearHertz) || !nonNegative(def.linearDampingRatio) || !nonNegative(def.angularHertz) ||
+      !nonNegative(def.angularDampingRatio)) {
+    throw std::invalid_argument(who + ": expected finite weld hertz and damping ratios >= 0");
   }
   Joint joint;
   joint.def = def;
