@@ -34,7 +34,7 @@ std::vector<std::uint8_t> activeEdges(const std::vector<Vec3>& vertices, const s
   std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
     return std::tie(x.lo, x.hi, x.triangle) < std::tie(y.lo, y.hi, y.triangle);
   });
-  std::vector<std::uint8_t> active(triangles.size(), 0x7);
+  std::vector<std::uint8_t> active(triangles.size(), kAllEdgesActive);
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i + 1;
     while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi) ++j;

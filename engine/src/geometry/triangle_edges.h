@@ -17,6 +17,9 @@ namespace rbsim {
 // default mActiveEdgeCosThresholdAngle) meet at a flat edge: it is never felt [1].
 inline constexpr double kFlatEdgeCosine = 0.996194698;
 
+// Bits 0, 1 and 2 set: all three edges of a triangle felt.
+inline constexpr std::uint8_t kAllEdgesActive = 0x7;
+
 // Per triangle, bit k set when its edge k (from vertex k to vertex k + 1 mod 3) is active: a
 // boundary edge, an edge shared by more than two triangles, or a convex edge sharper than
 // kFlatEdgeCosine. Flat and concave edges are inactive. Edges are matched by vertex index.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "collision/narrowphase/shape_pairs.h"
+#include "geometry/triangle_edges.h"
 #include "rbsim/collision/contact.h"
 #include "rbsim/math/types.h"
 
@@ -26,7 +27,7 @@ inline constexpr double kTriangleFeatureTolerance = 1e-3;
 struct WorldTriangle {
   std::array<Vec3, 3> vertices;    // world frame [m], counter-clockwise seen from the front
   Vec3 normal = Vec3::UnitY();     // unit, by the winding: the side bodies rest on
-  std::uint8_t activeEdges = 0x7;  // bit k: edge k (vertex k to k + 1) is active
+  std::uint8_t activeEdges = kAllEdgesActive;  // bit k: edge k (vertex k to k + 1) is active
 };
 
 // What GJK runs on for a shape, filled once per shape and reused for every triangle it meets:
