@@ -405,8 +405,9 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   for (std::size_t i = 0; i < previous_.size(); ++i) {
     const Contact& c = previous_[i];
     const bool plane = c.kind == Contact::Kind::PlaneBody;
-    const bool compound = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
-    if ((c.part == 0 || compound) && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
+    // A pair with a compound or a mesh ground keeps all its contacts, one per part.
+    const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
+    if ((c.part == 0 || several) && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
       asleep_.emplace_back(keptKey(c.kind, c.a, c.b), static_cast<std::uint32_t>(i));
     }
   }
