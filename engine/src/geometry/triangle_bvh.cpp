@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/distance.h"
+#include "geometry/triangle_edges.h"
 
 namespace rbsim {
 
@@ -104,6 +105,7 @@ TriangleBvh::TriangleBvh(const Mesh& mesh) : vertices_(mesh.vertices), triangles
   nodes_.reserve(2 * triangles_.size());
   nodes_.emplace_back();
   buildNode(0, 0, static_cast<std::uint32_t>(order_.size()), centroids);
+  activeEdges_ = rbsim::activeEdges(vertices_, triangles_);
 }
 
 // Top-down: split at the median centroid along the longest axis of the centroids' box. The
@@ -170,6 +172,27 @@ void TriangleBvh::closest(const Vec3& p, double& best2, SurfacePoint& best) cons
     } else {
       stack[top++] = left;
       stack[top++] = right;
+    }
+  }
+}
+
+void TriangleBvh::overlapping(const Aabb& box, std::vector<std::uint32_t>& out) const {
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!node.box.overlaps(box)) continue;
+    if (node.count == 0) {
+      stack[top++] = node.first + 1;
+      stack[top++] = node.first;
+      continue;
+    }
+    for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+      const Triangle& t = triangles_[order_[i]];
+      Aabb own;
+      for (std::uint32_t v : t) own.grow(vertices_[v]);
+      if (own.overlaps(box)) out.push_back(order_[i]);
     }
   }
 }

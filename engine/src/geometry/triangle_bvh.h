@@ -83,6 +83,14 @@ class TriangleBvh {
   void overlappingPairs(const TriangleBvh& other, const Mat3& rotation, const Vec3& translation,
                         const std::function<void(std::uint32_t, std::uint32_t)>& pair) const;
 
+  // The triangles whose boxes overlap `box` (this mesh's frame), appended to `out`: a descent
+  // with a fixed stack, allocating nothing once `out` has room (the narrow phase's hot path).
+  void overlapping(const Aabb& box, std::vector<std::uint32_t>& out) const;
+  const std::vector<Vec3>& vertices() const { return vertices_; }
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+  // Per triangle, which of its edges are felt (geometry/triangle_edges.h activeEdges).
+  std::uint8_t activeEdges(std::uint32_t triangle) const { return activeEdges_[triangle]; }
+
   std::size_t triangleCount() const { return triangles_.size(); }
   std::size_t nodeCount() const { return nodes_.size(); }
   const Aabb& bounds() const { return nodes_.front().box; }
@@ -104,6 +112,7 @@ class TriangleBvh {
   std::vector<Triangle> triangles_;
   std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf
   std::vector<Node> nodes_;           // nodes_[0] is the root
+  std::vector<std::uint8_t> activeEdges_;  // per triangle, bit k: edge k is active
 };
 
 }  // namespace rbsim

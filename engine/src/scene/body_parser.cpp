@@ -21,6 +21,7 @@
 #include "scene/compound_parser.h"
 #include "scene/fracture_parser.h"
 #include "scene/implicit_parser.h"
+#include "scene/mesh_ground_parser.h"
 #include "scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
@@ -229,7 +230,7 @@ std::string shapeKey(const JsonObject& b, const std::string& baseDir, InertiaMet
   }
   const auto dumpOf = [&](const char* key) { return b.has(key) ? b.raw(key).dump() : std::string("-"); };
   return std::string(inertiaMethodName(method)) + "\n" + shape.dump() + "\n" + dumpOf("mass") + "\n" +
-         dumpOf("density") + "\n" + dumpOf("sdf");
+         dumpOf("density") + "\n" + dumpOf("sdf") + "\n" + dumpOf("collide_as");
 }
 
 double nonNegative(const JsonObject& o, const char* key, double fallback, const char* unit) {
@@ -339,7 +340,11 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
       throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
     }
     checkMassScale(b, def);
-    parseCollisionShape(b, def, implicit);
+    if (collidesAsTriangles(b)) {
+      makeTriangleGround(def);
+    } else {
+      parseCollisionShape(b, def, implicit);
+    }
     // The collision shape RigidBody would derive from the mesh (shapeOfMesh), made here once so
     // that every body of this shape holds the same hull rather than building its own.
     if (!def.shape) def.shape = shapeOfMesh(*def.mesh, def.sdf != nullptr);
@@ -360,6 +365,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
   def.isStatic = b.boolean("static", false);
   def.isKinematic = b.boolean("kinematic", false);
   if (def.isStatic && def.isKinematic) b.fail("kinematic", "a body is static or kinematic, not both");
+  checkTriangleGroundIsStatic(b, def);
   def.material = parseMaterial(b);
   if (b.has("filter")) {
     if (!def.children.empty()) b.fail("filter", "a compound body's filters are its shapes'; expected \"filter\" in each");

@@ -14,7 +14,7 @@ namespace rbsim::scene_detail {
 inline constexpr std::initializer_list<const char*> kBodyKeys = {
     "name", "shape", "mass", "density", "inertia", "position", "orientation", "velocity",
     "angular_velocity", "color", "static", "kinematic", "forces", "set_pose", "springs", "restitution",
-    "friction_static", "friction_kinetic", "fracture", "sdf", "shapes", "filter", "motion"};
+    "friction_static", "friction_kinetic", "fracture", "sdf", "shapes", "filter", "motion", "collide_as"};
 
 // The material keys of a body or a plane ("restitution", "friction_static", "friction_kinetic"),
 // each defaulting to Material's.

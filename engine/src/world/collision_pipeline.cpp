@@ -14,6 +14,7 @@
 #include "shapes/implicit_shape.h"
 #include "collision/narrowphase/shape_pairs.h"
 #include "world/compound_contacts.h"
+#include "world/mesh_ground_contacts.h"
 #include "world/continuous_collision.h"
 #include "rbsim/integrate/simulation_error.h"
 #include "rbsim/math/parallel.h"
@@ -100,6 +101,7 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       start_(other.start_),
       fast_(other.fast_),
       hasGrid_(other.hasGrid_),
+      meshGround_(other.meshGround_),
       gap_(other.gap_),
       haveStart_(other.haveStart_),
       boxes_(other.boxes_),
@@ -118,7 +120,8 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       log_(other.log_) {}
 
 void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const BodySolid& solid) {
-  hasGrid_[index] = solid.sdf || body.isCompound() ? 1 : 0;
+  meshGround_[index] = isMeshGround(body, solid) ? 1 : 0;
+  hasGrid_[index] = solid.sdf || body.isCompound() || meshGround_[index] ? 1 : 0;
   gap_[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;
   double radius = 0.0;
   Aabb local;
@@ -143,6 +146,7 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const 
 void CollisionPipeline::addBody(const RigidBody& body, const BodySolid& solid) {
   const std::size_t index = proxies_.size();
   hasGrid_.push_back(0);
+  meshGround_.push_back(0);
   gap_.push_back(0.0);
   radius_.push_back(0.0);
   thickness_.push_back(0.0);
@@ -189,6 +193,7 @@ void CollisionPipeline::removeBody(std::size_t index) {
   swapRemove(start_, index);
   swapRemove(fast_, index);
   swapRemove(hasGrid_, index);
+  swapRemove(meshGround_, index);
   swapRemove(gap_, index);
   swapRemove(boxes_, index);
   // The contacts follow the bodies to their new indices (World::destroyBody forgets the solver's
@@ -323,14 +328,16 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
   }
   const RigidBody& a = bodies[pair.a];
   const RigidBody& b = bodies[pair.b];
-  // A compound's children are filtered one by one (compound_contacts.h).
+  // A compound's children are filtered one by one (compound_contacts.h, mesh_ground_contacts.h).
   const bool compound = a.isCompound() || b.isCompound();
-  if (!compound && !shouldCollide(a.filter(), b.filter())) return Later::Nothing;
+  const bool ground = meshGround_[pair.a] || meshGround_[pair.b];
+  if (!compound && !ground && !shouldCollide(a.filter(), b.filter())) return Later::Nothing;
   if (!a.awake() && !b.awake()) {
     // Both asleep: the contact they fell asleep with (Box2D keeps a sleeping set's contacts,
     // solver_set.c), so that an island woken this step has its inner contacts in place; without
     // them each body it woke fell a step unsupported, and sleep cost a 4000-box pile time.
     const bool grid = shapes[pair.a].sdf || shapes[pair.b].sdf;  // several manifolds: left out, as before
+    if (ground) return Later::MeshGround;
     if (compound) return Later::Compound;
     if (!grid) kept(Contact::Kind::BodyBody, pair.a, pair.b, out);
     return Later::Nothing;
@@ -338,6 +345,8 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
   // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
   // K = 0), so no impulse could separate them.
   if (!a.isDynamic() && !b.isDynamic()) return Later::Nothing;
+  // Before the grid's test: a body with a grid meets a mesh ground as its convex hull.
+  if (ground) return Later::MeshGround;
   if (shapes[pair.a].sdf || shapes[pair.b].sdf) return Later::Grid;
   if (compound) return Later::Compound;
   const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
@@ -396,8 +405,9 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   for (std::size_t i = 0; i < previous_.size(); ++i) {
     const Contact& c = previous_[i];
     const bool plane = c.kind == Contact::Kind::PlaneBody;
-    const bool compound = bodies[c.b].isCompound() || (!plane && bodies[c.a].isCompound());
-    if ((c.part == 0 || compound) && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
+    // A pair with a compound or a mesh ground keeps all its contacts, one per part.
+    const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
+    if ((c.part == 0 || several) && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
       asleep_.emplace_back(keptKey(c.kind, c.a, c.b), static_cast<std::uint32_t>(i));
     }
   }
@@ -419,13 +429,13 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   parallelFor(pairs.size(), threads, [&](std::size_t k) {
     later_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k]);
   });
-  collideCompounds(pairs, bodies, threads);
+  collideCompounds(pairs, bodies, shapes, threads);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     if (later_[k] == Later::Nothing) {
       if (pairSlots_[k].manifold.count > 0) contacts_.push_back(pairSlots_[k]);
       continue;
     }
-    if (later_[k] == Later::Compound) {
+    if (later_[k] == Later::Compound || later_[k] == Later::MeshGround) {
       contacts_.insert(contacts_.end(), compoundSlots_[k].begin(), compoundSlots_[k].end());
       continue;
     }
@@ -493,10 +503,10 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
 }
 
 void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
-                                         int threads) {
+                                         const std::vector<BodySolid>& shapes, int threads) {
   compoundWork_.clear();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    if (later_[k] == Later::Compound) compoundWork_.push_back(k);
+    if (later_[k] == Later::Compound || later_[k] == Later::MeshGround) compoundWork_.push_back(k);
   }
   if (compoundWork_.empty()) return;
   if (compoundSlots_.size() < pairs.size()) compoundSlots_.resize(pairs.size());
@@ -512,7 +522,14 @@ void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, co
       keptAll(Contact::Kind::BodyBody, pair.a, pair.b, out);
       return;
     }
-    collideCompoundPair(a, pair.a, b, pair.b, settings_.contactMargin + reach_[pair.a] + reach_[pair.b], out);
+    const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+    if (later_[k] == Later::MeshGround) {
+      const bool groundIsA = meshGround_[pair.a] != 0;
+      const std::size_t ig = groundIsA ? pair.a : pair.b, io = groundIsA ? pair.b : pair.a;
+      collideMeshGround(bodies[ig], ig, *shapes[ig].triangles, bodies[io], io, margin, out);
+      return;
+    }
+    collideCompoundPair(a, pair.a, b, pair.b, margin, out);
   });
 }
 

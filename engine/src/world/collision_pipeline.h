@@ -77,14 +77,17 @@ class CollisionPipeline {
  private:
   bool isFast(std::size_t body) const;
   // What collidePair left for later: nothing, a pair with a grid (collided on the calling
-  // thread: it gives several manifolds), or a pair with a compound body (compoundSlots_).
-  enum class Later : char { Nothing, Grid, Compound };
+  // thread: it gives several manifolds), a pair with a compound body or a body on a mesh ground
+  // (both into compoundSlots_, several contacts a pair).
+  enum class Later : char { Nothing, Grid, Compound, MeshGround };
   // The convex or round contact of candidate pair `proxies` into `out` (count 0: none, or a pair
   // to skip), or what is left for later.
   Later collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                    double time, Contact& out);
-  // The pairs collidePair left to the compound pass, on `threads` threads into compoundSlots_.
-  void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies, int threads);
+  // The pairs collidePair left to the compound and mesh-ground pass, on `threads` threads into
+  // compoundSlots_.
+  void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
+                        const std::vector<BodySolid>& shapes, int threads);
   void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // radius_, thickness_, boxes_ of a body
   // The last step's contact of a sleeping pair (body and body, or plane and body) into `out`, if
   // it had one; asleep_ is keyed by keptKey.
@@ -113,6 +116,9 @@ class CollisionPipeline {
   // such bodies and their partners alone (a hull would stop a body at a bowl's rim, above its
   // cavity, or at a table's hull, under its top).
   std::vector<char> hasGrid_;
+  // Per body: a static triangle-mesh ground (world/mesh_ground_contacts.h), also marked in
+  // hasGrid_: its convex hull would stop a body above its valleys.
+  std::vector<char> meshGround_;
   // Per body: how far its solid may reach beyond its display mesh's vertices [m] (an implicit
   // body's: a cell's diagonal), added to its box.
   std::vector<double> gap_;
