@@ -18,6 +18,7 @@
 #include "scene/joint_parser.h"
 #include "rbsim/scene/json_fields.h"
 #include "scene/particle_parser.h"
+#include "scene/ragdoll_parser.h"
 #include "scene/planar_parser.h"
 #include "rbsim/scene/scene_parts.h"
 #include "scene/soft_parser.h"
@@ -45,7 +46,7 @@ void parseView(const JsonObject& root, Scene& scene) {
 
 void checkWorkBudget(const JsonObject& root, const Scene& scene) {
   // Spawners count with every body they will have added by the end (none removed: a bound).
-  double bodies = static_cast<double>(scene.bodies.size());
+  double bodies = static_cast<double>(scene.bodies.size() + kBoneCount * scene.ragdolls.size());
   for (const SpawnerDef& s : scene.spawners) {
     const double span = std::min(s.end, scene.duration) - s.start;
     if (span > 0.0) bodies += s.count * std::ceil(span / s.period);
@@ -69,7 +70,7 @@ std::uint64_t Scene::stepCount() const {
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
   const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "kill_volume", "particles",
-                                                 "soft_bodies", "planar", "joints"});
+                                                 "soft_bodies", "planar", "joints", "ragdolls"});
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -86,7 +87,8 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
     scene.killVolume.max = k.boundedVec3("max", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     if (!(scene.killVolume.min.array() < scene.killVolume.max.array()).all()) k.fail("max", "expected every component > min's");
   }
-  if (scene.bodies.empty() && scene.spawners.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies") && !root.has("planar")) {
+  scene_detail::parseRagdolls(root, scene);
+  if (scene.bodies.empty() && scene.spawners.empty() && scene.ragdolls.empty() && !nonEmpty("particles") && !nonEmpty("soft_bodies") && !root.has("planar")) {
     throw InputError(file, "bodies", "expected a non-empty array of bodies (or a spawn block, particles, soft bodies or a planar world)");
   }
   std::unordered_map<std::string, std::size_t> names;
@@ -140,6 +142,7 @@ World buildWorld(const Scene& scene) {
   if (!scene.killVolume.empty()) world.setKillVolume(scene.killVolume);
   for (const Spring& s : scene.springs) world.addSpring(s);
   for (const JointDef& j : scene.joints) world.addJoint(j);
+  for (const RagdollDef& r : scene.ragdolls) addRagdoll(world, r);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);
   for (const ParticleSystemDef& def : scene.particleSystems) addParticleSystem(world, def);
   for (const SoftBodyDef& def : scene.softBodies) addSoftBody(world, def);

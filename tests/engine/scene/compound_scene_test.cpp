@@ -109,5 +109,31 @@ TEST(CompoundScene, BadValuesNameTheirPath) {
   EXPECT_EQ(withLift({{"angular_velocity", {0, "a", 0}}}).rfind("bodies[0].motion.angular_velocity:", 0), 0u);
 }
 
+TEST(CompoundScene, RagdollsAreAddedWithTheirJoints) {
+  json doc = {{"world", {{"dt", 1.0 / 60.0}}},
+              {"planes", {{{"normal", {0, 1, 0}}}}},
+              {"ragdolls", {{{"name", "ann"}, {"position", {0, 2, 0}}, {"scale", 0.5}},
+                            {{"name", "bob"}, {"position", {2, 2, 0}}, {"joint_hertz", 0}}}}};
+  const Scene scene = parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR);
+  ASSERT_EQ(scene.ragdolls.size(), 2u);
+  EXPECT_EQ(scene.ragdolls[0].scale, 0.5);
+  EXPECT_EQ(scene.ragdolls[1].jointHertz, 0.0);
+  const World w = buildWorld(scene);
+  EXPECT_EQ(w.bodies().size(), 2 * kBoneCount);
+  EXPECT_EQ(w.joints().size(), 2 * (kBoneCount - 1));
+  EXPECT_EQ(w.bodies()[0].name(), "ann_pelvis");
+
+  const auto field = [&](const std::function<void(json&)>& change) {
+    json bad = doc;
+    change(bad);
+    return errorField(bad);
+  };
+  EXPECT_EQ(field([](json& d) { d["ragdolls"][0]["scale"] = 100; }).rfind("ragdolls[0].scale:", 0), 0u);
+  EXPECT_EQ(field([](json& d) { d["ragdolls"][1]["name"] = "ann"; }).rfind("ragdolls[1].name:", 0), 0u);
+  EXPECT_EQ(field([](json& d) { d["ragdolls"][0]["joint_friction"] = -1; }).rfind("ragdolls[0].joint_friction:", 0), 0u);
+  EXPECT_EQ(field([](json& d) { d["world"]["solver"] = "pgs"; }).rfind("ragdolls:", 0), 0u);
+  EXPECT_EQ(field([](json& d) { d["ragdolls"][0]["sacle"] = 1; }).rfind("ragdolls[0].sacle:", 0), 0u);
+}
+
 }  // namespace
 }  // namespace rbsim

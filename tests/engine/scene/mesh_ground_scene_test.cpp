@@ -79,7 +79,9 @@ TEST(MeshGroundScene, TheDemoSceneSettlesOnTheTerrain) {
     const Vec3& x = b.position();
     EXPECT_GT(x.y(), 0.2 * std::sin(k * x.x()) * std::cos(k * x.z())) << b.name();
     EXPECT_LT(std::max(std::abs(x.x()), std::abs(x.z())), 6.0) << b.name();
-    if (b.name() != "ball" && b.name() != "capsule") EXPECT_LT(b.velocity().norm(), 0.05) << b.name();
+    if (b.name() != "ball" && b.name() != "capsule") {
+      EXPECT_LT(b.velocity().norm(), 0.05) << b.name();
+    }
   }
 }
 

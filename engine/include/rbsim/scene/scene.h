@@ -16,6 +16,7 @@
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spring.h"
 #include "rbsim/settings/settings.h"
+#include "rbsim/world/ragdoll.h"
 #include "rbsim/world/world.h"
 #include "rbsim/scene/view_desc.h"
 
@@ -43,6 +44,7 @@ struct Scene {
   std::vector<KinematicMotion> motions;  // kinematic bodies' prescribed motions
   std::vector<SpawnerDef> spawners;      // "spawn" blocks with a "period": bodies added while stepping
   Aabb killVolume;                       // "kill_volume"; empty: none
+  std::vector<RagdollDef> ragdolls;      // "ragdolls": presets added after the joints
   std::vector<JointDef> joints;  // ball and hinge joints (dynamics/joint.h)
   std::vector<Plane> planes;  // static, infinite
   std::vector<Material> planeMaterials;  // per plane
