@@ -86,8 +86,8 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     const bool randomOrientation = s.boolean("random_orientation", true);
 
     // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
-    const JsonObject body = s.object("body", {"shape", "mass", "density", "inertia", "orientation", "color", "springs",
-                                               "restitution", "friction_static", "friction_kinetic", "fracture", "sdf"});
+    const JsonObject body = s.object("body", {"shape", "shapes", "mass", "density", "inertia", "orientation", "color", "springs",
+                                               "restitution", "friction_static", "friction_kinetic", "fracture", "sdf", "filter"});
     const std::size_t first = scene.bodies.size();
     const std::size_t springsBefore = scene.springs.size();
     parseBody(body, baseDir, scene, shapes);

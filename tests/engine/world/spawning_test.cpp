@@ -153,6 +153,16 @@ TEST(SpawningScene, PeriodicSpawnBlocksAndTheKillVolumeAreRead) {
   for (int i = 0; i < 60; ++i) w.step();
   EXPECT_EQ(w.bodies().size(), 4u) << "bursts at 0.25 and 0.75 s";
 
+  // A compound template with a filter spawns compound bodies (a case the first version refused).
+  json hammers = doc;
+  hammers["spawn"][0]["body"] = {{"mass", 1}, {"shapes", {{{"type", "capsule"}, {"radius", 0.02}, {"length", 0.3}},
+                                                         {{"type", "box"}, {"extents", {0.15, 0.05, 0.05}}, {"position", {0, 0.18, 0}}, {"filter", {{"group", -1}}}}}}};
+  World h = buildWorld(parseScene(hammers, "test.json", RBSIM_TEST_DATA_DIR));
+  for (int i = 0; i < 30; ++i) h.step();
+  ASSERT_EQ(h.bodies().size(), 2u);
+  EXPECT_EQ(h.bodies()[0].children().size(), 2u);
+  EXPECT_EQ(h.bodies()[0].children()[1].filter.group, -1);
+
   const auto field = [&](const std::function<void(json&)>& change) {
     json bad = doc;
     change(bad);
