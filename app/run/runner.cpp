@@ -103,7 +103,8 @@ void checkRunBudgets(const std::vector<Phase>& phases, const Phase& longest, con
 }
 
 // What a recording keeps of the run to rebuild its phases (record/recording.h): each phase's
-// scene file as read now, and the overrides. A 2D world and breakable bodies are not recorded yet.
+// scene file as read now, and the overrides. A 2D world, breakable bodies and spawning are not
+// recorded yet.
 RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title) {
   RecordingHeader header;
   header.rbsimVersion = RBSIM_VERSION;
@@ -112,6 +113,10 @@ RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptio
   for (const Phase& phase : phases) {
     for (const PhaseWorld& w : phase.worlds) {
       if (w.scene.planar) throw InputError(phase.file, "--record", "a scene with a 2D world (planar) cannot be recorded yet");
+      if (!w.scene.spawners.empty() || !w.scene.killVolume.empty()) {
+        throw InputError(phase.file, "--record", "a scene that spawns or removes bodies as it runs (a \"spawn\" block with a period, a "
+                                                 "\"kill_volume\") cannot be recorded yet: a replay rebuilds its bodies from the scene");
+      }
       for (const BodyDef& body : w.scene.bodies) {
         if (body.fracture) {
           throw InputError(phase.file, "--record", "body \"" + body.name + "\" can break, and a recording cannot add its pieces yet");
