@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "rbsim/body/rigid_body.h"
 #include "rbsim/body/shape_body.h"
 #include "rbsim/mass/mass_properties.h"
 
@@ -47,7 +48,7 @@ BodyDef compoundBodyDef(const std::vector<CompoundPart>& parts, const std::strin
     if (!(part.density > 0.0) || !std::isfinite(part.density)) {
       throw std::invalid_argument(where + "density must be a positive finite number [kg/m^3]");
     }
-    if (!(std::abs(part.orientation.norm() - 1.0) <= 1e-6) || !part.position.allFinite()) {
+    if (!(std::abs(part.orientation.norm() - 1.0) <= kRotationTolerance) || !part.position.allFinite()) {
       throw std::invalid_argument(where + "expected a finite position and a unit orientation");
     }
     masses.push_back(partMass(part, where));

@@ -11,6 +11,10 @@ namespace {
 // A figure from a doll to a giant: 0.05 to 20 times a 1.8 m person.
 constexpr double kMinRagdollScale = 0.05;  // [1]
 constexpr double kMaxRagdollScale = 20.0;  // [1]
+// A joint spring stiffer than this is a weld, and its substep cannot follow it; the same bound for
+// the damping ratio keeps the spring's coefficients finite.
+constexpr double kMaxJointHertz = 1e6;         // [Hz]
+constexpr double kMaxJointDampingRatio = 1e6;  // [1]
 
 }  // namespace
 
@@ -32,9 +36,13 @@ void parseRagdolls(const JsonObject& root, Scene& scene) {
     def.jointFriction = r.number("joint_friction", def.jointFriction);
     if (!(def.jointFriction >= 0.0) || def.jointFriction > kMaxMassScale) r.fail("joint_friction", "expected a torque >= 0 N m");
     def.jointHertz = r.number("joint_hertz", def.jointHertz);
-    if (!(def.jointHertz >= 0.0) || def.jointHertz > 1e6) r.fail("joint_hertz", "expected a frequency from 0 (no spring) to 1e6 Hz");
+    if (!(def.jointHertz >= 0.0) || def.jointHertz > kMaxJointHertz) {
+      r.fail("joint_hertz", "expected a frequency from 0 (no spring) to " + formatNumber(kMaxJointHertz) + " Hz");
+    }
     def.jointDampingRatio = r.number("joint_damping_ratio", def.jointDampingRatio);
-    if (!(def.jointDampingRatio >= 0.0) || def.jointDampingRatio > 1e6) r.fail("joint_damping_ratio", "expected a ratio from 0 to 1e6");
+    if (!(def.jointDampingRatio >= 0.0) || def.jointDampingRatio > kMaxJointDampingRatio) {
+      r.fail("joint_damping_ratio", "expected a ratio from 0 to " + formatNumber(kMaxJointDampingRatio));
+    }
     for (const BodyDef& b : scene.bodies) {
       if (b.name.rfind(def.name + "_", 0) == 0) r.fail("name", "body \"" + b.name + "\" already starts with \"" + def.name + "_\"; expected a name of its own");
     }
