@@ -219,12 +219,15 @@ PYBIND11_MODULE(rbsim, m) {
              requireKeywordsOnly(args, "World.add_spawner()", "an entry of a scene's \"spawn\"");
              return w.addSpawner(givenKeywords(spawn));
            },
-           "add_spawner(self, /, *, period, body, region, count=1, seed=1, name=None, speed=None, "
-           "angular_speed=None, random_orientation=True, start=0.0, end=None)\n--\n\n"
-           "-> int: the spawner's index; the keys of an entry of a scene's \"spawn\" with a period [s]: count bodies "
-           "like body (the keys of an entry of \"bodies\" but name and pose) every period from start until end, "
+           "add_spawner(self, /, *, period, body=None, ragdoll=None, region, count=1, offsets=None, lifetime=None, "
+           "seed=1, name=None, speed=None, angular_speed=None, random_orientation=True, start=0.0, end=None)\n--\n\n"
+           "-> int: the spawner's index; the keys of an entry of a scene's \"spawn\" with a period [s]: count points "
            "drawn in region={\"min\": (x, y, z), \"max\": (x, y, z)} with speed=(lo, hi) [m/s] and angular_speed "
-           "(lo, hi) [rad/s] by a generator seeded with seed, named <name>_<n>")
+           "(lo, hi) [rad/s] by a generator seeded with seed, every period from start until end; at each point one "
+           "copy per offset of offsets=[(x, y, z), ...] (default [(0, 0, 0)]), a body like body (the keys of an entry "
+           "of \"bodies\" but name and pose) or a ragdoll figure like ragdoll={\"scale\", \"mass\", "
+           "\"joint_friction\", \"joint_hertz\", \"joint_damping_ratio\", \"orientation\"}, named <name>_<n>; "
+           "lifetime [s]: each burst removed that long after it came")
       .def_property("kill_volume", &PyWorld::killVolume, &PyWorld::setKillVolume,
                     "(min x, min y, min z, max x, max y, max z) [m] or None: bodies whose centre of mass is outside "
                     "it at the start of a step are removed (their ids go stale)")

@@ -76,7 +76,9 @@ class World:
                  restitution: float = 0.0, friction_static: float = 0.6, friction_kinetic: float = 0.5,
                  fracture: Optional[Dict[str, Any]] = None, sdf: Optional[Dict[str, Any]] = None,
                  filter: Optional[Dict[str, Any]] = None, motion: Optional[Dict[str, Any]] = None) -> BodyId: ...
-    def add_spawner(self, /, *, period: float, body: Dict[str, Any], region: Dict[str, Vec3], count: int = 1,
+    def add_spawner(self, /, *, period: float, region: Dict[str, Vec3], body: Optional[Dict[str, Any]] = None,
+                    ragdoll: Optional[Dict[str, Any]] = None, count: int = 1,
+                    offsets: Optional[Sequence[Vec3]] = None, lifetime: Optional[float] = None,
                     seed: int = 1, name: Optional[str] = None,
                     speed: Optional[Sequence[float]] = None, angular_speed: Optional[Sequence[float]] = None,
                     random_orientation: bool = True, start: float = 0.0, end: Optional[float] = None) -> int: ...

@@ -6,6 +6,9 @@
 #   joint_grid.json       CreateJointGrid: 100 x 100 spheres joined by ball joints, top row static
 #   convex_pile.json      CreateConvexPile: 8 x 8 x 80 copies of one 32-point hull (+ convex_pile_hull.obj)
 #   washer.json           CreateWasher: a kinematic drum of 40 hulls turning, 20 x 20 x 20 cubes inside
+#   rain.json             CreateRain + StepRain: 10 x 10 cells of a grid mesh and a torus mesh (+ rain_cell.obj),
+#                         a column of 10 groups of 3 ragdolls dropped at the benchmark's steps, the
+#                         oldest column cleared and dropped again once all ten have fallen
 #
 # Layouts follow Box3D (github.com/erincatto/box3d) at commit
 # 30c67b5e6d0a3a66f0f506c69ce9e9e0587e3b7c, shared/benchmarks.c: CreateLargePyramid,
@@ -24,6 +27,11 @@
 #    other, and there is nothing else in that world, so collisions are off ("collisions": false).
 #    Box3D also joins the static top row's neighbours to each other (99 joints between two static
 #    bodies, which do nothing); rbsim wants a dynamic body_a, so those are left out.
+#  - Rain: Box3D's human (shared/human.c) has 14 bones (three spine pieces and a neck); rbsim's
+#    ragdoll preset (world/ragdoll.h) has 11, so the scene has 3300 bodies where Box3D has 4200.
+#    Box3D's per-bone joint friction (5 N m x 1, 0.8 at the neck, 0.4 at the head), its rolling
+#    resistance 0.2 and the negative filter group that keeps a group's torsos and thighs apart are
+#    not in the preset: every joint has 5 N m.
 #  - Box3D's sleep test is |v| + |omega| * extent < 0.05 m/s for 0.5 s; rbsim tests |v| and |omega|
 #    apart, so the convex pile asks for 0.05 m/s and 0.05 / 2 rad/s (the hull's radius is 2 m).
 #
@@ -414,7 +422,108 @@ def washer():
     write_scene("washer.json", head, bodies)
 
 
+# ---------------------------------------------------------------------------------------------
+# CreateRain, StepRain (release: RAIN_GRID_COUNT 10, RAIN_GROUP_SIZE 3, RAIN_GRID_SIZE 15): a
+# static body per cell holding b3CreateGridMesh(8, 8, 1.875) and b3CreateTorusMesh(16, 16, 3.75, 1)
+# (the torus stands in the x-y plane, half of it under the grid); StepRain runs before the step
+# whose index has (index & 0x2F) == 0, that is at steps 0, 16, 64, 80, 128, ... (two in every 64),
+# and each time creates the next column's ten groups of three humans, 20 m up, 0.75 m apart in x;
+# from the eleventh time on it destroys the oldest column and creates it again. So column c falls
+# at step 64 (c // 2) + 16 (c % 2) and again every 320 steps: a spawner per column with that start,
+# a period of 320 steps and a lifetime of 320 steps.
+RAIN_GRID_SIZE = 15.0
+RAIN_GRID_COUNT = 10
+RAIN_GROUP_SIZE = 3
+RAIN_STEPS = 400
+
+
+def rain_cell_mesh():
+    """Box3D's grid mesh and torus mesh of one cell, as vertices and outward-wound triangles."""
+    vertices, triangles = [], []
+    rows, width = 8, RAIN_GRID_SIZE / 8.0
+    for ix in range(rows + 1):
+        for iz in range(rows + 1):
+            vertices.append((-0.5 * RAIN_GRID_SIZE + width * ix, 0.0, -0.5 * RAIN_GRID_SIZE + width * iz))
+    for ix in range(rows):
+        for iz in range(rows):
+            a, b = ix * (rows + 1) + iz, (ix + 1) * (rows + 1) + iz
+            triangles += [(a, a + 1, b), (b, a + 1, b + 1)]  # facing +y
+    base = len(vertices)
+    radial, tubular, radius, thickness = 16, 16, 0.25 * RAIN_GRID_SIZE, 1.0
+    for r in range(radial):
+        for t in range(tubular):
+            u, v = 2.0 * math.pi * t / tubular, 2.0 * math.pi * r / radial
+            vertices.append(((radius + thickness * math.cos(v)) * math.cos(u),
+                             (radius + thickness * math.cos(v)) * math.sin(u), thickness * math.sin(v)))
+    for r1 in range(radial):
+        r2 = (r1 + 1) % radial
+        for t1 in range(tubular):
+            t2 = (t1 + 1) % tubular
+            i1, i2, i3, i4 = (base + r1 * tubular + t1, base + r1 * tubular + t2, base + r2 * tubular + t2,
+                              base + r2 * tubular + t1)
+            triangles += [(i1, i2, i3), (i3, i4, i1)]
+    # Box3D's torus winding, checked outward here: each triangle's normal points away from the tube's
+    # centre line (the point of the ring nearest the triangle's centroid).
+    def outward(tri):
+        p = [vertices[i] for i in tri]
+        n = cross(sub(p[1], p[0]), sub(p[2], p[0]))
+        c = [sum(q[k] for q in p) / 3.0 for k in range(3)]
+        ring = math.hypot(c[0], c[1])
+        centre = (radius * c[0] / ring, radius * c[1] / ring, 0.0)
+        return dot(n, sub(c, centre)) > 0.0
+    torus = triangles[2 * rows * rows:]
+    if not all(outward(t) for t in torus):
+        assert not any(outward(t) for t in torus)
+        triangles[2 * rows * rows:] = [(a, c, b) for a, b, c in torus]
+    return vertices, triangles
+
+
+def rain():
+    vertices, triangles = rain_cell_mesh()
+    with open(os.path.join(HERE, "rain_cell.obj"), "w") as out:
+        out.write("# Box3D %s CreateRain's cell: b3CreateGridMesh(8, 8, 1.875) and b3CreateTorusMesh(16, 16, 3.75, 1)"
+                  " (make_box3d_scenes.py)\n" % BOX3D_COMMIT[:7])
+        out.writelines("v %s %s %s\n" % tuple(repr(num(c, 9)) for c in v) for v in vertices)
+        out.writelines("f %d %d %d\n" % (a + 1, b + 1, c + 1) for a, b, c in triangles)
+    span = RAIN_GRID_SIZE * RAIN_GRID_COUNT
+    bodies = []
+    for i in range(RAIN_GRID_COUNT):
+        for j in range(RAIN_GRID_COUNT):
+            centre = (-0.5 * span + RAIN_GRID_SIZE * (i + 0.5), 0.0, -0.5 * span + RAIN_GRID_SIZE * (j + 0.5))
+            bodies.append({"name": "cell_%d_%d" % (i, j), "shape": {"type": "mesh", "file": "rain_cell.obj"},
+                           "collide_as": "triangles", "static": True, "mass": 1, "inertia": "cube",
+                           "position": vec(centre), "friction_static": FRICTION, "friction_kinetic": FRICTION,
+                           "color": [0.55, 0.6, 0.55]})
+    dt = 1.0 / 60.0
+    cycle = 10 * 32  # steps between two drops of one column
+    spawn = []
+    for column in range(RAIN_GRID_COUNT):
+        first = 64 * (column // 2) + 16 * (column % 2)
+        assert first & 0x2F == 0
+        x = -0.5 * span + RAIN_GRID_SIZE * (column + 0.5)
+        offsets = [[num(0.75 * k), 0, num(-0.5 * span + RAIN_GRID_SIZE * (row + 0.5))]
+                   for row in range(RAIN_GRID_COUNT) for k in range(RAIN_GROUP_SIZE)]
+        spawn.append({"name": "column%d" % column, "ragdoll": {"mass": 70, "joint_friction": 5, "joint_hertz": 1,
+                                                               "joint_damping_ratio": 0.7},
+                      "region": {"min": [num(x), 20, 0], "max": [num(x), 20, 0]}, "random_orientation": False,
+                      "offsets": offsets, "start": num(first * dt, 12), "period": num(cycle * dt, 12),
+                      "lifetime": num(cycle * dt, 12)})
+    head = {
+        "title": "Box3D benchmark rain: columns of ragdoll groups falling on 100 cells of grid and torus meshes",
+        "world": world_block(RAIN_STEPS, True),
+        "view": view_block([0, 60, 110], [0, 0, 0],
+                           "Box3D %s shared/benchmarks.c CreateRain, StepRain: 10 x 10 static cells of a grid mesh "
+                           "and a torus mesh (collided triangle by triangle); at steps 0, 16, 64, 80, ... a column of "
+                           "10 groups of 3 ragdolls (rbsim's 11-capsule preset, 70 kg, joint friction 5 N m, springs "
+                           "1 Hz, damping ratio 0.7) drops from 20 m; once all ten columns are down the oldest is "
+                           "cleared and dropped again; dt 1/60 s, sleep on, 400 steps" % BOX3D_COMMIT[:7], fov=60),
+        "spawn": spawn,
+    }
+    write_scene("rain.json", head, bodies)
+
+
 if __name__ == "__main__":
+    rain()
     washer()
     large_pyramid()
     many_pyramids()

@@ -63,7 +63,8 @@ void parsePlanes(const JsonObject& root, Scene& scene);
 // Each block's template is parsed once (through `shapes`, when given) and its bodies copy it.
 void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
 inline constexpr std::initializer_list<const char*> kSpawnKeys = {
-    "count", "seed", "name", "body", "region", "speed", "angular_speed", "random_orientation", "period", "start", "end"};
+    "count", "seed", "name", "body", "ragdoll", "offsets", "lifetime", "region", "speed", "angular_speed",
+    "random_orientation", "period", "start", "end"};
 // One spawn block; `spawnedVertices` counts the vertices of every block so far (a budget).
 void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices);
 

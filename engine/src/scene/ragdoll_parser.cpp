@@ -18,6 +18,26 @@ constexpr double kMaxJointDampingRatio = 1e6;  // [1]
 
 }  // namespace
 
+void parseRagdollFigure(const JsonObject& r, RagdollDef& def) {
+  def.orientation = r.optionalOrientation("orientation").value_or(Quat::Identity());
+  def.scale = r.positiveNumber("scale", def.scale);
+  if (def.scale < kMinRagdollScale || def.scale > kMaxRagdollScale) {
+    r.fail("scale", "expected " + formatNumber(kMinRagdollScale) + " to " + formatNumber(kMaxRagdollScale) + " (1: 1.8 m tall)");
+  }
+  def.mass = r.positiveNumber("mass", def.mass);
+  if (def.mass > kMaxMassScale) r.fail("mass", "expected at most " + formatNumber(kMaxMassScale) + " kg");
+  def.jointFriction = r.number("joint_friction", def.jointFriction);
+  if (!(def.jointFriction >= 0.0) || def.jointFriction > kMaxMassScale) r.fail("joint_friction", "expected a torque >= 0 N m");
+  def.jointHertz = r.number("joint_hertz", def.jointHertz);
+  if (!(def.jointHertz >= 0.0) || def.jointHertz > kMaxJointHertz) {
+    r.fail("joint_hertz", "expected a frequency from 0 (no spring) to " + formatNumber(kMaxJointHertz) + " Hz");
+  }
+  def.jointDampingRatio = r.number("joint_damping_ratio", def.jointDampingRatio);
+  if (!(def.jointDampingRatio >= 0.0) || def.jointDampingRatio > kMaxJointDampingRatio) {
+    r.fail("joint_damping_ratio", "expected a ratio from 0 to " + formatNumber(kMaxJointDampingRatio));
+  }
+}
+
 void parseRagdolls(const JsonObject& root, Scene& scene) {
   int n = 0;
   for (const JsonObject& r : root.objectArray("ragdolls", {"name", "position", "orientation", "velocity", "scale", "mass",
@@ -25,24 +45,8 @@ void parseRagdolls(const JsonObject& root, Scene& scene) {
     RagdollDef def;
     def.name = r.string("name", "ragdoll" + std::to_string(n++));
     def.position = r.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
-    def.orientation = r.optionalOrientation("orientation").value_or(Quat::Identity());
     def.velocity = r.boundedVec3("velocity", Vec3::Zero(), kMaxSpeed, "m/s", "the speed of light");
-    def.scale = r.positiveNumber("scale", def.scale);
-    if (def.scale < kMinRagdollScale || def.scale > kMaxRagdollScale) {
-      r.fail("scale", "expected " + formatNumber(kMinRagdollScale) + " to " + formatNumber(kMaxRagdollScale) + " (1: 1.8 m tall)");
-    }
-    def.mass = r.positiveNumber("mass", def.mass);
-    if (def.mass > kMaxMassScale) r.fail("mass", "expected at most " + formatNumber(kMaxMassScale) + " kg");
-    def.jointFriction = r.number("joint_friction", def.jointFriction);
-    if (!(def.jointFriction >= 0.0) || def.jointFriction > kMaxMassScale) r.fail("joint_friction", "expected a torque >= 0 N m");
-    def.jointHertz = r.number("joint_hertz", def.jointHertz);
-    if (!(def.jointHertz >= 0.0) || def.jointHertz > kMaxJointHertz) {
-      r.fail("joint_hertz", "expected a frequency from 0 (no spring) to " + formatNumber(kMaxJointHertz) + " Hz");
-    }
-    def.jointDampingRatio = r.number("joint_damping_ratio", def.jointDampingRatio);
-    if (!(def.jointDampingRatio >= 0.0) || def.jointDampingRatio > kMaxJointDampingRatio) {
-      r.fail("joint_damping_ratio", "expected a ratio from 0 to " + formatNumber(kMaxJointDampingRatio));
-    }
+    parseRagdollFigure(r, def);
     for (const BodyDef& b : scene.bodies) {
       if (b.name.rfind(def.name + "_", 0) == 0) r.fail("name", "body \"" + b.name + "\" already starts with \"" + def.name + "_\"; expected a name of its own");
     }

@@ -49,7 +49,9 @@ void checkWorkBudget(const JsonObject& root, const Scene& scene) {
   double bodies = static_cast<double>(scene.bodies.size() + kBoneCount * scene.ragdolls.size());
   for (const SpawnerDef& s : scene.spawners) {
     const double span = std::min(s.end, scene.duration) - s.start;
-    if (span > 0.0) bodies += s.count * std::ceil(span / s.period);
+    const double perBurst = static_cast<double>(s.count) * static_cast<double>(s.offsets.size()) *
+                            static_cast<double>(s.ragdoll ? kBoneCount : 1);
+    if (span > 0.0) bodies += perBurst * std::ceil(span / s.period);
   }
   const double work = bodies * static_cast<double>(scene.stepCount());
   if (work <= kMaxBodySteps) return;

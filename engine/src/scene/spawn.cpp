@@ -11,6 +11,7 @@
 #include "rbsim/world/spawner.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
+#include "scene/ragdoll_parser.h"
 
 namespace rbsim::scene_detail {
 
@@ -39,6 +40,30 @@ std::pair<double, double> range(const JsonObject& o, const char* key, const char
   return {r[0].get<double>(), r[1].get<double>()};
 }
 
+// "offsets": [[x, y, z], ...], each within the scene's coordinates; [[0, 0, 0]] when left out.
+std::vector<Vec3> offsetsOf(const JsonObject& s) {
+  if (!s.has("offsets")) return {Vec3::Zero()};
+  const nlohmann::json& list = s.raw("offsets");
+  const std::string expected = "expected a non-empty array of at most " + std::to_string(kMaxSpawnCount) +
+                               " offsets [x, y, z] from each drawn point, each within " + shortNumber(kMaxCoordinate) + " m";
+  if (!list.is_array() || list.empty() || list.size() > static_cast<std::size_t>(kMaxSpawnCount)) s.fail("offsets", expected);
+  std::vector<Vec3> offsets;
+  for (const nlohmann::json& p : list) {
+    if (!p.is_array() || p.size() != 3) s.fail("offsets", expected);
+    Vec3 offset;
+    for (int k = 0; k < 3; ++k) {
+      if (!p[k].is_number() || !(std::abs(p[k].get<double>()) <= kMaxCoordinate)) s.fail("offsets", expected);
+      offset[k] = p[k].get<double>();
+    }
+    offsets.push_back(offset);
+  }
+  return offsets;
+}
+
+void spawnRagdolls(const JsonObject& s, bool periodic, SpawnerDef& spawner, Scene& scene);
+void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic, double bursts, SpawnerDef& spawner,
+                 Scene& scene, ShapeCache* shapes, double& spawnedVertices);
+
 }  // namespace
 
 void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
@@ -50,7 +75,7 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
   {
     const int count = s.positiveInt("count", 1);
     if (count > kMaxSpawnCount) s.fail("count", "expected at most " + std::to_string(kMaxSpawnCount) + " bodies per block");
-    // With a period the block spawns `count` bodies at start, start + period, ... while the World
+    // With a period the block spawns `count` points' copies at start, start + period, ... while the World
     // steps (world/spawner.h); without, all of them at load.
     const bool periodic = s.has("period");
     const double period = periodic ? s.positiveNumber("period", 1.0) : 0.0;
@@ -59,13 +84,25 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     const double end = s.number("end", std::numeric_limits<double>::infinity());
     if (!(end > start)) s.fail("end", "expected a time after start");
     if (!periodic && (s.has("start") || s.has("end"))) s.fail(s.has("start") ? "start" : "end", "only a block with a \"period\" spawns over time");
+    const std::vector<Vec3> offsets = offsetsOf(s);
+    // Copies per burst: one per drawn point and offset, eleven bodies per ragdoll.
+    const bool ragdoll = s.has("ragdoll");
+    if (ragdoll == s.has("body")) s.fail("body", "expected either a \"body\" or a \"ragdoll\" to copy");
+    const double bodiesPerBurst = static_cast<double>(count) * static_cast<double>(offsets.size()) *
+                                  (ragdoll ? static_cast<double>(kBoneCount) : 1.0);
+    if (bodiesPerBurst > kMaxSpawnCount) {
+      s.fail("offsets", shortNumber(bodiesPerBurst) + " bodies a burst (count x offsets" + (ragdoll ? " x 11 bones" : "") +
+                            "); expected at most " + std::to_string(kMaxSpawnCount));
+    }
+    const double lifetime = s.has("lifetime") ? s.positiveNumber("lifetime", 1.0) : std::numeric_limits<double>::infinity();
+    if (!periodic && s.has("lifetime")) s.fail("lifetime", "only a block with a \"period\" removes what it spawned");
     // Bursts within the run: what the block adds in all, held to the same budget as one at load.
     const double span = std::min(end, scene.duration) - start;
     // (A World stepped without end, from Python, holds each burst to it.)
     const double bursts = !periodic || !std::isfinite(span) ? 1.0 : span > 0.0 ? std::ceil(span / period) : 0.0;
-    if (static_cast<double>(count) * bursts > kMaxSpawnCount) {
-      s.fail("period", std::to_string(count) + " bodies every " + shortNumber(period) + " s for " + shortNumber(span) +
-                           " s add " + shortNumber(count * bursts) + " bodies; expected at most " +
+    if (bodiesPerBurst * bursts > kMaxSpawnCount) {
+      s.fail("period", shortNumber(bodiesPerBurst) + " bodies every " + shortNumber(period) + " s for " + shortNumber(span) +
+                           " s add " + shortNumber(bodiesPerBurst * bursts) + " bodies; expected at most " +
                            std::to_string(kMaxSpawnCount) + " (a longer period, fewer bodies, or an end)");
     }
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
@@ -85,36 +122,11 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     const auto [spinLo, spinHi] = range(s, "angular_speed", "rad/s");
     const bool randomOrientation = s.boolean("random_orientation", true);
 
-    // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
-    const JsonObject body = s.object("body", {"shape", "shapes", "mass", "density", "inertia", "orientation", "color", "springs",
-                                               "restitution", "friction_static", "friction_kinetic", "fracture", "sdf", "filter"});
-    const std::size_t first = scene.bodies.size();
-    const std::size_t springsBefore = scene.springs.size();
-    parseBody(body, baseDir, scene, shapes);
-    parseScripts(body, first, scene);
-    const BodyDef prototype = scene.bodies[first];
-    spawnedVertices += static_cast<double>(count) * bursts * static_cast<double>(prototype.mesh->vertices.size());
-    if (spawnedVertices > kMaxSpawnedVertices) {
-      s.fail("count", std::to_string(count) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
-                          " vertices bring the spawned bodies to " + shortNumber(spawnedVertices) +
-                          " vertices (each body keeps its own world-frame copy); the limit is " +
-                          shortNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
-    }
-    // The fastest spin a draw can give keeps the surface below light speed, as for a body's own
-    // angular_velocity; with the template's mass within kMaxMassScale, m v and I omega stay finite.
-    const double radius = 0.5 * (prototype.mesh->boundsMax() - prototype.mesh->boundsMin()).norm();
-    if (!(spinHi * radius <= kMaxSpeed)) {
-      s.fail("angular_speed", "a body's surface would move at |omega| r = " + shortNumber(spinHi) + " rad/s x " +
-                                  shortNumber(radius) + " m, faster than light; expected a smaller spin");
-    }
-    const std::string inertia = scene.inertiaMethods[first];
-    const std::size_t springsOfPrototype = scene.springs.size();
-    scene.bodies.pop_back();
-    scene.inertiaMethods.pop_back();
     SpawnerDef spawner;
     spawner.name = prefix;
-    spawner.prototype = prototype;
     spawner.count = count;
+    spawner.offsets = offsets;
+    spawner.lifetime = lifetime;
     spawner.start = start;
     spawner.period = periodic ? period : 1.0;
     spawner.end = end;
@@ -126,30 +138,95 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     spawner.spinMax = spinHi;
     spawner.randomOrientation = randomOrientation;
     spawner.seed = static_cast<std::uint64_t>(seed);
-    if (periodic) {
-      if (scene.springs.size() > springsBefore) s.fail("body", "a body spawned over time cannot have springs");
-      scene.spawners.push_back(spawner);
-      return;
+    if (ragdoll) {
+      spawnRagdolls(s, periodic, spawner, scene);
+    } else {
+      spawnBodies(s, baseDir, periodic, bursts, spawner, scene, shapes, spawnedVertices);
     }
-    // At load, the same draws a spawner's first burst makes (world/spawner.h drawSpawn).
-    Spawner draws;
-    draws.def = spawner;
-    draws.random = UniformRandom(spawner.seed);
-    for (int k = 0; k < count; ++k) {
-      const BodyDef def = drawSpawn(draws);
+  }
+}
+
+namespace {
+
+void spawnRagdolls(const JsonObject& s, bool periodic, SpawnerDef& spawner, Scene& scene) {
+  if (scene.settings.solver != Settings::ContactSolverMethod::SoftStep) {
+    s.fail("ragdoll", "a ragdoll's joints need the soft-step solver; expected world.solver \"soft-step\"");
+  }
+  if (spawner.spinMax > 0.0) s.fail("angular_speed", "a ragdoll is spawned without spin; expected none");
+  RagdollDef figure;
+  parseRagdollFigure(s.object("ragdoll", kRagdollFigureKeys), figure);
+  spawner.ragdoll = figure;
+  if (periodic) {
+    scene.spawners.push_back(spawner);
+    return;
+  }
+  // At load, the same draws a spawner's first burst makes.
+  Spawner draws;
+  draws.def = spawner;
+  draws.random = UniformRandom(spawner.seed);
+  for (int k = 0; k < spawner.count; ++k) {
+    const SpawnDraw draw = drawPoint(draws);
+    for (const Vec3& offset : spawner.offsets) scene.ragdolls.push_back(spawnRagdoll(draws, draw, offset));
+  }
+}
+
+void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic, double bursts, SpawnerDef& spawner,
+                 Scene& scene, ShapeCache* shapes, double& spawnedVertices) {
+  // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
+  const JsonObject body = s.object("body", {"shape", "shapes", "mass", "density", "inertia", "orientation", "color", "springs",
+                                             "restitution", "friction_static", "friction_kinetic", "fracture", "sdf", "filter"});
+  const std::size_t first = scene.bodies.size();
+  const std::size_t springsBefore = scene.springs.size();
+  parseBody(body, baseDir, scene, shapes);
+  parseScripts(body, first, scene);
+  const BodyDef prototype = scene.bodies[first];
+  const double copies = static_cast<double>(spawner.count) * static_cast<double>(spawner.offsets.size()) * bursts;
+  spawnedVertices += copies * static_cast<double>(prototype.mesh->vertices.size());
+  if (spawnedVertices > kMaxSpawnedVertices) {
+    s.fail("count", shortNumber(copies) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
+                        " vertices bring the spawned bodies to " + shortNumber(spawnedVertices) +
+                        " vertices (each body keeps its own world-frame copy); the limit is " +
+                        shortNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
+  }
+  // The fastest spin a draw can give keeps the surface below light speed, as for a body's own
+  // angular_velocity; with the template's mass within kMaxMassScale, m v and I omega stay finite.
+  const double radius = 0.5 * (prototype.mesh->boundsMax() - prototype.mesh->boundsMin()).norm();
+  if (!(spawner.spinMax * radius <= kMaxSpeed)) {
+    s.fail("angular_speed", "a body's surface would move at |omega| r = " + shortNumber(spawner.spinMax) + " rad/s x " +
+                                shortNumber(radius) + " m, faster than light; expected a smaller spin");
+  }
+  const std::string inertia = scene.inertiaMethods[first];
+  const std::size_t springsOfPrototype = scene.springs.size();
+  scene.bodies.pop_back();
+  scene.inertiaMethods.pop_back();
+  spawner.prototype = prototype;
+  if (periodic) {
+    if (scene.springs.size() > springsBefore) s.fail("body", "a body spawned over time cannot have springs");
+    scene.spawners.push_back(spawner);
+    return;
+  }
+  // At load, the same draws a spawner's first burst makes; the prototype's springs (which name the
+  // first copy) are copied to every other.
+  Spawner draws;
+  draws.def = spawner;
+  draws.random = UniformRandom(spawner.seed);
+  for (int k = 0; k < spawner.count; ++k) {
+    const SpawnDraw draw = drawPoint(draws);
+    for (const Vec3& offset : spawner.offsets) {
       const std::size_t index = scene.bodies.size();
-      scene.bodies.push_back(def);
+      scene.bodies.push_back(spawnBody(draws, draw, offset));
       scene.inertiaMethods.push_back(inertia);
-      if (k > 0) {
-        for (std::size_t i = 0; i < springsOfPrototype; ++i) {
-          if (scene.springs[i].body != sceneBodyId(first)) continue;
-          Spring copy = scene.springs[i];
-          copy.body = sceneBodyId(index);
-          scene.springs.push_back(copy);
-        }
+      if (index == first) continue;
+      for (std::size_t i = 0; i < springsOfPrototype; ++i) {
+        if (scene.springs[i].body != sceneBodyId(first)) continue;
+        Spring copy = scene.springs[i];
+        copy.body = sceneBodyId(index);
+        scene.springs.push_back(copy);
       }
     }
   }
 }
+
+}  // namespace
 
 }  // namespace rbsim::scene_detail

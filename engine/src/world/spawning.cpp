@@ -1,8 +1,10 @@
-// Stage SpawnAndRemove (world/spawner.h): the kill volume's removals, then the spawners' bursts.
+// Stage SpawnAndRemove (world/spawner.h): bursts past their lifetime and bodies out of the kill
+// volume removed, then the spawners' due bursts added.
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "rbsim/world/ragdoll.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {
@@ -21,27 +23,57 @@ std::string checkSpawner(const SpawnerDef& def) {
   if (!(def.spinMin >= 0.0 && def.spinMin <= def.spinMax && std::isfinite(def.spinMax))) {
     return "angular_speed: expected 0 <= min <= max, finite";
   }
+  if (def.offsets.empty()) return "offsets: expected at least one offset (0, 0, 0: at the drawn point)";
+  for (const Vec3& offset : def.offsets) {
+    if (!offset.allFinite()) return "offsets: expected finite offsets [m]";
+  }
+  if (!(def.lifetime > 0.0)) return "lifetime: expected a time > 0 s (infinity: kept)";
+  if (def.ragdoll) {
+    if (def.spinMax > 0.0) return "angular_speed: a ragdoll is spawned without spin; expected none";
+    return {};
+  }
   if (!def.prototype.mesh) return "body: no mesh";
   return {};
 }
 
-BodyDef drawSpawn(Spawner& spawner) {
+SpawnDraw drawPoint(Spawner& spawner) {
   const SpawnerDef& d = spawner.def;
   UniformRandom& random = spawner.random;
-  BodyDef def = d.prototype;
-  def.name = d.name + "_" + std::to_string(spawner.spawned++);
-  def.position = Vec3(random.between(d.regionMin.x(), d.regionMax.x()), random.between(d.regionMin.y(), d.regionMax.y()),
-                      random.between(d.regionMin.z(), d.regionMax.z()));
-  if (d.randomOrientation) def.orientation = random.rotation() * d.prototype.orientation;
-  def.velocity = random.between(d.speedMin, d.speedMax) * random.direction();
-  def.angularVelocity = random.between(d.spinMin, d.spinMax) * random.direction();
+  SpawnDraw draw;
+  draw.position = Vec3(random.between(d.regionMin.x(), d.regionMax.x()), random.between(d.regionMin.y(), d.regionMax.y()),
+                       random.between(d.regionMin.z(), d.regionMax.z()));
+  if (d.randomOrientation) draw.turn = random.rotation();
+  draw.velocity = random.between(d.speedMin, d.speedMax) * random.direction();
+  draw.angularVelocity = random.between(d.spinMin, d.spinMax) * random.direction();
+  return draw;
+}
+
+BodyDef spawnBody(Spawner& spawner, const SpawnDraw& draw, const Vec3& offset) {
+  BodyDef def = spawner.def.prototype;
+  def.name = spawner.def.name + "_" + std::to_string(spawner.spawned++);
+  def.position = draw.position + offset;
+  def.orientation = draw.turn * def.orientation;
+  def.velocity = draw.velocity;
+  def.angularVelocity = draw.angularVelocity;
+  return def;
+}
+
+RagdollDef spawnRagdoll(Spawner& spawner, const SpawnDraw& draw, const Vec3& offset) {
+  RagdollDef def = *spawner.def.ragdoll;
+  def.name = spawner.def.name + "_" + std::to_string(spawner.spawned++);
+  def.position = draw.position + offset;
+  def.orientation = draw.turn * def.orientation;
+  def.velocity = draw.velocity;
   return def;
 }
 
 std::size_t World::addSpawner(const SpawnerDef& def) {
   const std::string problem = checkSpawner(def);
   if (!problem.empty()) throw std::invalid_argument("spawner '" + def.name + "': " + problem);
-  static_cast<void>(RigidBody(def.prototype));  // the prototype's own checks, now rather than at its first burst
+  if (def.ragdoll && settings_.solver != Settings::ContactSolverMethod::SoftStep) {
+    throw std::invalid_argument("spawner '" + def.name + "': ragdoll: a ragdoll's joints need the soft-step solver");
+  }
+  if (!def.ragdoll) static_cast<void>(RigidBody(def.prototype));  // the prototype's own checks, now rather than at its first burst
   Spawner spawner;
   spawner.def = def;
   spawner.random = UniformRandom(def.seed);
@@ -57,23 +89,46 @@ void World::setKillVolume(const Aabb& volume) {
 }
 
 void World::spawnAndRemove() {
-  if (!killVolume_.empty()) {
-    // From the last body down: destroying one moves the last into its index, which is then past i.
-    for (std::size_t i = bodies_.size(); i-- > 0;) {
-      const Vec3& x = bodies_[i].position();
-      if ((x.array() >= killVolume_.min.array()).all() && (x.array() <= killVolume_.max.array()).all()) continue;
-      const BodyId id = idAt(i);
-      destroyBody(id);
-      removedNow_.push_back(id);
-    }
-  }
   const double t = time();
   // Half a step early: a burst due at 1.0 s happens at the step starting then, not one later for
-  // the rounding of 60 x (1/60).
+  // the rounding of 60 x (1/60); an age likewise.
   const double due = t + 0.5 * settings_.timeStep;
+  std::vector<BodyId> expired;
+  for (Spawner& spawner : spawners_) {
+    while (!spawner.alive.empty() && spawner.alive.front().time + spawner.def.lifetime <= due) {
+      for (const BodyId id : spawner.alive.front().bodies) {
+        if (isValid(id)) expired.push_back(id);  // not if the kill volume or the user took it already
+      }
+      spawner.alive.pop_front();
+    }
+  }
+  if (!killVolume_.empty()) {
+    std::vector<char> listed(bodies_.size(), 0);
+    for (const BodyId id : expired) listed[indexOf(id)] = 1;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const Vec3& x = bodies_[i].position();
+      if (listed[i] || ((x.array() >= killVolume_.min.array()).all() && (x.array() <= killVolume_.max.array()).all())) continue;
+      expired.push_back(idAt(i));
+    }
+  }
+  for (const BodyId id : expired) destroyBody(id);
+  removedNow_.insert(removedNow_.end(), expired.begin(), expired.end());
   for (Spawner& spawner : spawners_) {
     while (spawner.nextTime() <= due && spawner.nextTime() < spawner.def.end) {
-      for (int k = 0; k < spawner.def.count; ++k) spawnedNow_.push_back(addBody(drawSpawn(spawner)));
+      Spawner::Burst burst{spawner.nextTime(), {}};
+      for (int k = 0; k < spawner.def.count; ++k) {
+        const SpawnDraw draw = drawPoint(spawner);
+        for (const Vec3& offset : spawner.def.offsets) {
+          if (spawner.def.ragdoll) {
+            const Ragdoll ragdoll = addRagdoll(*this, spawnRagdoll(spawner, draw, offset));
+            burst.bodies.insert(burst.bodies.end(), ragdoll.bodies.begin(), ragdoll.bodies.end());
+          } else {
+            burst.bodies.push_back(addBody(spawnBody(spawner, draw, offset)));
+          }
+        }
+      }
+      spawnedNow_.insert(spawnedNow_.end(), burst.bodies.begin(), burst.bodies.end());
+      if (std::isfinite(spawner.def.lifetime)) spawner.alive.push_back(std::move(burst));
       ++spawner.bursts;
     }
   }

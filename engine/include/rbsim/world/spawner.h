@@ -3,9 +3,13 @@
 // destroys its ragdolls as it runs): a spawner adds copies of a prototype body in bursts at a
 // period, each drawn from a seeded generator inside a region, and a kill volume removes the
 // bodies that leave it (fallen off the world). Both act in stage SpawnAndRemove, at the start of
-// a step.
+// a step. A spawner may instead add presets (ragdolls, world/ragdoll.h), several at fixed offsets
+// from each drawn point, and may remove what it added once it reaches an age (Box3D's rain drops
+// and clears a column of ragdoll groups at a time).
 #include <cstdint>
+#include <deque>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,13 +18,22 @@
 #include "rbsim/geometry/aabb.h"
 #include "rbsim/math/types.h"
 #include "rbsim/math/uniform_random.h"
+#include "rbsim/world/ragdoll.h"
 
 namespace rbsim {
 
 struct SpawnerDef {
   std::string name = "spawn";  // its bodies are named <name>_<n>, n counting from 0 over the run
   BodyDef prototype;           // what every body is, but its pose and velocities
-  int count = 1;               // bodies per burst, >= 1
+  // Set: every copy is this figure instead of the prototype, its feet at the drawn point, named
+  // <name>_<n> (bones <name>_<n>_<bone>), turned and moving as drawn (no spin).
+  std::optional<RagdollDef> ragdoll;
+  int count = 1;               // points drawn per burst, >= 1
+  // One copy at each offset from every drawn point (world frame, not turned) [m]: a burst adds
+  // count x offsets.size() copies.
+  std::vector<Vec3> offsets{Vec3::Zero()};
+  // Copies are removed this long after their burst (a ragdoll with its joints) [s]; infinity: kept.
+  double lifetime = std::numeric_limits<double>::infinity();
   double start = 0.0;          // time of the first burst [s], >= 0
   double period = 1.0;         // between bursts [s], > 0
   double end = std::numeric_limits<double>::infinity();  // no burst at or after this [s]
@@ -39,11 +52,26 @@ struct Spawner {
   SpawnerDef def;
   UniformRandom random{1};
   std::uint64_t bursts = 0;   // bursts so far
-  std::uint64_t spawned = 0;  // bodies so far (the next name's number)
+  std::uint64_t spawned = 0;  // copies so far (the next name's number)
+  // With a finite lifetime: the bursts not yet removed, oldest first, each with its bodies.
+  struct Burst {
+    double time = 0.0;  // [s]
+    std::vector<BodyId> bodies;
+  };
+  std::deque<Burst> alive;
   double nextTime() const { return def.start + static_cast<double>(bursts) * def.period; }
 };
 
-// The next body of the spawner: the prototype drawn where and how the def says, named in turn.
-BodyDef drawSpawn(Spawner& spawner);
+// Where and how one drawn point's copies start: the region's point, a turn of the prototype (or
+// figure), the linear and angular velocities.
+struct SpawnDraw {
+  Vec3 position = Vec3::Zero();
+  Quat turn = Quat::Identity();
+  Vec3 velocity = Vec3::Zero(), angularVelocity = Vec3::Zero();
+};
+SpawnDraw drawPoint(Spawner& spawner);
+// The next copy of the prototype body (or of the figure) at `offset` from the drawn point, named in turn.
+BodyDef spawnBody(Spawner& spawner, const SpawnDraw& draw, const Vec3& offset);
+RagdollDef spawnRagdoll(Spawner& spawner, const SpawnDraw& draw, const Vec3& offset);
 
 }  // namespace rbsim
