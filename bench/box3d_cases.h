@@ -14,7 +14,7 @@ struct Box3dScene {
   const char* name;  // assets/scenes/box3d/<name>.json
   int steps;         // Box3D's benchmark program's step count for the scene
   // bullet_box3d_scenes builds it too: its loader knows boxes, spheres, hull files and ball joints,
-  // not compound bodies or kinematic motions (the washer's drum).
+  // not compound bodies or kinematic motions (the washer's drum), ragdolls, spawners or mesh grounds (rain).
   bool inBullet;
 };
 
@@ -22,7 +22,8 @@ inline constexpr Box3dScene kBox3dScenes[] = {{"large_pyramid", 200, true},
                                               {"many_pyramids", 100, true},
                                               {"joint_grid", 100, true},
                                               {"convex_pile", 500, true},
-                                              {"washer", 1000, false}};
+                                              {"washer", 1000, false},
+                                              {"rain", 400, false}};
 
 // User and system time of every thread of this process so far [s].
 inline double processCpuSeconds() {

@@ -436,7 +436,7 @@ int main(int argc, char** argv) {
     for (const rbsim::bench::Box3dScene& scene : rbsim::bench::kBox3dScenes) {
       if (!scene.inBullet) {
         if (!names.empty() && std::find(names.begin(), names.end(), scene.name) != names.end()) {
-          std::fprintf(stderr, "bullet_box3d_scenes: %s has compound bodies and a kinematic motion, which this loader does not build\n", scene.name);
+          std::fprintf(stderr, "bullet_box3d_scenes: %s needs what this loader does not build (compound bodies and a kinematic motion, or ragdolls, spawners and mesh grounds)\n", scene.name);
           return 2;
         }
         continue;

@@ -219,7 +219,7 @@ PYBIND11_MODULE(rbsim, m) {
              requireKeywordsOnly(args, "World.add_spawner()", "an entry of a scene's \"spawn\"");
              return w.addSpawner(givenKeywords(spawn));
            },
-           "add_spawner(self, /, *, period, body=None, ragdoll=None, region, count=1, offsets=None, lifetime=None, "
+           "add_spawner(self, /, *, period, region, body=None, ragdoll=None, count=1, offsets=None, lifetime=None, "
            "seed=1, name=None, speed=None, angular_speed=None, random_orientation=True, start=0.0, end=None)\n--\n\n"
            "-> int: the spawner's index; the keys of an entry of a scene's \"spawn\" with a period [s]: count points "
            "drawn in region={\"min\": (x, y, z), \"max\": (x, y, z)} with speed=(lo, hi) [m/s] and angular_speed "

@@ -84,3 +84,27 @@ def test_a_spawner_rains_balls_and_the_kill_volume_takes_them_away():
         world.kill_volume = (0, 0, 0, -1, 1, 1)
     world.kill_volume = None
     assert world.kill_volume is None
+
+
+def test_a_spawner_drops_ragdolls_at_offsets_and_clears_them_at_their_age():
+    world = rbsim.World(dt=1 / 60)
+    world.add_plane()
+    world.add_spawner(name="fig", period=0.5, lifetime=0.75, random_orientation=False,
+                      ragdoll={"mass": 60, "joint_friction": 5, "joint_hertz": 1, "joint_damping_ratio": 0.7},
+                      offsets=[(0, 0, 0), (1, 0, 0)], region={"min": (0, 2, 0), "max": (0, 2, 0)})
+    world.step(1)
+    assert len(world) == 22 and len(world.joints()) == 20
+    pelvis = world.id_at(0)
+    assert world.names[0] == "fig_0_pelvis" and world.names[11] == "fig_1_pelvis"
+    # The second figure stands 1 m along x from the first (both feet at y = 2 m, then one step of fall).
+    assert abs(world.x[11][0] - world.x[0][0] - 1.0) < 1e-12
+    world.step(30)  # t = 0.52 s: the second burst is in
+    assert len(world) == 44 and len(world.joints()) == 40
+    world.step(15)  # t = 0.77 s: the first burst is gone, joints with it
+    assert len(world) == 22 and len(world.joints()) == 20
+    assert not world.is_valid(pelvis)
+    assert world.names[0].startswith("fig_2") or world.names[0].startswith("fig_3")
+    with pytest.raises(rbsim.InputError, match=r"World.add_spawner\(\): lifetime"):
+        world.add_spawner(period=1.0, lifetime=0, ragdoll={}, region={"min": (0, 2, 0), "max": (0, 2, 0)})
+    with pytest.raises(rbsim.InputError, match=r"World.add_spawner\(\): body"):
+        world.add_spawner(period=1.0, region={"min": (0, 2, 0), "max": (0, 2, 0)})
