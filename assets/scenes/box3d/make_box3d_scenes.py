@@ -511,12 +511,13 @@ def rain():
     head = {
         "title": "Box3D benchmark rain: columns of ragdoll groups falling on 100 cells of grid and torus meshes",
         "world": world_block(RAIN_STEPS, True),
-        "view": view_block([0, 60, 110], [0, 0, 0],
+        "view": view_block([0, 45, 100], [0, 0, -10],
                            "Box3D %s shared/benchmarks.c CreateRain, StepRain: 10 x 10 static cells of a grid mesh "
                            "and a torus mesh (collided triangle by triangle); at steps 0, 16, 64, 80, ... a column of "
                            "10 groups of 3 ragdolls (rbsim's 11-capsule preset, 70 kg, joint friction 5 N m, springs "
                            "1 Hz, damping ratio 0.7) drops from 20 m; once all ten columns are down the oldest is "
-                           "cleared and dropped again; dt 1/60 s, sleep on, 400 steps" % BOX3D_COMMIT[:7], fov=60),
+                           "cleared and dropped again; dt 1/60 s, sleep on, 400 steps" % BOX3D_COMMIT[:7], fov=60,
+                           grid=False),
         "spawn": spawn,
     }
     write_scene("rain.json", head, bodies)

@@ -255,12 +255,14 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
       // The point's three rows alone, written out (the block below, for R = 3, with its zero
       // blocks left out): K = (mA + mB) 1 + [rA] iA [rA]^T + [rB] iB [rB]^T,
       // Cdot = (vB + wB x rB) - (vA + wA x rA); the impulse acts +lambda at B's anchor and
-      // -lambda at A's. A third of the block's work on Box3D's 19701-joint grid.
+      // -lambda at A's. A third of the block's work on Box3D's 19701-joint grid. K is symmetric
+      // positive definite (mA + mB > 0: one body moves), so it is inverted in closed form, by
+      // cofactors, as Box2D's b2Solve33 does by Cramer's rule, not factored with pivoting.
       const Mat3 sA = skew(rA), sB = skew(rB);
       const Mat3 K = (mA + mB) * Mat3::Identity() + sA * iA * sA.transpose() + sB * iB * sB.transpose();
       const Vec3 cdot = (vB + wB.cross(rB)) - (vA + wA.cross(rA));
       const Vec3 error = (xB + rB) - (xA + rA);
-      const Vec3 lambda = -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error) - soft.impulseScale * joint.linearImpulse;
+      const Vec3 lambda = -soft.massScale * (K.inverse() * (cdot + soft.biasRate * error)) - soft.impulseScale * joint.linearImpulse;
       joint.linearImpulse += lambda;
       storeVelocities(c.base, vA - mA * lambda, wA - iA * rA.cross(lambda));
       storeVelocities(c.moving, vB + mB * lambda, wB + iB * rB.cross(lambda));
@@ -269,49 +271,46 @@ void SoftStepSolver::solveJoints(std::size_t island, double h, bool useBias) {
 
     // A hinge: the point (rows 0-2) and the axes held aligned (rows 3-4), as one block:
     //   C = [(xB + rB) - (xA + rA);  t_k . (a_base x a_moving)],  Cdot = J_A u_A + J_B u_B,
-    //   J_A = [-1  [rA]; 0  -t_k^T],  J_B = [1  -[rB]; 0  t_k^T],  K = J M^-1 J^T
-    // for the two unit t_k perpendicular to the base's axis (seed 000's K of a contact point,
-    // extended by the angular rows), solved exactly, so one joint alone needs one sweep. Fixed
-    // sizes: no allocation.
-    Eigen::Matrix<double, 5, 6> jA = Eigen::Matrix<double, 5, 6>::Zero(), jB = Eigen::Matrix<double, 5, 6>::Zero();
-    Eigen::Matrix<double, 5, 1> error, accumulated;
-    jA.block<3, 3>(0, 0) = -Mat3::Identity();
-    jA.block<3, 3>(0, 3) = skew(rA);
-    jB.block<3, 3>(0, 0) = Mat3::Identity();
-    jB.block<3, 3>(0, 3) = -skew(rB);
-    error.head<3>() = (xB + rB) - (xA + rA);
-    accumulated.head<3>() = joint.linearImpulse;
+    //   J_A = [-1  [rA]; 0  -T],  J_B = [1  -[rB]; 0  T],  K = J M^-1 J^T
+    // for T the two unit t_k perpendicular to the base's axis, as rows (seed 000's K of a contact
+    // point, extended by the angular rows), solved exactly, so one joint alone needs one sweep.
+    // K's blocks written out, as the ball's above (the dense 5 x 6 products spent two thirds of
+    // their work on zeros):
+    //   K = [(mA + mB) 1 + [rA] iA [rA]^T + [rB] iB [rB]^T,  -([rA] iA + [rB] iB) T^T;
+    //        sym.,                                            T (iA + iB) T^T].
     Vec3 tangents[2];
     const Vec3 axis = (A.orientation * c.localAxisBase).normalized();
     tangentBasis(axis, tangents[0], tangents[1]);
-    const Vec3 misalignment = axis.cross((B.orientation * c.localAxisMoving).normalized());
-    for (int k = 0; k < 2; ++k) {
-      jA.block<1, 3>(3 + k, 3) = -tangents[k].transpose();
-      jB.block<1, 3>(3 + k, 3) = tangents[k].transpose();
-      error(3 + k) = tangents[k].dot(misalignment);
-      accumulated(3 + k) = tangents[k].dot(joint.angularImpulse);
-    }
-    Eigen::Matrix<double, 6, 6> inverseMassA = Eigen::Matrix<double, 6, 6>::Zero(), inverseMassB = inverseMassA;
-    inverseMassA.block<3, 3>(0, 0) = mA * Mat3::Identity();
-    inverseMassA.block<3, 3>(3, 3) = iA;
-    inverseMassB.block<3, 3>(0, 0) = mB * Mat3::Identity();
-    inverseMassB.block<3, 3>(3, 3) = iB;
-    Eigen::Matrix<double, 6, 1> uA, uB;
-    uA << vA, wA;
-    uB << vB, wB;
-    const Eigen::Matrix<double, 5, 5> K = jA * inverseMassA * jA.transpose() + jB * inverseMassB * jB.transpose();
-    const Eigen::Matrix<double, 5, 1> cdot = jA * uA + jB * uB;
+    Eigen::Matrix<double, 2, 3> T;
+    T.row(0) = tangents[0].transpose();
+    T.row(1) = tangents[1].transpose();
+    const Mat3 sA = skew(rA), sB = skew(rB);
+    const Mat3 sAiA = sA * iA, sBiB = sB * iB;
+    Eigen::Matrix<double, 5, 5> K;
+    K.topLeftCorner<3, 3>() = (mA + mB) * Mat3::Identity() + sAiA * sA.transpose() + sBiB * sB.transpose();
+    K.topRightCorner<3, 2>() = -(sAiA + sBiB) * T.transpose();
+    K.bottomLeftCorner<2, 3>() = K.topRightCorner<3, 2>().transpose();
+    K.bottomRightCorner<2, 2>() = T * (iA + iB) * T.transpose();
+    Eigen::Matrix<double, 5, 1> cdot, error, accumulated;
+    cdot.head<3>() = (vB + wB.cross(rB)) - (vA + wA.cross(rA));
+    cdot.tail<2>() = T * (wB - wA);
+    error.head<3>() = (xB + rB) - (xA + rA);
+    error.tail<2>() = T * axis.cross((B.orientation * c.localAxisMoving).normalized());
+    accumulated.head<3>() = joint.linearImpulse;
+    accumulated.tail<2>() = T * joint.angularImpulse;
     const Eigen::Matrix<double, 5, 1> impulse =
         -soft.massScale * K.ldlt().solve(cdot + soft.biasRate * error) - soft.impulseScale * accumulated;
-    uA += inverseMassA * jA.transpose() * impulse;
-    uB += inverseMassB * jB.transpose() * impulse;
-    vA = uA.head<3>();
-    wA = uA.tail<3>();
-    vB = uB.head<3>();
-    wB = uB.tail<3>();
-    joint.linearImpulse += impulse.head<3>();
-    const Eigen::Vector2d total = accumulated.segment<2>(3) + impulse.segment<2>(3);
-    joint.angularImpulse = total.x() * tangents[0] + total.y() * tangents[1];
+    // u += M^-1 J^T lambda: the point's impulse +lambda at B's anchor and -lambda at A's, the
+    // angular rows' T^T lambda as a torque on B and its opposite on A.
+    const Vec3 linear = impulse.head<3>();
+    const Vec3 angular = T.transpose() * impulse.tail<2>();
+    vA -= mA * linear;
+    wA -= iA * (rA.cross(linear) + angular);
+    vB += mB * linear;
+    wB += iB * (rB.cross(linear) + angular);
+    joint.linearImpulse += linear;
+    const Eigen::Vector2d total = accumulated.tail<2>() + impulse.tail<2>();
+    joint.angularImpulse = T.transpose() * total;
 
     storeVelocities(c.base, vA, wA);
     storeVelocities(c.moving, vB, wB);

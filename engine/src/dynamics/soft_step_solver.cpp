@@ -33,6 +33,8 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   if (!sim.kinematic) {  // a kinematic body keeps infinite mass and its prescribed velocities
     sim.inverseMass = 1.0 / b.mass();
     sim.inverseInertiaNow = b.inverseInertiaWorld();
+    sim.inertiaBody = b.inertiaBody();
+    sim.inverseInertiaBody = b.inverseInertiaBody();
     sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
     sim.torque = b.torque() + b.rotation() * b.bodyTorque();  // the substeps hold both over the step
   }
@@ -332,13 +334,13 @@ void SoftStepSolver::addTotals(std::size_t island) {
   });
 }
 
-void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, double h) {
+void SoftStepSolver::integratePositions(double h) {
   parallelFor(states_.size() - 1, threads_, [&](std::size_t k) {
     const std::size_t i = k + 1;
     SolverState& s = states_[i];
-    const RigidBody& body = bodies[sims_[i].body];
+    BodySim& sim = sims_[i];
     s.deltaPosition += h * s.linearVelocity;
-    if (sims_[i].kinematic) {  // turns at its prescribed omega, which no impulse changes
+    if (sim.kinematic) {  // turns at its prescribed omega, which no impulse changes
       s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
       return;
     }
@@ -346,11 +348,11 @@ void SoftStepSolver::integratePositions(const std::vector<RigidBody>& bodies, do
     // free rotation keeps L, so omega follows the new orientation (the gyroscopic term of
     // Euler's equations, which a fixed omega would drop).
     const Mat3 R = s.orientation.toRotationMatrix();
-    const Vec3 L = R * (body.inertiaBody() * (R.transpose() * s.angularVelocity));
+    const Vec3 L = R * (sim.inertiaBody * (R.transpose() * s.angularVelocity));
     s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
     const Mat3 next = s.orientation.toRotationMatrix();
-    sims_[i].inverseInertiaNow = next * body.inverseInertiaBody() * next.transpose();
-    s.angularVelocity = sims_[i].inverseInertiaNow * L;
+    sim.inverseInertiaNow = next * sim.inverseInertiaBody * next.transpose();
+    s.angularVelocity = sim.inverseInertiaNow * L;
   });
 }
 
@@ -419,7 +421,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
       solveJoints(island, h, /*useBias=*/true);
       sweep(island, inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
     });
-    integratePositions(bodies, h);
+    integratePositions(h);
     updateJacobians();  // for the relax, and the next substep's warm start and solve
     forEachIsland([&](std::size_t island) {
       solveJoints(island, h, /*useBias=*/false);

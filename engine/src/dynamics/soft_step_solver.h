@@ -73,6 +73,9 @@ class SoftStepSolver final : public ContactSolver {
     std::size_t body = 0;                    // World index
     double inverseMass = 0.0;                // [1/kg]
     Mat3 inverseInertiaNow = Mat3::Zero();   // R I_body^-1 R^T for the current orientation
+    // The body's own, copied here so that integratePositions, every substep, reads no RigidBody
+    // (a cache miss per body: 12 % of Box3D's rain went there).
+    Mat3 inertiaBody = Mat3::Zero(), inverseInertiaBody = Mat3::Zero();
     Vec3 position0 = Vec3::Zero();           // x at the step's start [m]
     Vec3 acceleration = Vec3::Zero();        // F / m (+ g) over the step [m/s^2]
     Vec3 torque = Vec3::Zero();              // tau about x [N m]
@@ -193,7 +196,7 @@ class SoftStepSolver final : public ContactSolver {
   void forEachIsland(F&& f) const {
     parallelForUneven(islands_.count(), threads_, constraints_.size() + joints_.size() >= kMinParallelItems, f);
   }
-  void integratePositions(const std::vector<RigidBody>& bodies, double h);
+  void integratePositions(double h);
   void collide(const Settings& settings);  // single-point collisions, before the substeps
   void applyRestitution(const Settings& settings);
   void finish(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts);
