@@ -26,6 +26,22 @@ int PgsSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) {
   return slot;
 }
 
+void PgsSolver::bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) {
+  solved_.clear();
+  const RigidBody& moved = bodies[last];
+  // A turned pair: the points were the moved body's (body 1); they become the partner's, and the
+  // friction impulses, which act + on body 1, change sign (the twist's, about the flipped normal, not).
+  renumberCache(cache_, removed, last, [&](Cached& entry, std::size_t partner) {
+    const RigidBody& other = bodies[partner];
+    for (int j = 0; j < entry.count; ++j) {
+      entry.localPoints[j] = other.rotation().transpose() * (moved.bodyToWorld(entry.localPoints[j]) - other.position());
+      entry.pointFriction[j] = -entry.pointFriction[j];
+    }
+    entry.linearFriction = -entry.linearFriction;
+    return true;
+  });
+}
+
 const PgsSolver::Cached* PgsSolver::cached(std::uint64_t key) const {
   const auto it = std::lower_bound(cache_.begin(), cache_.end(), key,
                                    [](const Cached& c, std::uint64_t k) { return c.key < k; });

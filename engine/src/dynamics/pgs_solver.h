@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dynamics/contact_key.h"
 #include "dynamics/contact_solver.h"
 
 namespace rbsim {
@@ -33,6 +34,7 @@ class PgsSolver final : public ContactSolver {
     cache_.clear();
     solved_.clear();
   }
+  void bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) override;
 
  private:
   // The velocities a sweep reads and changes, 48 bytes per body (as Box2D's b2BodyState): the

@@ -46,6 +46,23 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   return s;
 }
 
+void SoftStepSolver::bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) {
+  clearAdvanced();
+  solved_.clear();
+  const RigidBody& moved = bodies[last];
+  // A turned pair: the anchors were the moved body's (B); they become the partner's, and the
+  // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
+  // inside the surface, so its points may miss their match and start cold.
+  renumberCache(cache_, removed, last, [&](Cached& entry, std::size_t partner) {
+    const RigidBody& other = bodies[partner];
+    for (int j = 0; j < entry.count; ++j) {
+      entry.localPoints[j] = other.rotation().transpose() * (moved.bodyToWorld(entry.localPoints[j]) - other.position());
+      entry.frictionImpulses[j] = -entry.frictionImpulses[j];
+    }
+    return true;
+  });
+}
+
 const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {
   const auto it = std::lower_bound(cache_.begin(), cache_.end(), key,
                                    [](const Cached& c, std::uint64_t k) { return c.key < k; });

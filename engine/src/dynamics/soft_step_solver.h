@@ -26,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "dynamics/contact_key.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/joints/joint_rows.h"
 #include "rbsim/dynamics/softness.h"
@@ -48,6 +49,7 @@ class SoftStepSolver final : public ContactSolver {
     cache_.clear();
     solved_.clear();
   }
+  void bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) override;
   void clearAdvanced() override {
     for (std::size_t body : advancedList_) advanced_[body] = 0;
     advancedList_.clear();

@@ -110,6 +110,8 @@ void World::destroyBody(BodyId id) {
     if (joint.a == last) joint.a = removed;
     if (joint.b == last) joint.b = removed;
   }
+  // Warm starts are keyed by body indices: the moved body's follow it (read before the move).
+  solver_->bodyRemoved(removed, last, bodies_);
   for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(removed, last, removed);
   if (fracturePatterns_[removed]) --breakableBodies_;
   swapRemove(bodies_, removed);
@@ -118,8 +120,6 @@ void World::destroyBody(BodyId id) {
   swapRemove(fracturePatterns_, removed);
   collision_->removeBody(removed);
   updateJointFilter();
-  // Warm starts are keyed by body indices, which have changed: one step starts cold.
-  solver_->forget();
   // The id: the slot's generation moves on (every copy of the id is now stale), and the slot joins
   // the free list; the body moved into `removed` keeps its slot, which now points there.
   const std::uint32_t slot = id.slot;

@@ -196,18 +196,27 @@ void CollisionPipeline::removeBody(std::size_t index) {
   swapRemove(meshGround_, index);
   swapRemove(gap_, index);
   swapRemove(boxes_, index);
-  // The contacts follow the bodies to their new indices (World::destroyBody forgets the solver's
-  // reports of them): the removed body's go and the last body's take its index, so that sleeping
-  // pairs keep theirs.
-  const auto names = [&](const Contact& c, std::size_t body) {
-    return c.b == body || (c.kind == Contact::Kind::BodyBody && c.a == body);
-  };
-  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), [&](const Contact& c) { return names(c, index); }),
-                  contacts_.end());
+  // The contacts follow the bodies to their new indices (as the solver's warm starts do,
+  // contact_key.h renumberCache): the removed body's go and the last body's take its index, so
+  // that sleeping pairs keep theirs. A pair in order (the lower index first) whose last body's
+  // new index comes first turns round (normal reversed; points are midway, unchanged), or, for a
+  // compound's or mesh ground's manifolds, whose part names their shapes in order, goes.
+  std::size_t kept = 0;
   for (Contact& c : contacts_) {
+    const bool pair = c.kind == Contact::Kind::BodyBody;
+    if (c.b == index || (pair && c.a == index)) continue;
+    const bool inOrder = c.a < c.b;
     if (c.b == last) c.b = index;
-    if (c.kind == Contact::Kind::BodyBody && c.a == last) c.a = index;
+    if (pair && c.a == last) c.a = index;
+    if (pair && inOrder && c.a > c.b) {
+      if (c.part != 0) continue;
+      std::swap(c.a, c.b);
+      std::swap(c.childA, c.childB);
+      c.manifold.normal = -c.manifold.normal;
+    }
+    contacts_[kept++] = c;
   }
+  contacts_.resize(kept);
   impacts_.clear();
 }
 
