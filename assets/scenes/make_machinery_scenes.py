@@ -6,8 +6,9 @@
 #                          turntable and a lift (kinematic motion), two balls of one group
 #   machinery_washer.json  a drum of 36 staves and 4 paddles (one kinematic compound of 40 hulls)
 #                          turning about its axis, tumbling 216 boxes: Box3D's washer, smaller
-#   machinery_rain.json    ragdolls (the preset of eleven capsules) raining in waves onto a mesh
-#                          ground (assets/meshes/terrain.obj, collided triangle by triangle)
+#   machinery_rain.json    ragdolls (the preset of eleven capsules) raining in rows onto a mesh
+#                          ground (assets/meshes/terrain.obj, collided triangle by triangle), a
+#                          spawner dropping a row every second and clearing it 3 s later
 #
 # Standard library only. Run: python3 make_machinery_scenes.py
 import json
@@ -129,31 +130,27 @@ def washer_scene():
 
 
 def rain_scene():
-    # Three waves of six ragdolls, one wave every 1.2 m of drop (0.5 s apart in their falls), each
-    # figure turned its own way by a seeded generator so that the run is the same every time.
-    import random
-    draw = random.Random(40)
-    ragdolls = []
-    for wave in range(3):
-        for k in range(6):
-            x, z = -3.75 + 1.5 * k + draw.uniform(-0.3, 0.3), draw.uniform(-2.5, 2.5)
-            axis = [draw.uniform(-1, 1), draw.uniform(-1, 1), draw.uniform(-1, 1)]
-            ragdolls.append({"name": "doll%d" % len(ragdolls), "position": vec((x, 2.5 + 2.5 * wave, z)),
-                             "orientation": {"axis_angle_deg": vec(axis + [draw.uniform(30, 150)])},
-                             "joint_friction": 1.0, "joint_hertz": 1.0, "joint_damping_ratio": 0.7})
+    # Box3D's rain in miniature: a spawner drops a row of five ragdolls every second from 6 m, at a
+    # depth and a turn its seeded generator draws (the row's figures turned alike, 2 m apart, more
+    # than a 1.8 m figure spans however it is turned), and clears each row 3 s after it came, so
+    # three rows lie on the terrain at a time.
     return {
-        "title": "A ragdoll rain on a mesh ground: 18 figures of eleven capsules and ten limited joints",
+        "title": "A ragdoll rain on a mesh ground: rows of figures of eleven capsules and ten limited joints",
         "world": {"dt": 1 / 60, "duration": 6.0},
         "view": {"camera": {"eye": [-1.0, 3.2, 6.5], "target": [-0.6, 0.4, 0], "fov_deg": 55}, "size": [1280, 720],
                  "fps": 30, "axes": False,
-                 "caption": "each figure: capsules joined by cones and twists at the waist, neck, shoulders and hips, "
+                 "caption": "a spawner drops a row of five figures every second and clears each row 3 s later; each "
+                            "figure: capsules joined by cones and twists at the waist, neck, shoulders and hips, "
                             "hinges at the elbows and knees, with joint friction and soft springs (Box3D's "
                             "shared/human.c layout); the ground is a triangle mesh from an OBJ"},
         "kill_volume": {"min": [-20, -5, -20], "max": [20, 40, 20]},
         "bodies": [{"name": "terrain", "shape": {"type": "mesh", "file": "../meshes/terrain.obj"},
                     "collide_as": "triangles", "static": True, "mass": 100, "inertia": "cube",
                     "color": [0.45, 0.6, 0.4]}],
-        "ragdolls": ragdolls,
+        "spawn": [{"name": "doll", "period": 1.0, "lifetime": 3.0, "seed": 40,
+                   "ragdoll": {"joint_friction": 1.0, "joint_hertz": 1.0, "joint_damping_ratio": 0.7},
+                   "region": {"min": [-0.3, 6.0, -2.5], "max": [0.3, 6.0, 2.5]},
+                   "offsets": [[-4.0 + 2.0 * k, 0, 0] for k in range(5)]}],
     }
 
 

@@ -1,6 +1,7 @@
 #pragma once
 // What both contact solvers need to name a manifold across steps and to span its tangent plane.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -64,6 +65,13 @@ void renumberCache(std::vector<Entry>& cache, std::size_t removed, std::size_t l
   std::sort(renamed.begin(), renamed.end(), byKey);
   cache.insert(cache.end(), std::make_move_iterator(renamed.begin()), std::make_move_iterator(renamed.end()));
   std::inplace_merge(cache.begin(), cache.begin() + static_cast<std::ptrdiff_t>(kept), cache.end(), byKey);
+}
+
+// A turned pair's anchors (renumberCache): from the moved body's frame, where they were as the
+// pair's second body, into the partner's, which is second now.
+template <class Body, std::size_t N>
+void anchorsToPartner(std::array<Vec3, N>& points, int count, const Body& moved, const Body& partner) {
+  for (int j = 0; j < count; ++j) points[j] = partner.rotation().transpose() * (moved.bodyToWorld(points[j]) - partner.position());
 }
 
 // Two unit tangents completing the normal to a right-handed basis.

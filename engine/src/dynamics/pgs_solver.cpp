@@ -32,11 +32,8 @@ void PgsSolver::bodyRemoved(std::size_t removed, std::size_t last, const std::ve
   // A turned pair: the points were the moved body's (body 1); they become the partner's, and the
   // friction impulses, which act + on body 1, change sign (the twist's, about the flipped normal, not).
   renumberCache(cache_, removed, last, [&](Cached& entry, std::size_t partner) {
-    const RigidBody& other = bodies[partner];
-    for (int j = 0; j < entry.count; ++j) {
-      entry.localPoints[j] = other.rotation().transpose() * (moved.bodyToWorld(entry.localPoints[j]) - other.position());
-      entry.pointFriction[j] = -entry.pointFriction[j];
-    }
+    anchorsToPartner(entry.localPoints, entry.count, moved, bodies[partner]);
+    for (int j = 0; j < entry.count; ++j) entry.pointFriction[j] = -entry.pointFriction[j];
     entry.linearFriction = -entry.linearFriction;
     return true;
   });

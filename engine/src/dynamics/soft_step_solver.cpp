@@ -54,11 +54,8 @@ void SoftStepSolver::bodyRemoved(std::size_t removed, std::size_t last, const st
   // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
   // inside the surface, so its points may miss their match and start cold.
   renumberCache(cache_, removed, last, [&](Cached& entry, std::size_t partner) {
-    const RigidBody& other = bodies[partner];
-    for (int j = 0; j < entry.count; ++j) {
-      entry.localPoints[j] = other.rotation().transpose() * (moved.bodyToWorld(entry.localPoints[j]) - other.position());
-      entry.frictionImpulses[j] = -entry.frictionImpulses[j];
-    }
+    anchorsToPartner(entry.localPoints, entry.count, moved, bodies[partner]);
+    for (int j = 0; j < entry.count; ++j) entry.frictionImpulses[j] = -entry.frictionImpulses[j];
     return true;
   });
 }
