@@ -41,15 +41,6 @@ bool aabbNearPlane(const Aabb& box, const Plane& plane, double margin) {
   return plane.signedDistance(lowest) <= margin;
 }
 
-// The body's bounding box where it is: a round shape's exact one (its display mesh is inscribed
-// in it), the vertices' for the others, whose shape is the hull of those vertices.
-Aabb boundsOf(const RigidBody& body) {
-  if (body.isCompound()) return compoundBounds(body);
-  if (!body.shape().isRound()) return Aabb::of(body.worldVertices());
-  const auto [lo, hi] = body.shape().worldBounds(body.rotation(), body.position());
-  return {lo, hi};
-}
-
 // An implicit body's samples in world frame, in a buffer of the calling thread's, and the exact
 // surface's point deepest below the plane near the deepest sample (ImplicitSolid::supportNear).
 const std::vector<Vec3>& implicitPlaneCandidates(const RigidBody& body, const BodySolid& solid, const Plane& plane) {
@@ -119,107 +110,6 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       impacts_(other.impacts_),
       log_(other.log_) {}
 
-void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const BodySolid& solid) {
-  meshGround_[index] = isMeshGround(body, solid) ? 1 : 0;
-  hasGrid_[index] = solid.sdf || body.isCompound() || meshGround_[index] ? 1 : 0;
-  gap_[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;
-  double radius = 0.0;
-  Aabb local;
-  for (const Vec3& p : body.mesh().vertices) {
-    radius = std::max(radius, p.norm());
-    local.grow(p);
-  }
-  if (body.shape().isRound()) {  // the exact shape, not its inscribed display mesh
-    radius = body.shape().boundingRadius();
-    const auto [lo, hi] = body.shape().worldBounds(Mat3::Identity(), Vec3::Zero());
-    local = {lo, hi};
-  }
-  if (body.isCompound()) {  // its children, not their display meshes
-    radius = compoundRadius(body);
-    local = compoundBounds(body);
-  }
-  radius_[index] = radius;
-  thickness_[index] = local.extents().minCoeff();
-  boxes_[index] = boundsOf(body).inflated(settings_.contactMargin + gap_[index]);
-}
-
-void CollisionPipeline::addBody(const RigidBody& body, const BodySolid& solid) {
-  const std::size_t index = proxies_.size();
-  hasGrid_.push_back(0);
-  meshGround_.push_back(0);
-  gap_.push_back(0.0);
-  radius_.push_back(0.0);
-  thickness_.push_back(0.0);
-  reach_.push_back(0.0);
-  boxes_.emplace_back();
-  measure(index, body, solid);
-  proxies_.push_back(broad_->add(boxes_[index], body.isStatic()));
-  if (bodyOfProxy_.size() <= proxies_.back()) bodyOfProxy_.resize(proxies_.back() + 1);
-  bodyOfProxy_[proxies_.back()] = index;
-  start_.push_back(body.state());
-  fast_.push_back(0);
-}
-
-void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid) {
-  measure(index, body, solid);
-  // Removed and added again, since the piece may be dynamic where the body was static; the pool
-  // hands back the smallest free id, which is this one.
-  broad_->remove(proxies_[index]);
-  proxies_[index] = broad_->add(boxes_[index], body.isStatic());
-  if (bodyOfProxy_.size() <= proxies_[index]) bodyOfProxy_.resize(proxies_[index] + 1);
-  bodyOfProxy_[proxies_[index]] = index;
-  start_[index] = body.state();
-  fast_[index] = 0;
-}
-
-namespace {
-
-template <typename T>
-void swapRemove(std::vector<T>& items, std::size_t index) {
-  if (index + 1 != items.size()) items[index] = items.back();
-  items.pop_back();
-}
-
-}  // namespace
-
-void CollisionPipeline::removeBody(std::size_t index) {
-  broad_->remove(proxies_[index]);
-  const std::size_t last = proxies_.size() - 1;
-  if (index != last) bodyOfProxy_[proxies_[last]] = index;
-  swapRemove(proxies_, index);
-  swapRemove(radius_, index);
-  swapRemove(thickness_, index);
-  swapRemove(reach_, index);
-  swapRemove(start_, index);
-  swapRemove(fast_, index);
-  swapRemove(hasGrid_, index);
-  swapRemove(meshGround_, index);
-  swapRemove(gap_, index);
-  swapRemove(boxes_, index);
-  // The contacts follow the bodies to their new indices (as the solver's warm starts do,
-  // contact_key.h renumberCache): the removed body's go and the last body's take its index, so
-  // that sleeping pairs keep theirs. A pair in order (the lower index first) whose last body's
-  // new index comes first turns round (normal reversed; points are midway, unchanged), or, for a
-  // compound's or mesh ground's manifolds, whose part names their shapes in order, goes.
-  std::size_t kept = 0;
-  for (Contact& c : contacts_) {
-    const bool pair = c.kind == Contact::Kind::BodyBody;
-    if (c.b == index || (pair && c.a == index)) continue;
-    const bool inOrder = c.a < c.b;
-    if (c.b == last) c.b = index;
-    if (pair && c.a == last) c.a = index;
-    if (pair && inOrder && c.a > c.b) {
-      if (c.part != 0) continue;
-      std::swap(c.a, c.b);
-      std::swap(c.childA, c.childB);
-      c.manifold.normal = -c.manifold.normal;
-    }
-    contacts_[kept++] = c;
-  }
-  contacts_.resize(kept);
-  impacts_.clear();
-}
-
 bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const {
   if (bodies.size() < 2 && planes.empty()) return false;
   return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.awake(); });
@@ -286,7 +176,7 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
   // Each awake body's box on any thread, then into the broad phase in body order.
   parallelFor(bodies.size(), settings_.threads, [&](std::size_t i) {
     if (!bodies[i].awake()) return;
-    Aabb box = boundsOf(bodies[i]);
+    Aabb box = bodyBounds(bodies[i]);
     if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
     const double dt = settings_.timeStep;
     reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +

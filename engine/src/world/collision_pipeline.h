@@ -18,6 +18,11 @@
 
 namespace rbsim {
 
+// The body's bounding box where it is (collision_pipeline_bodies.cpp): a round shape's exact one
+// (its display mesh is inscribed in it), a compound's children's, the vertices' for the others,
+// whose shape is the hull of those vertices.
+Aabb bodyBounds(const RigidBody& body);
+
 class CollisionPipeline {
  public:
   explicit CollisionPipeline(const Settings& settings);
