@@ -33,12 +33,11 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   if (!sim.kinematic) {  // a kinematic body keeps infinite mass and its prescribed velocities
     sim.inverseMass = 1.0 / b.mass();
     sim.inverseInertiaNow = b.inverseInertiaWorld();
-    sim.inertiaBody = b.inertiaBody();
-    sim.inverseInertiaBody = b.inverseInertiaBody();
     sim.acceleration = sim.inverseMass * b.force() + (addGravity ? settings.gravity : Vec3::Zero());
     sim.torque = b.torque() + b.rotation() * b.bodyTorque();  // the substeps hold both over the step
   }
   sims_.push_back(sim);
+  inertias_.push_back({b.inertiaBody(), b.inverseInertiaBody()});
   states_.push_back(SolverState{b.velocity(), b.angularVelocity(), Vec3::Zero(), b.orientation()});
   s = static_cast<int>(sims_.size() - 1);
   advanced_[body] = 1;
@@ -362,10 +361,10 @@ void SoftStepSolver::integratePositions(double h) {
     // free rotation keeps L, so omega follows the new orientation (the gyroscopic term of
     // Euler's equations, which a fixed omega would drop).
     const Mat3 R = s.orientation.toRotationMatrix();
-    const Vec3 L = R * (sim.inertiaBody * (R.transpose() * s.angularVelocity));
+    const Vec3 L = R * (inertias_[i].inertia * (R.transpose() * s.angularVelocity));
     s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
     const Mat3 next = s.orientation.toRotationMatrix();
-    sim.inverseInertiaNow = next * sim.inverseInertiaBody * next.transpose();
+    sim.inverseInertiaNow = next * inertias_[i].inverse * next.transpose();
     s.angularVelocity = sim.inverseInertiaNow * L;
   });
 }
@@ -381,6 +380,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
   slotOfBody_.resize(bodies.size(), 0);
   states_.assign(1, SolverState{});
   sims_.assign(1, BodySim{});
+  inertias_.assign(1, BodyInertia{});
   constraints_.clear();
   points_.clear();
   frames_.clear();

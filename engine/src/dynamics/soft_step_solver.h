@@ -75,9 +75,6 @@ class SoftStepSolver final : public ContactSolver {
     std::size_t body = 0;                    // World index
     double inverseMass = 0.0;                // [1/kg]
     Mat3 inverseInertiaNow = Mat3::Zero();   // R I_body^-1 R^T for the current orientation
-    // The body's own, copied here so that integratePositions, every substep, reads no RigidBody
-    // (a cache miss per body: 12 % of Box3D's rain went there).
-    Mat3 inertiaBody = Mat3::Zero(), inverseInertiaBody = Mat3::Zero();
     Vec3 position0 = Vec3::Zero();           // x at the step's start [m]
     Vec3 acceleration = Vec3::Zero();        // F / m (+ g) over the step [m/s^2]
     Vec3 torque = Vec3::Zero();              // tau about x [N m]
@@ -211,6 +208,13 @@ class SoftStepSolver final : public ContactSolver {
 
   std::vector<SolverState> states_;  // per slot
   std::vector<BodySim> sims_;      // per slot
+  // The body's own inertias per slot, copied so that integratePositions, every substep, reads no
+  // RigidBody (a cache miss per body: 12 % of Box3D's rain went there), and apart from BodySim,
+  // which the sweeps read.
+  struct BodyInertia {
+    Mat3 inertia = Mat3::Zero(), inverse = Mat3::Zero();  // body frame
+  };
+  std::vector<BodyInertia> inertias_;  // per slot
   std::vector<Constraint> constraints_;
   std::vector<Point> points_;
   std::vector<PointFrame> frames_;    // per point
