@@ -73,7 +73,14 @@ std::size_t World::addSpawner(const SpawnerDef& def) {
   if (def.ragdoll && settings_.solver != Settings::ContactSolverMethod::SoftStep) {
     throw std::invalid_argument("spawner '" + def.name + "': ragdoll: a ragdoll's joints need the soft-step solver");
   }
-  if (!def.ragdoll) static_cast<void>(RigidBody(def.prototype));  // the prototype's own checks, now rather than at its first burst
+  // The prototype's (or the figure's bodies' and joints') own checks, now rather than at the first
+  // burst, in the middle of a step.
+  if (def.ragdoll) {
+    World probe(settings_);
+    static_cast<void>(addRagdoll(probe, *def.ragdoll));
+  } else {
+    static_cast<void>(RigidBody(def.prototype));
+  }
   Spawner spawner;
   spawner.def = def;
   spawner.random = UniformRandom(def.seed);

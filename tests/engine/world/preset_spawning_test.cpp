@@ -191,6 +191,11 @@ TEST(PresetSpawningDefs, BadDefsAreRefused) {
   def = figureRain();
   def.spinMax = 1.0;
   EXPECT_NE(checkSpawner(def).find("angular_speed"), std::string::npos);
+  def = figureRain();
+  def.ragdoll->mass = -70.0;
+  World soft{Settings{}};
+  EXPECT_THROW(soft.addSpawner(def), std::invalid_argument) << "the figure's checks, before its first burst";
+  EXPECT_TRUE(soft.spawners().empty());
   Settings pgs;
   pgs.solver = Settings::ContactSolverMethod::Pgs;
   World w(pgs);
