@@ -60,6 +60,14 @@ std::vector<Vec3> offsetsOf(const JsonObject& s) {
   return offsets;
 }
 
+// A spawner's state before its first burst: a load-time block draws as that burst would.
+Spawner firstBurst(const SpawnerDef& def) {
+  Spawner draws;
+  draws.def = def;
+  draws.random = UniformRandom(def.seed);
+  return draws;
+}
+
 void spawnRagdolls(const JsonObject& s, bool periodic, SpawnerDef& spawner, Scene& scene);
 void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic, double bursts, SpawnerDef& spawner,
                  Scene& scene, ShapeCache* shapes, double& spawnedVertices);
@@ -161,9 +169,7 @@ void spawnRagdolls(const JsonObject& s, bool periodic, SpawnerDef& spawner, Scen
     return;
   }
   // At load, the same draws a spawner's first burst makes.
-  Spawner draws;
-  draws.def = spawner;
-  draws.random = UniformRandom(spawner.seed);
+  Spawner draws = firstBurst(spawner);
   for (int k = 0; k < spawner.count; ++k) {
     const SpawnDraw draw = drawPoint(draws);
     for (const Vec3& offset : spawner.offsets) scene.ragdolls.push_back(spawnRagdoll(draws, draw, offset));
@@ -207,9 +213,7 @@ void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic,
   }
   // At load, the same draws a spawner's first burst makes; the prototype's springs (which name the
   // first copy) are copied to every other.
-  Spawner draws;
-  draws.def = spawner;
-  draws.random = UniformRandom(spawner.seed);
+  Spawner draws = firstBurst(spawner);
   for (int k = 0; k < spawner.count; ++k) {
     const SpawnDraw draw = drawPoint(draws);
     for (const Vec3& offset : spawner.offsets) {
