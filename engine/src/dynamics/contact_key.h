@@ -30,7 +30,8 @@ inline std::uint64_t pairKey(const Contact& c) {
 // pair in order (the lower index first) that the rename turns round (the moved body, the last,
 // was its second) is handed to `turn(entry, partner)`, which rewrites the entry for the moved
 // body as the first (its points into the partner's frame, its impulses' signs) or returns false
-// to let it start cold (as CollisionPipeline::removeBody turns the pair's contact). `Entry` has a `key` made by pairKey; the list stays sorted by it.
+// to let it start cold (as CollisionPipeline::removeBody turns the pair's contact). `Entry` has a
+// `key` made by pairKey; the list stays sorted by it.
 template <class Entry, class Turn>
 void renumberCache(std::vector<Entry>& cache, std::size_t removed, std::size_t last, Turn&& turn) {
   constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << 24) - 1;
