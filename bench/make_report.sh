@@ -54,7 +54,7 @@ targets=(rbsim step_bench throughput_bench stage_skip_bench broadphase_bench nar
 
 if [ $run_bench = 1 ] || [ $make_stills = 1 ] || [ $all = 1 ]; then
   say "configuring $build (Release, benchmarks on)"
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DRBSIM_BUILD_BENCH=ON > "$logs/cmake.log" 2>&1 \
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRBSIM_BUILD_BENCH=ON > "$logs/cmake.log" 2>&1 \
     || { tail -20 "$logs/cmake.log"; exit 1; }
   # bench/CMakeLists.txt makes the Bullet piles only where pkg-config found Bullet (both builds);
   # naming a target that does not exist would stop the build, so leave them out (the run below

@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "gl_api.h"
+#include "overlay_style.h"
 #include "pane_layout.h"
 #include "render_error.h"
 
@@ -21,7 +22,6 @@ namespace {
 // Captions pinned to the image (OverlayLabel) are this many times the panel's text size: they
 // name what a whole region of the image shows and are read from across the frame [1].
 constexpr float kLabelFontScale = 1.6f;
-const ImVec4 kTitleColor(1.0f, 0.82f, 0.35f, 1.0f);  // amber, the panel's title and the captions
 
 constexpr const char* kMonoFontPaths[] = {
     "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf",

@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "overlay.h"
+#include "overlay_style.h"
 #include "pane_layout.h"
 #include "panel_rows.h"
 #include "text_wrap.h"
@@ -19,7 +20,6 @@ namespace rbsim::render {
 
 namespace {
 
-const ImVec4 kTitleColor(1.0f, 0.82f, 0.35f, 1.0f);    // amber, as the captions pinned to the image
 const ImVec4 kCaptionColor(0.78f, 0.82f, 0.88f, 1.0f);
 const ImVec4 kLabelColor(0.70f, 0.76f, 0.84f, 1.0f);
 const ImVec4 kMoreColor(0.60f, 0.65f, 0.72f, 1.0f);

@@ -13,6 +13,9 @@ struct UiInput {
   float deltaSeconds = 1.0f / 30.0f;     // wall time since the last frame [s], > 0
 };
 
+// The shortest frame time a window reports: ImGui asserts on a zero one [s].
+inline constexpr float kMinFrameSeconds = 1e-3f;
+
 struct UiFrame {
   UiInput input;
   std::function<void()> draw;  // ImGui calls; runs with the renderer's ImGui context current

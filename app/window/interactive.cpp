@@ -14,6 +14,7 @@
 #include "render/debug_shapes.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
+#include "render/ui_frame.h"
 #include "render/png_sequence_writer.h"
 #include "render/render_error.h"
 #include "run/frame_builder.h"
@@ -45,8 +46,6 @@ constexpr double kStandardGravity = 9.81;     // [m/s^2]
 // The shown rate is averaged over about this many frames' worth: 1 / kRateSmoothing [1].
 constexpr double kRateSmoothing = 0.1;
 
-// ImGui asserts on a zero frame time; frames closer than this are counted as this long.
-constexpr float kMinFrameSeconds = 1e-3f;  // [s]
 constexpr glm::vec3 kDragForceColor{1.0f, 1.0f, 1.0f};
 constexpr glm::vec3 kDragTorqueColor{0.3f, 1.0f, 0.4f};
 
@@ -93,7 +92,7 @@ class Session {
       ui.input.mouseY = static_cast<float>(input.mouseY);
       for (int b = 0; b < 3; ++b) ui.input.mouseDown[b] = input.down[b];
       ui.input.wheel = input.wheel;
-      ui.input.deltaSeconds = std::max(kMinFrameSeconds, std::chrono::duration<float>(frameStart - last).count());
+      ui.input.deltaSeconds = std::max(render::kMinFrameSeconds, std::chrono::duration<float>(frameStart - last).count());
       last = frameStart;
       PanelRequests requests;
       ui.draw = [&] { requests = drawControlPanel(panelView(), scene_.view.width, scene_.view.height); };

@@ -12,6 +12,7 @@
 #include "render/offscreen_renderer.h"
 #include "render/pane_layout.h"
 #include "render/png_sequence_writer.h"
+#include "render/ui_frame.h"
 #include "run/compare_view.h"
 #include "run/frame_builder.h"
 #include "window/replay_timeline.h"
@@ -24,7 +25,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr float kMinFrameSeconds = 1e-3f;  // ImGui asserts on a zero frame time [s]
 constexpr float kTimelineHeightLines = 3.3f;  // the timeline bar's height [text lines]
 
 class ReplayWindow {
@@ -51,7 +51,7 @@ class ReplayWindow {
       ui.input.mouseY = static_cast<float>(input.mouseY);
       for (int b = 0; b < 3; ++b) ui.input.mouseDown[b] = input.down[b];
       ui.input.wheel = input.wheel;
-      ui.input.deltaSeconds = std::max(kMinFrameSeconds, std::chrono::duration<float>(frameStart - last).count());
+      ui.input.deltaSeconds = std::max(render::kMinFrameSeconds, std::chrono::duration<float>(frameStart - last).count());
       last = frameStart;
       std::optional<std::size_t> wanted;
       ui.draw = [&] { wanted = drawTimeline(view.width, view.height); };

@@ -13,7 +13,6 @@ namespace rbsim::reference {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Rotation about z by angle a (active, right-handed).

@@ -23,30 +23,41 @@
 #include "rbsim/world/world.h"
 
 namespace rbsim::app {
+
+// The demos' test names and messages say "demo 5", not the struct's bytes.
+void PrintTo(const Demo& demo, std::ostream* os) { *os << "demo " << demo.number; }
+
 namespace {
 
-TEST(DemoScenes, EveryPhaseLoadsSimulatesAndRepeatsBitForBit) {
-  int phases = 0;
-  for (const Demo& demo : allDemos()) {
-    for (const std::string& file : demo.scenes) {
-      const Phase phase = loadPhase(assetDir() + "/scenes/" + file);
-      for (const PhaseWorld& world : phase.worlds) {
-        const Scene& scene = world.scene;
-        World first = buildWorld(scene), second = buildWorld(scene);
-        // A second each; a quarter under the sanitizers (tests/sanitized_build.h).
-        const double seconds = test::kSanitizedBuild ? 0.25 : 1.0;
-        const int steps = static_cast<int>(std::lround(seconds / scene.settings.timeStep));
-        for (int s = 0; s < steps; ++s) {
-          first.step();
-          second.step();
-        }
-        EXPECT_EQ(first.stateHash(), second.stateHash()) << file << " " << world.label;
-        for (const RigidBody& b : first.bodies()) EXPECT_TRUE(b.position().allFinite()) << file << " " << b.name();
+// One test a demo, so that ctest shares the demos among its jobs.
+class DemoScenes : public testing::TestWithParam<Demo> {};
+
+TEST_P(DemoScenes, EveryPhaseLoadsSimulatesAndRepeatsBitForBit) {
+  for (const std::string& file : GetParam().scenes) {
+    const Phase phase = loadPhase(assetDir() + "/scenes/" + file);
+    for (const PhaseWorld& world : phase.worlds) {
+      const Scene& scene = world.scene;
+      World first = buildWorld(scene), second = buildWorld(scene);
+      // A second each; a quarter under the sanitizers (tests/sanitized_build.h).
+      const double seconds = test::kSanitizedBuild ? 0.25 : 1.0;
+      const int steps = static_cast<int>(std::lround(seconds / scene.settings.timeStep));
+      for (int s = 0; s < steps; ++s) {
+        first.step();
+        second.step();
       }
-      ++phases;
+      EXPECT_EQ(first.stateHash(), second.stateHash()) << file << " " << world.label;
+      for (const RigidBody& b : first.bodies()) EXPECT_TRUE(b.position().allFinite()) << file << " " << b.name();
     }
   }
-  EXPECT_GE(phases, 12);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryDemo, DemoScenes, testing::ValuesIn(allDemos()),
+                         [](const testing::TestParamInfo<Demo>& info) { return "demo" + std::to_string(info.param.number); });
+
+TEST(DemoScenesCount, TheDemosHaveAtLeastTwelvePhases) {
+  std::size_t phases = 0;
+  for (const Demo& demo : allDemos()) phases += demo.scenes.size();
+  EXPECT_GE(phases, 12u);
 }
 
 // Demo 5's last phase: the same 230 boxes (a column of 20, a pyramid of 210; bench/stack_layout.h)

@@ -29,7 +29,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path tempDir(const std::string& name) {
+fs::path trustTempDir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("rbsim_record_trust_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -75,7 +75,7 @@ std::string replayError(const std::string& bytes, const std::vector<Phase>& phas
 }
 
 TEST(RecordTrust, EveryOneBitFlipIsRefused) {
-  const fs::path dir = tempDir("flips");
+  const fs::path dir = trustTempDir("flips");
   const Recorded good = record(dir / "good.rbrec");
   ASSERT_EQ(replayError(good.bytes, good.phases, dir / "same.rbrec"), "accepted");
   // Every bit of the first 512 bytes and the last 64, and one bit of every 37th byte between (the
@@ -104,7 +104,7 @@ std::size_t openDescriptors() {
 // zeroed it first (a 369-byte file, 512 MiB), and a reader that refused its file in the
 // constructor never closed it (the fuzzer ran out of descriptors after 61,525 inputs).
 TEST(RecordTrust, ARefusedRecordingIsClosedAndAskedForNoMoreThanItHolds) {
-  const fs::path dir = tempDir("refused");
+  const fs::path dir = trustTempDir("refused");
   const Recorded good = record(dir / "good.rbrec");
   std::string longHeader = good.bytes.substr(0, 64);
   const std::uint64_t claimed = std::uint64_t{1} << 29;  // 512 MiB, below kMaxHeaderBytes
@@ -138,7 +138,7 @@ TEST(RecordTrust, ARefusedRecordingIsClosedAndAskedForNoMoreThanItHolds) {
 }
 
 TEST(RecordTrust, AnEditedHeaderFailsItsChecksum) {
-  const fs::path dir = tempDir("header");
+  const fs::path dir = trustTempDir("header");
   const Recorded good = record(dir / "good.rbrec");
   std::string edited = good.bytes;
   const std::size_t at = edited.find("\\\"mass\\\"");  // the scene text, escaped in the header JSON
@@ -186,7 +186,7 @@ std::string forged(const std::string& bytes, const std::function<void(std::vecto
 }
 
 TEST(RecordTrust, ForgedStatesAndForeignWorldsAreRefused) {
-  const fs::path dir = tempDir("forged");
+  const fs::path dir = trustTempDir("forged");
   const Recorded good = record(dir / "good.rbrec");
   // The first entry: u16 world, u64 step, u32 bodies, then body 0's x (3 doubles) and q (4).
   constexpr std::size_t kFirstBody = 2 + 8 + 4, kQuatW = kFirstBody + 3 * sizeof(double);
@@ -209,7 +209,7 @@ TEST(RecordTrust, ForgedStatesAndForeignWorldsAreRefused) {
 }
 
 TEST(RecordTrust, AReplayWorksFromAnyFolderAndRefusesAChangedMesh) {
-  const fs::path dir = tempDir("folders");
+  const fs::path dir = trustTempDir("folders");
   fs::create_directories(dir / "made" / "meshes");
   fs::create_directories(dir / "elsewhere");
   fs::copy_file(assetDir() + "/meshes/t_handle.obj", dir / "made" / "meshes" / "handle.obj");

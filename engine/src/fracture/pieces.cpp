@@ -15,13 +15,13 @@ namespace {
 // it would take millions of draws per site, so the search gives up there with an error.
 constexpr int kMaxDrawsPerSite = 1000000;  // [draws]
 
-struct FacePlane {
+struct HullPlane {
   Vec3 normal;
   double offset;
 };
 
-std::vector<FacePlane> facePlanes(const Mesh& mesh) {
-  std::vector<FacePlane> planes;
+std::vector<HullPlane> facePlanes(const Mesh& mesh) {
+  std::vector<HullPlane> planes;
   for (const Triangle& t : mesh.triangles) {
     const Vec3& a = mesh.vertices[t[0]];
     const Vec3 n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
@@ -89,14 +89,14 @@ std::vector<Mesh> voronoiPieces(const Mesh& convex, const std::vector<Vec3>& sit
 
 std::vector<Vec3> sitesInside(const Mesh& convex, int count, std::uint64_t seed) {
   if (count < 2) throw std::invalid_argument("fracture needs at least 2 pieces");
-  const std::vector<FacePlane> planes = facePlanes(convex);
+  const std::vector<HullPlane> planes = facePlanes(convex);
   const Vec3 lo = convex.boundsMin(), hi = convex.boundsMax();
   UniformRandom random(seed);
   std::vector<Vec3> sites;
   for (int draws = 0; static_cast<int>(sites.size()) < count;) {
     const Vec3 p(random.between(lo.x(), hi.x()), random.between(lo.y(), hi.y()), random.between(lo.z(), hi.z()));
     bool inside = true;
-    for (const FacePlane& plane : planes) inside = inside && plane.normal.dot(p) < plane.offset;
+    for (const HullPlane& plane : planes) inside = inside && plane.normal.dot(p) < plane.offset;
     if (inside) {
       sites.push_back(p);
       draws = 0;

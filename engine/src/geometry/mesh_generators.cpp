@@ -13,8 +13,6 @@ namespace rbsim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 void require(bool ok, const std::string& shape, const std::string& what) {
   if (!ok) throw std::invalid_argument(shape + ": " + what);
 }

@@ -23,7 +23,6 @@ using Elliptic = boost::math::policies::policy<
     boost::math::policies::overflow_error<boost::math::policies::errno_on_error>,
     boost::math::policies::evaluation_error<boost::math::policies::errno_on_error>>;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // |1/a - 1/b| without cancellation beyond the subtraction of the moments themselves [1/(kg m^2)].

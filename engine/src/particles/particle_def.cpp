@@ -30,9 +30,6 @@ std::vector<std::string> particleIntegratorNames() {
 
 namespace {
 
-// A direction is accepted as unit when its length is within this of 1 (scenes normalise theirs).
-constexpr double kUnitTolerance = 1e-9;  // [1]
-
 bool finiteAtLeast(double value, double low) { return std::isfinite(value) && value >= low; }
 bool range(double lo, double hi, double low) { return finiteAtLeast(lo, low) && hi >= lo && !std::isnan(hi); }
 

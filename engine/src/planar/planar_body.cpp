@@ -1,23 +1,14 @@
 #include "rbsim/planar/planar_body.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include <Eigen/LU>
 
+#include "rbsim/math/format_number.h"
+
 namespace rbsim {
-
-namespace {
-
-std::string number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-}  // namespace
 
 PlanarBody::PlanarBody(std::string name, std::vector<Vec2> polygon, double mass, const Material& material)
     : name_(std::move(name)), polygon_(std::move(polygon)), mass_(mass), material_(material) {
@@ -38,7 +29,7 @@ PlanarBody::PlanarBody(std::string name, std::vector<Vec2> polygon, double mass,
   }
   if (!(area > 0.0) || !std::isfinite(area)) {
     throw std::invalid_argument("planar body '" + name_ + "': expected counter-clockwise corners enclosing a finite, positive "
-                                "area; the area is " + number(area) + " m^2 (corners so large or so close that it overflows or underflows)");
+                                "area; the area is " + formatNumber(area) + " m^2 (corners so large or so close that it overflows or underflows)");
   }
   centroid /= 6.0 * area;
   if (!centroid.allFinite()) throw std::invalid_argument("planar body '" + name_ + "': the centroid overflows (corners too far out)");
@@ -46,8 +37,8 @@ PlanarBody::PlanarBody(std::string name, std::vector<Vec2> polygon, double mass,
   // Parallel axis theorem to the centroid, scaled from unit density to the mass.
   inertia_ = mass_ / area * (second - area * centroid.squaredNorm());
   if (!(inertia_ > 0.0) || !std::isfinite(inertia_) || !std::isfinite(1.0 / inertia_)) {
-    throw std::invalid_argument("planar body '" + name_ + "': the inertia m J / A = " + number(inertia_) +
-                                " kg m^2 (mass " + number(mass_) + " kg, area " + number(area) +
+    throw std::invalid_argument("planar body '" + name_ + "': the inertia m J / A = " + formatNumber(inertia_) +
+                                " kg m^2 (mass " + formatNumber(mass_) + " kg, area " + formatNumber(area) +
                                 " m^2) is not a finite, positive number with a finite inverse");
   }
 }

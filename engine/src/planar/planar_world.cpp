@@ -14,8 +14,6 @@ namespace rbsim {
 
 namespace {
 
-// A line normal may be off unit length by this much (rounding of a normalised input).
-constexpr double kUnitTolerance = 1e-9;  // [1]
 // The reference edge stays on polygon a unless b's axis separates by more than this fraction of
 // the slop: equal axes (a box resting flat on another) would otherwise swap from step to step.
 constexpr double kReferenceBias = 1e-3;  // [1] of contactSlop

@@ -1,28 +1,15 @@
 #include "scene/fracture_parser.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "fracture/convex_clip.h"
 #include "fracture/pieces.h"
 #include "rbsim/geometry/mesh.h"
+#include "rbsim/scene/json_fields.h"
 
 namespace rbsim::scene_detail {
-
-namespace {
-
-// A normalised normal is unit within rounding; cutByPlanes accepts this much.
-constexpr double kUnitTolerance = 1e-9;  // [1]
-
-std::string shortNumber(double value) {
-  std::ostringstream out;
-  out << value;  // 6 significant digits
-  return out.str();
-}
-
-}  // namespace
 
 std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, const BodyDef& def) {
   const JsonObject f = body.object("fracture", {"threshold", "pieces", "seed", "planes"});
@@ -53,12 +40,12 @@ std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, con
       const Mat3& axes = def.fileFrame.axes;
       plane.normal = axes.transpose() * normal.stableNormalized();
       if (!plane.normal.allFinite() || std::abs(plane.normal.norm() - 1.0) > kUnitTolerance) {
-        p.fail("normal", "cannot be made a unit direction (its length is " + shortNumber(normal.stableNorm()) + ")");
+        p.fail("normal", "cannot be made a unit direction (its length is " + formatNumber(normal.stableNorm()) + ")");
       }
       const Vec3 point = axes.transpose() * p.vec3("point", Vec3::Zero());
       plane.offset = plane.normal.dot(point);
       if (!std::isfinite(plane.offset)) {
-        p.fail("point", "the plane's offset n . p overflows (" + shortNumber(plane.offset) + " m); expected a finite point");
+        p.fail("point", "the plane's offset n . p overflows (" + formatNumber(plane.offset) + " m); expected a finite point");
       }
       planes.push_back(plane);
     }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <sstream>
 
 #include <Eigen/SVD>
 
@@ -42,12 +41,6 @@ Mat3 nearestRotation(const Mat3& M) {
 }
 
 }  // namespace
-
-std::string formatNumber(double d) {
-  std::ostringstream out;
-  out << d;
-  return out.str();
-}
 
 std::string nearestKey(const std::string& key, const std::vector<std::string>& known) {
   std::string best;

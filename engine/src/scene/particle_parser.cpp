@@ -9,6 +9,7 @@
 
 #include "rbsim/io/input_error.h"
 #include "rbsim/particles/emitter.h"
+#include "rbsim/scene/json_fields.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
 
@@ -34,21 +35,15 @@ constexpr double kMaxFlockTestsPerStep = 4e8;  // [pair tests per step]
 // Birth sizes are stored as float (for the renderer).
 constexpr double kMaxFloatSize = 3.4e38;  // [m], just under FLT_MAX
 
-std::string shortNumber(double value) {
-  std::ostringstream out;
-  out << value;  // 6 significant digits, no trailing zeros
-  return out.str();
-}
-
 double atLeast(const JsonObject& o, const char* key, double fallback, double low, const char* unit) {
   const double d = o.number(key, fallback);
-  if (!(d >= low)) o.fail(key, "expected a value >= " + shortNumber(low) + " " + unit + ", got " + shortNumber(d));
+  if (!(d >= low)) o.fail(key, "expected a value >= " + formatNumber(low) + " " + unit + ", got " + formatNumber(d));
   return d;
 }
 
 double fraction(const JsonObject& o, const char* key, double fallback) {
   const double d = o.number(key, fallback);
-  if (!(d >= 0.0 && d <= 1.0)) o.fail(key, "expected a value in [0, 1], got " + shortNumber(d));
+  if (!(d >= 0.0 && d <= 1.0)) o.fail(key, "expected a value in [0, 1], got " + formatNumber(d));
   return d;
 }
 
@@ -84,7 +79,7 @@ Vec3 color(const JsonObject& o, const char* key, const Vec3& fallback) {
 // What the emitter derives from its numbers, checked here against the field it came from.
 void checkEmitterDerived(const JsonObject& e, const EmitterDef& d, const Scene& scene) {
   if (d.rate > kMaxEmitterRate) {
-    e.fail("rate", "expected at most " + shortNumber(kMaxEmitterRate) + " particles/s, got " + shortNumber(d.rate));
+    e.fail("rate", "expected at most " + formatNumber(kMaxEmitterRate) + " particles/s, got " + formatNumber(d.rate));
   }
   const double reach = d.shape == EmitterShape::Disc ? d.radius : d.shape == EmitterShape::Box ? d.halfExtents.maxCoeff() : 0.0;
   if (!std::isfinite(d.position.cwiseAbs().maxCoeff() + reach)) {
@@ -92,14 +87,14 @@ void checkEmitterDerived(const JsonObject& e, const EmitterDef& d, const Scene& 
            "the birth points (position +- the emitter's size) overflow; expected finite sums");
   }
   if (!std::isfinite(1.0 / d.massMin)) {
-    e.fail("mass", "1 / the lowest mass (" + shortNumber(d.massMin) + " kg) overflows; expected a mass whose inverse is finite");
+    e.fail("mass", "1 / the lowest mass (" + formatNumber(d.massMin) + " kg) overflows; expected a mass whose inverse is finite");
   }
-  if (d.sizeMax > kMaxFloatSize) e.fail("size", "expected sizes at most " + shortNumber(kMaxFloatSize) + " m (stored as float)");
+  if (d.sizeMax > kMaxFloatSize) e.fail("size", "expected sizes at most " + formatNumber(kMaxFloatSize) + " m (stored as float)");
   if (d.shape == EmitterShape::MeshSurface) {
     const std::vector<double> areas = cumulativeTriangleAreas(*scene.bodies[d.body].mesh);
     const double area = areas.empty() ? 0.0 : areas.back();
     if (!(area > 0.0) || !std::isfinite(area)) {
-      e.fail("body", "the body's surface area is " + shortNumber(area) + " m^2; expected a finite area > 0 to emit from");
+      e.fail("body", "the body's surface area is " + formatNumber(area) + " m^2; expected a finite area > 0 to emit from");
     }
   }
 }
@@ -176,18 +171,18 @@ void parseCloth(const JsonObject& c, ClothDef& cloth) {
   const double area = cloth.edgeU.cross(cloth.edgeV).stableNorm();
   if (!std::isfinite(area) || !(cloth.origin + cloth.edgeU + cloth.edgeV).allFinite() ||
       !(cloth.origin.cwiseAbs() + cloth.edgeU.cwiseAbs() + cloth.edgeV.cwiseAbs()).allFinite()) {
-    c.fail("edge_u", "the cloth's corners or its area |edge_u x edge_v| (" + shortNumber(area) +
+    c.fail("edge_u", "the cloth's corners or its area |edge_u x edge_v| (" + formatNumber(area) +
                          " m^2) overflow; expected finite values");
   }
   const double nodeMass = cloth.mass / (static_cast<double>(cloth.nu) * cloth.nv);
   if (!(nodeMass > 0.0) || !std::isfinite(1.0 / nodeMass)) {
-    c.fail("mass", "a node's mass mass / (nu nv) = " + shortNumber(nodeMass) + " kg; expected one whose inverse is finite");
+    c.fail("mass", "a node's mass mass / (nu nv) = " + formatNumber(nodeMass) + " kg; expected one whose inverse is finite");
   }
   const double stiffest = std::max(cloth.stiffness, cloth.bendStiffness);
   if (!std::isfinite(stiffest / nodeMass) || !std::isfinite(cloth.damping / nodeMass)) {
     c.fail(cloth.stiffness >= cloth.bendStiffness ? "stiffness" : "bend_stiffness",
-           "k / m for a node of " + shortNumber(nodeMass) + " kg (k = " + shortNumber(stiffest) + " N/m, damping " +
-               shortNumber(cloth.damping) + " N s/m) overflows; expected finite spring rates");
+           "k / m for a node of " + formatNumber(nodeMass) + " kg (k = " + formatNumber(stiffest) + " N/m, damping " +
+               formatNumber(cloth.damping) + " N s/m) overflows; expected finite spring rates");
   }
   if (c.has("pinned")) {
     const nlohmann::json& p = c.raw("pinned");
@@ -231,8 +226,8 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
   if (d.substeps > kMaxSubsteps) p.fail("substeps", "expected at most " + std::to_string(kMaxSubsteps));
   d.gravityScale = p.number("gravity_scale", d.gravityScale);
   if (!std::isfinite(d.gravityScale * scene.settings.gravity.stableNorm())) {
-    p.fail("gravity_scale", "gravity_scale x |world.gravity| = " + shortNumber(d.gravityScale) + " x " +
-                                shortNumber(scene.settings.gravity.stableNorm()) + " m/s^2 overflows; expected a finite product");
+    p.fail("gravity_scale", "gravity_scale x |world.gravity| = " + formatNumber(d.gravityScale) + " x " +
+                                formatNumber(scene.settings.gravity.stableNorm()) + " m/s^2 overflows; expected a finite product");
   }
   d.dragLinear = atLeast(p, "drag_linear", d.dragLinear, 0.0, "N s/m");
   d.dragQuadratic = atLeast(p, "drag_quadratic", d.dragQuadratic, 0.0, "N s^2/m^2");
@@ -246,7 +241,7 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
       w.fail("turbulence", "the wind's speed, velocity + turbulence, overflows; expected a finite sum");
     }
     if (!std::isfinite(1.0 / d.wind.scale)) {
-      w.fail("scale", "1 / scale overflows (scale " + shortNumber(d.wind.scale) + " m); expected a gust size whose inverse is finite");
+      w.fail("scale", "1 / scale overflows (scale " + formatNumber(d.wind.scale) + " m); expected a gust size whose inverse is finite");
     }
   }
   for (const JsonObject& a : p.objectArray("attractors", {"position", "strength", "softening"})) {
@@ -257,7 +252,7 @@ ParticleSystemDef parseSystem(const JsonObject& p, std::size_t index, const Scen
     // The force's largest magnitude, at |a - x| = softening / sqrt(2), is ~0.385 strength / softening^2.
     const double peak = std::abs(attractor.strength) / (attractor.softening * attractor.softening);
     if (!std::isfinite(peak)) {
-      a.fail("softening", "strength / softening^2 = " + shortNumber(peak) + " N overflows; expected a finite peak force");
+      a.fail("softening", "strength / softening^2 = " + formatNumber(peak) + " N overflows; expected a finite peak force");
     }
     d.attractors.push_back(attractor);
   }
@@ -322,10 +317,10 @@ void workPerStep(const ParticleSystemDef& d, const Scene& scene, double& work, d
   const double alive = mostAlive(d);
   pairs = d.flock.enabled ? alive * alive * substeps : 0.0;
   std::ostringstream out;
-  out << "capacity " << d.capacity << " x " << d.substeps << " substeps: " << shortNumber(updates) << " particle updates";
-  if (d.cloth.enabled) out << ", " << shortNumber(springs) << " spring evaluations";
+  out << "capacity " << d.capacity << " x " << d.substeps << " substeps: " << formatNumber(updates) << " particle updates";
+  if (d.cloth.enabled) out << ", " << formatNumber(springs) << " spring evaluations";
   if (d.flock.enabled) {
-    out << ", and " << shortNumber(pairs) << " flock neighbour tests (" << shortNumber(alive)
+    out << ", and " << formatNumber(pairs) << " flock neighbour tests (" << formatNumber(alive)
         << " boids alive at most, each against every other)";
   }
   what = out.str();
@@ -352,9 +347,9 @@ void parseParticleSystems(const JsonObject& root, Scene& scene) {
     if (work > kMaxParticleWorkPerStep || pairs > kMaxFlockTestsPerStep) {
       const bool flock = pairs > kMaxFlockTestsPerStep;
       std::ostringstream problem;
-      problem << what << " per World step; with the systems before it, " << shortNumber(flock ? pairs : work)
+      problem << what << " per World step; with the systems before it, " << formatNumber(flock ? pairs : work)
               << (flock ? " neighbour tests" : " updates") << " per step, and the limit is "
-              << shortNumber(flock ? kMaxFlockTestsPerStep : kMaxParticleWorkPerStep)
+              << formatNumber(flock ? kMaxFlockTestsPerStep : kMaxParticleWorkPerStep)
               << " per step: use a smaller capacity, fewer substeps" << (flock ? " or a smaller flock" : "");
       p.fail(flock ? "flock" : def.cloth.enabled ? "cloth" : "capacity", problem.str());
     }

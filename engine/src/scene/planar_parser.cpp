@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "rbsim/scene/json_fields.h"
 #include "scene/body_parser.h"
 
 namespace rbsim::scene_detail {
@@ -36,12 +36,6 @@ Vec2 vec2(const JsonObject& o, const char* key, const Vec2& fallback) {
   return out;
 }
 
-std::string shortNumber(double value) {
-  std::ostringstream out;
-  out << value;  // 6 significant digits
-  return out.str();
-}
-
 // Convex and counter-clockwise: every turn to the left, and the turns adding up to one revolution
 // (a pentagram turns left at every corner too, but winds twice around its centre).
 void checkConvex(const JsonObject& shape, const std::vector<Vec2>& corners) {
@@ -52,14 +46,14 @@ void checkConvex(const JsonObject& shape, const std::vector<Vec2>& corners) {
     const double turn = cross2(a, b);
     if (!(turn > 0.0) || !std::isfinite(turn)) {
       shape.fail("corners", "expected a convex polygon wound counter-clockwise; the turn at corner " +
-                                std::to_string((i + 1) % corners.size()) + " is " + shortNumber(turn) +
+                                std::to_string((i + 1) % corners.size()) + " is " + formatNumber(turn) +
                                 " m^2 (expected finite and > 0: a left turn, not a repeated, collinear or overflowing corner)");
     }
     turning += std::atan2(turn, a.dot(b));  // the exterior angle, in (0, pi)
   }
   if (std::abs(turning - 2.0 * M_PI) > kTurningTolerance) {
     shape.fail("corners", "expected a convex polygon wound once counter-clockwise; its turns add up to " +
-                              shortNumber(turning / (2.0 * M_PI)) + " revolutions (the edges cross each other)");
+                              formatNumber(turning / (2.0 * M_PI)) + " revolutions (the edges cross each other)");
   }
 }
 
@@ -133,20 +127,20 @@ void parsePlanar(const JsonObject& root, Scene& scene) {
     double reach = 0.0;  // the farthest corner from the centroid [m]
     for (const Vec2& corner : body.polygon()) reach = std::max(reach, corner.stableNorm());
     if (!std::isfinite(body.state().position.cwiseAbs().maxCoeff() + reach)) {
-      b.fail("position", "the corners' world positions (position + " + shortNumber(reach) + " m) overflow; expected finite sums");
+      b.fail("position", "the corners' world positions (position + " + formatNumber(reach) + " m) overflow; expected finite sums");
     }
     body.state().angle = kDegreesToRadians * b.number("angle_deg", 0.0);
     const Vec2 velocity = vec2(b, "velocity", Vec2::Zero());
     body.state().linearMomentum = body.mass() * velocity;
     if (!body.state().linearMomentum.allFinite()) {
-      b.fail("velocity", "the momentum m v = " + shortNumber(body.mass()) + " kg x " + shortNumber(velocity.stableNorm()) +
+      b.fail("velocity", "the momentum m v = " + formatNumber(body.mass()) + " kg x " + formatNumber(velocity.stableNorm()) +
                              " m/s overflows; expected a finite product");
     }
     const double spin = b.number("angular_velocity", 0.0);
     body.state().angularMomentum = body.inertia() * spin;
     if (!std::isfinite(body.state().angularMomentum)) {
-      b.fail("angular_velocity", "the angular momentum I omega = " + shortNumber(body.inertia()) + " kg m^2 x " +
-                                     shortNumber(spin) + " rad/s overflows; expected a finite product");
+      b.fail("angular_velocity", "the angular momentum I omega = " + formatNumber(body.inertia()) + " kg m^2 x " +
+                                     formatNumber(spin) + " rad/s overflows; expected a finite product");
     }
     const Vec3 color = b.vec3("color", Vec3(0.8, 0.5, 0.2));
     if (color.minCoeff() < 0.0 || color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
@@ -155,8 +149,8 @@ void parsePlanar(const JsonObject& root, Scene& scene) {
     const double work = detectionWork(world.bodies(), world.lines().size());
     if (work > kMaxPlanarDetectionWork) {
       p.fail("bodies", "with body " + std::to_string(world.bodies().size() - 1) + " (\"" + name + "\") contact detection tests " +
-                           shortNumber(work) + " corner-edge pairs per step (every body against every other); the limit is " +
-                           shortNumber(kMaxPlanarDetectionWork) + " per step: use fewer bodies or corners");
+                           formatNumber(work) + " corner-edge pairs per step (every body against every other); the limit is " +
+                           formatNumber(kMaxPlanarDetectionWork) + " per step: use fewer bodies or corners");
     }
   }
   if (world.bodies().empty()) p.fail("bodies", "expected a non-empty array of 2D bodies");

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "scene/input_ranges.h"
+#include "scene/joint_parser.h"  // the joint springs' bounds, kMaxJointHertz and kMaxJointDampingRatio
 
 namespace rbsim::scene_detail {
 
@@ -11,10 +12,6 @@ namespace {
 // A figure from a doll to a giant: 0.05 to 20 times a 1.8 m person.
 constexpr double kMinRagdollScale = 0.05;  // [1]
 constexpr double kMaxRagdollScale = 20.0;  // [1]
-// A joint spring stiffer than this is a weld, and its substep cannot follow it; the same bound for
-// the damping ratio keeps the spring's coefficients finite.
-constexpr double kMaxJointHertz = 1e6;         // [Hz]
-constexpr double kMaxJointDampingRatio = 1e6;  // [1]
 
 }  // namespace
 

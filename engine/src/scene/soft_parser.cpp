@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "rbsim/scene/json_fields.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
 
@@ -28,12 +28,6 @@ constexpr double kTetsPerCell = 6.0;  // Kuhn's subdivision of a cube (soft/tet_
 // step once.
 constexpr double kMaxSoftElementEvaluationsPerStep = 2.5e7;  // [evaluations per step]
 
-std::string shortNumber(double value) {
-  std::ostringstream out;
-  out << value;  // 6 significant digits
-  return out.str();
-}
-
 double evaluationsPerTet(SoftIntegrator integrator) {
   return integrator == SoftIntegrator::BackwardEuler ? kConjugateGradientMaxIterations + 2.0 : 1.0;
 }
@@ -45,41 +39,41 @@ void checkDerived(const JsonObject& s, const JsonObject& shape, const SoftBodyDe
   const double cellCount = static_cast<double>(cells[0]) * cells[1] * cells[2];
   const double tetVolume = extents.x() * extents.y() * extents.z() / cellCount / kTetsPerCell;
   if (!(tetVolume > 0.0) || !std::isfinite(tetVolume)) {
-    shape.fail("extents", "each tetrahedron's volume is " + shortNumber(tetVolume) + " m^3 (extents / cells); expected a finite "
+    shape.fail("extents", "each tetrahedron's volume is " + formatNumber(tetVolume) + " m^3 (extents / cells); expected a finite "
                           "volume > 0 (the extents " + (tetVolume > 0.0 ? "overflow" : "underflow") + ")");
   }
   const double nodeMass = 0.25 * def.density * tetVolume;
   const double totalMass = def.density * tetVolume * cellCount * kTetsPerCell;
   if (!(nodeMass > 0.0) || !std::isfinite(totalMass) || !std::isfinite(1.0 / nodeMass)) {
-    s.fail("density", "the body's mass rho V = " + shortNumber(totalMass) + " kg, a node's " + shortNumber(nodeMass) +
+    s.fail("density", "the body's mass rho V = " + formatNumber(totalMass) + " kg, a node's " + formatNumber(nodeMass) +
                           " kg; expected finite masses > 0 whose inverses are finite");
   }
   const Vec3 corner = def.position.cwiseAbs() + 0.5 * extents;
   if (!corner.allFinite()) s.fail("position", "the block's corners overflow; expected position +- extents / 2 finite");
   if (!(totalMass * def.velocity.stableNorm() < INFINITY)) {
-    s.fail("velocity", "the momentum m v = " + shortNumber(totalMass) + " kg x " + shortNumber(def.velocity.stableNorm()) +
+    s.fail("velocity", "the momentum m v = " + formatNumber(totalMass) + " kg x " + formatNumber(def.velocity.stableNorm()) +
                            " m/s overflows; expected a finite product");
   }
   const double lambda = def.poissonRatio * def.youngsModulus / ((1.0 + def.poissonRatio) * (1.0 - 2.0 * def.poissonRatio));
   const double mu = def.youngsModulus / (2.0 * (1.0 + def.poissonRatio));
   const double pModulus = lambda + 2.0 * mu;  // the stiffness of a compression wave
   if (!std::isfinite(lambda) || !std::isfinite(mu) || !(pModulus > 0.0) || !std::isfinite(pModulus)) {
-    s.fail("youngs_modulus", "Lame's constants are lambda = " + shortNumber(lambda) + " Pa, mu = " + shortNumber(mu) +
-                                 " Pa (lambda + 2 mu = " + shortNumber(pModulus) + " Pa) from E = " + shortNumber(def.youngsModulus) +
-                                 " Pa and nu = " + shortNumber(def.poissonRatio) + "; expected finite moduli with lambda + 2 mu > 0");
+    s.fail("youngs_modulus", "Lame's constants are lambda = " + formatNumber(lambda) + " Pa, mu = " + formatNumber(mu) +
+                                 " Pa (lambda + 2 mu = " + formatNumber(pModulus) + " Pa) from E = " + formatNumber(def.youngsModulus) +
+                                 " Pa and nu = " + formatNumber(def.poissonRatio) + "; expected finite moduli with lambda + 2 mu > 0");
   }
   const double waveSpeed = std::sqrt(pModulus / def.density);
   const double edge = extents.minCoeff() / std::max({cells[0], cells[1], cells[2]});
   const double crossing = edge / waveSpeed;  // a wave's time across a cell: the explicit step's scale
   if (!(waveSpeed > 0.0) || !std::isfinite(waveSpeed) || !(crossing > 0.0)) {
-    s.fail("youngs_modulus", "the pressure wave speed sqrt((lambda + 2 mu) / rho) = " + shortNumber(waveSpeed) +
-                                 " m/s crosses a cell in " + shortNumber(crossing) + " s; expected a finite speed > 0 and a time > 0");
+    s.fail("youngs_modulus", "the pressure wave speed sqrt((lambda + 2 mu) / rho) = " + formatNumber(waveSpeed) +
+                                 " m/s crosses a cell in " + formatNumber(crossing) + " s; expected a finite speed > 0 and a time > 0");
   }
   // A stress of the stiffest modulus over an element's face, per unit strain: the force scale.
   const double forceScale = pModulus * tetVolume / edge;
   if (!std::isfinite(forceScale) || !std::isfinite(forceScale / nodeMass)) {
-    s.fail("youngs_modulus", "a node's force per unit strain, (lambda + 2 mu) V / h = " + shortNumber(forceScale) +
-                                 " N, over its mass " + shortNumber(nodeMass) + " kg overflows; expected a finite acceleration");
+    s.fail("youngs_modulus", "a node's force per unit strain, (lambda + 2 mu) V / h = " + formatNumber(forceScale) +
+                                 " N, over its mass " + formatNumber(nodeMass) + " kg overflows; expected a finite acceleration");
   }
   if (!std::isfinite(def.damping * tetVolume / edge / nodeMass)) {
     s.fail("damping", "a node's damping force per unit strain rate over its mass overflows; expected a finite value");
@@ -144,9 +138,9 @@ void parseSoftBodies(const JsonObject& root, Scene& scene) {
     work += tets * evaluationsPerTet(integratorOf(s));
     if (work > kMaxSoftElementEvaluationsPerStep) {
       shape.fail("cells", std::to_string(static_cast<long long>(tets)) + " tetrahedra (with the soft bodies before) need up to " +
-                              shortNumber(work) + " element evaluations per step (" + softIntegratorName(integratorOf(s)) +
-                              ": " + shortNumber(evaluationsPerTet(integratorOf(s))) + " per tetrahedron); the limit is " +
-                              shortNumber(kMaxSoftElementEvaluationsPerStep) + " per step: use fewer cells");
+                              formatNumber(work) + " element evaluations per step (" + softIntegratorName(integratorOf(s)) +
+                              ": " + formatNumber(evaluationsPerTet(integratorOf(s))) + " per tetrahedron); the limit is " +
+                              formatNumber(kMaxSoftElementEvaluationsPerStep) + " per step: use fewer cells");
     }
     def.mesh = makeTetBox(extents, cells[0], cells[1], cells[2]);
     if (!(extents.maxCoeff() <= kMaxCoordinate)) shape.fail("extents", "expected each at most 1e6 m, the farthest a scene reaches");

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include "rbsim/math/uniform_random.h"
+#include "rbsim/scene/json_fields.h"
 #include "rbsim/world/spawner.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
@@ -22,12 +22,6 @@ constexpr int kMaxSpawnCount = 100000;
 // Vertices of all spawned bodies together: each body keeps its world-frame vertices (24 B each)
 // and its collision shape, so this is ~0.5 GB of per-body geometry; the template's mesh is shared.
 constexpr double kMaxSpawnedVertices = 2e7;  // [vertices]
-
-std::string shortNumber(double value) {
-  std::ostringstream out;
-  out << value;  // 6 significant digits
-  return out.str();
-}
 
 // [lo, hi] with 0 <= lo <= hi.
 std::pair<double, double> range(const JsonObject& o, const char* key, const char* unit) {
@@ -45,7 +39,7 @@ std::vector<Vec3> offsetsOf(const JsonObject& s) {
   if (!s.has("offsets")) return {Vec3::Zero()};
   const nlohmann::json& list = s.raw("offsets");
   const std::string expected = "expected a non-empty array of at most " + std::to_string(kMaxSpawnCount) +
-                               " offsets [x, y, z] from each drawn point, each within " + shortNumber(kMaxCoordinate) + " m";
+                               " offsets [x, y, z] from each drawn point, each within " + formatNumber(kMaxCoordinate) + " m";
   if (!list.is_array() || list.empty() || list.size() > static_cast<std::size_t>(kMaxSpawnCount)) s.fail("offsets", expected);
   std::vector<Vec3> offsets;
   for (const nlohmann::json& p : list) {
@@ -99,7 +93,7 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     const double bodiesPerBurst = static_cast<double>(count) * static_cast<double>(offsets.size()) *
                                   (ragdoll ? static_cast<double>(kBoneCount) : 1.0);
     if (bodiesPerBurst > kMaxSpawnCount) {
-      s.fail("offsets", shortNumber(bodiesPerBurst) + " bodies a burst (count x offsets" + (ragdoll ? " x 11 bones" : "") +
+      s.fail("offsets", formatNumber(bodiesPerBurst) + " bodies a burst (count x offsets" + (ragdoll ? " x 11 bones" : "") +
                             "); expected at most " + std::to_string(kMaxSpawnCount));
     }
     const double lifetime = s.has("lifetime") ? s.positiveNumber("lifetime", 1.0) : std::numeric_limits<double>::infinity();
@@ -109,8 +103,8 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     // (A World stepped without end, from Python, holds each burst to it.)
     const double bursts = !periodic || !std::isfinite(span) ? 1.0 : span > 0.0 ? std::ceil(span / period) : 0.0;
     if (bodiesPerBurst * bursts > kMaxSpawnCount) {
-      s.fail("period", shortNumber(bodiesPerBurst) + " bodies every " + shortNumber(period) + " s for " + shortNumber(span) +
-                           " s add " + shortNumber(bodiesPerBurst * bursts) + " bodies; expected at most " +
+      s.fail("period", formatNumber(bodiesPerBurst) + " bodies every " + formatNumber(period) + " s for " + formatNumber(span) +
+                           " s add " + formatNumber(bodiesPerBurst * bursts) + " bodies; expected at most " +
                            std::to_string(kMaxSpawnCount) + " (a longer period, fewer bodies, or an end)");
     }
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
@@ -122,7 +116,7 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     // Positions are drawn as min + (max - min) u: the extent itself must be a finite number.
     const Vec3 extent = hi - lo;
     if (!extent.allFinite()) {
-      region.fail("max", "the region's extent max - min overflows (" + shortNumber(extent.maxCoeff()) +
+      region.fail("max", "the region's extent max - min overflows (" + formatNumber(extent.maxCoeff()) +
                              " m); expected a finite size along every axis");
     }
     const auto [speedLo, speedHi] = range(s, "speed", "m/s");
@@ -189,17 +183,17 @@ void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic,
   const double copies = static_cast<double>(spawner.count) * static_cast<double>(spawner.offsets.size()) * bursts;
   spawnedVertices += copies * static_cast<double>(prototype.mesh->vertices.size());
   if (spawnedVertices > kMaxSpawnedVertices) {
-    s.fail("count", shortNumber(copies) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
-                        " vertices bring the spawned bodies to " + shortNumber(spawnedVertices) +
+    s.fail("count", formatNumber(copies) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
+                        " vertices bring the spawned bodies to " + formatNumber(spawnedVertices) +
                         " vertices (each body keeps its own world-frame copy); the limit is " +
-                        shortNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
+                        formatNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
   }
   // The fastest spin a draw can give keeps the surface below light speed, as for a body's own
   // angular_velocity; with the template's mass within kMaxMassScale, m v and I omega stay finite.
   const double radius = 0.5 * (prototype.mesh->boundsMax() - prototype.mesh->boundsMin()).norm();
   if (!(spawner.spinMax * radius <= kMaxSpeed)) {
-    s.fail("angular_speed", "a body's surface would move at |omega| r = " + shortNumber(spawner.spinMax) + " rad/s x " +
-                                shortNumber(radius) + " m, faster than light; expected a smaller spin");
+    s.fail("angular_speed", "a body's surface would move at |omega| r = " + formatNumber(spawner.spinMax) + " rad/s x " +
+                                formatNumber(radius) + " m, faster than light; expected a smaller spin");
   }
   const std::string inertia = scene.inertiaMethods[first];
   const std::size_t springsOfPrototype = scene.springs.size();

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <thread>
+
+#include "rbsim/math/format_number.h"
 
 namespace rbsim {
 
@@ -14,12 +15,6 @@ int machineThreads() {
 
 namespace {
 
-std::string number(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
-
 // A finite value within [lo, hi]; NaN fails every comparison, so it is refused too.
 bool within(double x, double lo, double hi) { return std::isfinite(x) && x >= lo && x <= hi; }
 
@@ -27,13 +22,13 @@ bool within(double x, double lo, double hi) { return std::isfinite(x) && x >= lo
 
 SettingsProblem checkSettings(const Settings& s) {
   const double inf = INFINITY;
-  if (!(s.timeStep > 0.0)) return {"dt", "expected a positive time step, got " + number(s.timeStep) + " s"};
+  if (!(s.timeStep > 0.0)) return {"dt", "expected a positive time step, got " + formatNumber(s.timeStep) + " s"};
   if (!within(s.timeStep, kMinTimeStep, kMaxTimeStep)) {
-    return {"dt", "expected a time step in [" + number(kMinTimeStep) + ", " + number(kMaxTimeStep) + "] s; " +
-                      number(s.timeStep) + " s is absurd"};
+    return {"dt", "expected a time step in [" + formatNumber(kMinTimeStep) + ", " + formatNumber(kMaxTimeStep) + "] s; " +
+                      formatNumber(s.timeStep) + " s is absurd"};
   }
   if (!s.gravity.allFinite() || !(s.gravity.stableNorm() <= kMaxGravity)) {
-    return {"gravity", "expected finite components, |g| at most " + number(kMaxGravity) +
+    return {"gravity", "expected finite components, |g| at most " + formatNumber(kMaxGravity) +
                            " m/s^2 (above a neutron star's surface gravity)"};
   }
   if (!within(s.sleepLinearSpeed, 0.0, inf)) return {"sleep_linear_speed", "expected a finite speed >= 0 m/s"};

@@ -12,8 +12,6 @@ namespace rbsim {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Vertices this close [m] are one vertex of the hull graph (a UV sphere's pole and seam copies).
 constexpr double kWeldDistance = 1e-12;
 

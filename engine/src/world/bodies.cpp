@@ -9,6 +9,7 @@
 #include "rbsim/world/world.h"
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
+#include "world/swap_remove.h"
 
 #include "rbsim/fracture/fracture.h"
 
@@ -25,13 +26,6 @@ template <typename T>
 void removeNaming(std::vector<T>& items, BodyId removed) {
   items.erase(std::remove_if(items.begin(), items.end(), [&](const T& item) { return item.body == removed; }),
               items.end());
-}
-
-// Moves element `from` (the last) onto `to` and drops the last.
-template <typename T>
-void swapRemove(std::vector<T>& items, std::size_t to) {
-  if (to + 1 != items.size()) items[to] = std::move(items.back());
-  items.pop_back();
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "world/collision_pipeline.h"
 #include "world/compound_contacts.h"
 #include "world/mesh_ground_contacts.h"
+#include "world/swap_remove.h"
 
 namespace rbsim {
 
@@ -69,16 +70,6 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, co
   start_[index] = body.state();
   fast_[index] = 0;
 }
-
-namespace {
-
-template <typename T>
-void swapRemove(std::vector<T>& items, std::size_t index) {
-  if (index + 1 != items.size()) items[index] = items.back();
-  items.pop_back();
-}
-
-}  // namespace
 
 void CollisionPipeline::removeBody(std::size_t index) {
   broad_->remove(proxies_[index]);

@@ -11,15 +11,6 @@
 
 namespace rbsim {
 
-namespace {
-
-bool isFinite(const BodyState& s) {
-  return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
-         s.angularMomentum.allFinite();
-}
-
-}  // namespace
-
 void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
   // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
   // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.

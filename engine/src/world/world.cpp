@@ -32,11 +32,6 @@ namespace {
 constexpr std::size_t kIntegrateBatch = 8;
 constexpr std::size_t kPrefetchAhead = 8;
 
-bool isFinite(const BodyState& s) {
-  return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
-         s.angularMomentum.allFinite();
-}
-
 }  // namespace
 
 const char* stageName(Stage stage) {

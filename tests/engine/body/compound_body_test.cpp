@@ -16,8 +16,6 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 using test::allNear;
 
 constexpr double kDensity = 700.0;  // [kg/m^3], oak

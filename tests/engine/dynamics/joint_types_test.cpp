@@ -14,10 +14,10 @@
 namespace rbsim::test {
 namespace {
 
-constexpr double kGravity = 9.81;  // [m/s^2]
+constexpr double kJointTypesGravity = 9.81;  // [m/s^2]
 const double kSteps[] = {1.0 / 60.0, 1.0 / 240.0};  // [s]
 
-Settings jointSettings(double dt, double gravity = kGravity) {
+Settings jointSettings(double dt, double gravity = kJointTypesGravity) {
   Settings s;
   s.timeStep = dt;
   s.gravity = Vec3(0.0, -gravity, 0.0);
@@ -55,7 +55,7 @@ TEST(JointTypes, SliderOnAnInclineAcceleratesAtGSinA) {
     world.addJoint(slider);
     runFor(world, 1.0);
     const JointReading r = readJoint(world, 0);
-    const double expected = kGravity * std::sin(slope);
+    const double expected = kJointTypesGravity * std::sin(slope);
     std::printf("slider on a 30 deg incline, dt %.5f s: speed / t = %.9f m/s^2, g sin a = %.9f\n", dt,
                 r.translationSpeed / world.time(), expected);
     EXPECT_NEAR(r.translationSpeed / world.time(), expected, 1e-9 * expected) << "dt " << dt;
@@ -64,7 +64,7 @@ TEST(JointTypes, SliderOnAnInclineAcceleratesAtGSinA) {
     EXPECT_NEAR(r.translation, 0.5 * expected * world.time() * world.time() * (n + 1.0) / n, 1e-6);
     // Across the axis it holds g cos(a) per kg with the joints' softness: a give of about
     // g cos(a) / omega^2 (1.5e-5 m), the lever arm of the off-centre anchor adding to it.
-    const double give = kGravity * std::cos(slope) / std::pow(jointOmega(world.settings()), 2);
+    const double give = kJointTypesGravity * std::cos(slope) / std::pow(jointOmega(world.settings()), 2);
     EXPECT_LT((r.anchorA - r.anchorB - r.translation * r.axis).norm(), 2.0 * give);
     EXPECT_LT(world.bodies()[0].angularVelocity().norm(), 1e-6);
   }
@@ -72,7 +72,7 @@ TEST(JointTypes, SliderOnAnInclineAcceleratesAtGSinA) {
 
 // The same slider with joint friction: held below m g sin(a), sliding at g sin(a) - F / m above.
 TEST(JointTypes, SliderFrictionHoldsBelowItsMaximumAndSlipsAbove) {
-  const double slope = M_PI / 6.0, pull = kGravity * std::sin(slope);  // [N] on 1 kg
+  const double slope = M_PI / 6.0, pull = kJointTypesGravity * std::sin(slope);  // [N] on 1 kg
   for (double dt : kSteps) {
     for (double friction : {1.2 * pull, 0.5 * pull}) {
       World world(jointSettings(dt));
@@ -110,7 +110,7 @@ TEST(JointTypes, SliderLimitsStopItAndItsMotorDrivesIt) {
     JointReading r = readJoint(world, 0);
     // The soft stop holds m g against its stiffness m omega^2 (the steady state of a soft
     // constraint, softness.h): g / omega^2 past the stop.
-    const double give = kGravity / std::pow(jointOmega(world.settings()), 2);
+    const double give = kJointTypesGravity / std::pow(jointOmega(world.settings()), 2);
     std::printf("slider limit 0.5 m, dt %.5f s: rests at %.7f m (soft give %.2g m)\n", dt, r.translation, give);
     EXPECT_NEAR(r.translation, 0.5 + give, 0.1 * give + 1e-9) << "dt " << dt;
     EXPECT_NEAR(r.translationSpeed, 0.0, 1e-6);
@@ -198,8 +198,8 @@ TEST(JointTypes, WeldHoldsACantileverWithinItsSoftness) {
       world.addJoint(weld);
       runFor(world, 4.0);
       const double omega = hertz > 0.0 ? 2.0 * M_PI * hertz : jointOmega(world.settings());
-      const double drop = (1.0 / mass + 0.25 * length * length / inertia) * mass * kGravity / (omega * omega);
-      const double turn = 0.5 * mass * kGravity * length / (inertia * omega * omega);
+      const double drop = (1.0 / mass + 0.25 * length * length / inertia) * mass * kJointTypesGravity / (omega * omega);
+      const double turn = 0.5 * mass * kJointTypesGravity * length / (inertia * omega * omega);
       const double expected = drop + length * turn;
       const double droop = -world.bodies()[0].bodyToWorld(Vec3(0.5 * length, 0.0, 0.0)).y();
       std::printf("cantilever weld %.0f Hz, dt %.5f s: tip droop %.6g m, expected %.6g m (ratio %.5f)\n", hertz, dt, droop,
@@ -234,7 +234,7 @@ TEST(JointTypes, ConeLimitHoldsAPendulumAtItsConeAngle) {
       world.step();
       widest = std::max(widest, readJoint(world, 0).swing);
     }
-    const double give = mass * kGravity * 0.5 * length * std::cos(cone) / (inertia * std::pow(jointOmega(world.settings()), 2));
+    const double give = mass * kJointTypesGravity * 0.5 * length * std::cos(cone) / (inertia * std::pow(jointOmega(world.settings()), 2));
     const JointReading r = readJoint(world, 0);
     const Vec3 x = world.bodies()[0].position() - r.anchorA;  // the rod from its own end
     std::printf("cone 30 deg, dt %.5f s: rests at %.7f rad (cone + give %.7f), widest %.7f, rod's angle below x %.7f\n", dt,

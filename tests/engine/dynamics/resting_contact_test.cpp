@@ -10,7 +10,7 @@
 namespace rbsim {
 namespace {
 
-constexpr double kG = 9.81;  // [m/s^2], Settings' default |g|
+constexpr double kRestingG = 9.81;  // [m/s^2], Settings' default |g|
 
 Settings awakeSettings() {
   Settings s;
@@ -37,11 +37,11 @@ TEST(Friction, ASlidingBoxStopsAtTheKinematicDistance) {
   world.addBody(box);
   const RigidBody& b = world.bodies()[0];
   // Half way through the slide the speed is v0 - mu_k g t.
-  const double halfTime = 0.5 * v0 / (mu * kG);
+  const double halfTime = 0.5 * v0 / (mu * kRestingG);
   while (world.time() < halfTime - 1e-9) world.step();
-  EXPECT_NEAR(b.velocity().x(), v0 - mu * kG * world.time(), 0.02);
+  EXPECT_NEAR(b.velocity().x(), v0 - mu * kRestingG * world.time(), 0.02);
   for (int i = 0; i < 480; ++i) world.step();
-  const double distance = v0 * v0 / (2.0 * mu * kG);
+  const double distance = v0 * v0 / (2.0 * mu * kRestingG);
   EXPECT_NEAR(b.position().x(), distance, 0.01 * distance + 0.005);
   EXPECT_LT(b.velocity().norm(), 1e-3);
   // Rounding alone moves it sideways: 1.2e-6 m at 10 substeps (under 1e-6 at 8).
@@ -78,7 +78,7 @@ TEST(Friction, ABoxSlidesDownAnInclineSteeperThanTheFrictionAngle) {
   double acceleration = 0.0;
   const double theta = 32.0 * M_PI / 180.0;
   EXPECT_GT(slideAfter(32.0, 1.0, 0.6, 0.5, &acceleration), 0.1);
-  EXPECT_NEAR(acceleration, kG * (std::sin(theta) - 0.5 * std::cos(theta)), 0.02);
+  EXPECT_NEAR(acceleration, kRestingG * (std::sin(theta) - 0.5 * std::cos(theta)), 0.02);
 }
 
 TEST(RestingContact, ADroppedBoxComesToRestWithinTheSlopAndStaysThere) {

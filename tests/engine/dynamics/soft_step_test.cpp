@@ -29,14 +29,14 @@ Settings settingsAt(double dt, Integrator integrator = Settings{}.integrator) {
   return s;
 }
 
-Material friction(double mu, double restitution = 0.0) { return Material{restitution, mu, mu}; }
+Material softFriction(double mu, double restitution = 0.0) { return Material{restitution, mu, mu}; }
 
-// Unit boxes of 1 kg, friction 0.6, centres at `centres` (touching), on the ground plane.
+// Unit boxes of 1 kg, softFriction 0.6, centres at `centres` (touching), on the ground plane.
 World boxes(const Settings& settings, const std::vector<Vec3>& centres, const Vec3& extents = Vec3::Ones()) {
   World world(settings);
-  world.addPlane(Plane{}, friction(0.6));
+  world.addPlane(Plane{}, softFriction(0.6));
   for (std::size_t i = 0; i < centres.size(); ++i) {
-    world.addBody(test::boxWith(extents, 1.0, centres[i], friction(0.6), "box" + std::to_string(i)));
+    world.addBody(test::boxWith(extents, 1.0, centres[i], softFriction(0.6), "box" + std::to_string(i)));
   }
   return world;
 }
@@ -126,9 +126,9 @@ TEST(SoftStep, APyramidOfTwentyRowsStandsAtSixtyHertz) {
 TEST(SoftStep, MassRatiosOfAHundredStand) {
   for (const std::vector<double>& masses : {std::vector<double>{1.0, 100.0}, std::vector<double>{1.0, 10.0, 100.0}}) {
     World world(settingsAt(kDt60));
-    world.addPlane(Plane{}, friction(0.6));
+    world.addPlane(Plane{}, softFriction(0.6));
     for (std::size_t i = 0; i < masses.size(); ++i) {
-      world.addBody(test::boxWith(Vec3::Ones(), masses[i], Vec3(0.0, 0.5 + i, 0.0), friction(0.6), "box"));
+      world.addBody(test::boxWith(Vec3::Ones(), masses[i], Vec3(0.0, 0.5 + i, 0.0), softFriction(0.6), "box"));
     }
     run(world, 10.0);
     const double topStart = masses.size() - 0.5;
@@ -141,10 +141,10 @@ TEST(SoftStep, MassRatiosOfAHundredStand) {
 
 TEST(SoftStep, APlankOnTwoBoxesStands) {
   World world(settingsAt(kDt60));
-  world.addPlane(Plane{}, friction(0.6));
-  world.addBody(test::boxWith(Vec3::Ones(), 1.0, Vec3(-8.0, 0.5, 0.0), friction(0.6), "left"));
-  world.addBody(test::boxWith(Vec3::Ones(), 1.0, Vec3(8.0, 0.5, 0.0), friction(0.6), "right"));
-  world.addBody(test::boxWith(Vec3(20.0, 1.0, 20.0), 400.0, Vec3(0.0, 1.5, 0.0), friction(0.6), "plank"));
+  world.addPlane(Plane{}, softFriction(0.6));
+  world.addBody(test::boxWith(Vec3::Ones(), 1.0, Vec3(-8.0, 0.5, 0.0), softFriction(0.6), "left"));
+  world.addBody(test::boxWith(Vec3::Ones(), 1.0, Vec3(8.0, 0.5, 0.0), softFriction(0.6), "right"));
+  world.addBody(test::boxWith(Vec3(20.0, 1.0, 20.0), 400.0, Vec3(0.0, 1.5, 0.0), softFriction(0.6), "plank"));
   const std::vector<Vec3> starts{Vec3(-8.0, 0.5, 0.0), Vec3(8.0, 0.5, 0.0), Vec3(0.0, 1.5, 0.0)};
   run(world, 10.0);
   // Each support carries 200 kg on its contact springs: the plank sinks 1.6 cm (F / (m_n
@@ -158,12 +158,12 @@ TEST(SoftStep, APlankOnTwoBoxesStands) {
   }
 }
 
-// Apexes of a 0.3 m box dropped flat from 3 m onto a plane, both of restitution e and friction
+// Apexes of a 0.3 m box dropped flat from 3 m onto a plane, both of restitution e and softFriction
 // 0.6, measured from its lowest face: the seed's law u_N' = -e u_N gives apex ratios of e^2.
 std::vector<double> apexes(double e, double dt, Integrator integrator, int count) {
   World world(settingsAt(dt, integrator));
-  world.addPlane(Plane{}, friction(0.6, e));
-  world.addBody(test::boxWith(Vec3::Constant(0.3), 1.0, Vec3(0.0, 3.15, 0.0), friction(0.6, e), "box"));
+  world.addPlane(Plane{}, softFriction(0.6, e));
+  world.addBody(test::boxWith(Vec3::Constant(0.3), 1.0, Vec3(0.0, 3.15, 0.0), softFriction(0.6, e), "box"));
   const RigidBody& b = world.bodies()[0];
   std::vector<double> out{3.0};
   double previous = 0.0;
@@ -221,9 +221,9 @@ TEST(SoftStep, ABallReboundsToTheSquareOfTheRestitutionAt60Hz) {
   for (double e : {0.5, 0.8, 1.0}) {
     for (double dt : {kDt60, kDt240}) {
       World world(settingsAt(dt, Integrator::Dlm));
-      world.addPlane(Plane{}, friction(0.0, e));
+      world.addPlane(Plane{}, softFriction(0.0, e));
       BodyDef def = shapeBodyDef(Shape::sphere(radius), 1.0, "ball");
-      def.material = friction(0.0, e);
+      def.material = softFriction(0.0, e);
       def.position = Vec3(0.0, radius + h0, 0.0);
       world.addBody(def);
       const RigidBody& ball = world.bodies()[0];
@@ -252,8 +252,8 @@ TEST(SoftStep, TheCollisionStepNeverAddsEnergyWithAnyIntegrator) {
   for (Integrator integrator : allIntegrators()) {
     for (double dt : {kDt60, kDt240}) {
       World world(settingsAt(dt, integrator));
-      world.addPlane(Plane{}, friction(0.6, 1.0));
-      world.addBody(test::boxWith(Vec3::Constant(0.3), 1.0, Vec3(0.0, 3.15, 0.0), friction(0.6, 1.0), "box"));
+      world.addPlane(Plane{}, softFriction(0.6, 1.0));
+      world.addBody(test::boxWith(Vec3::Constant(0.3), 1.0, Vec3(0.0, 3.15, 0.0), softFriction(0.6, 1.0), "box"));
       const RigidBody& b = world.bodies()[0];
       int collisions = 0;
       while (world.time() < 4.0) {

@@ -15,8 +15,6 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // By the divergence theorem; positive when the triangles face outward.
 double enclosedVolume(const Mesh& m) {
   double six = 0.0;

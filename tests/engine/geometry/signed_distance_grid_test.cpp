@@ -18,8 +18,6 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Worst |grid - exact| [cells] over the grid points, split at `band` cells from the surface,
 // leaving out those where `skip` is true (near the medial axis, where first-order fast marching
 // is least accurate).

@@ -15,7 +15,7 @@
 namespace rbsim {
 namespace {
 
-Vec3 randomPoint(std::mt19937& rng, double half) {
+Vec3 randomBvhPoint(std::mt19937& rng, double half) {
   std::uniform_real_distribution<double> u(-half, half);
   return {u(rng), u(rng), u(rng)};
 }
@@ -42,7 +42,7 @@ TEST(ClosestPointOnTriangle, MatchesBruteForceMinimisationInAllSevenRegions) {
   std::mt19937 rng(11);
   std::set<TriangleFeature> regions;
   for (int n = 0; n < 400; ++n) {
-    const Vec3 p = Vec3(0.45, 0.25, 0.0) + randomPoint(rng, 1.5);
+    const Vec3 p = Vec3(0.45, 0.25, 0.0) + randomBvhPoint(rng, 1.5);
     const PointTriangleResult r = closestPointOnTriangle(p, a, b, c);
     regions.insert(r.feature);
     const double brute = bruteDistance(p, a, b, c);
@@ -75,7 +75,7 @@ TEST_F(TriangleBvhOnATorus, NearestMatchesTestingEveryTriangle) {
   EXPECT_EQ(bvh.triangleCount(), mesh.triangles.size());
   std::mt19937 rng(12);
   for (int n = 0; n < 2000; ++n) {
-    const Vec3 p = randomPoint(rng, 2.0);
+    const Vec3 p = randomBvhPoint(rng, 2.0);
     const SurfacePoint fast = bvh.nearest(p), brute = bruteNearest(p);
     EXPECT_NEAR(fast.distance, brute.distance, 1e-14) << p.transpose();
     EXPECT_NEAR((fast.point - p).norm(), fast.distance, 1e-12);
@@ -86,7 +86,7 @@ TEST_F(TriangleBvhOnATorus, ClosestWithinARadiusAnswersExactlyWhenSomethingIsTha
   std::mt19937 rng(13);
   int found = 0;
   for (int n = 0; n < 2000; ++n) {
-    const Vec3 p = randomPoint(rng, 1.6);
+    const Vec3 p = randomBvhPoint(rng, 1.6);
     const double radius = 0.15;
     const auto hit = bvh.closestWithin(p, radius);
     const double brute = bruteNearest(p).distance;
@@ -103,7 +103,7 @@ TEST_F(TriangleBvhOnATorus, SegmentCrossingsMatchTestingEveryTriangle) {
   std::mt19937 rng(14);
   int crossed = 0;
   for (int n = 0; n < 2000; ++n) {
-    const Vec3 a = randomPoint(rng, 1.4), b = a + randomPoint(rng, 0.5);
+    const Vec3 a = randomBvhPoint(rng, 1.4), b = a + randomBvhPoint(rng, 0.5);
     int brute = 0;
     for (const Triangle& tri : mesh.triangles) {
       double t = 0.0;

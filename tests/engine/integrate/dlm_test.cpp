@@ -37,19 +37,19 @@ TEST(Dlm, FreeFallIsTheExactParabola) {
 }
 
 // The spec's asymmetric box spinning near its intermediate axis (the Dzhanibekov case).
-struct Tumble {
+struct DlmTumble {
   double energy0 = 0.0, momentum0 = 0.0;
   double maxEnergyError = 0.0;  // max |E / E0 - 1| over the run
   double momentum = 0.0;
 };
 
-Tumble tumble(Integrator integrator, double seconds) {
+DlmTumble tumble(Integrator integrator, double seconds) {
   World world = worldWith(integrator, kDt, Vec3::Zero());
   BodyDef def = boxDef(Vec3(1.0, 0.3, 0.1), 1.0);
   def.angularVelocity = Vec3(0.01, 5.0, 0.01);
   world.addBody(def);
   const RigidBody& body = world.bodies()[0];
-  Tumble out;
+  DlmTumble out;
   out.energy0 = body.kineticEnergy();
   out.momentum0 = body.state().angularMomentum.norm();
   while (world.time() < seconds) {
@@ -64,11 +64,11 @@ TEST(Dlm, TorqueFreeKeepsLToTheBitAndEnergyInABand) {
   // The splitting never touches world L, and as a symplectic map its energy error oscillates
   // instead of growing. Measured over 100 s at dt = 1/60: max |E/E0 - 1| = 9.7e-5; expmap on the
   // same motion ends with 10.1 times the energy. Bound: 1e-3, ten times the measurement.
-  const Tumble dlm = tumble(Integrator::Dlm, 100.0);
+  const DlmTumble dlm = tumble(Integrator::Dlm, 100.0);
   std::printf("[ dlm ] max |E/E0 - 1| over 100 s at dt = 1/60: %.3e\n", dlm.maxEnergyError);
   EXPECT_EQ(dlm.momentum, dlm.momentum0);
   EXPECT_LT(dlm.maxEnergyError, 1e-3);
-  const Tumble expmap = tumble(Integrator::ExpMap, 100.0);
+  const DlmTumble expmap = tumble(Integrator::ExpMap, 100.0);
   EXPECT_GT(expmap.maxEnergyError, 1.0) << "the case separates a symplectic splitting from forward Euler";
 }
 

@@ -37,7 +37,7 @@ double conditioned(double tolerance, const FreeRigidBodyFlow& flow) {
 
 const Quat kQ0 = Quat(Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()));
 
-struct Case {
+struct FreeBodyCase {
   std::string name;
   Vec3 I;  // [kg m^2], ascending for the reference
   Vec3 w;  // body-frame omega [rad/s]
@@ -45,7 +45,7 @@ struct Case {
 
 // Both sides of the separatrix, every sign, near it on both sides (k^2 = 1 - 2.5e-5), and the
 // issue's box 1.0 x 0.3 x 0.1 m, 1 kg spun at (0.01, 10, 0) rad/s about its intermediate axis.
-std::vector<Case> cases() {
+std::vector<FreeBodyCase> cases() {
   return {
       {"major_side", Vec3(1.0, 2.0, 3.0), Vec3(1.0, 0.5, 2.0)},
       {"major_side_negative", Vec3(1.0, 2.0, 3.0), Vec3(-0.7, -1.2, -1.5)},
@@ -60,7 +60,7 @@ std::vector<Case> cases() {
 // The flow matches the reference's rotation over 20 s to 1e-10 rad: the reference integrates
 // the rate of the angle about L by quadrature to 1e-13, this evaluates it in closed form.
 TEST(FreeRigidBodyFlow, MatchesTheReferenceSolutionOnEverySide) {
-  for (const Case& c : cases()) {
+  for (const FreeBodyCase& c : cases()) {
     const reference::TorqueFreeExact exact(c.I, c.w, kQ0.toRotationMatrix());
     const Vec3 L = kQ0 * c.I.cwiseProduct(c.w);
     const FreeRigidBodyFlow flow(kQ0, L, c.I);
@@ -108,7 +108,7 @@ TEST(FreeRigidBodyFlow, MatchesTheReferenceAtRandomInertiasAndSpins) {
 
 // L stays in the world as it was, the energy is kept, and R(t) m(t) = L to rounding.
 TEST(FreeRigidBodyFlow, KeepsMomentumAndEnergyToRounding) {
-  for (const Case& c : cases()) {
+  for (const FreeBodyCase& c : cases()) {
     const Vec3 L = kQ0 * c.I.cwiseProduct(c.w);
     const FreeRigidBodyFlow flow(kQ0, L, c.I);
     const double energy = kineticEnergy(c.I.cwiseProduct(c.w), c.I);
@@ -124,7 +124,7 @@ TEST(FreeRigidBodyFlow, KeepsMomentumAndEnergyToRounding) {
 // Restarting the flow from its own state gives the same motion (the flow is a one-parameter
 // group), and running it backwards returns to the start.
 TEST(FreeRigidBodyFlow, IsAGroupAndReversible) {
-  for (const Case& c : cases()) {
+  for (const FreeBodyCase& c : cases()) {
     const Vec3 L = kQ0 * c.I.cwiseProduct(c.w);
     const FreeRigidBodyFlow flow(kQ0, L, c.I);
     const double t1 = 1.234, t2 = 2.345;

@@ -21,12 +21,12 @@ namespace {
 
 constexpr std::size_t kBoids = 40;
 constexpr double kMass = 0.5;  // [kg]
-constexpr double kDt = 1e-3;   // [s]
+constexpr double kFlockDt = 1e-3;   // [s]
 
 // A world of kBoids particles at rest or moving at random in a 2 m cube, all neighbours of each
 // other, with only the rules `flock` sets.
 World flockWorld(const FlockDef& flock, bool moving) {
-  World world(test::particleSettings(kDt, Vec3::Zero()));
+  World world(test::particleSettings(kFlockDt, Vec3::Zero()));
   ParticleSystemDef def;
   def.capacity = kBoids;
   def.flock = flock;
@@ -88,7 +88,7 @@ TEST(Flock, CohesionSwingsEveryBoidThroughTheCentroidAtOnce) {
   const double spread0 = positionSpread(boids(world));
   const double n = kBoids;
   const double omega = std::sqrt(flock.cohesion * n / ((n - 1.0) * kMass));  // [rad/s]
-  const int quarter = static_cast<int>(std::lround(0.5 * M_PI / omega / kDt));
+  const int quarter = static_cast<int>(std::lround(0.5 * M_PI / omega / kFlockDt));
   test::stepN(world, quarter);
   EXPECT_LT(positionSpread(boids(world)), 0.01 * spread0) << "a quarter swing: all at the centroid";
   test::stepN(world, quarter);
@@ -104,7 +104,7 @@ TEST(Flock, AlignmentDecaysEveryVelocityToTheMeanAtItsRate) {
   const Vec3 v0 = meanVelocity(boids(world));
   const double spread0 = velocitySpread(boids(world));
   const double n = kBoids, t = 1.0;
-  test::stepN(world, static_cast<int>(t / kDt));
+  test::stepN(world, static_cast<int>(t / kFlockDt));
   const double expected = std::exp(-flock.alignment * n / ((n - 1.0) * kMass) * t);  // 0.358
   EXPECT_NEAR(velocitySpread(boids(world)) / spread0, expected, 0.01 * expected);
   EXPECT_LT((meanVelocity(boids(world)) - v0).norm(), 1e-12) << "the flock's momentum is kept";
@@ -118,7 +118,7 @@ TEST(Flock, SeparationSpreadsTheFlockAndKeepsItsCentre) {
   const Vec3 c0 = centroid(boids(world));
   double spacing = meanPairDistance(boids(world));
   for (int second = 0; second < 3; ++second) {
-    test::stepN(world, static_cast<int>(1.0 / kDt));
+    test::stepN(world, static_cast<int>(1.0 / kFlockDt));
     const double next = meanPairDistance(boids(world));
     EXPECT_GT(next, spacing * 1.01) << "after " << second + 1 << " s";
     spacing = next;
@@ -146,7 +146,7 @@ TEST(Buoyancy, HotParticlesRiseAndCoolOnesSink) {
   const Vec3 g(0.0, -9.81, 0.0);
   const double m = 0.01, k = 0.05;  // [kg], [N s/m]: time constant 0.2 s
   for (const double scale : {-0.5, 0.3}) {
-    World world(test::particleSettings(kDt, g));
+    World world(test::particleSettings(kFlockDt, g));
     ParticleSystemDef def = test::singleParticle(m, Vec3::Zero(), Vec3::Zero());
     def.gravityScale = scale;
     def.dragLinear = k;

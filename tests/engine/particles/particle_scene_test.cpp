@@ -34,10 +34,10 @@ const char* kScene = R"({
   ]
 })";
 
-Scene parse(const std::string& text) { return parseScene(nlohmann::json::parse(text), "test.json", "."); }
+Scene parseParticles(const std::string& text) { return parseScene(nlohmann::json::parse(text), "test.json", "."); }
 
 TEST(ParticleScene, EveryKeyReachesTheDefinition) {
-  const Scene scene = parse(kScene);
+  const Scene scene = parseParticles(kScene);
   ASSERT_EQ(scene.particleSystems.size(), 3u);
   const ParticleSystemDef& fire = scene.particleSystems[0];
   EXPECT_EQ(fire.name, "fire");
@@ -74,7 +74,7 @@ TEST(ParticleScene, EveryKeyReachesTheDefinition) {
 }
 
 TEST(ParticleScene, WorldParticleIntegratorIsTheDefaultASystemMayOverride) {
-  const Scene scene = parse(R"({"world": {"particle_integrator": "explicit-euler"},
+  const Scene scene = parseParticles(R"({"world": {"particle_integrator": "explicit-euler"},
     "particles": [{"emitters": [{"type": "point"}]},
                   {"integrator": "semi-implicit-euler", "emitters": [{"type": "point"}]}]})");
   EXPECT_EQ(scene.particleSystems[0].integrator, ParticleIntegrator::ExplicitEuler);
@@ -90,7 +90,7 @@ TEST(ParticleScene, TheSceneFormatExampleParsesAndRuns) {
   const std::size_t first = doc.find("\"particles\": [ {");
   ASSERT_NE(first, std::string::npos);
   const std::size_t last = doc.find("```", first);
-  const Scene scene = parse("{" + doc.substr(first, last - first) + ", \"world\": {\"duration\": 0.1}}");
+  const Scene scene = parseParticles("{" + doc.substr(first, last - first) + ", \"world\": {\"duration\": 0.1}}");
   ASSERT_EQ(scene.particleSystems.size(), 1u);
   World world = buildWorld(scene);
   for (int i = 0; i < 24; ++i) world.step();
@@ -98,14 +98,14 @@ TEST(ParticleScene, TheSceneFormatExampleParsesAndRuns) {
 }
 
 TEST(ParticleScene, AParticleOnlySceneNeedsNoBodies) {
-  const Scene scene = parse(R"({"particles": [{"emitters": [{"type": "point"}]}]})");
+  const Scene scene = parseParticles(R"({"particles": [{"emitters": [{"type": "point"}]}]})");
   EXPECT_TRUE(scene.bodies.empty());
   EXPECT_EQ(scene.particleSystems.size(), 1u);
 }
 
 void expectRefused(const std::string& text, const std::string& field, const std::string& fragment) {
   try {
-    parse(text);
+    parseParticles(text);
     FAIL() << "accepted: " << text;
   } catch (const InputError& e) {
     EXPECT_EQ(e.field(), field) << e.what();

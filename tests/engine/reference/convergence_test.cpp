@@ -19,9 +19,9 @@
 namespace rbsim {
 namespace {
 
-const Vec3 kExtents(1.0, 0.3, 0.1);  // [m]; 1 kg
+const Vec3 kConvergenceExtents(1.0, 0.3, 0.1);  // [m]; 1 kg
 const Vec3 kOmegaBody(0.01, 5.0, 0.01);  // [rad/s], near the intermediate (y) axis
-const Mat3 kR0 = rotationFromAxisAngle(Vec3(0.3, -0.2, 0.5));
+const Mat3 kConvergenceR0 = rotationFromAxisAngle(Vec3(0.3, -0.2, 0.5));
 constexpr double kDuration = 2.0;  // [s]
 
 // Orientation error [rad] after kDuration at step dt.
@@ -31,13 +31,13 @@ double orientationError(Integrator integrator, double dt) {
   settings.timeStep = dt;
   settings.integrator = integrator;
   World world(settings);
-  BodyDef def = test::boxDef(kExtents, 1.0);
-  def.orientation = Quat(kR0);
-  def.angularVelocity = kR0 * kOmegaBody;  // BodyDef takes omega in world frame
+  BodyDef def = test::boxDef(kConvergenceExtents, 1.0);
+  def.orientation = Quat(kConvergenceR0);
+  def.angularVelocity = kConvergenceR0 * kOmegaBody;  // BodyDef takes omega in world frame
   world.addBody(def);
   const long steps = std::lround(kDuration / dt);
   for (long i = 0; i < steps; ++i) world.step();
-  const reference::TorqueFreeExact exact(def.inertiaBody.diagonal(), kOmegaBody, kR0);
+  const reference::TorqueFreeExact exact(def.inertiaBody.diagonal(), kOmegaBody, kConvergenceR0);
   return rotationAngleBetween(exact.rotation(world.time()), world.bodies()[0].rotation());
 }
 

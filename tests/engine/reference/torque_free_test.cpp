@@ -19,10 +19,9 @@
 namespace rbsim {
 namespace {
 
-using reference::TorqueFreeExact;
 using test::allNear;
 
-struct Case {
+struct TorqueFreeCase {
   std::string name;
   Vec3 I;
   Vec3 w0;
@@ -30,8 +29,8 @@ struct Case {
 
 // Both branches of L&L §37, with positive and negative components, and one case close
 // to the separatrix (k^2 = 1 - 2.5e-5).
-const std::vector<Case>& cases() {
-  static const std::vector<Case> all = {
+const std::vector<TorqueFreeCase>& torqueFreeCases() {
+  static const std::vector<TorqueFreeCase> all = {
       {"axis3", Vec3(1.0, 2.0, 3.0), Vec3(1.0, 0.5, 2.0)},
       {"axis3_negative", Vec3(1.0, 2.0, 3.0), Vec3(-0.7, -1.2, -1.5)},
       {"axis1", Vec3(1.0, 2.0, 3.0), Vec3(2.0, 0.5, 0.3)},
@@ -41,7 +40,7 @@ const std::vector<Case>& cases() {
   return all;
 }
 
-const Mat3 kR0 = rotationFromAxisAngle(0.7 * Vec3(1.0, 2.0, 3.0).normalized());
+const Mat3 kTorqueFreeR0 = rotationFromAxisAngle(0.7 * Vec3(1.0, 2.0, 3.0).normalized());
 
 // Fourth-order central difference f'(t) (error h^4 f^(5) / 30).
 template <typename F>
@@ -72,19 +71,19 @@ TEST(JacobiFunctions, MatchBoostAndCompleteIntegral) {
 }
 
 TEST(TorqueFreeExact, StartsAtTheInitialConditionsOnTheExpectedBranch) {
-  for (const Case& c : cases()) {
+  for (const TorqueFreeCase& c : torqueFreeCases()) {
     SCOPED_TRACE(c.name);
-    const TorqueFreeExact exact(c.I, c.w0, kR0);
+    const reference::TorqueFreeExact exact(c.I, c.w0, kTorqueFreeR0);
     EXPECT_EQ(exact.aboutAxis3(), c.name.rfind("axis3", 0) == 0);
     EXPECT_TRUE(allNear(exact.omegaBody(0.0), c.w0, 1e-14 * c.w0.norm()));
-    EXPECT_TRUE(allNear(exact.rotation(0.0), kR0, 1e-14));
+    EXPECT_TRUE(allNear(exact.rotation(0.0), kTorqueFreeR0, 1e-14));
   }
 }
 
 TEST(TorqueFreeExact, SatisfiesEulersEquations) {
-  for (const Case& c : cases()) {
+  for (const TorqueFreeCase& c : torqueFreeCases()) {
     SCOPED_TRACE(c.name);
-    const TorqueFreeExact exact(c.I, c.w0);
+    const reference::TorqueFreeExact exact(c.I, c.w0);
     const double scale = c.w0.squaredNorm();
     for (double t : sampleTimes()) {
       const Vec3 fd = derivative([&](double s) { return exact.omegaBody(s); }, t);
@@ -94,9 +93,9 @@ TEST(TorqueFreeExact, SatisfiesEulersEquations) {
 }
 
 TEST(TorqueFreeExact, ConservesEnergyAndMomentumMagnitude) {
-  for (const Case& c : cases()) {
+  for (const TorqueFreeCase& c : torqueFreeCases()) {
     SCOPED_TRACE(c.name);
-    const TorqueFreeExact exact(c.I, c.w0);
+    const reference::TorqueFreeExact exact(c.I, c.w0);
     auto energy = [&](const Vec3& w) { return 0.5 * w.dot(c.I.cwiseProduct(w)); };
     const double e0 = energy(c.w0), m0 = c.I.cwiseProduct(c.w0).norm();
     for (double t = -20.0; t <= 100.0; t += 0.731) {
@@ -108,10 +107,10 @@ TEST(TorqueFreeExact, ConservesEnergyAndMomentumMagnitude) {
 }
 
 TEST(TorqueFreeExact, RotationIsOrthonormalAndKeepsWorldMomentumFixed) {
-  for (const Case& c : cases()) {
+  for (const TorqueFreeCase& c : torqueFreeCases()) {
     SCOPED_TRACE(c.name);
-    const TorqueFreeExact exact(c.I, c.w0, kR0);
-    const Vec3 L0 = kR0 * c.I.cwiseProduct(c.w0);
+    const reference::TorqueFreeExact exact(c.I, c.w0, kTorqueFreeR0);
+    const Vec3 L0 = kTorqueFreeR0 * c.I.cwiseProduct(c.w0);
     for (double t : sampleTimes()) {
       const Mat3 R = exact.rotation(t);
       EXPECT_LT(orthonormalityError(R), 1e-13) << "t = " << t;
@@ -123,9 +122,9 @@ TEST(TorqueFreeExact, RotationIsOrthonormalAndKeepsWorldMomentumFixed) {
 
 // World L fixed does not pin the angle phi about L; dR/dt = R [w]x does.
 TEST(TorqueFreeExact, RotationSatisfiesTheKinematics) {
-  for (const Case& c : cases()) {
+  for (const TorqueFreeCase& c : torqueFreeCases()) {
     SCOPED_TRACE(c.name);
-    const TorqueFreeExact exact(c.I, c.w0, kR0);
+    const reference::TorqueFreeExact exact(c.I, c.w0, kTorqueFreeR0);
     for (double t : sampleTimes()) {
       const Mat3 fd = derivative([&](double s) { return Mat3(exact.rotation(s)); }, t);
       const Mat3 expected = exact.rotation(t) * star(exact.omegaBody(t));
@@ -135,9 +134,9 @@ TEST(TorqueFreeExact, RotationSatisfiesTheKinematics) {
 }
 
 TEST(TorqueFreeExact, PeriodMatchesFineRk4) {
-  for (const Case& c : cases()) {
+  for (const TorqueFreeCase& c : torqueFreeCases()) {
     SCOPED_TRACE(c.name);
-    const TorqueFreeExact exact(c.I, c.w0);
+    const reference::TorqueFreeExact exact(c.I, c.w0);
     const double T = exact.period();
     // The sn (axis 2) and cn components change sign every half period; the dn one does not.
     const Vec3 half = exact.omegaBody(0.5 * T);
@@ -156,11 +155,11 @@ TEST(TorqueFreeExact, PeriodMatchesFineRk4) {
 }
 
 TEST(TorqueFreeExact, MatchesRk4Orientation) {
-  for (const Case& c : cases()) {
+  for (const TorqueFreeCase& c : torqueFreeCases()) {
     SCOPED_TRACE(c.name);
-    const TorqueFreeExact exact(c.I, c.w0, kR0);
+    const reference::TorqueFreeExact exact(c.I, c.w0, kTorqueFreeR0);
     const double dt = 1e-4;
-    test::Spin s{c.w0, kR0};
+    test::Spin s{c.w0, kTorqueFreeR0};
     for (int step = 1; step <= 30000; ++step) {
       s = test::rk4Spin(c.I, s, dt);
       if (step % 5000 != 0) continue;
@@ -175,24 +174,24 @@ TEST(TorqueFreeExact, PrincipalAxisSpinsAreSteady) {
   const Vec3 I(1.0, 2.0, 3.0);
   for (int axis : {0, 2}) {
     const Vec3 w0 = -1.5 * Vec3::Unit(axis);
-    const TorqueFreeExact exact(I, w0, kR0);
+    const reference::TorqueFreeExact exact(I, w0, kTorqueFreeR0);
     EXPECT_EQ(exact.modulus(), 0.0);
     for (double t : {-2.0, 0.3, 1.0, 7.5}) {
       EXPECT_TRUE(allNear(exact.omegaBody(t), w0, 1e-15));
-      EXPECT_TRUE(allNear(exact.rotation(t), kR0 * rotationFromAxisAngle(t * w0), 1e-13)) << "t = " << t;
+      EXPECT_TRUE(allNear(exact.rotation(t), kTorqueFreeR0 * rotationFromAxisAngle(t * w0), 1e-13)) << "t = " << t;
     }
   }
 }
 
 TEST(TorqueFreeExact, RestAndBadInputs) {
-  const TorqueFreeExact rest(Vec3(1.0, 2.0, 3.0), Vec3::Zero(), kR0);
+  const reference::TorqueFreeExact rest(Vec3(1.0, 2.0, 3.0), Vec3::Zero(), kTorqueFreeR0);
   EXPECT_TRUE(allNear(rest.omegaBody(4.0), Vec3::Zero(), 0.0));
-  EXPECT_TRUE(allNear(rest.rotation(4.0), kR0, 0.0));
+  EXPECT_TRUE(allNear(rest.rotation(4.0), kTorqueFreeR0, 0.0));
   // A pure spin about the intermediate axis lies on the separatrix.
-  EXPECT_THROW(TorqueFreeExact(Vec3(1.0, 2.0, 3.0), Vec3(0.0, 3.0, 0.0)), std::invalid_argument);
-  EXPECT_THROW(TorqueFreeExact(Vec3(2.0, 1.0, 3.0), Vec3(1.0, 1.0, 1.0)), std::invalid_argument);
-  EXPECT_THROW(TorqueFreeExact(Vec3(1.0, 1.0, 3.0), Vec3(1.0, 1.0, 1.0)), std::invalid_argument);
-  EXPECT_THROW(TorqueFreeExact(Vec3(0.0, 1.0, 3.0), Vec3(1.0, 1.0, 1.0)), std::invalid_argument);
+  EXPECT_THROW(reference::TorqueFreeExact(Vec3(1.0, 2.0, 3.0), Vec3(0.0, 3.0, 0.0)), std::invalid_argument);
+  EXPECT_THROW(reference::TorqueFreeExact(Vec3(2.0, 1.0, 3.0), Vec3(1.0, 1.0, 1.0)), std::invalid_argument);
+  EXPECT_THROW(reference::TorqueFreeExact(Vec3(1.0, 1.0, 3.0), Vec3(1.0, 1.0, 1.0)), std::invalid_argument);
+  EXPECT_THROW(reference::TorqueFreeExact(Vec3(0.0, 1.0, 3.0), Vec3(1.0, 1.0, 1.0)), std::invalid_argument);
 }
 
 }  // namespace

@@ -11,8 +11,6 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 using nlohmann::json;
 using test::allNear;
 

@@ -16,11 +16,11 @@ namespace {
 
 using nlohmann::json;
 
-Scene parse(const json& doc) { return parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR); }
+Scene parseImplicit(const json& doc) { return parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR); }
 
-std::string errorOf(const json& shape) {
+std::string implicitErrorOf(const json& shape) {
   try {
-    parse({{"bodies", {{{"name", "b"}, {"shape", shape}, {"mass", 1.0}}}}});
+    parseImplicit({{"bodies", {{{"name", "b"}, {"shape", shape}, {"mass", 1.0}}}}});
   } catch (const InputError& e) {
     return e.what();
   }
@@ -35,13 +35,13 @@ json cylinder(double radius, double height, double y = 0.0) {
 // Outer radius 0.5 m, height 0.6 m; cavity radius 0.44 m from the floor (0.06 m) up.
 json cupShape() { return {{"type", "csg"}, {"op", "difference"}, {"a", cylinder(0.5, 0.6)}, {"b", cylinder(0.44, 0.6, 0.06)}}; }
 
-constexpr double kDt = 1.0 / 240.0;  // [s]
+constexpr double kImplicitDt = 1.0 / 240.0;  // [s]
 
 TEST(ImplicitScene, ABallMadeAsAnImplicitSphereRestsOnTheGround) {
   const json ball = {{"name", "ball"},
                      {"shape", {{"type", "implicit"}, {"function", "sphere"}, {"radius", 0.25}, {"resolution", 32}}},
                      {"density", 500.0}, {"position", {0.0, 0.8, 0.0}}};
-  Scene scene = parse({{"world", {{"dt", kDt}}}, {"bodies", {ball}}, {"planes", {{{"normal", {0, 1, 0}}}}}});
+  Scene scene = parseImplicit({{"world", {{"dt", kImplicitDt}}}, {"bodies", {ball}}, {"planes", {{{"normal", {0, 1, 0}}}}}});
   ASSERT_TRUE(scene.bodies[0].sdf);
   // The mesh's volume (mass / density) is the sphere's to the grid's accuracy.
   EXPECT_NEAR(scene.bodies[0].mass / 500.0, 4.0 / 3.0 * M_PI * std::pow(0.25, 3), 0.01 * 0.0655);
@@ -59,9 +59,9 @@ TEST(ImplicitScene, ABoxDroppedIntoACupStaysInside) {
   json cup = {{"name", "cup"}, {"shape", cupShape()}, {"density", 500.0}, {"static", true}};
   cup["shape"]["resolution"] = 48;
   // The mesh's centre of mass is the body's origin: its file origin (mid-height) goes at y = 0.3.
-  Scene scene = parse({{"world", {{"dt", kDt}}}, {"bodies", {cup}}, {"planes", {{{"normal", {0, 1, 0}}}}}});
+  Scene scene = parseImplicit({{"world", {{"dt", kImplicitDt}}}, {"bodies", {cup}}, {"planes", {{{"normal", {0, 1, 0}}}}}});
   const Vec3 centre = scene.bodies[0].fileFrame.centre;
-  scene = parse({{"world", {{"dt", kDt}}},
+  scene = parseImplicit({{"world", {{"dt", kImplicitDt}}},
                  {"bodies",
                   {{{"name", "cup"}, {"shape", cup["shape"]}, {"density", 500.0}, {"static", true},
                     {"position", {centre.x(), 0.3 + centre.y(), centre.z()}}},
@@ -93,40 +93,40 @@ TEST(ImplicitScene, EveryFunctionWeighsItsAnalyticVolume) {
       {{{"function", "cylinder"}, {"radius", 0.3}, {"height", 0.5}}, pi * 0.09 * 0.5}};
   for (auto [shape, volume] : shapes) {
     shape["type"] = "implicit";
-    const Scene scene = parse({{"bodies", {{{"name", "b"}, {"shape", shape}, {"density", 1000.0}}}}});
+    const Scene scene = parseImplicit({{"bodies", {{{"name", "b"}, {"shape", shape}, {"density", 1000.0}}}}});
     EXPECT_NEAR(scene.bodies[0].mass / 1000.0, volume, 0.015 * volume) << shape.dump();
   }
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool implicitContains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(ImplicitScene, WrongFieldsAreRefusedNamingTheField) {
-  std::string e = errorOf({{"type", "implicit"}, {"function", "cone"}, {"radius", 1.0}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.function") && contains(e, "\"cylinder\"")) << e;
-  e = errorOf({{"type", "implicit"}, {"function", "cylinder"}, {"radius", 1.0}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.height") && contains(e, "missing")) << e;
-  e = errorOf({{"type", "implicit"}, {"function", "sphere"}, {"radius", -1.0}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.radius") && contains(e, "> 0 m")) << e;
-  e = errorOf({{"type", "implicit"}, {"function", "torus"}, {"major_radius", 0.2}, {"minor_radius", 0.3}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.minor_radius") && contains(e, "minor_radius < major_radius")) << e;
-  e = errorOf({{"type", "implicit"}, {"function", "sphere"}, {"radius", 1.0}, {"extents", {1, 1, 1}}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.extents") && contains(e, "does not apply")) << e;
-  e = errorOf({{"type", "csg"}, {"op", "xor"}, {"a", cylinder(1, 1)}, {"b", cylinder(1, 1)}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.op") && contains(e, "\"difference\"")) << e;
-  e = errorOf({{"type", "csg"}, {"op", "union"}, {"a", cylinder(1, 1)}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.b") && contains(e, "missing")) << e;
-  e = errorOf({{"type", "csg"}, {"op", "union"}, {"a", cylinder(1, 1)}, {"b", {{"type", "box"}}}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.b.type") && contains(e, "\"csg\"")) << e;
-  e = errorOf({{"type", "csg"}, {"op", "difference"}, {"a", cylinder(0.4, 0.5)}, {"b", cylinder(0.5, 0.6)}});
-  EXPECT_TRUE(contains(e, "bodies[0].shape.op") && contains(e, "no volume")) << e;
+  std::string e = implicitErrorOf({{"type", "implicit"}, {"function", "cone"}, {"radius", 1.0}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.function") && implicitContains(e, "\"cylinder\"")) << e;
+  e = implicitErrorOf({{"type", "implicit"}, {"function", "cylinder"}, {"radius", 1.0}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.height") && implicitContains(e, "missing")) << e;
+  e = implicitErrorOf({{"type", "implicit"}, {"function", "sphere"}, {"radius", -1.0}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.radius") && implicitContains(e, "> 0 m")) << e;
+  e = implicitErrorOf({{"type", "implicit"}, {"function", "torus"}, {"major_radius", 0.2}, {"minor_radius", 0.3}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.minor_radius") && implicitContains(e, "minor_radius < major_radius")) << e;
+  e = implicitErrorOf({{"type", "implicit"}, {"function", "sphere"}, {"radius", 1.0}, {"extents", {1, 1, 1}}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.extents") && implicitContains(e, "does not apply")) << e;
+  e = implicitErrorOf({{"type", "csg"}, {"op", "xor"}, {"a", cylinder(1, 1)}, {"b", cylinder(1, 1)}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.op") && implicitContains(e, "\"difference\"")) << e;
+  e = implicitErrorOf({{"type", "csg"}, {"op", "union"}, {"a", cylinder(1, 1)}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.b") && implicitContains(e, "missing")) << e;
+  e = implicitErrorOf({{"type", "csg"}, {"op", "union"}, {"a", cylinder(1, 1)}, {"b", {{"type", "box"}}}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.b.type") && implicitContains(e, "\"csg\"")) << e;
+  e = implicitErrorOf({{"type", "csg"}, {"op", "difference"}, {"a", cylinder(0.4, 0.5)}, {"b", cylinder(0.5, 0.6)}});
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.op") && implicitContains(e, "no volume")) << e;
   json fine = cupShape();
   fine["resolution"] = 1024;
-  e = errorOf(fine);
-  EXPECT_TRUE(contains(e, "bodies[0].shape.resolution") && contains(e, "the limit is")) << e;
+  e = implicitErrorOf(fine);
+  EXPECT_TRUE(implicitContains(e, "bodies[0].shape.resolution") && implicitContains(e, "the limit is")) << e;
   json deep = cylinder(1.0, 1.0);
   for (int level = 0; level < 17; ++level) deep = {{"type", "csg"}, {"op", "union"}, {"a", deep}, {"b", cylinder(0.5, 2.0)}};
-  e = errorOf(deep);
-  EXPECT_TRUE(contains(e, ".a.op") && contains(e, "at most 16 levels")) << e;
+  e = implicitErrorOf(deep);
+  EXPECT_TRUE(implicitContains(e, ".a.op") && implicitContains(e, "at most 16 levels")) << e;
 }
 
 TEST(ImplicitScene, TheGridResolutionIsTheShapesNotTheSdfBlocks) {
@@ -134,13 +134,13 @@ TEST(ImplicitScene, TheGridResolutionIsTheShapesNotTheSdfBlocks) {
                {"shape", {{"type", "implicit"}, {"function", "sphere"}, {"radius", 0.25}}},
                {"mass", 1.0}, {"sdf", {{"resolution", 40}}}};
   try {
-    parse({{"bodies", {ball}}});
+    parseImplicit({{"bodies", {ball}}});
     ADD_FAILURE() << "sdf.resolution was accepted for an implicit shape";
   } catch (const InputError& e) {
-    EXPECT_TRUE(contains(e.what(), "bodies[0].sdf.resolution")) << e.what();
+    EXPECT_TRUE(implicitContains(e.what(), "bodies[0].sdf.resolution")) << e.what();
   }
   ball["sdf"] = {{"sample_spacing", 0.05}};
-  EXPECT_NO_THROW(parse({{"bodies", {ball}}}));
+  EXPECT_NO_THROW(parseImplicit({{"bodies", {ball}}}));
 }
 
 // Demo 6's mug (assets/scenes/csg_cup.json): its floor's top is 0.08 m above the ground and its

@@ -15,14 +15,14 @@ namespace {
 
 using nlohmann::json;
 
-// A closed non-convex mesh (a prism over a concave outline): a grid by default.
-json prism() {
+// A closed non-convex mesh (a groundPrism over a concave outline): a grid by default.
+json groundPrism() {
   return {{"name", "ground"}, {"shape", {{"type", "mesh"}, {"file", "concave_prism.obj"}}}, {"static", true}, {"mass", 1.0}};
 }
 
-json sceneOf(const json& body) { return {{"world", {{"dt", 0.01}}}, {"bodies", json::array({body})}}; }
+json groundSceneOf(const json& body) { return {{"world", {{"dt", 0.01}}}, {"bodies", json::array({body})}}; }
 
-std::string errorField(const json& doc) {
+std::string groundErrorField(const json& doc) {
   try {
     parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR);
   } catch (const InputError& e) {
@@ -32,12 +32,12 @@ std::string errorField(const json& doc) {
 }
 
 TEST(MeshGroundScene, TheKeyMakesAStaticMeshCollideAsItsTriangles) {
-  const Scene plain = parseScene(sceneOf(prism()), "test.json", RBSIM_TEST_DATA_DIR);
+  const Scene plain = parseScene(groundSceneOf(groundPrism()), "test.json", RBSIM_TEST_DATA_DIR);
   ASSERT_EQ(plain.bodies.size(), 1u);
   EXPECT_TRUE(plain.bodies[0].sdf != nullptr);  // as before the key existed
-  json body = prism();
+  json body = groundPrism();
   body["collide_as"] = "triangles";
-  const Scene ground = parseScene(sceneOf(body), "test.json", RBSIM_TEST_DATA_DIR);
+  const Scene ground = parseScene(groundSceneOf(body), "test.json", RBSIM_TEST_DATA_DIR);
   const BodyDef& def = ground.bodies[0];
   EXPECT_TRUE(def.sdf == nullptr);
   EXPECT_TRUE(def.triangles != nullptr);
@@ -47,10 +47,10 @@ TEST(MeshGroundScene, TheKeyMakesAStaticMeshCollideAsItsTriangles) {
 
 TEST(MeshGroundScene, BadUsesNameTheirField) {
   const auto with = [](const auto& change) {
-    json body = prism();
+    json body = groundPrism();
     body["collide_as"] = "triangles";
     change(body);
-    return errorField(sceneOf(body));
+    return groundErrorField(groundSceneOf(body));
   };
   EXPECT_EQ(with([](json& b) { b["collide_as"] = "hull"; }).rfind("bodies[0].collide_as:", 0), 0u);
   EXPECT_EQ(with([](json& b) { b["collide_as"] = 3; }).rfind("bodies[0].collide_as:", 0), 0u);

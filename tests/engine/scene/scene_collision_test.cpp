@@ -14,15 +14,15 @@ namespace {
 using nlohmann::json;
 using test::allNear;
 
-json boxBody(const std::string& name = "box") {
+json collisionBoxBody(const std::string& name = "box") {
   return {{"name", name}, {"shape", {{"type", "box"}, {"extents", {1.0, 2.0, 3.0}}}}, {"mass", 2.0}};
 }
 
-Scene parse(const json& doc) { return parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR); }
+Scene parseCollision(const json& doc) { return parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR); }
 
 std::string errorOf(const json& doc) {
   try {
-    parse(doc);
+    parseCollision(doc);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -30,12 +30,12 @@ std::string errorOf(const json& doc) {
   return "";
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool collisionContains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(ScenePlanes, NormalIsADirectionAndTheOffsetComesFromThePoint) {
-  const json doc = {{"bodies", {boxBody()}},
+  const json doc = {{"bodies", {collisionBoxBody()}},
                     {"planes", {{{"normal", {0.0, 2.0, 0.0}}}, {{"normal", {-3.0, 0.0, 4.0}}, {"point", {1.0, 5.0, 2.0}}}}}};
-  const Scene scene = parse(doc);
+  const Scene scene = parseCollision(doc);
   ASSERT_EQ(scene.planes.size(), 2u);
   EXPECT_TRUE(allNear(scene.planes[0].normal, Vec3::UnitY(), 0.0));
   EXPECT_EQ(scene.planes[0].offset, 0.0);
@@ -47,15 +47,15 @@ TEST(ScenePlanes, NormalIsADirectionAndTheOffsetComesFromThePoint) {
 }
 
 TEST(ScenePlanes, ZeroNormalIsRejected) {
-  const std::string e = errorOf({{"bodies", {boxBody()}}, {"planes", {{{"normal", {0.0, 0.0, 0.0}}}}}});
-  EXPECT_TRUE(contains(e, "planes[0].normal")) << e;
-  EXPECT_TRUE(contains(e, "non-zero")) << e;
+  const std::string e = errorOf({{"bodies", {collisionBoxBody()}}, {"planes", {{{"normal", {0.0, 0.0, 0.0}}}}}});
+  EXPECT_TRUE(collisionContains(e, "planes[0].normal")) << e;
+  EXPECT_TRUE(collisionContains(e, "non-zero")) << e;
 }
 
 TEST(SceneStatic, AStaticBodyHasBoxExtentsAndCannotMove) {
-  json wall = boxBody("wall");
+  json wall = collisionBoxBody("wall");
   wall["static"] = true;
-  const Scene scene = parse({{"bodies", {wall}}});
+  const Scene scene = parseCollision({{"bodies", {wall}}});
   ASSERT_TRUE(scene.bodies[0].isStatic);
   ASSERT_TRUE(scene.bodies[0].shape.has_value());
   ASSERT_EQ(scene.bodies[0].shape->type, ShapeType::Box);
@@ -68,17 +68,17 @@ TEST(SceneStatic, AStaticBodyHasBoxExtentsAndCannotMove) {
 
   wall["velocity"] = {1.0, 0.0, 0.0};
   const std::string e = errorOf({{"bodies", {wall}}});
-  EXPECT_TRUE(contains(e, "bodies[0].velocity")) << e;
-  EXPECT_TRUE(contains(e, "static")) << e;
+  EXPECT_TRUE(collisionContains(e, "bodies[0].velocity")) << e;
+  EXPECT_TRUE(collisionContains(e, "static")) << e;
 }
 
 // |x(0.75 s) - 0.5 cos(2 t)| for a 2 kg box on an 8 N/m zero-length spring from x = 0.5 m.
 double springError(double dt) {
-  json body = boxBody();
+  json body = collisionBoxBody();
   body["position"] = {0.5, 0.0, 0.0};
   body["springs"] = {{{"anchor", {0.0, 0.0, 0.0}}, {"stiffness", 8.0}}};
   const json doc = {{"world", {{"gravity", {0.0, 0.0, 0.0}}, {"dt", dt}, {"integrator", "dlm"}}}, {"bodies", {body}}};
-  World world = buildWorld(parse(doc));
+  World world = buildWorld(parseCollision(doc));
   EXPECT_EQ(world.springs().size(), 1u);
   while (world.time() < 0.75 - 0.5 * dt) world.step();
   return std::abs(world.bodies()[0].position().x() - 0.5 * std::cos(2.0 * world.time()));
@@ -93,10 +93,10 @@ TEST(SceneSprings, AZeroLengthSpringGivesSimpleHarmonicMotion) {
 }
 
 TEST(SceneSprings, NegativeDampingIsRejected) {
-  json body = boxBody();
+  json body = collisionBoxBody();
   body["springs"] = {{{"anchor", {0.0, 0.0, 0.0}}, {"stiffness", 8.0}, {"damping", -1.0}}};
   const std::string e = errorOf({{"bodies", {body}}});
-  EXPECT_TRUE(contains(e, "bodies[0].springs[0].damping")) << e;
+  EXPECT_TRUE(collisionContains(e, "bodies[0].springs[0].damping")) << e;
 }
 
 json spawnBlock(int count, int seed) {
@@ -111,7 +111,7 @@ json spawnBlock(int count, int seed) {
 
 TEST(SceneSpawn, SameSeedSameBodiesInsideTheRegionWithSpeedsInRange) {
   const json doc = {{"spawn", {spawnBlock(50, 7)}}};
-  const Scene a = parse(doc), b = parse(doc);
+  const Scene a = parseCollision(doc), b = parseCollision(doc);
   ASSERT_EQ(a.bodies.size(), 50u);
   EXPECT_EQ(a.bodies[0].name, "crate_0");
   EXPECT_EQ(a.bodies[49].name, "crate_49");
@@ -126,14 +126,14 @@ TEST(SceneSpawn, SameSeedSameBodiesInsideTheRegionWithSpeedsInRange) {
     EXPECT_NEAR(a.bodies[i].orientation.norm(), 1.0, 1e-12);
     EXPECT_EQ(a.bodies[i].mesh, a.bodies[0].mesh) << "one mesh shared by the block";
   }
-  const Scene other = parse({{"spawn", {spawnBlock(50, 8)}}});
+  const Scene other = parseCollision({{"spawn", {spawnBlock(50, 8)}}});
   EXPECT_NE(other.bodies[0].position, a.bodies[0].position) << "the seed matters";
 }
 
 TEST(SceneSpawn, SpringsAreCopiedToEveryInstance) {
   json block = spawnBlock(3, 1);
   block["body"]["springs"] = {{{"anchor", {0.0, 1.0, 0.0}}, {"stiffness", 2.0}}};
-  const Scene scene = parse({{"bodies", {boxBody()}}, {"spawn", {block}}});
+  const Scene scene = parseCollision({{"bodies", {collisionBoxBody()}}, {"spawn", {block}}});
   ASSERT_EQ(scene.bodies.size(), 4u);
   ASSERT_EQ(scene.springs.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(scene.springs[i].body, sceneBodyId(i + 1));
@@ -143,14 +143,14 @@ TEST(SceneSpawn, ErrorsNameTheSpawnPath) {
   json badMass = spawnBlock(3, 1);
   badMass["body"]["mass"] = -1.0;
   std::string e = errorOf({{"spawn", {badMass}}});
-  EXPECT_TRUE(contains(e, "spawn[0].body.mass")) << e;
+  EXPECT_TRUE(collisionContains(e, "spawn[0].body.mass")) << e;
   json badRange = spawnBlock(3, 1);
   badRange["speed"] = {2.0, 1.0};
   e = errorOf({{"spawn", {badRange}}});
-  EXPECT_TRUE(contains(e, "spawn[0].speed")) << e;
+  EXPECT_TRUE(collisionContains(e, "spawn[0].speed")) << e;
   json clash = spawnBlock(3, 1);
-  e = errorOf({{"bodies", {boxBody("crate_1")}}, {"spawn", {clash}}});
-  EXPECT_TRUE(contains(e, "duplicate body name \"crate_1\"")) << e;
+  e = errorOf({{"bodies", {collisionBoxBody("crate_1")}}, {"spawn", {clash}}});
+  EXPECT_TRUE(collisionContains(e, "duplicate body name \"crate_1\"")) << e;
 }
 
 }  // namespace

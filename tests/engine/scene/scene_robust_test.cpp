@@ -18,7 +18,7 @@ namespace {
 using nlohmann::json;
 
 // The InputError of parsing `doc`, or a failure when it parses.
-InputError parseError(const json& doc) {
+InputError robustParseError(const json& doc) {
   try {
     parseScene(doc, "test.json", ".");
   } catch (const InputError& e) {
@@ -29,7 +29,7 @@ InputError parseError(const json& doc) {
 }
 
 void expectError(const json& doc, const std::string& field, std::initializer_list<const char*> fragments) {
-  const InputError e = parseError(doc);
+  const InputError e = robustParseError(doc);
   EXPECT_EQ(e.field(), field) << e.what();
   for (const char* f : fragments) EXPECT_NE(e.problem().find(f), std::string::npos) << "missing \"" << f << "\" in: " << e.what();
 }

@@ -22,11 +22,10 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const Vec3 kCore(0.3, 0.1, 0.2);  // [m]
 constexpr double kRadius = 0.05;  // [m]
 
-Vec3 randomUnit(std::mt19937& rng) {
+Vec3 roundedRandomUnit(std::mt19937& rng) {
   std::normal_distribution<double> n;
   return Vec3(n(rng), n(rng), n(rng)).normalized();
 }
@@ -37,10 +36,10 @@ TEST(RoundedBox, SupportAndBoundsAreTheCoreGrownByTheRadius) {
   EXPECT_STREQ(shapeTypeName(s.type), "rounded box");
   std::mt19937 rng(5);
   for (int i = 0; i < 200; ++i) {
-    const Vec3 u = randomUnit(rng);
+    const Vec3 u = roundedRandomUnit(rng);
     // The extent along a unit u of a box grown by r: |u| . h + r.
     EXPECT_NEAR(u.dot(s.support(2.0 * u)), u.cwiseAbs().dot(kCore) + kRadius, 1e-15);
-    const Mat3 R = rotationFromAxisAngle(randomUnit(rng) * 2.0);
+    const Mat3 R = rotationFromAxisAngle(roundedRandomUnit(rng) * 2.0);
     const Vec3 x(1.0, -2.0, 0.5);
     const auto [lo, hi] = s.worldBounds(R, x);
     for (int k = 0; k < 3; ++k) {

@@ -15,8 +15,6 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 Vec3 randomUnit(std::mt19937& rng) {
   std::normal_distribution<double> n;
   return Vec3(n(rng), n(rng), n(rng)).normalized();

@@ -15,7 +15,7 @@
 namespace rbsim {
 namespace {
 
-const ConstitutiveModel kModels[] = {ConstitutiveModel::Linear, ConstitutiveModel::StVenantKirchhoff,
+const ConstitutiveModel kSoftBodyModels[] = {ConstitutiveModel::Linear, ConstitutiveModel::StVenantKirchhoff,
                                      ConstitutiveModel::Corotated, ConstitutiveModel::NeoHookean};
 
 SoftBodyDef block(ConstitutiveModel model, int cells = 2) {
@@ -73,7 +73,7 @@ TEST(SoftBody, AreaWeightedNormalsAreSeed002sFaceSums) {
 }
 
 TEST(SoftBody, ForcesSumToZeroWithoutTorqueAndAreTheNegativeEnergyGradient) {
-  for (ConstitutiveModel model : kModels) {
+  for (ConstitutiveModel model : kSoftBodyModels) {
     SoftBody body(block(model));
     perturb(body, 0.05, 3);
     std::vector<Vec3> forces;
@@ -105,7 +105,7 @@ TEST(SoftBody, ForcesSumToZeroWithoutTorqueAndAreTheNegativeEnergyGradient) {
 
 TEST(SoftBody, NoForceAtRestOrAfterARigidMotionExceptLinear) {
   const Mat3 R = rotationFromAxisAngle(0.9 * Vec3(0.3, 1.0, -0.2).normalized());
-  for (ConstitutiveModel model : kModels) {
+  for (ConstitutiveModel model : kSoftBodyModels) {
     SoftBody body(block(model));
     std::vector<Vec3> forces;
     body.internalForces(forces);

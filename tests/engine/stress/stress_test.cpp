@@ -58,7 +58,7 @@ constexpr double kSpinDt = 1.0 / 60.0;       // [s]
 const long kSpinSteps = test::stressSteps(100000, 1000000);
 constexpr long kCheckEvery = 10000;          // steps between full checks of the state
 constexpr double kInertiaScale = 1e-3;       // [kg m^2]: I = kInertiaScale * diag(1, 100, 1000)
-constexpr double kUnitTolerance = 1e-12;     // | |q| - 1 | and ||R^T R - I||_F
+constexpr double kRotationUnitTolerance = 1e-12;  // | |q| - 1 | and ||R^T R - I||_F
 constexpr double kRoundingFactor = 1e-12;    // relative slack on bounds that hold exactly
 // With Catto's single Newton iteration the run reached 1.1692 E0; iterated to convergence the
 // step cannot gain energy (integrator.cpp), so the ceiling is E0 itself.
@@ -136,7 +136,7 @@ class StressSpin : public testing::TestWithParam<Integrator> {
     const Integrator integrator = GetParam();
     const SpinRun run = spin(integrator, rate, kSpinDt, kSpinSteps);  // must not throw
     EXPECT_TRUE(run.finite);
-    EXPECT_LE(run.worstUnitError, kUnitTolerance);
+    EXPECT_LE(run.worstUnitError, kRotationUnitTolerance);
     RecordProperty("energy_end_over_e0", std::to_string(run.energyEnd / run.energy0));
     RecordProperty("energy_max_over_e0", std::to_string(run.energyMax / run.energy0));
     if (integrator == Integrator::ImplicitGyro) {
@@ -241,7 +241,7 @@ TEST(StressDivergence, AtTheSameSpinEveryOtherIntegratorStaysFinite) {
       ASSERT_NO_THROW(world.step()) << integratorName(integrator) << " step " << i;
       ASSERT_TRUE(everythingFinite(body)) << integratorName(integrator) << " step " << i;
     }
-    EXPECT_LE(std::abs(body.orientation().norm() - 1.0), kUnitTolerance) << integratorName(integrator);
+    EXPECT_LE(std::abs(body.orientation().norm() - 1.0), kRotationUnitTolerance) << integratorName(integrator);
     if (integrator != Integrator::ImplicitGyro) {
       EXPECT_TRUE(body.state().angularMomentum == L0);
     }

@@ -12,7 +12,7 @@ namespace {
 
 using test::boxDef;
 
-constexpr double kDt = 1.0 / 240.0;         // [s]
+constexpr double kBreakDt = 1.0 / 240.0;         // [s]
 constexpr double kThreshold = 2.0;          // breaking impulse of the target [N s]
 constexpr double kMomentumTolerance = 1e-12;  // relative
 
@@ -20,7 +20,7 @@ constexpr double kMomentumTolerance = 1e-12;  // relative
 World collision(double speed) {
   Settings settings;
   settings.gravity = Vec3::Zero();
-  settings.timeStep = kDt;
+  settings.timeStep = kBreakDt;
   settings.allowSleep = false;
   World world(settings);
   BodyDef slab = boxDef(Vec3(0.2, 1.0, 1.0), 3.0, "slab");

@@ -18,7 +18,7 @@ namespace {
 using test::allNear;
 using test::boxDef;
 
-constexpr double kDt = 1.0 / 64.0;  // [s]
+constexpr double kCollisionDt = 1.0 / 64.0;  // [s]
 
 // Detection alone: nothing responds to the contacts, so the depths and positions below follow
 // from the motion in closed form (tests/engine/dynamics covers the response).
@@ -26,7 +26,7 @@ Settings settings(const Vec3& gravity = Vec3::Zero()) {
   Settings s;
   s.respondToContacts = false;
   s.gravity = gravity;
-  s.timeStep = kDt;
+  s.timeStep = kCollisionDt;
   s.allowSleep = false;
   return s;
 }
@@ -55,8 +55,8 @@ TEST(CollisionWorld, ABoxSinkingThroughTheGroundHasFourContactsOfTheKnownDepth) 
   world.addPlane(Plane{Vec3::UnitY(), 0.0});
   for (int n = 1; n <= 48; ++n) {
     world.step();
-    const double depth = (soft ? n - 1 : n) * kDt - 0.5;
-    if (depth < -world.settings().contactMargin - kDt * 1.0) {
+    const double depth = (soft ? n - 1 : n) * kCollisionDt - 0.5;
+    if (depth < -world.settings().contactMargin - kCollisionDt * 1.0) {
       EXPECT_TRUE(world.contacts().empty()) << n;
       continue;
     }

@@ -12,7 +12,7 @@ namespace rbsim {
 namespace {
 
 // The box (1.0 x 0.3 x 0.1 m, 1 kg) spun near its intermediate axis, under gravity.
-FreeFlightError::Reading tumble(Integrator integrator, double seconds) {
+FreeFlightError::Reading flightTumble(Integrator integrator, double seconds) {
   World world = test::worldWith(integrator, 1.0 / 60.0, Vec3(0.0, -9.81, 0.0));
   BodyDef def = test::boxDef(Vec3(1.0, 0.3, 0.1), 1.0, "tumbler");
   def.orientation = Quat(rotationFromAxisAngle(Vec3(0.3, -0.2, 0.5)));
@@ -28,15 +28,15 @@ FreeFlightError::Reading tumble(Integrator integrator, double seconds) {
 }
 
 TEST(FreeFlightError, ReadsRoundingForExactAndTheKnownErrorsOfTheOthers) {
-  const FreeFlightError::Reading exact = tumble(Integrator::Exact, 10.0);
+  const FreeFlightError::Reading exact = flightTumble(Integrator::Exact, 10.0);
   ASSERT_TRUE(exact.tracked);
   EXPECT_EQ(exact.since, 0.0);  // gravity exerts no torque: never restarted
   EXPECT_LT(exact.angle, 1e-9);
   EXPECT_LT(std::abs(exact.energy), 1e-12);
-  const FreeFlightError::Reading expmap = tumble(Integrator::ExpMap, 10.0);
+  const FreeFlightError::Reading expmap = flightTumble(Integrator::ExpMap, 10.0);
   EXPECT_GT(expmap.angle, 1.0);    // the flip lost: the body points elsewhere
   EXPECT_GT(expmap.energy, 0.5);   // forward Euler gains energy on the way to the long axis
-  const FreeFlightError::Reading gyro = tumble(Integrator::ImplicitGyro, 10.0);
+  const FreeFlightError::Reading gyro = flightTumble(Integrator::ImplicitGyro, 10.0);
   EXPECT_LT(gyro.energy, -0.01);   // Catto's implicit step only ever loses energy
 }
 

@@ -20,18 +20,18 @@ using bench::kFrictionG;
 using Solver = Settings::ContactSolverMethod;
 using Friction = Settings::FrictionModel;
 
-struct Case {
+struct FrictionCase {
   Solver solver;
   Friction friction;
   double dt;  // [s]
 };
 
-std::string caseName(const testing::TestParamInfo<Case>& info) {
+std::string caseName(const testing::TestParamInfo<FrictionCase>& info) {
   return std::string(info.param.solver == Solver::Pgs ? "Pgs" : "SoftStep") +
          (info.param.friction == Friction::Seed000 ? "Seed000" : "Cone") + (info.param.dt > 0.01 ? "At60" : "At240");
 }
 
-class FrictionModels : public testing::TestWithParam<Case> {
+class FrictionModels : public testing::TestWithParam<FrictionCase> {
  protected:
   Settings settings() const { return bench::frictionCaseSettings(GetParam().solver, GetParam().friction, GetParam().dt); }
   // The discretisation's share of the error: at 1/60 s a slide ends up to 2.5 % long or short
@@ -66,14 +66,14 @@ TEST_P(FrictionModels, ABoxSlidesDownASteeperInclineAtTheKineticAcceleration) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolversBothSteps, FrictionModels,
-                         testing::Values(Case{Solver::SoftStep, Friction::Cone, 1.0 / 60.0},
-                                         Case{Solver::SoftStep, Friction::Cone, 1.0 / 240.0},
-                                         Case{Solver::SoftStep, Friction::Seed000, 1.0 / 60.0},
-                                         Case{Solver::SoftStep, Friction::Seed000, 1.0 / 240.0},
-                                         Case{Solver::Pgs, Friction::Cone, 1.0 / 60.0},
-                                         Case{Solver::Pgs, Friction::Cone, 1.0 / 240.0},
-                                         Case{Solver::Pgs, Friction::Seed000, 1.0 / 60.0},
-                                         Case{Solver::Pgs, Friction::Seed000, 1.0 / 240.0}),
+                         testing::Values(FrictionCase{Solver::SoftStep, Friction::Cone, 1.0 / 60.0},
+                                         FrictionCase{Solver::SoftStep, Friction::Cone, 1.0 / 240.0},
+                                         FrictionCase{Solver::SoftStep, Friction::Seed000, 1.0 / 60.0},
+                                         FrictionCase{Solver::SoftStep, Friction::Seed000, 1.0 / 240.0},
+                                         FrictionCase{Solver::Pgs, Friction::Cone, 1.0 / 60.0},
+                                         FrictionCase{Solver::Pgs, Friction::Cone, 1.0 / 240.0},
+                                         FrictionCase{Solver::Pgs, Friction::Seed000, 1.0 / 60.0},
+                                         FrictionCase{Solver::Pgs, Friction::Seed000, 1.0 / 240.0}),
                          caseName);
 
 // Seed 000 "Friction" for one collision, where the two models part: a ball (m = 1 kg, R = 0.1 m)
@@ -82,7 +82,7 @@ INSTANTIATE_TEST_SUITE_P(BothSolversBothSteps, FrictionModels,
 // 3.5) / kg at the contact) is inside the cone while vx / 3.5 <= 0.6 x 4.5, so at vx = 6 m/s the
 // ball leaves rolling at 5/7 vx; at vx = 12 m/s it is kinetic, j = 4.5 (N - 0.2 T): vx drops by
 // 0.9 to 11.1 m/s and omega_z = (r x j)_z / I = -22.5 rad/s. The cone model gives another answer.
-class ObliqueImpact : public testing::TestWithParam<Case> {
+class ObliqueImpact : public testing::TestWithParam<FrictionCase> {
  protected:
   RigidBody afterOneStep(Settings::FrictionModel friction, double vx) const {
     Settings s;
@@ -124,13 +124,13 @@ TEST_P(ObliqueImpact, Seed000sImpulseDecidesStickingOrKineticAtTheImpact) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolversBothSteps, ObliqueImpact,
-                         testing::Values(Case{Solver::SoftStep, Friction::Seed000, 1.0 / 60.0},
-                                         Case{Solver::SoftStep, Friction::Seed000, 1.0 / 240.0},
-                                         Case{Solver::Pgs, Friction::Seed000, 1.0 / 60.0},
-                                         Case{Solver::Pgs, Friction::Seed000, 1.0 / 240.0}),
+                         testing::Values(FrictionCase{Solver::SoftStep, Friction::Seed000, 1.0 / 60.0},
+                                         FrictionCase{Solver::SoftStep, Friction::Seed000, 1.0 / 240.0},
+                                         FrictionCase{Solver::Pgs, Friction::Seed000, 1.0 / 60.0},
+                                         FrictionCase{Solver::Pgs, Friction::Seed000, 1.0 / 240.0}),
                          caseName);
 
-class RestitutionLaw : public testing::TestWithParam<Case> {};
+class RestitutionLaw : public testing::TestWithParam<FrictionCase> {};
 
 // Seed 000 and 001: the body leaves at c_R times its speed at the touch, sqrt(2 g h), measured
 // from its energy after the bounce (friction_cases.h): within 2.5 % for every case. Two used to
@@ -163,10 +163,10 @@ TEST_P(RestitutionLaw, TheDefaultThresholdStopsSlowApproaches) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolversBothSteps, RestitutionLaw,
-                         testing::Values(Case{Solver::SoftStep, Friction::Cone, 1.0 / 60.0},
-                                         Case{Solver::SoftStep, Friction::Cone, 1.0 / 240.0},
-                                         Case{Solver::Pgs, Friction::Cone, 1.0 / 60.0},
-                                         Case{Solver::Pgs, Friction::Cone, 1.0 / 240.0}),
+                         testing::Values(FrictionCase{Solver::SoftStep, Friction::Cone, 1.0 / 60.0},
+                                         FrictionCase{Solver::SoftStep, Friction::Cone, 1.0 / 240.0},
+                                         FrictionCase{Solver::Pgs, Friction::Cone, 1.0 / 60.0},
+                                         FrictionCase{Solver::Pgs, Friction::Cone, 1.0 / 240.0}),
                          caseName);
 
 }  // namespace

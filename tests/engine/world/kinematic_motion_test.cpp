@@ -13,8 +13,6 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 using test::allNear;
 
 class KinematicMotionTest : public testing::TestWithParam<double> {

@@ -14,12 +14,12 @@ namespace {
 
 using Solver = Settings::ContactSolverMethod;
 
-struct Case {
+struct KinematicCase {
   double dt;
   Solver solver;
 };
 
-class Kinematic : public testing::TestWithParam<Case> {
+class Kinematic : public testing::TestWithParam<KinematicCase> {
  protected:
   Settings settings() const {
     Settings s;
@@ -101,9 +101,9 @@ TEST_P(Kinematic, NothingThatHitsItMovesIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DtAndSolver, Kinematic,
-                         testing::Values(Case{1.0 / 60.0, Solver::SoftStep}, Case{1.0 / 240.0, Solver::SoftStep},
-                                         Case{1.0 / 60.0, Solver::Pgs}, Case{1.0 / 240.0, Solver::Pgs}),
-                         [](const testing::TestParamInfo<Case>& info) {
+                         testing::Values(KinematicCase{1.0 / 60.0, Solver::SoftStep}, KinematicCase{1.0 / 240.0, Solver::SoftStep},
+                                         KinematicCase{1.0 / 60.0, Solver::Pgs}, KinematicCase{1.0 / 240.0, Solver::Pgs}),
+                         [](const testing::TestParamInfo<KinematicCase>& info) {
                            return std::string(info.param.solver == Solver::Pgs ? "Pgs" : "SoftStep") + "_" +
                                   std::to_string(static_cast<int>(std::lround(1.0 / info.param.dt))) + "Hz";
                          });

@@ -17,7 +17,7 @@
 namespace rbsim {
 namespace {
 
-constexpr double kG = 9.81;  // [m/s^2], Settings' default gravity
+constexpr double kSpawnG = 9.81;  // [m/s^2], Settings' default gravity
 
 // Two figures 1.5 m apart, 5 m up, dropped every 0.5 s and cleared 0.75 s after they came.
 SpawnerDef figureRain() {
@@ -107,16 +107,16 @@ TEST_P(PresetSpawning, FallingFiguresKeepTheirMomentumLaw) {
   EXPECT_NEAR((w.bodies()[11].position() - w.bodies()[0].position()).x(), 0.2, 0.05) << "the offsets, pushed apart a little";
   // v0 as drawn (|v0| in the speed range) from the first step's momentum, less its gravity.
   const auto [p1, m1] = momentum(0, 2 * kBoneCount);
-  const Vec3 v0 = p1 / m1 - Vec3(0, -kG, 0) * w.time();
+  const Vec3 v0 = p1 / m1 - Vec3(0, -kSpawnG, 0) * w.time();
   EXPECT_GE(v0.norm(), 0.5 - 1e-9);
   EXPECT_LE(v0.norm(), 1.0 + 1e-9);
   while (w.time() < 0.8) w.step();  // about 3 m of fall: still in the air
   const auto [p, m] = momentum(0, 2 * kBoneCount);
   EXPECT_NEAR(m, 2.0 * RagdollDef{}.mass, 1e-9);
-  const Vec3 expected = m * (v0 + Vec3(0, -kG, 0) * w.time());
-  EXPECT_LT((p - expected).norm(), 1e-9 * m * kG * w.time()) << p.transpose() << " vs " << expected.transpose();
+  const Vec3 expected = m * (v0 + Vec3(0, -kSpawnG, 0) * w.time());
+  EXPECT_LT((p - expected).norm(), 1e-9 * m * kSpawnG * w.time()) << p.transpose() << " vs " << expected.transpose();
   const auto [pLeft, mLeft] = momentum(0, kBoneCount);
-  const double pushed = (pLeft - mLeft * (v0 + Vec3(0, -kG, 0) * w.time())).norm();
+  const double pushed = (pLeft - mLeft * (v0 + Vec3(0, -kSpawnG, 0) * w.time())).norm();
   EXPECT_GT(pushed, 0.5) << "the figures pushed each other [kg m/s]";
 }
 

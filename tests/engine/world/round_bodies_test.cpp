@@ -15,15 +15,14 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using Solver = Settings::ContactSolverMethod;
 
-struct Case {
+struct RoundCase {
   double dt;
   Solver solver;
 };
 
-class RoundBodies : public testing::TestWithParam<Case> {
+class RoundBodies : public testing::TestWithParam<RoundCase> {
  protected:
   // A World with the ground plane y = 0.
   Settings settings() const {
@@ -153,9 +152,9 @@ TEST_P(RoundBodies, NewtonsCradlePassesAnElasticHitDownTheLine) {
 }
 
 INSTANTIATE_TEST_SUITE_P(DtAndSolver, RoundBodies,
-                         testing::Values(Case{1.0 / 60.0, Solver::SoftStep}, Case{1.0 / 240.0, Solver::SoftStep},
-                                         Case{1.0 / 60.0, Solver::Pgs}, Case{1.0 / 240.0, Solver::Pgs}),
-                         [](const testing::TestParamInfo<Case>& info) {
+                         testing::Values(RoundCase{1.0 / 60.0, Solver::SoftStep}, RoundCase{1.0 / 240.0, Solver::SoftStep},
+                                         RoundCase{1.0 / 60.0, Solver::Pgs}, RoundCase{1.0 / 240.0, Solver::Pgs}),
+                         [](const testing::TestParamInfo<RoundCase>& info) {
                            return std::string(info.param.solver == Solver::Pgs ? "Pgs" : "SoftStep") + "_" +
                                   std::to_string(static_cast<int>(std::lround(1.0 / info.param.dt))) + "Hz";
                          });

@@ -13,7 +13,7 @@
 namespace rbsim {
 namespace {
 
-constexpr double kDt = 1.0 / 240.0;  // [s]
+constexpr double kSdfDt = 1.0 / 240.0;  // [s]
 
 BodyDef shapeDef(Mesh mesh, double mass, int resolution, const std::string& name) {
   const MassModel model = buildMassModel(std::move(mesh), mass, std::nullopt, InertiaMethod::Exact);
@@ -41,14 +41,14 @@ std::size_t addBowl(World& world, int resolution) {
   return world.indexOf(world.addBody(def));
 }
 
-Settings settings() {
+Settings sdfSettings() {
   Settings s;
-  s.timeStep = kDt;
+  s.timeStep = kSdfDt;
   return s;
 }
 
 TEST(SdfCollision, ABoxComesToRestAtTheBottomOfABowl) {
-  World world(settings());
+  World world(sdfSettings());
   addBowl(world, 48);
   const double h = 0.15;  // half extent of the cube [m]
   BodyDef box = test::boxDef(Vec3::Constant(2.0 * h), 1.0);
@@ -68,7 +68,7 @@ TEST(SdfCollision, ABoxComesToRestAtTheBottomOfABowl) {
 }
 
 TEST(SdfCollision, ATorusDropsOverAPostWhereItsHullWouldRestOnTop) {
-  World world(settings());
+  World world(sdfSettings());
   BodyDef post = test::boxDef(Vec3(0.1, 1.0, 0.1), 5.0, "post");
   post.position = Vec3(0.0, 0.5, 0.0);
   post.isStatic = true;
@@ -89,7 +89,7 @@ TEST(SdfCollision, ATorusDropsOverAPostWhereItsHullWouldRestOnTop) {
 TEST(SdfCollision, AFastTorusDoesNotTunnelThroughAThinPlate) {
   for (const auto solver : {Settings::ContactSolverMethod::SoftStep, Settings::ContactSolverMethod::Pgs}) {
     for (const bool sweep : {true, false}) {
-      Settings s = settings();
+      Settings s = sdfSettings();
       s.timeStep = 1.0 / 60.0;
       s.solver = solver;
       s.continuousCollision = sweep;
@@ -115,7 +115,7 @@ TEST(SdfCollision, AFastTorusDoesNotTunnelThroughAThinPlate) {
 }
 
 TEST(SdfCollision, TwoToriCollidingKeepMomentum) {
-  Settings s = settings();
+  Settings s = sdfSettings();
   s.gravity = Vec3::Zero();
   World world(s);
   BodyDef a = shapeDef(makeTorus(0.3, 0.1, 32, 16), 1.0, 32, "a");

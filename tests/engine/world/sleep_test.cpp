@@ -16,13 +16,13 @@ using test::boxDef;
 
 // dt = 1/64 s is a power of two: the resting time k dt is exact, so the step a body falls
 // asleep at is exactly timeToSleep / dt = 32.
-constexpr double kDt = 1.0 / 64.0;
+constexpr double kSleepDt = 1.0 / 64.0;
 constexpr int kStepsToSleep = 32;
 
 Settings zeroGravity() {
   Settings s;
   s.gravity = Vec3::Zero();
-  s.timeStep = kDt;
+  s.timeStep = kSleepDt;
   return s;
 }
 
@@ -36,19 +36,19 @@ World worldWithBox(const Settings& settings, const Vec3& velocity, const Vec3& a
   return world;
 }
 
-void stepN(World& world, int n) {
+void stepSleep(World& world, int n) {
   for (int i = 0; i < n; ++i) world.step();
 }
 
 TEST(Sleep, ABodyAtRestSleepsAfterTimeToSleepAndIsNoLongerIntegrated) {
   World world = worldWithBox(zeroGravity(), Vec3::Zero());
-  stepN(world, kStepsToSleep - 1);
+  stepSleep(world, kStepsToSleep - 1);
   EXPECT_TRUE(world.bodies()[0].awake()) << "one step short of timeToSleep";
   world.step();
   EXPECT_FALSE(world.bodies()[0].awake());
   EXPECT_EQ(awakeCount(world), 0u);
   const std::uint64_t integrated = world.stageStats(Stage::Integrate).runs;
-  stepN(world, 100);
+  stepSleep(world, 100);
   EXPECT_EQ(world.stageStats(Stage::Integrate).runs, integrated) << "nothing awake: Integrate is skipped";
   EXPECT_EQ(world.stageStats(Stage::UpdateSleep).skipped, 100u);
   EXPECT_TRUE(allNear(world.bodies()[0].position(), Vec3(1.0, 2.0, 3.0), 0.0));
@@ -59,10 +59,10 @@ TEST(Sleep, ASlowDriftStopsWithZeroMomenta) {
   // step 32 having drifted 32 dt v, and then reads back at rest.
   const Vec3 v(0.005, 0.0, 0.0), w(0.0, 0.02, 0.0);
   World world = worldWithBox(zeroGravity(), v, w);
-  stepN(world, kStepsToSleep + 10);
+  stepSleep(world, kStepsToSleep + 10);
   const RigidBody& body = world.bodies()[0];
   ASSERT_FALSE(body.awake());
-  EXPECT_TRUE(allNear(body.position(), Vec3(1.0, 2.0, 3.0) + kStepsToSleep * kDt * v, 1e-14));
+  EXPECT_TRUE(allNear(body.position(), Vec3(1.0, 2.0, 3.0) + kStepsToSleep * kSleepDt * v, 1e-14));
   EXPECT_EQ(body.velocity(), Vec3::Zero());
   EXPECT_EQ(body.angularVelocity(), Vec3::Zero());
   EXPECT_EQ(body.kineticEnergy(), 0.0);
@@ -71,8 +71,8 @@ TEST(Sleep, ASlowDriftStopsWithZeroMomenta) {
 TEST(Sleep, EitherSpeedAboveItsThresholdKeepsTheBodyAwake) {
   World fast = worldWithBox(zeroGravity(), Vec3(0.011, 0.0, 0.0));
   World spinning = worldWithBox(zeroGravity(), Vec3::Zero(), Vec3(0.0, 0.0, 0.036));
-  stepN(fast, 10 * kStepsToSleep);
-  stepN(spinning, 10 * kStepsToSleep);
+  stepSleep(fast, 10 * kStepsToSleep);
+  stepSleep(spinning, 10 * kStepsToSleep);
   EXPECT_TRUE(fast.bodies()[0].awake());
   EXPECT_TRUE(spinning.bodies()[0].awake());
 }
@@ -81,7 +81,7 @@ TEST(Sleep, AFreeBodyUnderGravityNeverSleepsEvenFromRest) {
   Settings s = zeroGravity();
   s.gravity = Vec3(0.0, -9.81, 0.0);
   World world = worldWithBox(s, Vec3::Zero());
-  stepN(world, 10 * kStepsToSleep);
+  stepSleep(world, 10 * kStepsToSleep);
   EXPECT_TRUE(world.bodies()[0].awake());
   EXPECT_LT(world.bodies()[0].velocity().y(), -9.0) << "it has been falling for 5 s";
 }
@@ -90,9 +90,9 @@ TEST(Sleep, AScriptedForceWakesTheBodyAndActsInFull) {
   // Asleep from t = 0.5 s; a 4 N push for 1 s starting at t = 1 s must give v = F t / m = 2 m/s.
   World world = worldWithBox(zeroGravity(), Vec3::Zero());
   world.addForce({world.idAt(0), Vec3(4.0, 0.0, 0.0), Vec3::Zero(), Frame::World, Frame::Body, 1.0, 2.0});
-  stepN(world, 64);  // to t = 1 s
+  stepSleep(world, 64);  // to t = 1 s
   ASSERT_FALSE(world.bodies()[0].awake());
-  stepN(world, 64);  // t = 1 .. 2 s
+  stepSleep(world, 64);  // t = 1 .. 2 s
   EXPECT_TRUE(world.bodies()[0].awake());
   EXPECT_TRUE(allNear(world.bodies()[0].velocity(), Vec3(2.0, 0.0, 0.0), 1e-14));
 }
@@ -104,9 +104,9 @@ TEST(Sleep, APoseEventWakesTheBody) {
   kick.time = 1.0;
   kick.velocity = Vec3(0.0, 0.0, 1.0);
   world.addPoseEvent(kick);
-  stepN(world, 64);
+  stepSleep(world, 64);
   ASSERT_FALSE(world.bodies()[0].awake());
-  stepN(world, 64);
+  stepSleep(world, 64);
   EXPECT_TRUE(world.bodies()[0].awake());
   EXPECT_TRUE(allNear(world.bodies()[0].position(), Vec3(1.0, 2.0, 4.0), 1e-14)) << "1 s at 1 m/s along z";
 }
@@ -115,7 +115,7 @@ TEST(Sleep, DisallowedSleepKeepsEveryBodyAwakeAndSkipsTheStage) {
   Settings s = zeroGravity();
   s.allowSleep = false;
   World world = worldWithBox(s, Vec3::Zero());
-  stepN(world, 10 * kStepsToSleep);
+  stepSleep(world, 10 * kStepsToSleep);
   EXPECT_TRUE(world.bodies()[0].awake());
   EXPECT_EQ(world.stageStats(Stage::UpdateSleep).runs, 0u);
   EXPECT_EQ(world.stageStats(Stage::Integrate).runs, 10u * kStepsToSleep);
@@ -128,7 +128,7 @@ TEST(Sleep, RunningEveryStageDoesNotSleepWhenSleepIsDisallowed) {
   s.allowSleep = false;
   s.skipIdleStages = false;
   World world = worldWithBox(s, Vec3(0.005, 0.0, 0.0));
-  stepN(world, 10 * kStepsToSleep);
+  stepSleep(world, 10 * kStepsToSleep);
   EXPECT_TRUE(world.bodies()[0].awake());
   EXPECT_TRUE(allNear(world.bodies()[0].velocity(), Vec3(0.005, 0.0, 0.0), 1e-15));
 }
@@ -168,8 +168,8 @@ World everyStageScene(bool skip) {
 TEST(StageSkipping, RunningIdleStagesChangesNoBitOfTheResult) {
   World skipping = everyStageScene(true);
   World running = everyStageScene(false);
-  stepN(skipping, 256);
-  stepN(running, 256);
+  stepSleep(skipping, 256);
+  stepSleep(running, 256);
   EXPECT_EQ(skipping.stateHash(), running.stateHash());
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) {
     const Stage stage = static_cast<Stage>(s);

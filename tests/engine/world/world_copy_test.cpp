@@ -23,7 +23,7 @@ namespace rbsim::test {
 namespace {
 
 // Under the sanitizers fewer steps: each still passes the moments that matter for most scenes.
-const int kSteps = kSanitizedBuild ? 20 : 90;
+const int kCopySteps = kSanitizedBuild ? 20 : 90;
 
 struct CopyCase {
   const char* label;
@@ -45,33 +45,33 @@ class WorldCopy : public ::testing::TestWithParam<CopyCase> {};
 
 TEST_P(WorldCopy, TheCopyGoesOnBitForBitAsTheOriginalAndRestoringItRewinds) {
   World original = sceneWorld(GetParam());
-  stepN(original, kSteps);
+  stepN(original, kCopySteps);
   const World saved(original);  // the saved state
   EXPECT_EQ(saved.stateHash(), original.stateHash());
 
-  stepN(original, kSteps);
+  stepN(original, kCopySteps);
   const std::uint64_t uninterrupted = original.stateHash();
   const double uninterruptedTime = original.time();
   const std::size_t contacts = original.contacts().size();
 
   World copy(saved);
-  stepN(copy, kSteps);
+  stepN(copy, kCopySteps);
   EXPECT_EQ(copy.stateHash(), uninterrupted);
   EXPECT_EQ(copy.time(), uninterruptedTime);
   EXPECT_EQ(copy.contacts().size(), contacts);
 
   original = saved;  // rewind the original itself
   EXPECT_EQ(original.stateHash(), saved.stateHash());
-  stepN(original, kSteps);
+  stepN(original, kCopySteps);
   EXPECT_EQ(original.stateHash(), uninterrupted);
 }
 
 TEST_P(WorldCopy, TheCopyGoesOnAlone) {
   World original = sceneWorld(GetParam());
-  stepN(original, kSteps / 2);
+  stepN(original, kCopySteps / 2);
   const std::uint64_t before = original.stateHash();
   World copy(original);
-  stepN(copy, kSteps);
+  stepN(copy, kCopySteps);
   EXPECT_EQ(original.stateHash(), before);
   EXPECT_NE(copy.stateHash(), before);
 }

@@ -19,9 +19,9 @@ using test::allNear;
 using test::boxDef;
 
 // dt = 1/64 s is a power of two, so step start times n dt are exact and event timing is crisp.
-constexpr double kDt = 1.0 / 64.0;
+constexpr double kWorldDt = 1.0 / 64.0;
 
-Settings settingsWith(const Vec3& gravity, double dt = kDt, Integrator integrator = Integrator::ExpMap) {
+Settings settingsWith(const Vec3& gravity, double dt = kWorldDt, Integrator integrator = Integrator::ExpMap) {
   Settings s;
   s.gravity = gravity;
   s.timeStep = dt;
@@ -29,7 +29,7 @@ Settings settingsWith(const Vec3& gravity, double dt = kDt, Integrator integrato
   return s;
 }
 
-void stepN(World& world, int n) {
+void stepWorld(World& world, int n) {
   for (int i = 0; i < n; ++i) world.step();
 }
 
@@ -38,9 +38,9 @@ const StageStats& stats(const World& w, Stage s) { return w.stageStats(s); }
 TEST(World, IntegrateRunsEveryStepAndForcesAreSkippedWhenNothingActs) {
   World world(settingsWith(Vec3::Zero()));
   world.addBody(boxDef(Vec3::Ones(), 1.0));
-  stepN(world, 10);
+  stepWorld(world, 10);
   EXPECT_EQ(world.stepCount(), 10u);
-  EXPECT_DOUBLE_EQ(world.time(), 10 * kDt);
+  EXPECT_DOUBLE_EQ(world.time(), 10 * kWorldDt);
   EXPECT_EQ(stats(world, Stage::Integrate).runs, 10u);
   EXPECT_EQ(stats(world, Stage::Integrate).skipped, 0u);
   EXPECT_EQ(stats(world, Stage::AccumulateForces).runs, 0u) << "no gravity, no scripted forces";
@@ -52,9 +52,9 @@ TEST(World, IntegrateRunsEveryStepAndForcesAreSkippedWhenNothingActs) {
 TEST(World, AccumulateForcesRunsForScriptedForcesWhileIntegrateAddsGravityAlone) {
   World falling(settingsWith(Vec3(0.0, -9.81, 0.0)));
   falling.addBody(boxDef(Vec3::Ones(), 1.0));
-  stepN(falling, 5);
+  stepWorld(falling, 5);
   EXPECT_EQ(stats(falling, Stage::AccumulateForces).runs, 0u) << "gravity alone needs no pass of its own";
-  EXPECT_DOUBLE_EQ(falling.bodies()[0].velocity().y(), -9.81 * 5 * kDt) << "and still acts";
+  EXPECT_DOUBLE_EQ(falling.bodies()[0].velocity().y(), -9.81 * 5 * kWorldDt) << "and still acts";
 
   World pushed(settingsWith(Vec3::Zero()));
   pushed.addBody(boxDef(Vec3::Ones(), 1.0));
@@ -64,7 +64,7 @@ TEST(World, AccumulateForcesRunsForScriptedForcesWhileIntegrateAddsGravityAlone)
   f.start = 0.0;
   f.end = 1.0;
   pushed.addForce(f);
-  stepN(pushed, 5);
+  stepWorld(pushed, 5);
   EXPECT_EQ(stats(pushed, Stage::AccumulateForces).runs, 5u);
 }
 
@@ -86,7 +86,7 @@ TEST(World, PoseEventAppliesAtTheFirstStepStartingAtOrAfterItsTime) {
   e.orientation = quatFromAxisAngle(Vec3(0.0, 0.5, 0.0));
   e.velocity = Vec3(0.0, 0.0, 64.0);  // one metre per step
   world.addPoseEvent(e);
-  stepN(world, 7);  // steps 0..6
+  stepWorld(world, 7);  // steps 0..6
   EXPECT_TRUE(allNear(world.bodies()[0].position(), def.position, 0.0)) << "not yet";
   EXPECT_EQ(stats(world, Stage::ApplyPoseEvents).runs, 0u);
   world.step();  // step 7: the event, then one integration with the new velocity
@@ -96,7 +96,7 @@ TEST(World, PoseEventAppliesAtTheFirstStepStartingAtOrAfterItsTime) {
   for (std::size_t i = 0; i < body.vertexCount(); ++i) {
     EXPECT_TRUE(allNear(body.worldVertex(i), body.rotation() * body.bodyVertex(i) + body.position(), 1e-14));
   }
-  stepN(world, 20);
+  stepWorld(world, 20);
   EXPECT_EQ(stats(world, Stage::ApplyPoseEvents).runs, 1u) << "runs only at the event's step";
   EXPECT_EQ(stats(world, Stage::ApplyPoseEvents).skipped, 27u);
   EXPECT_TRUE(allNear(world.bodies()[0].position(), Vec3(5.0, 6.0, 28.0), 1e-13));
@@ -107,14 +107,14 @@ TEST(World, PoseEventExactlyAtAStepStartAppliesAtThatStep) {
   world.addBody(boxDef(Vec3::Ones(), 1.0));
   PoseEvent e;
   e.body = world.idAt(0);
-  e.time = 8 * kDt;
+  e.time = 8 * kWorldDt;
   e.angularVelocity = Vec3(0.0, 0.0, 2.0);
   world.addPoseEvent(e);
-  stepN(world, 8);
+  stepWorld(world, 8);
   EXPECT_TRUE(allNear(world.bodies()[0].angularVelocity(), Vec3::Zero(), 0.0));
   world.step();
   EXPECT_TRUE(allNear(world.bodies()[0].angularVelocity(), Vec3(0.0, 0.0, 2.0), 1e-15));
-  EXPECT_NEAR(rotationAngleBetween(Mat3::Identity(), world.bodies()[0].rotation()), 2.0 * kDt, 1e-15)
+  EXPECT_NEAR(rotationAngleBetween(Mat3::Identity(), world.bodies()[0].rotation()), 2.0 * kWorldDt, 1e-15)
       << "one step of expmap at the new omega";
 }
 
@@ -124,7 +124,7 @@ TEST(World, WorldVerticesAreRpPlusXAfterSteps) {
   def.velocity = Vec3(1.0, 2.0, 0.0);
   def.angularVelocity = Vec3(0.5, 3.0, -1.0);
   world.addBody(def);
-  stepN(world, 100);
+  stepWorld(world, 100);
   const RigidBody& body = world.bodies()[0];
   const Mat3 R = body.orientation().toRotationMatrix();
   for (std::size_t i = 0; i < body.vertexCount(); ++i) {
@@ -141,7 +141,7 @@ TEST(World, ScriptedForceGivesImpulseForceTimesDuration) {
   f.start = 0.0;
   f.end = 0.25;  // steps 0..15 start before 0.25: exactly 16 steps of dt = 1/64
   world.addForce(f);
-  stepN(world, 40);
+  stepWorld(world, 40);
   // Dyadic values: every partial sum is exact, so the impulse is F T to the last bit.
   EXPECT_TRUE(allNear(world.bodies()[0].state().linearMomentum, 0.25 * f.force, 0.0));
   EXPECT_TRUE(allNear(world.bodies()[0].state().angularMomentum, Vec3::Zero(), 0.0))
@@ -160,8 +160,8 @@ TEST(World, ScriptedForceOffCentreGivesAngularImpulse) {
   f.start = 0.0;
   f.end = 1.0 / 64.0;              // a single step, before the body has turned
   world.addForce(f);
-  stepN(world, 3);
-  EXPECT_TRUE(allNear(world.bodies()[0].state().angularMomentum, kDt * Vec3(0.0, 0.0, 1.0), 0.0))
+  stepWorld(world, 3);
+  EXPECT_TRUE(allNear(world.bodies()[0].state().angularMomentum, kWorldDt * Vec3(0.0, 0.0, 1.0), 0.0))
       << "L = dt (r x f) = dt (0, 0, 1)";
 }
 
@@ -180,11 +180,11 @@ TEST(World, BodyFrameForceTurnsWithTheBody) {
   world.addForce(f);
   Vec3 expected = Vec3::Zero();
   for (int n = 0; n < 64; ++n) {
-    const Mat3 Rn = rotationFromAxisAngle(Vec3(0.0, 0.0, w * n * kDt));  // expmap is exact here
+    const Mat3 Rn = rotationFromAxisAngle(Vec3(0.0, 0.0, w * n * kWorldDt));  // expmap is exact here
     const auto active = activeForces(world, world.idAt(0), world.time());
     ASSERT_EQ(active.size(), 1u);
     EXPECT_TRUE(allNear(active[0].second, Rn * f.force, 1e-13)) << "step " << n;
-    expected += kDt * (Rn * f.force);
+    expected += kWorldDt * (Rn * f.force);
     world.step();
   }
   EXPECT_TRUE(allNear(world.bodies()[0].state().linearMomentum, expected, 1e-13));
@@ -219,9 +219,9 @@ TEST(World, SameSceneSameHashAndATinyChangeChangesIt) {
   World second = deterministicWorld(0.0);
   World nudged = deterministicWorld(1e-12);
   EXPECT_EQ(first.stateHash(), second.stateHash());
-  stepN(first, 1000);
-  stepN(second, 1000);
-  stepN(nudged, 1000);
+  stepWorld(first, 1000);
+  stepWorld(second, 1000);
+  stepWorld(nudged, 1000);
   EXPECT_EQ(first.stateHash(), second.stateHash()) << "bit-identical runs";
   EXPECT_NE(first.stateHash(), nudged.stateHash()) << "1e-12 m/s in one velocity must show";
 }

@@ -13,4 +13,10 @@ struct BodyState {
   Vec3 angularMomentum = Vec3::Zero();  // L(t) = I(t) omega, world frame [kg m^2/s]
 };
 
+// Every component finite: a state a step may commit (World's divergence check).
+inline bool isFinite(const BodyState& s) {
+  return s.position.allFinite() && s.orientation.coeffs().allFinite() && s.linearMomentum.allFinite() &&
+         s.angularMomentum.allFinite();
+}
+
 }  // namespace rbsim

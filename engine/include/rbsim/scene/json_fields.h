@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rbsim/math/format_number.h"  // formatNumber, for the parsers' messages
 #include "rbsim/math/types.h"
 
 namespace rbsim {
@@ -62,10 +63,6 @@ class JsonObject {
   std::string file_;
   std::string path_;
 };
-
-// Six significant digits in %g style, for messages: std::to_string prints 1e-7 as "0.000000"
-// and 1e300 as 301 digits.
-std::string formatNumber(double d);
 
 // The known key nearest to `key` by edit distance, or "" when none is close.
 std::string nearestKey(const std::string& key, const std::vector<std::string>& known);

@@ -20,7 +20,7 @@ using test::rotationAbout;
 
 const Vec3 kHalf = Vec3::Constant(0.5);
 
-bool holds(const ContactManifold& m, const Vec3& p, double tol = 1e-12) {
+bool boxHolds(const ContactManifold& m, const Vec3& p, double tol = 1e-12) {
   for (int i = 0; i < m.count; ++i) {
     if ((m.points[i].position - p).norm() <= tol) return true;
   }
@@ -40,7 +40,7 @@ TEST(CollideBoxes, PenetratingCubesGiveTheOverlapFaceCorners) {
   EXPECT_TRUE(allNear(r.manifold.normal, Vec3::UnitX(), 0.0));
   ASSERT_EQ(r.manifold.count, 4);
   for (double y : {-0.5, 0.5}) {
-    for (double z : {-0.5, 0.5}) EXPECT_TRUE(holds(r.manifold, Vec3(0.45, y, z))) << y << " " << z;
+    for (double z : {-0.5, 0.5}) EXPECT_TRUE(boxHolds(r.manifold, Vec3(0.45, y, z))) << y << " " << z;
   }
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.manifold.points[i].depth, 0.1, 1e-15);
 }
@@ -62,7 +62,7 @@ TEST(CollideBoxes, BoxRestingFaceDownHasFourPointsAtItsCorners) {
   EXPECT_TRUE(allNear(r.manifold.normal, Vec3::UnitY(), 0.0));
   ASSERT_EQ(r.manifold.count, 4);
   for (double dx : {-0.5, 0.5}) {
-    for (double dz : {-0.5, 0.5}) EXPECT_TRUE(holds(r.manifold, Vec3(0.2 + dx, 0.495, -0.1 + dz))) << dx << dz;
+    for (double dz : {-0.5, 0.5}) EXPECT_TRUE(boxHolds(r.manifold, Vec3(0.2 + dx, 0.495, -0.1 + dz))) << dx << dz;
   }
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.manifold.points[i].depth, 0.01, 1e-15);
 }

@@ -21,9 +21,9 @@ using test::boxCorners;
 using test::makeOrientedBox;
 using test::rotationAbout;
 
-const Vec3 kHalf = Vec3::Constant(0.5);
+const Vec3 kConvexHalf = Vec3::Constant(0.5);
 
-bool holds(const ContactManifold& m, const Vec3& p, double tol = 1e-9) {
+bool convexHolds(const ContactManifold& m, const Vec3& p, double tol = 1e-9) {
   for (int i = 0; i < m.count; ++i) {
     if ((m.points[i].position - p).norm() <= tol) return true;
   }
@@ -31,22 +31,22 @@ bool holds(const ContactManifold& m, const Vec3& p, double tol = 1e-9) {
 }
 
 TEST(CollideConvex, PenetratingCubesThroughGjkAndEpa) {
-  const ConvexContact c = collideConvex(boxCorners(makeOrientedBox(Vec3::Zero(), kHalf)),
-                                        boxCorners(makeOrientedBox(Vec3(0.9, 0, 0), kHalf)));
+  const ConvexContact c = collideConvex(boxCorners(makeOrientedBox(Vec3::Zero(), kConvexHalf)),
+                                        boxCorners(makeOrientedBox(Vec3(0.9, 0, 0), kConvexHalf)));
   EXPECT_FALSE(c.usedBoxSat);
   EXPECT_TRUE(c.overlap);
   EXPECT_NEAR(c.depth, 0.1, 1e-9);
   EXPECT_TRUE(allNear(c.manifold.normal, Vec3::UnitX(), 1e-9));
   ASSERT_EQ(c.manifold.count, 4);
   for (double y : {-0.5, 0.5}) {
-    for (double z : {-0.5, 0.5}) EXPECT_TRUE(holds(c.manifold, Vec3(0.45, y, z))) << y << " " << z;
+    for (double z : {-0.5, 0.5}) EXPECT_TRUE(convexHolds(c.manifold, Vec3(0.45, y, z))) << y << " " << z;
   }
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(c.manifold.points[i].depth, 0.1, 1e-9);
 }
 
 TEST(CollideConvex, SeparatedCubesReportTheGjkDistance) {
-  const std::vector<Vec3> a = boxCorners(makeOrientedBox(Vec3::Zero(), kHalf));
-  const std::vector<Vec3> b = boxCorners(makeOrientedBox(Vec3(1.5, 0, 0), kHalf));
+  const std::vector<Vec3> a = boxCorners(makeOrientedBox(Vec3::Zero(), kConvexHalf));
+  const std::vector<Vec3> b = boxCorners(makeOrientedBox(Vec3(1.5, 0, 0), kConvexHalf));
   ConvexContact c = collideConvex(a, b);
   EXPECT_FALSE(c.overlap);
   EXPECT_EQ(c.manifold.count, 0);
@@ -68,7 +68,7 @@ TEST(CollideConvex, SeparatedCubesReportTheGjkDistance) {
 
 TEST(CollideConvex, RestingBoxMatchesTheSatPath) {
   const OrientedBox slab = makeOrientedBox(Vec3::Zero(), Vec3(1, 0.5, 1));
-  const OrientedBox cube = makeOrientedBox(Vec3(0.2, 0.99, -0.1), kHalf, rotationAbout(Vec3::UnitY(), 0.3));
+  const OrientedBox cube = makeOrientedBox(Vec3(0.2, 0.99, -0.1), kConvexHalf, rotationAbout(Vec3::UnitY(), 0.3));
   const std::vector<Vec3> a = boxCorners(slab), b = boxCorners(cube);
   const ConvexContact general = collideConvex(a, b);
   const ConvexContact sat = collideConvex(a, b, 0.0, &slab, &cube);
@@ -78,16 +78,16 @@ TEST(CollideConvex, RestingBoxMatchesTheSatPath) {
   EXPECT_TRUE(allNear(general.manifold.normal, sat.manifold.normal, 1e-9));
   EXPECT_NEAR(general.depth, sat.depth, 1e-9);
   for (int i = 0; i < 4; ++i) {
-    EXPECT_TRUE(holds(general.manifold, sat.manifold.points[i].position)) << i;
+    EXPECT_TRUE(convexHolds(general.manifold, sat.manifold.points[i].position)) << i;
     EXPECT_NEAR(general.manifold.points[i].depth, 0.01, 1e-9);
   }
 }
 
 TEST(CollideConvex, EdgeOnEdgeCrossingBoxesGiveOnePoint) {
   const double delta = 0.01, h = std::sqrt(0.5);
-  const std::vector<Vec3> a = boxCorners(makeOrientedBox(Vec3::Zero(), kHalf, rotationAbout(Vec3::UnitX(), M_PI / 4)));
+  const std::vector<Vec3> a = boxCorners(makeOrientedBox(Vec3::Zero(), kConvexHalf, rotationAbout(Vec3::UnitX(), M_PI / 4)));
   const std::vector<Vec3> b =
-      boxCorners(makeOrientedBox(Vec3(0, 2 * h - delta, 0), kHalf, rotationAbout(Vec3::UnitZ(), M_PI / 4)));
+      boxCorners(makeOrientedBox(Vec3(0, 2 * h - delta, 0), kConvexHalf, rotationAbout(Vec3::UnitZ(), M_PI / 4)));
   const ConvexContact c = collideConvex(a, b);
   EXPECT_TRUE(allNear(c.manifold.normal, Vec3::UnitY(), 1e-9));
   ASSERT_EQ(c.manifold.count, 1);
@@ -96,7 +96,7 @@ TEST(CollideConvex, EdgeOnEdgeCrossingBoxesGiveOnePoint) {
 }
 
 TEST(CollideConvex, TetrahedronTipIntoABoxHasOnePoint) {
-  const std::vector<Vec3> box = boxCorners(makeOrientedBox(Vec3::Zero(), kHalf));
+  const std::vector<Vec3> box = boxCorners(makeOrientedBox(Vec3::Zero(), kConvexHalf));
   const std::vector<Vec3> tetra = {Vec3(0.1, 0.45, 0.05), Vec3(-0.2, 1.2, -0.1), Vec3(0.4, 1.2, -0.1),
                                    Vec3(0.1, 1.2, 0.4)};
   const ConvexContact c = collideConvex(box, tetra);
@@ -108,7 +108,7 @@ TEST(CollideConvex, TetrahedronTipIntoABoxHasOnePoint) {
 }
 
 TEST(CollideConvex, TetrahedronFaceDownOnABoxHasThreePoints) {
-  const std::vector<Vec3> box = boxCorners(makeOrientedBox(Vec3::Zero(), kHalf));
+  const std::vector<Vec3> box = boxCorners(makeOrientedBox(Vec3::Zero(), kConvexHalf));
   const std::vector<Vec3> tetra = {Vec3(-0.2, 0.48, -0.1), Vec3(0.3, 0.48, -0.1), Vec3(0.05, 0.48, 0.3),
                                    Vec3(0.05, 1.2, 0.03)};
   // Tetrahedron as A this time: the normal points from it down into the box.
@@ -116,7 +116,7 @@ TEST(CollideConvex, TetrahedronFaceDownOnABoxHasThreePoints) {
   EXPECT_TRUE(allNear(c.manifold.normal, -Vec3::UnitY(), 1e-9));
   ASSERT_EQ(c.manifold.count, 3);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_TRUE(holds(c.manifold, Vec3(tetra[k].x(), 0.49, tetra[k].z()))) << k;
+    EXPECT_TRUE(convexHolds(c.manifold, Vec3(tetra[k].x(), 0.49, tetra[k].z()))) << k;
     EXPECT_NEAR(c.manifold.points[k].depth, 0.02, 1e-9);
   }
 }
@@ -124,14 +124,14 @@ TEST(CollideConvex, TetrahedronFaceDownOnABoxHasThreePoints) {
 // Apart, the box path reports the SAT separation: the distance when faces are closest, a lower
 // bound (the gap along one axis) when corners are.
 TEST(CollideConvex, BoxPathReportsTheSatSeparationWhenApart) {
-  const OrientedBox a = makeOrientedBox(Vec3::Zero(), kHalf);
-  const OrientedBox faceToFace = makeOrientedBox(Vec3(1.75, 0.2, -0.1), kHalf);
+  const OrientedBox a = makeOrientedBox(Vec3::Zero(), kConvexHalf);
+  const OrientedBox faceToFace = makeOrientedBox(Vec3(1.75, 0.2, -0.1), kConvexHalf);
   ConvexContact c = collideConvex(boxCorners(a), boxCorners(faceToFace), 0.0, &a, &faceToFace);
   EXPECT_TRUE(c.usedBoxSat);
   EXPECT_FALSE(c.overlap);
   EXPECT_EQ(c.manifold.count, 0);
   EXPECT_NEAR(c.distance, 0.75, 1e-12);
-  const OrientedBox cornerToCorner = makeOrientedBox(Vec3(2, 2, 2), kHalf);
+  const OrientedBox cornerToCorner = makeOrientedBox(Vec3(2, 2, 2), kConvexHalf);
   c = collideConvex(boxCorners(a), boxCorners(cornerToCorner), 0.0, &a, &cornerToCorner);
   EXPECT_FALSE(c.overlap);
   EXPECT_NEAR(c.distance, 1.0, 1e-12);

@@ -20,7 +20,7 @@ using test::rotationAbout;
 
 const Plane kGround{Vec3::UnitY(), 0.0};
 
-bool holds(const ContactManifold& m, const Vec3& p, double tol = 1e-12) {
+bool planeHolds(const ContactManifold& m, const Vec3& p, double tol = 1e-12) {
   for (int i = 0; i < m.count; ++i) {
     if ((m.points[i].position - p).norm() <= tol) return true;
   }
@@ -32,7 +32,7 @@ TEST(CollidePlaneConvex, FlatBoxSunkOneCentimetreHasFourCorners) {
   EXPECT_TRUE(allNear(m.normal, Vec3::UnitY(), 0.0));  // plane = A, body = B
   ASSERT_EQ(m.count, 4);
   for (double x : {-1.0, 1.0}) {
-    for (double z : {-2.0, 2.0}) EXPECT_TRUE(holds(m, Vec3(x, -0.005, z))) << x << " " << z;
+    for (double z : {-2.0, 2.0}) EXPECT_TRUE(planeHolds(m, Vec3(x, -0.005, z))) << x << " " << z;
   }
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(m.points[i].depth, 0.01, 1e-15);
 }
@@ -126,7 +126,7 @@ TEST(CollidePlaneConvex, ManyPointsReduceToFourSpanningTheFootprint) {
 
 // A mesh from an implicit surface rests on a flat disc bevelled half a grid cell up at its rim
 // (marching tetrahedra chamfer the edge): the bevel ring reaches farther out than the floor but
-// hangs 9 mm above it. Reduction by area alone takes the bevel: one point holds the body and it
+// hangs 9 mm above it. Reduction by area alone takes the bevel: one point planeHolds the body and it
 // rocks. With the body's reach as the slab, only vertices that could reach the deepest depth in
 // the step are candidates: at rest the four points are the floor's; a body rolling onto the
 // bevel keeps the bevel.

@@ -18,7 +18,7 @@ using test::allNear;
 using test::boxCorners;
 using test::makeOrientedBox;
 
-std::vector<Vec3> cube(const Vec3& centre, const Mat3& R = Mat3::Identity()) {
+std::vector<Vec3> epaCube(const Vec3& centre, const Mat3& R = Mat3::Identity()) {
   return boxCorners(makeOrientedBox(centre, Vec3::Constant(0.5), R));
 }
 
@@ -29,34 +29,34 @@ EpaResult penetration(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
 }
 
 TEST(Epa, UnitCubesWithKnownNormalAndDepth) {
-  EpaResult r = penetration(cube(Vec3::Zero()), cube(Vec3(0.9, 0.1, -0.2)));
+  EpaResult r = penetration(epaCube(Vec3::Zero()), epaCube(Vec3(0.9, 0.1, -0.2)));
   ASSERT_TRUE(r.valid);
   EXPECT_TRUE(allNear(r.normal, Vec3::UnitX(), 1e-9));
   EXPECT_NEAR(r.depth, 0.1, 1e-9);
   EXPECT_TRUE(allNear(r.pointA - r.pointB, r.depth * r.normal, 1e-9));
   EXPECT_NEAR(r.pointA.x(), 0.5, 1e-9);  // A's face, inside B
   EXPECT_NEAR(r.pointB.x(), 0.4, 1e-9);  // B's face, inside A
-  r = penetration(cube(Vec3::Zero()), cube(Vec3(0.2, -0.7, 0.1)));
+  r = penetration(epaCube(Vec3::Zero()), epaCube(Vec3(0.2, -0.7, 0.1)));
   EXPECT_TRUE(allNear(r.normal, -Vec3::UnitY(), 1e-9));
   EXPECT_NEAR(r.depth, 0.3, 1e-9);
 }
 
 TEST(Epa, TouchingCubesHaveZeroDepth) {
-  const EpaResult r = penetration(cube(Vec3::Zero()), cube(Vec3(1, 0.3, 0)));
+  const EpaResult r = penetration(epaCube(Vec3::Zero()), epaCube(Vec3(1, 0.3, 0)));
   ASSERT_TRUE(r.valid);
   EXPECT_NEAR(r.depth, 0.0, 1e-9);
   EXPECT_NEAR(std::abs(r.normal.x()), 1.0, 1e-9);
 }
 
 TEST(Epa, CoincidentCubesNeedAFullFaceWidth) {
-  const EpaResult r = penetration(cube(Vec3::Zero()), cube(Vec3::Zero()));
+  const EpaResult r = penetration(epaCube(Vec3::Zero()), epaCube(Vec3::Zero()));
   ASSERT_TRUE(r.valid);
   EXPECT_NEAR(r.depth, 1.0, 1e-9);
   EXPECT_NEAR(r.normal.cwiseAbs().maxCoeff(), 1.0, 1e-9);
 }
 
 TEST(Epa, BlowsUpStartSimplicesOfOneTwoAndThreePoints) {
-  const std::vector<Vec3> a = cube(Vec3::Zero()), b = cube(Vec3(0.9, 0, 0));
+  const std::vector<Vec3> a = epaCube(Vec3::Zero()), b = epaCube(Vec3(0.9, 0, 0));
   // Points of A - B built from points inside both boxes; the origin is in each simplex's hull.
   GjkSimplex s;
   s.size = 1;

@@ -15,8 +15,6 @@
 namespace rbsim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 PosedShape at(const Shape& s, const Vec3& x, const Mat3& R = Mat3::Identity()) { return {&s, R, x}; }
 
 TEST(ShapePairs, SphereSphereIsExactAtAnyDistance) {
