@@ -290,12 +290,15 @@ TEST(DragInWindow, PressDragAndReleaseMoveTheBodyAndThePanelShowsTheForce) {
   EXPECT_GT(heldRow, 0.0) << "the box left the view";
   EXPECT_LT(heldRow, stillRow - 50.0) << "the box did not follow the spring up";
   EXPECT_GE(panelBottom(held.image), panelBottom(still.image) + 20) << "the panel lacks the drag force rows";
-  // Released: the rows are gone, and the box flies on with what the spring gave it.
-  // (Not back to the still panel's height to the pixel: its "vs exact spin" row reads "not compared"
-  // at rest and the error in flight, which wrap to different line counts.)
+  // Released: the rows are gone, and the box no longer hangs at the pointer: it flies on with
+  // what the spring gave it, out of the view or back down. (Not back to the still panel's height
+  // to the pixel: its "vs exact spin" row reads "not compared" at rest and the error in flight,
+  // which wrap to different line counts. Nor away from the still row: a second after the release
+  // the box has sometimes landed again, at row 218, on a loaded machine and on an idle one.)
   EXPECT_LE(panelBottom(released.image), panelBottom(held.image) - 20) << "the drag rows stayed";
   const double releasedRow = redRow(released.image);
-  EXPECT_TRUE(releasedRow < 0.0 || std::abs(releasedRow - stillRow) > 20.0) << releasedRow;
+  EXPECT_TRUE(releasedRow < 0.0 || std::abs(releasedRow - heldRow) > 20.0)
+      << "the box stayed at the pointer: row " << releasedRow << ", held at row " << heldRow;
 }
 
 TEST(WindowModeErrors, NoDisplayAndMisplacedFlagsExitTwoWithAMessage) {
