@@ -13,8 +13,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 256;
-constexpr int kHeight = 144;
+constexpr int kBackgroundCacheWidth = 256;
+constexpr int kBackgroundCacheHeight = 144;
 
 FrameData boxAt(float x) {
   FrameData frame;
@@ -24,12 +24,12 @@ FrameData boxAt(float x) {
 }
 
 std::vector<std::uint8_t> fresh(const FrameData& frame) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kBackgroundCacheWidth, kBackgroundCacheHeight, shaderDir());
   return renderer.render(frame);
 }
 
 TEST(BackgroundCache, EveryViewMatchesAFreshRenderer) {
-  OffscreenRenderer reused(kWidth, kHeight, shaderDir());
+  OffscreenRenderer reused(kBackgroundCacheWidth, kBackgroundCacheHeight, shaderDir());
   std::vector<FrameData> frames;
   frames.push_back(boxAt(0.0f));
   frames.push_back(boxAt(0.7f));  // same camera: background copied, body moved
@@ -57,19 +57,19 @@ TEST(BackgroundCache, EveryViewMatchesAFreshRenderer) {
 // error, which render() turns into a RenderError). Away from edges the picture is the
 // single-sampled one: every sample of a pixel inside a surface has the same colour.
 TEST(BackgroundCache, MultisampledFramesCopyAMultisampledBackground) {
-  OffscreenRenderer single(kWidth, kHeight, shaderDir(), 1);
-  OffscreenRenderer multi(kWidth, kHeight, shaderDir(), 4);
+  OffscreenRenderer single(kBackgroundCacheWidth, kBackgroundCacheHeight, shaderDir(), 1);
+  OffscreenRenderer multi(kBackgroundCacheWidth, kBackgroundCacheHeight, shaderDir(), 4);
   ASSERT_GT(multi.samples(), 1) << "the driver offers no multisampling";
   const std::vector<std::uint8_t> expected = single.render(boxAt(0.0f));
   multi.render(boxAt(0.5f));
   const std::vector<std::uint8_t> image = multi.render(boxAt(0.0f));  // background copied, not drawn
   // Sky, ground and the box's front face: interior pixels, no edge nearby (off the face's centre,
   // where the body's z axis comes through).
-  const glm::vec2 face = projectToPixel(Camera{}, kWidth, kHeight, {0.2f, 0.55f, 0.4f});
-  for (const glm::ivec2 p : {glm::ivec2(kWidth / 2, 3), glm::ivec2(5, kHeight - 4),
+  const glm::vec2 face = projectToPixel(Camera{}, kBackgroundCacheWidth, kBackgroundCacheHeight, {0.2f, 0.55f, 0.4f});
+  for (const glm::ivec2 p : {glm::ivec2(kBackgroundCacheWidth / 2, 3), glm::ivec2(5, kBackgroundCacheHeight - 4),
                              glm::ivec2(static_cast<int>(face.x), static_cast<int>(face.y))}) {
-    const Rgb a = pixelAt(expected, kWidth, p.x, p.y);
-    const Rgb b = pixelAt(image, kWidth, p.x, p.y);
+    const Rgb a = pixelAt(expected, kBackgroundCacheWidth, p.x, p.y);
+    const Rgb b = pixelAt(image, kBackgroundCacheWidth, p.x, p.y);
     EXPECT_LE(std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b), 3) << "pixel " << p.x << "," << p.y;
   }
 }

@@ -15,8 +15,8 @@ namespace {
 
 // 720 rows: line widths are exactly as given (they scale with the image height), so the pixel
 // nearest a 1.5-pixel line is fully covered.
-constexpr int kWidth = 1280;
-constexpr int kHeight = 720;
+constexpr int kDebugDrawWidth = 1280;
+constexpr int kDebugDrawHeight = 720;
 
 FrameData emptyFrame() {
   FrameData frame;
@@ -27,7 +27,7 @@ FrameData emptyFrame() {
 }
 
 glm::vec2 project(const FrameData& frame, const glm::vec3& p) {
-  return projectToPixel(frame.camera, kWidth, kHeight, p);
+  return projectToPixel(frame.camera, kDebugDrawWidth, kDebugDrawHeight, p);
 }
 
 glm::vec2 pixelCentre(int x, int y) { return {x + 0.5f, y + 0.5f}; }
@@ -49,7 +49,7 @@ bool nearPixelIs(const std::vector<std::uint8_t>& image, const glm::vec2& at, Te
   const int cx = static_cast<int>(at.x), cy = static_cast<int>(at.y);
   for (int y = cy - 1; y <= cy + 1; ++y) {
     for (int x = cx - 1; x <= cx + 1; ++x) {
-      if (x >= 0 && y >= 0 && x < kWidth && y < kHeight && test(pixelAt(image, kWidth, x, y))) {
+      if (x >= 0 && y >= 0 && x < kDebugDrawWidth && y < kDebugDrawHeight && test(pixelAt(image, kDebugDrawWidth, x, y))) {
         return true;
       }
     }
@@ -62,7 +62,7 @@ bool isReddish(const Rgb& p) { return p.r > p.g + 50 && p.r > p.b + 50; }
 bool isYellow(const Rgb& p) { return p.r > 220 && p.g > 200 && p.b < 60; }
 
 TEST(DebugDraw, RedLineCoversItsProjectionAndNothingElse) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kDebugDrawWidth, kDebugDrawHeight, shaderDir());
   FrameData frame = emptyFrame();
   frame.lines.push_back({{-2.0f, 0.4f, 0.5f}, {1.5f, 1.3f, -1.0f}, {1.0f, 0.0f, 0.0f}});
   const std::vector<std::uint8_t> image = renderer.render(frame);
@@ -75,9 +75,9 @@ TEST(DebugDraw, RedLineCoversItsProjectionAndNothingElse) {
     EXPECT_TRUE(nearPixelIs(image, at, isRed)) << "no red pixel near " << at.x << "," << at.y;
   }
   int reddish = 0;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
-      if (!isReddish(pixelAt(image, kWidth, x, y))) continue;
+  for (int y = 0; y < kDebugDrawHeight; ++y) {
+    for (int x = 0; x < kDebugDrawWidth; ++x) {
+      if (!isReddish(pixelAt(image, kDebugDrawWidth, x, y))) continue;
       ++reddish;
       // 0.75 px half width, 0.5 px antialiased border, and the rest for pixel-centre rounding.
       ASSERT_LT(distanceToSegment(pixelCentre(x, y), a, b), 2.0f) << "at " << x << "," << y;
@@ -89,7 +89,7 @@ TEST(DebugDraw, RedLineCoversItsProjectionAndNothingElse) {
 }
 
 TEST(DebugDraw, PointIsARoundDotOfTheRequestedSizeAtItsProjection) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kDebugDrawWidth, kDebugDrawHeight, shaderDir());
   const FrameData empty = emptyFrame();
   FrameData frame = emptyFrame();
   constexpr float kDiameter = 16.0f;
@@ -103,9 +103,9 @@ TEST(DebugDraw, PointIsARoundDotOfTheRequestedSizeAtItsProjection) {
   glm::dvec2 sum(0.0);
   for (int y = static_cast<int>(centre.y) - 20; y <= static_cast<int>(centre.y) + 20; ++y) {
     for (int x = static_cast<int>(centre.x) - 20; x <= static_cast<int>(centre.x) + 20; ++x) {
-      const Rgb p = pixelAt(image, kWidth, x, y);
+      const Rgb p = pixelAt(image, kDebugDrawWidth, x, y);
       const float r = glm::length(pixelCentre(x, y) - centre);
-      const int difference = channelDifference(p, pixelAt(background, kWidth, x, y));
+      const int difference = channelDifference(p, pixelAt(background, kDebugDrawWidth, x, y));
       // Inside, well clear of the dark rim: the requested colour.
       if (r < radius - 2.0f) {
         EXPECT_TRUE(isYellow(p)) << "at r = " << r << ": " << p.r << "," << p.g << "," << p.b;
@@ -129,7 +129,7 @@ TEST(DebugDraw, PointIsARoundDotOfTheRequestedSizeAtItsProjection) {
 }
 
 TEST(DebugDraw, PointsAndOnTopLinesShowInsideABodyDepthTestedLinesDoNot) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kDebugDrawWidth, kDebugDrawHeight, shaderDir());
   FrameData frame = emptyFrame();
   const glm::vec3 centre{0.0f, 0.5f, 0.0f};
   frame.bodies.push_back(makeBox(centre, glm::vec3(0.5f), glm::mat3(1.0f), {0.1f, 0.8f, 0.15f}));
@@ -142,7 +142,7 @@ TEST(DebugDraw, PointsAndOnTopLinesShowInsideABodyDepthTestedLinesDoNot) {
   frame.lines.push_back({a, b, {1.0f, 0.0f, 0.0f}, false});
   const std::vector<std::uint8_t> hidden = renderer.render(frame);
   EXPECT_FALSE(nearPixelIs(hidden, middle, isReddish)) << "a depth-tested line showed through";
-  EXPECT_TRUE(isGreen(pixelAt(hidden, kWidth, static_cast<int>(middle.x),
+  EXPECT_TRUE(isGreen(pixelAt(hidden, kDebugDrawWidth, static_cast<int>(middle.x),
                               static_cast<int>(middle.y))));
 
   frame.lines[0].onTop = true;
@@ -151,12 +151,12 @@ TEST(DebugDraw, PointsAndOnTopLinesShowInsideABodyDepthTestedLinesDoNot) {
   frame.lines.clear();
   frame.points.push_back({centre, {1.0f, 0.9f, 0.0f}, 12.0f});
   const std::vector<std::uint8_t>& dot = renderer.render(frame);
-  const Rgb p = pixelAt(dot, kWidth, static_cast<int>(middle.x), static_cast<int>(middle.y));
+  const Rgb p = pixelAt(dot, kDebugDrawWidth, static_cast<int>(middle.x), static_cast<int>(middle.y));
   EXPECT_TRUE(isYellow(p)) << p.r << "," << p.g << "," << p.b;
 }
 
 TEST(DebugDraw, FiveThousandLinesRenderInOneFrame) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kDebugDrawWidth, kDebugDrawHeight, shaderDir());
   FrameData frame = emptyFrame();
   frame.options.grid = true;
   frame.bodies.push_back(makeBox({0.0f, 0.5f, 0.0f}, glm::vec3(0.5f), glm::mat3(1.0f),
@@ -169,11 +169,11 @@ TEST(DebugDraw, FiveThousandLinesRenderInOneFrame) {
   while (frame.lines.size() < 4999) {
     const glm::vec3 p(coord(rng), 0.5f * (coord(rng) + 3.0f), coord(rng));
     const glm::vec3 q = p + glm::vec3(step(rng), step(rng), step(rng));
-    if (std::max(project(frame, p).x, project(frame, q).x) > 0.4f * kWidth) continue;
+    if (std::max(project(frame, p).x, project(frame, q).x) > 0.4f * kDebugDrawWidth) continue;
     frame.lines.push_back({p, q, cyan, frame.lines.size() % 2 == 0});
   }
   const DebugLine known{{2.0f, 0.3f, 0.0f}, {2.0f, 1.5f, 0.0f}, {1.0f, 0.0f, 1.0f}};
-  ASSERT_GT(project(frame, known.a).x, 0.6f * kWidth);
+  ASSERT_GT(project(frame, known.a).x, 0.6f * kDebugDrawWidth);
   frame.lines.push_back(known);
   ASSERT_EQ(frame.lines.size(), 5000u);
 

@@ -19,8 +19,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 240;
+constexpr int kFrameSinkWidth = 320;
+constexpr int kFrameSinkHeight = 240;
 constexpr int kFrames = 10;
 
 bool onPath(const std::string& program) {
@@ -58,10 +58,10 @@ TEST(FrameSink, TenFramesBecomeAnH264VideoAndLosslessPngs) {
   TempDir dir;
   const auto video = dir.path() / "nested" / "folder" / "run.mp4";  // parents do not exist yet
   const auto pngs = dir.path() / "frames";
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kFrameSinkWidth, kFrameSinkHeight, shaderDir());
   std::vector<std::uint8_t> firstImage;
   {
-    FrameSink sink(SinkOptions{pngs, video, 30, kWidth, kHeight});
+    FrameSink sink(SinkOptions{pngs, video, 30, kFrameSinkWidth, kFrameSinkHeight});
     FrameData frame;
     frame.options.overlay = false;
     for (int i = 0; i < kFrames; ++i) {
@@ -84,8 +84,8 @@ TEST(FrameSink, TenFramesBecomeAnH264VideoAndLosslessPngs) {
     int w = 0, h = 0, channels = 0;
     unsigned char* pixels = stbi_load((pngs / name).c_str(), &w, &h, &channels, 4);
     ASSERT_NE(pixels, nullptr) << name << ": " << stbi_failure_reason();
-    EXPECT_EQ(w, kWidth);
-    EXPECT_EQ(h, kHeight);
+    EXPECT_EQ(w, kFrameSinkWidth);
+    EXPECT_EQ(h, kFrameSinkHeight);
     if (i == 0) {
       // Lossless and opaque: the rendered colours, alpha 255 (PNG frames are RGB, png_file.h).
       EXPECT_EQ(channels, 3);
@@ -112,7 +112,7 @@ TEST(FrameSink, MissingFfmpegIsAnErrorBeforeAnyFrame) {
   TempDir dir;
   ScopedEnv path("PATH", dir.path().string());  // an empty folder: no ffmpeg on PATH
   try {
-    FrameSink sink(SinkOptions{std::nullopt, dir.path() / "out.mp4", 30, kWidth, kHeight});
+    FrameSink sink(SinkOptions{std::nullopt, dir.path() / "out.mp4", 30, kFrameSinkWidth, kFrameSinkHeight});
     FAIL() << "expected RenderError";
   } catch (const RenderError& e) {
     EXPECT_NE(std::string(e.what()).find("ffmpeg"), std::string::npos) << e.what();
@@ -125,7 +125,7 @@ TEST(FrameSink, UnwritableFolderIsAnErrorNamingThePath) {
   std::ofstream(blocker) << "not a folder";
   const auto pngs = blocker / "frames";
   try {
-    FrameSink sink(SinkOptions{pngs, std::nullopt, 30, kWidth, kHeight});
+    FrameSink sink(SinkOptions{pngs, std::nullopt, 30, kFrameSinkWidth, kFrameSinkHeight});
     FAIL() << "expected RenderError";
   } catch (const RenderError& e) {
     EXPECT_NE(std::string(e.what()).find(pngs.string()), std::string::npos) << e.what();
@@ -135,7 +135,7 @@ TEST(FrameSink, UnwritableFolderIsAnErrorNamingThePath) {
 TEST(FrameSink, AVideoPathThatIsAFolderNamesItAndTheReason) {
   TempDir dir;
   try {
-    FrameSink sink(SinkOptions{std::nullopt, dir.path(), 30, kWidth, kHeight});
+    FrameSink sink(SinkOptions{std::nullopt, dir.path(), 30, kFrameSinkWidth, kFrameSinkHeight});
     FAIL() << "expected RenderError";
   } catch (const RenderError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot write video file " + dir.path().string() + ": Is a directory"),
@@ -148,7 +148,7 @@ TEST(FrameSink, AFramesFolderThatIsAFileIsRefusedBeforeFfmpegStarts) {
   const auto blocker = dir.path() / "a_file";
   std::ofstream(blocker) << "not a folder";
   try {
-    FrameSink sink(SinkOptions{blocker, dir.path() / "out.mp4", 30, kWidth, kHeight});
+    FrameSink sink(SinkOptions{blocker, dir.path() / "out.mp4", 30, kFrameSinkWidth, kFrameSinkHeight});
     FAIL() << "expected RenderError";
   } catch (const RenderError& e) {
     EXPECT_NE(std::string(e.what()).find("a file that is not a folder is in the way"), std::string::npos) << e.what();
@@ -192,7 +192,7 @@ TEST(FrameSink, FfmpegFailureIsReportedByFinish) {
 
 TEST(FrameSink, WrongImageSizeIsRejected) {
   TempDir dir;
-  FrameSink sink(SinkOptions{dir.path(), std::nullopt, 30, kWidth, kHeight});
+  FrameSink sink(SinkOptions{dir.path(), std::nullopt, 30, kFrameSinkWidth, kFrameSinkHeight});
   EXPECT_THROW(sink.submit(std::vector<std::uint8_t>(10)), RenderError);
 }
 

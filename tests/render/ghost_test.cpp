@@ -12,8 +12,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 640;
-constexpr int kHeight = 360;
+constexpr int kGhostWidth = 640;
+constexpr int kGhostHeight = 360;
 
 FrameData gridFrame() {
   FrameData frame;
@@ -24,8 +24,8 @@ FrameData gridFrame() {
 }
 
 Rgb pixelOf(const std::vector<std::uint8_t>& image, const FrameData& frame, const glm::vec3& p) {
-  const glm::vec2 at = projectToPixel(frame.camera, kWidth, kHeight, p);
-  return pixelAt(image, kWidth, static_cast<int>(at.x), static_cast<int>(at.y));
+  const glm::vec2 at = projectToPixel(frame.camera, kGhostWidth, kGhostHeight, p);
+  return pixelAt(image, kGhostWidth, static_cast<int>(at.x), static_cast<int>(at.y));
 }
 
 // Blending happens on the display values in the framebuffer: c = alpha * src + (1 - alpha) * dst.
@@ -51,7 +51,7 @@ int largestDifference(const Rgb& p, const Rgb& q) {
 }
 
 TEST(Ghost, IsTheBlendOfItsColourAndTheGroundBehindIt) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kGhostWidth, kGhostHeight, shaderDir());
   const FrameData empty = gridFrame();
   FrameData frame = gridFrame();
   frame.bodies.push_back(makeBox({0.0f, 0.5f, 0.0f}, glm::vec3(0.5f), glm::mat3(1.0f),
@@ -74,7 +74,7 @@ TEST(Ghost, IsTheBlendOfItsColourAndTheGroundBehindIt) {
 }
 
 TEST(Ghost, NearerGhostIsBlendedOverTheFartherOneWhateverTheListOrder) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kGhostWidth, kGhostHeight, shaderDir());
   const FrameData empty = gridFrame();
   // Both on the line from the default eye through the origin; `near` is half as far away.
   const glm::vec3 eye = empty.camera.eye;

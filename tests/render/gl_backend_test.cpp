@@ -14,8 +14,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 180;
+constexpr int kGlBackendWidth = 320;
+constexpr int kGlBackendHeight = 180;
 
 // Everything the renderer draws: bodies with outlines and shadows on the ground grid, the sky,
 // axes, a force arrow, debug lines and points, and the overlay panel's text.
@@ -61,15 +61,15 @@ TEST(GlBackend, EglDrawsTheSamePixelsAsOsmesa) {
   const FrameData frame = fullFrame();
   std::vector<std::uint8_t> osmesa, egl;
   {
-    OffscreenRenderer renderer(kWidth, kHeight, shaderDir(), 1, GlBackend::Osmesa);
+    OffscreenRenderer renderer(kGlBackendWidth, kGlBackendHeight, shaderDir(), 1, GlBackend::Osmesa);
     osmesa = renderer.render(frame);
   }
   {
-    OffscreenRenderer renderer(kWidth, kHeight, shaderDir(), 1, GlBackend::Egl);
+    OffscreenRenderer renderer(kGlBackendWidth, kGlBackendHeight, shaderDir(), 1, GlBackend::Egl);
     egl = renderer.render(frame);
   }
   // The picture is not blank: the sky at the top and the ground at the bottom differ.
-  EXPECT_NE(pixelAt(egl, kWidth, kWidth / 2, 5).b, pixelAt(egl, kWidth, kWidth / 2, kHeight - 5).b);
+  EXPECT_NE(pixelAt(egl, kGlBackendWidth, kGlBackendWidth / 2, 5).b, pixelAt(egl, kGlBackendWidth, kGlBackendWidth / 2, kGlBackendHeight - 5).b);
   EXPECT_EQ(differentBytes(osmesa, egl), 0) << "of " << osmesa.size();
 }
 
@@ -81,8 +81,8 @@ TEST(GlBackend, ContextsOfBothBackendsTakeTurnsOnOneThread) {
   FrameData empty = frame;
   empty.bodies.clear();
   empty.options.overlay = false;
-  OffscreenRenderer a(kWidth, kHeight, shaderDir(), 1, GlBackend::Osmesa);
-  OffscreenRenderer b(kWidth, kHeight, shaderDir(), 1, GlBackend::Egl);
+  OffscreenRenderer a(kGlBackendWidth, kGlBackendHeight, shaderDir(), 1, GlBackend::Osmesa);
+  OffscreenRenderer b(kGlBackendWidth, kGlBackendHeight, shaderDir(), 1, GlBackend::Egl);
   const std::vector<std::uint8_t> first = a.render(frame);
   const std::vector<std::uint8_t> other = b.render(empty);
   const std::vector<std::uint8_t> again = a.render(frame);
@@ -100,11 +100,11 @@ TEST(GlBackend, TitleCardsAreTheSameThroughBoth) {
   card.description = "OSMesa and EGL";
   std::vector<std::uint8_t> osmesa, egl;
   {
-    TitleCardRenderer cards(kWidth, kHeight, GlBackend::Osmesa);
+    TitleCardRenderer cards(kGlBackendWidth, kGlBackendHeight, GlBackend::Osmesa);
     osmesa = cards.render(card);
   }
   {
-    TitleCardRenderer cards(kWidth, kHeight, GlBackend::Egl);
+    TitleCardRenderer cards(kGlBackendWidth, kGlBackendHeight, GlBackend::Egl);
     egl = cards.render(card);
   }
   EXPECT_EQ(differentBytes(osmesa, egl), 0);

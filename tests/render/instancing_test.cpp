@@ -13,8 +13,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 180;
+constexpr int kInstancingWidth = 320;
+constexpr int kInstancingHeight = 180;
 // A pixel counts as different beyond this (8-bit channels): an edge pixel whose coverage moved
 // by a rounding step changes by a few levels; a missing or misplaced face changes by ~100.
 constexpr int kChannelTolerance = 16;
@@ -93,7 +93,7 @@ TEST(Instancing, BodyShapeIsTheMeshInBodySpace) {
 }
 
 TEST(Instancing, DrawsTheSamePictureAsWorldVertices) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kInstancingWidth, kInstancingHeight, shaderDir());
   FrameData empty;
   empty.options.overlay = false;
   const std::vector<std::uint8_t> background = renderer.render(empty);
@@ -101,7 +101,7 @@ TEST(Instancing, DrawsTheSamePictureAsWorldVertices) {
   const std::shared_ptr<const void> meshA = std::make_shared<int>(1), meshB = std::make_shared<int>(2);
   const std::vector<std::uint8_t> worldPath = renderer.render(boxes(nullptr, nullptr));
   const std::vector<std::uint8_t> instanced = renderer.render(boxes(meshA, meshB));
-  const int pixels = kWidth * kHeight;
+  const int pixels = kInstancingWidth * kInstancingHeight;
   // The boxes are in the picture at all (so equality below says something).
   ASSERT_GT(differentPixels(background, worldPath), pixels / 50);
   EXPECT_LE(differentPixels(worldPath, instanced), static_cast<int>(kMaxDifferentFraction * pixels));

@@ -8,8 +8,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 240;
+constexpr int kOverlayWidth = 320;
+constexpr int kOverlayHeight = 240;
 
 // Text is near-white (values), light grey-blue (labels) or gold (title); the sky behind the
 // panel's top-left corner is dark blue, the panel itself near-black.
@@ -33,13 +33,13 @@ FrameData overlayFrame(bool overlay) {
 TEST(Overlay, PanelWithTextOnTheFirstFrame) {
   std::vector<std::uint8_t> with, without;
   {
-    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    OffscreenRenderer renderer(kOverlayWidth, kOverlayHeight, shaderDir());
     with = renderer.render(overlayFrame(true));  // frame 1 of this renderer
     // The overlay must leave no GL state behind that changes the next frame.
     EXPECT_TRUE(renderer.render(overlayFrame(true)) == with) << "frame 2 differs from frame 1";
   }
   {
-    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    OffscreenRenderer renderer(kOverlayWidth, kOverlayHeight, shaderDir());
     without = renderer.render(overlayFrame(false));
   }
   // The panel starts a few pixels from the top-left corner; look at the part where the title
@@ -47,8 +47,8 @@ TEST(Overlay, PanelWithTextOnTheFirstFrame) {
   int changed = 0, text = 0, textWithout = 0, total = 0;
   for (int y = 10; y < 50; ++y) {
     for (int x = 10; x < 100; ++x) {
-      const Rgb a = pixelAt(with, kWidth, x, y);
-      const Rgb b = pixelAt(without, kWidth, x, y);
+      const Rgb a = pixelAt(with, kOverlayWidth, x, y);
+      const Rgb b = pixelAt(without, kOverlayWidth, x, y);
       ++total;
       if (std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b) > 12) ++changed;
       if (isTextColoured(a)) ++text;
@@ -59,10 +59,10 @@ TEST(Overlay, PanelWithTextOnTheFirstFrame) {
   EXPECT_GT(text, 40) << "title and row text should be drawn";
   EXPECT_EQ(textWithout, 0) << "the same region without overlay has no text-like pixels";
   // Far from the panel nothing changes: the overlay does not disturb the 3D image.
-  for (int y = kHeight - 40; y < kHeight; ++y) {
-    for (int x = kWidth - 40; x < kWidth; ++x) {
-      const Rgb a = pixelAt(with, kWidth, x, y);
-      const Rgb b = pixelAt(without, kWidth, x, y);
+  for (int y = kOverlayHeight - 40; y < kOverlayHeight; ++y) {
+    for (int x = kOverlayWidth - 40; x < kOverlayWidth; ++x) {
+      const Rgb a = pixelAt(with, kOverlayWidth, x, y);
+      const Rgb b = pixelAt(without, kOverlayWidth, x, y);
       ASSERT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b) << "at " << x << "," << y;
     }
   }
@@ -71,23 +71,23 @@ TEST(Overlay, PanelWithTextOnTheFirstFrame) {
 // A caption pinned to a point (OverlayLabel, the worlds of a compared phase): drawn on the very
 // first frame, its top centre at the point, in the title's gold, and drawn with no panel at all.
 TEST(Overlay, LabelHangsBelowItsPointOnTheFirstFrame) {
-  const glm::vec2 point(0.75f * kWidth, 0.6f * kHeight);  // right of and below the panel
+  const glm::vec2 point(0.75f * kOverlayWidth, 0.6f * kOverlayHeight);  // right of and below the panel
   FrameData frame = overlayFrame(true);
   frame.overlay.labels.push_back({"PGS", point});
   std::vector<std::uint8_t> with, without, alone;
   {
-    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    OffscreenRenderer renderer(kOverlayWidth, kOverlayHeight, shaderDir());
     with = renderer.render(frame);
   }
   {
-    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    OffscreenRenderer renderer(kOverlayWidth, kOverlayHeight, shaderDir());
     without = renderer.render(overlayFrame(true));
   }
   {
     FrameData bare = overlayFrame(true);
     bare.overlay = OverlayData{};
     bare.overlay.labels.push_back({"PGS", point});
-    OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+    OffscreenRenderer renderer(kOverlayWidth, kOverlayHeight, shaderDir());
     alone = renderer.render(bare);
   }
   // Changed pixels and gold text in the box below the point; nothing changed above it.
@@ -95,7 +95,7 @@ TEST(Overlay, LabelHangsBelowItsPointOnTheFirstFrame) {
     int n = 0;
     for (int y = y0; y < y1; ++y) {
       for (int x = static_cast<int>(point.x) - 20; x < static_cast<int>(point.x) + 20; ++x) {
-        const Rgb a = pixelAt(image, kWidth, x, y), b = pixelAt(without, kWidth, x, y);
+        const Rgb a = pixelAt(image, kOverlayWidth, x, y), b = pixelAt(without, kOverlayWidth, x, y);
         const bool gold = a.r > 190 && a.g > 150 && a.b < 140;
         const bool changed = std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b) > 12;
         n += goldOnly ? gold : changed;

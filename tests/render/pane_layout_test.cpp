@@ -66,7 +66,7 @@ TEST(PaneLayout, ANarrowPaneSeesAsWideAsTheImage) {
 }
 
 bool isGreen(const Rgb& p) { return p.g > 40 && p.g > 1.4 * p.r && p.g > 1.4 * p.b; }
-bool isRed(const Rgb& p) { return p.r > 40 && p.r > 1.4 * p.g && p.r > 1.4 * p.b; }
+bool paneIsRed(const Rgb& p) { return p.r > 40 && p.r > 1.4 * p.g && p.r > 1.4 * p.b; }
 
 TEST(PaneLayout, EachPaneDrawsItsOwnWorldThroughItsOwnRectangle) {
   constexpr int kWidth = 480, kHeight = 270;
@@ -96,7 +96,7 @@ TEST(PaneLayout, EachPaneDrawsItsOwnWorldThroughItsOwnRectangle) {
       ASSERT_GT(local.x, 0.0f);
       ASSERT_LT(local.x, static_cast<float>(rects[k].width));
       const Rgb p = pixelAt(image, kWidth, rects[k].x + static_cast<int>(local.x), rects[k].y + static_cast<int>(local.y));
-      const bool green = isGreen(p), red = isRed(p);
+      const bool green = isGreen(p), red = paneIsRed(p);
       if (w == k) {
         EXPECT_TRUE(k == 0 ? green : red) << "pane " << k << " lacks its own box";
       } else {

@@ -11,8 +11,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 640;
-constexpr int kHeight = 360;
+constexpr int kPlotPanelWidth = 640;
+constexpr int kPlotPanelHeight = 360;
 
 // A series rising from 0 to 1 over [0, 10] s: the first of the panel's colours (255, 158, 74).
 FrameData withPlot(bool overlay) {
@@ -36,49 +36,49 @@ FrameData withPlot(bool overlay) {
 }
 
 bool isSeriesColour(const std::vector<std::uint8_t>& image, int x, int y) {
-  const std::uint8_t* p = &image[4 * (static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x))];
+  const std::uint8_t* p = &image[4 * (static_cast<std::size_t>(y) * kPlotPanelWidth + static_cast<std::size_t>(x))];
   return p[0] > 200 && p[1] > 110 && p[1] < 200 && p[2] < 120;
 }
 
 // Rows (from the top) holding the series colour in image column x, or -1.
 int seriesRowAt(const std::vector<std::uint8_t>& image, int x) {
-  for (int y = 0; y < kHeight; ++y) {
+  for (int y = 0; y < kPlotPanelHeight; ++y) {
     if (isSeriesColour(image, x, y)) return y;
   }
   return -1;
 }
 
 TEST(PlotPanel, DrawsTheSeriesRisingAtTheBottomRight) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kPlotPanelWidth, kPlotPanelHeight, shaderDir());
   for (const bool overlay : {true, false}) {
     const std::vector<std::uint8_t> image = renderer.render(withPlot(overlay));
     int coloured = 0, left = 0;
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) {
+    for (int y = 0; y < kPlotPanelHeight; ++y) {
+      for (int x = 0; x < kPlotPanelWidth; ++x) {
         if (!isSeriesColour(image, x, y)) continue;
         ++coloured;
-        if (x < kWidth / 2) ++left;
+        if (x < kPlotPanelWidth / 2) ++left;
       }
     }
     EXPECT_GT(coloured, 100) << "overlay " << overlay;
     EXPECT_EQ(left, 0) << "the panel is on the right";
     // Rising: its rightmost column is higher up (a smaller row) than its leftmost.
     int first = -1, last = -1;
-    for (int x = 0; x < kWidth; ++x) {
+    for (int x = 0; x < kPlotPanelWidth; ++x) {
       if (seriesRowAt(image, x) < 0) continue;
       if (first < 0) first = x;
       last = x;
     }
     ASSERT_GE(first, 0);
-    EXPECT_GT(last - first, kWidth / 8) << "the series spans the plot";
+    EXPECT_GT(last - first, kPlotPanelWidth / 8) << "the series spans the plot";
     const int early = seriesRowAt(image, first), late = seriesRowAt(image, last);
-    EXPECT_LT(late, early - kHeight / 20);
-    EXPECT_GT(early, kHeight / 2) << "at the bottom";
+    EXPECT_LT(late, early - kPlotPanelHeight / 20);
+    EXPECT_GT(early, kPlotPanelHeight / 2) << "at the bottom";
   }
   FrameData none = withPlot(true);
   none.overlay.plots.clear();
   const std::vector<std::uint8_t> image = renderer.render(none);
-  for (int x = kWidth / 2; x < kWidth; x += 7) EXPECT_EQ(seriesRowAt(image, x), -1);
+  for (int x = kPlotPanelWidth / 2; x < kPlotPanelWidth; x += 7) EXPECT_EQ(seriesRowAt(image, x), -1);
 }
 
 }  // namespace

@@ -12,8 +12,8 @@
 namespace rbsim::render::test {
 namespace {
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 240;
+constexpr int kProjectionWidth = 320;
+constexpr int kProjectionHeight = 240;
 
 // The test box is green: nothing else in the scene (blue-grey sky and ground, red/blue world
 // axis lines, black shadow) is, so "green" means "box".
@@ -39,16 +39,16 @@ FrameData boxFrame(bool withBox) {
 }
 
 TEST(Projection, BoxLandsWhereTheCameraMathsSays) {
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kProjectionWidth, kProjectionHeight, shaderDir());
   const FrameData frame = boxFrame(true);
   const std::vector<std::uint8_t> image = renderer.render(frame);
   const std::vector<std::uint8_t> empty = renderer.render(boxFrame(false));
-  ASSERT_EQ(image.size(), static_cast<std::size_t>(kWidth * kHeight * 4));
+  ASSERT_EQ(image.size(), static_cast<std::size_t>(kProjectionWidth * kProjectionHeight * 4));
 
   // Projected centre: inside the silhouette of a convex body, so box-coloured.
   const BodyView& box = frame.bodies[0];
-  const glm::vec2 centre = projectToPixel(frame.camera, kWidth, kHeight, box.position);
-  const Rgb atCentre = pixelAt(image, kWidth, static_cast<int>(centre.x),
+  const glm::vec2 centre = projectToPixel(frame.camera, kProjectionWidth, kProjectionHeight, box.position);
+  const Rgb atCentre = pixelAt(image, kProjectionWidth, static_cast<int>(centre.x),
                                static_cast<int>(centre.y));
   EXPECT_TRUE(isBoxColoured(atCentre))
       << "centre pixel (" << centre.x << ", " << centre.y << ") is " << atCentre.r << ","
@@ -57,20 +57,20 @@ TEST(Projection, BoxLandsWhereTheCameraMathsSays) {
   // Bounding rectangle of the 8 projected corners (continuous pixel coordinates).
   glm::vec2 lo(1e9f), hi(-1e9f);
   for (const glm::vec3& corner : box.worldVertices) {
-    const glm::vec2 p = projectToPixel(frame.camera, kWidth, kHeight, corner);
+    const glm::vec2 p = projectToPixel(frame.camera, kProjectionWidth, kProjectionHeight, corner);
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
   ASSERT_GT(lo.x, 4.0f);
   ASSERT_GT(lo.y, 4.0f);
-  ASSERT_LT(hi.x, kWidth - 4.0f);
-  ASSERT_LT(hi.y, kHeight - 4.0f);
+  ASSERT_LT(hi.x, kProjectionWidth - 4.0f);
+  ASSERT_LT(hi.y, kProjectionHeight - 4.0f);
 
   // Bounding box of the box-coloured pixels; pixel i covers [i, i + 1).
-  int minX = kWidth, minY = kHeight, maxX = -1, maxY = -1;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
-      if (!isBoxColoured(pixelAt(image, kWidth, x, y))) continue;
+  int minX = kProjectionWidth, minY = kProjectionHeight, maxX = -1, maxY = -1;
+  for (int y = 0; y < kProjectionHeight; ++y) {
+    for (int x = 0; x < kProjectionWidth; ++x) {
+      if (!isBoxColoured(pixelAt(image, kProjectionWidth, x, y))) continue;
       minX = std::min(minX, x);
       maxX = std::max(maxX, x);
       minY = std::min(minY, y);
@@ -89,11 +89,11 @@ TEST(Projection, BoxLandsWhereTheCameraMathsSays) {
   // Well outside the rectangle: the same background and grid as the empty scene, at most
   // darkened (the box's shadow on the ground), never box-coloured.
   int outside = 0;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
+  for (int y = 0; y < kProjectionHeight; ++y) {
+    for (int x = 0; x < kProjectionWidth; ++x) {
       if (x > lo.x - 5 && x < hi.x + 5 && y > lo.y - 5 && y < hi.y + 5) continue;
-      const Rgb p = pixelAt(image, kWidth, x, y);
-      const Rgb e = pixelAt(empty, kWidth, x, y);
+      const Rgb p = pixelAt(image, kProjectionWidth, x, y);
+      const Rgb e = pixelAt(empty, kProjectionWidth, x, y);
       ++outside;
       ASSERT_FALSE(isBoxColoured(p)) << "at " << x << "," << y;
       ASSERT_TRUE(p.r <= e.r + 2 && p.g <= e.g + 2 && p.b <= e.b + 2)
@@ -101,13 +101,13 @@ TEST(Projection, BoxLandsWhereTheCameraMathsSays) {
           << e.r << "," << e.g << "," << e.b;
     }
   }
-  EXPECT_GT(outside, kWidth * kHeight / 2);
+  EXPECT_GT(outside, kProjectionWidth * kProjectionHeight / 2);
 }
 
 TEST(Projection, MovingTheBoxMovesItsPixelsByTheProjectedAmount) {
   // A physics-facing check: translate the body 0.8 m along x, as a step of the engine would,
   // and the box-coloured centroid must follow the projected centre.
-  OffscreenRenderer renderer(kWidth, kHeight, shaderDir());
+  OffscreenRenderer renderer(kProjectionWidth, kProjectionHeight, shaderDir());
   FrameData frame = boxFrame(true);
   for (const float dx : {0.0f, 0.8f}) {
     FrameData moved = frame;
@@ -117,16 +117,16 @@ TEST(Projection, MovingTheBoxMovesItsPixelsByTheProjectedAmount) {
     const std::vector<std::uint8_t>& image = renderer.render(moved);
     glm::dvec2 sum(0.0);
     long count = 0;
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) {
-        if (isBoxColoured(pixelAt(image, kWidth, x, y))) {
+    for (int y = 0; y < kProjectionHeight; ++y) {
+      for (int x = 0; x < kProjectionWidth; ++x) {
+        if (isBoxColoured(pixelAt(image, kProjectionWidth, x, y))) {
           sum += glm::dvec2(x + 0.5, y + 0.5);
           ++count;
         }
       }
     }
     ASSERT_GT(count, 100);
-    const glm::vec2 expected = projectToPixel(moved.camera, kWidth, kHeight, box.position);
+    const glm::vec2 expected = projectToPixel(moved.camera, kProjectionWidth, kProjectionHeight, box.position);
     // The area centroid of a projected cube sits near, not exactly at, its projected centre.
     EXPECT_NEAR(sum.x / count, expected.x, 4.0) << "dx = " << dx;
     EXPECT_NEAR(sum.y / count, expected.y, 4.0) << "dx = " << dx;
