@@ -42,8 +42,7 @@ void SoftStepSolver::collide(const Settings& settings) {
       SolverState& A = states_[c.a];
       SolverState& B = states_[c.b];
       const Vec3& n = c.normal;
-      const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
-                        p.crossA.dot(A.angularVelocity);
+      const double vn = normalVelocity(c, p, A, B);
       // Slower approaches are resting contact; a gap the approach does not close within the step
       // is left for a later step.
       if (-vn <= settings.restitutionThreshold || p.separation + vn * dt > settings.contactSlop) continue;
@@ -60,34 +59,22 @@ void SoftStepSolver::collide(const Settings& settings) {
         const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
         const Mat3& iA = sims_[c.a].inverseInertiaNow;
         const Mat3& iB = sims_[c.b].inverseInertiaNow;
-        const Vec3 u = B.linearVelocity + B.angularVelocity.cross(p.anchorB) - A.linearVelocity -
-                       A.angularVelocity.cross(p.anchorA);  // u_rel, body 1 = B
-        const CollisionImpulse hit = collisionImpulse<3>(impulseFactor(mA, iA, p.anchorA) + impulseFactor(mB, iB, p.anchorB), u,
-                                                         n, Material{c.restitution, c.staticFriction, c.kineticFriction});
+        const Vec3& rA = p.anchorA;
+        const Vec3& rB = p.anchorB;
+        const Vec3 u = B.linearVelocity + B.angularVelocity.cross(rB) - A.linearVelocity -
+                       A.angularVelocity.cross(rA);  // u_rel, body 1 = B
+        const CollisionImpulse hit = collisionImpulse<3>(impulseFactor(mA, iA, rA) + impulseFactor(mB, iB, rB), u, n,
+                                                         Material{c.restitution, c.staticFriction, c.kineticFriction});
         const Vec3& j = hit.impulse;
         report.totalNormalImpulse += j.dot(n);
         report.totalFriction += j - j.dot(n) * n;
         report.sliding = !hit.sticking;  // the regime the substeps carry on with
-        if (c.a != 0) {
-          A.linearVelocity -= mA * j;
-          A.angularVelocity -= iA * p.anchorA.cross(j);
-        }
-        if (c.b != 0) {
-          B.linearVelocity += mB * j;
-          B.angularVelocity += iB * p.anchorB.cross(j);
-        }
+        applyImpulse(c, p, j, A, B);
         continue;
       }
       const double impulse = -(1.0 + c.restitution) * vn * p.normalMass;  // j = N j_n only
       report.totalNormalImpulse += impulse;
-      if (c.a != 0) {
-        A.linearVelocity -= (sims_[c.a].inverseMass * impulse) * n;
-        A.angularVelocity -= impulse * p.angularA;
-      }
-      if (c.b != 0) {
-        B.linearVelocity += (sims_[c.b].inverseMass * impulse) * n;
-        B.angularVelocity += impulse * p.angularB;
-      }
+      applyImpulse(c, p, impulse * n, A, B);
     }
     if (!collided) return;
   }
@@ -102,7 +89,6 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
       if (c.restitution == 0.0) continue;
       SolverState& A = states_[c.a];
       SolverState& B = states_[c.b];
-      const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
       const Vec3& n = c.normal;
       // A manifold whose surfaces never met, or met without pushing, did not collide (a
       // warm-started speculative contact must not bounce early).
@@ -114,22 +100,14 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
         // flat stops it alone, and bouncing that point alone would set the box spinning.
         const PointReport& r = reports_[j];
         if (r.impactSpeed <= settings.restitutionThreshold || p.separation > settings.contactSlop) continue;
-        const double vn = n.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
-                          p.crossA.dot(A.angularVelocity);
+        const double vn = normalVelocity(c, p, A, B);
         // Seed 000: u_rel,N^new = c_R u_rel,N at the touch.
         const double impulse = -p.normalMass * (vn - c.restitution * r.impactSpeed);
         const double total = std::max(p.normalImpulse + impulse, 0.0);
         const double delta = total - p.normalImpulse;
         p.normalImpulse = total;
         reports_[j].totalNormalImpulse += delta;
-        if (c.a != 0) {
-          A.linearVelocity -= (mA * delta) * n;
-          A.angularVelocity -= delta * p.angularA;
-        }
-        if (c.b != 0) {
-          B.linearVelocity += (mB * delta) * n;
-          B.angularVelocity += delta * p.angularB;
-        }
+        applyImpulse(c, p, delta * n, A, B);
       }
     }
   }
@@ -151,8 +129,7 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
       out.normalImpulse = r.totalNormalImpulse;
       out.frictionImpulse = r.totalFriction;
       out.approachVelocity = r.relativeVelocity;
-      out.normalVelocity = c.normal.dot(B.linearVelocity - A.linearVelocity) + p.crossB.dot(B.angularVelocity) -
-                           p.crossA.dot(A.angularVelocity);
+      out.normalVelocity = normalVelocity(c, p, A, B);
       out.sticking = c.sticking && !c.slipping;
       solved_.push_back(out);
     }

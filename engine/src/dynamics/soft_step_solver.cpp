@@ -14,9 +14,13 @@ namespace rbsim {
 namespace {
 
 // The stiffness of the contact spring is capped at this fraction of the substep rate: an implicit
-// spring much stiffer than the substep can resolve only adds error (Box2D v3's solver.c caps
-// contactHertz at a quarter of the substep rate).
-constexpr double kMaxHertzPerSubstepRate = 0.25;  // [1]
+// spring much stiffer than the substep can resolve only adds error. Box2D v3's solver.c caps
+// contactHertz at a quarter of the substep rate, Box3D's physics_world.c at an eighth. Measured
+// here (issue 54, a 10-row pyramid of Box3D's cubes, 1000 steps at 1/60 s): at a quarter, 60 Hz
+// on 4 substeps or 30 Hz on 2, the pyramid gains energy step after step (7.6 J after 1000 steps,
+// rocking out of its plane); at 0.22 and below it comes to rest (1e-11 J at 52 Hz on 4 substeps).
+// The default, 120 Hz on 10 substeps, is 0.2 and keeps its stiffness.
+constexpr double kMaxHertzPerSubstepRate = 0.2;  // [1]
 
 }  // namespace
 
@@ -38,6 +42,7 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   }
   sims_.push_back(sim);
   inertias_.push_back({b.inertiaBody(), b.inverseInertiaBody()});
+  rotations_.push_back(b.rotation());
   states_.push_back(SolverState{b.velocity(), b.angularVelocity(), Vec3::Zero(), b.orientation()});
   s = static_cast<int>(sims_.size() - 1);
   advanced_[body] = 1;
@@ -117,9 +122,8 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     f.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - f.roundA - xA));
     f.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - f.roundB - xB));
     f.baseSeparation = separation - n.dot((position - xB) - (position - xA));
-    updateJacobians(c, f, p);
-    r.relativeVelocity = n.dot(stateB.linearVelocity - stateA.linearVelocity) + p.crossB.dot(stateB.angularVelocity) -
-                         p.crossA.dot(stateA.angularVelocity);
+    updateArms(c, f, p, /*masses=*/true);
+    r.relativeVelocity = normalVelocity(c, p, stateA, stateB);
     // Energy of the normal motion from the step's start to the touch: u^2 = u0^2 - 2 a_n s0.
     if (r.relativeVelocity < 0.0) {
       const double squared = r.relativeVelocity * r.relativeVelocity - 2.0 * normalAcceleration * std::max(separation, 0.0);
@@ -159,15 +163,13 @@ std::optional<bool> SoftStepSolver::seedSlides(const Vec3& anchorA, const Vec3& 
   return hit.colliding && !hit.sticking;
 }
 
-void SoftStepSolver::updateJacobians(const Constraint& c, const PointFrame& f, Point& p) const {
+void SoftStepSolver::updateArms(const Constraint& c, const PointFrame& f, Point& p, bool masses) const {
   // Both bodies' impulses act at one world point, midway between where each body now carries its
-  // anchor, with the inverse inertia of the current orientation: then every impulse changes
-  // x x P + L of the pair by (p - p) x j = 0, and angular momentum is exchanged exactly (fixed
-  // anchors from the step's start, as Box2D keeps them, would lose (dx_B - dx_A) x j).
+  // anchor (Point::anchorA).
   const SolverState& A = states_[c.a];
   const SolverState& B = states_[c.b];
   const Vec3 xA = sims_[c.a].position0 + A.deltaPosition, xB = sims_[c.b].position0 + B.deltaPosition;
-  const Vec3 onA = A.orientation * f.localA + f.roundA, onB = B.orientation * f.localB + f.roundB;
+  const Vec3 onA = rotations_[c.a] * f.localA + f.roundA, onB = rotations_[c.b] * f.localB + f.roundB;
   // A round body against the ground (a plane or a static body, which never moves) takes the
   // impulse where it carries the point: the ground's copy stays where the step began, and
   // halfway to it would put the force behind a ball rolling on, a torque that is not there.
@@ -176,36 +178,34 @@ void SoftStepSolver::updateJacobians(const Constraint& c, const PointFrame& f, P
   Vec3 point = 0.5 * (xA + onA + xB + onB);
   if (c.a == 0 && !f.roundB.isZero(0.0)) point = xB + onB;
   if (c.b == 0 && !f.roundA.isZero(0.0)) point = xA + onA;
-  // The separation now, from the anchors carried by the bodies (no collision detection); the
-  // poses change only in integratePositions, after which this runs again.
+  // The separation now, from the anchors carried by the bodies (no collision detection within
+  // the step; Box2D v3's comment at the top of contact_solver.c).
   p.separation = f.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
   p.anchorA = point - xA;
   p.anchorB = point - xB;
+  if (!masses) return;
   const Mat3& iA = sims_[c.a].inverseInertiaNow;
   const Mat3& iB = sims_[c.b].inverseInertiaNow;
   const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
-  p.crossA = p.anchorA.cross(c.normal);
-  p.crossB = p.anchorB.cross(c.normal);
-  p.angularA = iA * p.crossA;
-  p.angularB = iB * p.crossB;
+  const Vec3 crossA = p.anchorA.cross(c.normal), crossB = p.anchorB.cross(c.normal);
   // n^T K n with K = (1/m) 1 + r*^T I^-1 r* summed over the pair (seed 000).
-  p.normalMass = 1.0 / (mA + mB + p.crossA.dot(p.angularA) + p.crossB.dot(p.angularB));
+  p.normalMass = 1.0 / (mA + mB + crossA.dot(iA * crossA) + crossB.dot(iB * crossB));
   const std::array<Vec3, 2> tangents{c.tangent1, c.tangent2};
-  std::array<Vec3, 2> tA, tB;  // r x t_k
+  std::array<Vec3, 2> tA, tB, fA, fB;  // r x t_k, I^-1 (r x t_k)
   for (int k = 0; k < 2; ++k) {
     tA[k] = p.anchorA.cross(tangents[k]);
     tB[k] = p.anchorB.cross(tangents[k]);
-    p.frictionA[k] = iA * tA[k];
-    p.frictionB[k] = iB * tB[k];
-    p.tangentMass[k] = 1.0 / (mA + mB + tA[k].dot(p.frictionA[k]) + tB[k].dot(p.frictionB[k]));
+    fA[k] = iA * tA[k];
+    fB[k] = iB * tB[k];
+    p.tangentMass[k] = 1.0 / (mA + mB + tA[k].dot(fA[k]) + tB[k].dot(fB[k]));
   }
-  p.tangentCoupling = tA[0].dot(p.frictionA[1]) + tB[0].dot(p.frictionB[1]);  // t1 . t2 = 0
+  p.tangentCoupling = tA[0].dot(fA[1]) + tB[0].dot(fB[1]);  // t1 . t2 = 0
 }
 
-void SoftStepSolver::updateJacobians() {
+void SoftStepSolver::updateSeparations() {
   parallelFor(constraints_.size(), threads_, [&](std::size_t i) {
     const Constraint& c = constraints_[i];
-    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) updateJacobians(c, frames_[j], points_[j]);
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) updateArms(c, frames_[j], points_[j], false);
   });
 }
 
@@ -222,21 +222,9 @@ void SoftStepSolver::warmStart(std::size_t island) {
     const Constraint& c = constraints_[index];
     SolverState& A = states_[c.a];
     SolverState& B = states_[c.b];
-    const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
     for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
-      Point& p = points_[j];
-      const Vec3 friction = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
-      const Vec3 impulse = p.normalImpulse * c.normal + friction;
-      const Vec3 angularA = p.normalImpulse * p.angularA + p.tangentImpulse[0] * p.frictionA[0] + p.tangentImpulse[1] * p.frictionA[1];
-      const Vec3 angularB = p.normalImpulse * p.angularB + p.tangentImpulse[0] * p.frictionB[0] + p.tangentImpulse[1] * p.frictionB[1];
-      if (c.a != 0) {
-        A.linearVelocity -= mA * impulse;
-        A.angularVelocity -= angularA;
-      }
-      if (c.b != 0) {
-        B.linearVelocity += mB * impulse;
-        B.angularVelocity += angularB;
-      }
+      const Point& p = points_[j];
+      applyImpulse(c, p, p.normalImpulse * c.normal + p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2, A, B);
     }
   });
 }
@@ -246,9 +234,12 @@ void SoftStepSolver::warmStart(std::size_t island) {
 void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings& settings, bool useBias, bool lastRelax,
                                   Vec3& vA, Vec3& wA, Vec3& vB, Vec3& wB) {
   const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+  const Mat3& iA = sims_[c.a].inverseInertiaNow;
+  const Mat3& iB = sims_[c.b].inverseInertiaNow;
   const Vec3& n = c.normal;
   for (std::size_t k = 0; k < c.pointCount; ++k) {
     Point& p = points_[c.firstPoint + k];
+    const Vec3 crossA = p.anchorA.cross(n), crossB = p.anchorB.cross(n);
     const double s = p.separation;
     double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (s > 0.0) {
@@ -258,7 +249,7 @@ void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings
       massScale = c.softness.massScale;
       impulseScale = c.softness.impulseScale;
     }
-    const double vn = n.dot(vB - vA) + p.crossB.dot(wB) - p.crossA.dot(wA);
+    const double vn = n.dot(vB - vA) + crossB.dot(wB) - crossA.dot(wA);
     // A bouncing approach still short of the surface when the step ends keeps its speed: the
     // next step's first substep holds it to the gap all the same, and by then its prepare has
     // taken the speed at the touch for restitution. Held here, a ball dropped at dt = 1/60 s
@@ -275,9 +266,9 @@ void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings
     // at s = 0 up to rounding, so s <= 0 alone can miss it).
     if (total > 0.0 && s <= settings.contactSlop) c.touched = true;
     vA -= (mA * delta) * n;
-    wA -= delta * p.angularA;
+    wA -= iA * (delta * crossA);
     vB += (mB * delta) * n;
-    wB += delta * p.angularB;
+    wB += iB * (delta * crossB);
   }
 }
 
@@ -288,6 +279,8 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
     SolverState& A = states_[c.a];
     SolverState& B = states_[c.b];
     const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+    const Mat3& iA = sims_[c.a].inverseInertiaNow;
+    const Mat3& iB = sims_[c.b].inverseInertiaNow;
     Vec3 vA = A.linearVelocity, wA = A.angularVelocity, vB = B.linearVelocity, wB = B.angularVelocity;
     const Vec3& n = c.normal;
     // Non-penetration first, friction with the new normal impulses after (Box2D v3's order).
@@ -295,7 +288,9 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
     bool sticking = true;
     for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
       Point& p = points_[j];
-      const Vec3 slip = vB + wB.cross(p.anchorB) - vA - wA.cross(p.anchorA);  // u_rel, body 1 = B
+      const Vec3& rA = p.anchorA;
+      const Vec3& rB = p.anchorB;
+      const Vec3 slip = vB + wB.cross(rB) - vA - wA.cross(rA);  // u_rel, body 1 = B
       FrictionPoint point;
       point.accumulated = {p.tangentImpulse[0], p.tangentImpulse[1]};
       point.slip = {c.tangent1.dot(slip), c.tangent2.dot(slip)};
@@ -312,9 +307,13 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
       p.tangentImpulse = {next.total[0], next.total[1]};
       const Vec3 impulse = d0 * c.tangent1 + d1 * c.tangent2;
       vA -= mA * impulse;
-      wA -= d0 * p.frictionA[0] + d1 * p.frictionA[1];
+      wA -= iA * rA.cross(impulse);
       vB += mB * impulse;
-      wB += d0 * p.frictionB[0] + d1 * p.frictionB[1];
+      wB += iB * rB.cross(impulse);
+      if (!useBias) {  // a relax ends the substep: what it leaves is what the substep applied
+        reports_[j].totalNormalImpulse += p.normalImpulse;
+        reports_[j].totalFriction += p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+      }
     }
     if (lastRelax) {
       // Seed 000's regimes decided by the slip the step ends with: a patch slipping faster than
@@ -336,17 +335,6 @@ void SoftStepSolver::solve(std::size_t island, double inverseH, const Settings& 
   });
 }
 
-void SoftStepSolver::addTotals(std::size_t island) {
-  islands_.forContacts(island, [&](std::size_t index) {
-    const Constraint& c = constraints_[index];
-    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
-      const Point& p = points_[j];
-      reports_[j].totalNormalImpulse += p.normalImpulse;
-      reports_[j].totalFriction += p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
-    }
-  });
-}
-
 void SoftStepSolver::integratePositions(double h) {
   parallelFor(states_.size() - 1, threads_, [&](std::size_t k) {
     const std::size_t i = k + 1;
@@ -355,6 +343,7 @@ void SoftStepSolver::integratePositions(double h) {
     s.deltaPosition += h * s.linearVelocity;
     if (sim.kinematic) {  // turns at its prescribed omega, which no impulse changes
       s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
+      rotations_[i] = s.orientation.toRotationMatrix();
       return;
     }
     // The rotation by angle |omega| h (seed 004's alternative), with L = I omega carried over:
@@ -364,6 +353,7 @@ void SoftStepSolver::integratePositions(double h) {
     const Vec3 L = R * (inertias_[i].inertia * (R.transpose() * s.angularVelocity));
     s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
     const Mat3 next = s.orientation.toRotationMatrix();
+    rotations_[i] = next;
     sim.inverseInertiaNow = next * inertias_[i].inverse * next.transpose();
     s.angularVelocity = sim.inverseInertiaNow * L;
   });
@@ -381,6 +371,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
   states_.assign(1, SolverState{});
   sims_.assign(1, BodySim{});
   inertias_.assign(1, BodyInertia{});
+  rotations_.assign(1, Mat3::Identity());
   constraints_.clear();
   points_.clear();
   frames_.clear();
@@ -433,13 +424,13 @@ void SoftStepSolver::solve(const SolverInput& input) {
       warmStartJoints(island);
       warmStart(island);  // the last substep's impulses (at the first, the last step's, when kept)
       solveJoints(island, h, /*useBias=*/true);
-      sweep(island, inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
+      solve(island, inverseH, settings, /*useBias=*/true, /*lastRelax=*/false);
     });
     integratePositions(h);
-    updateJacobians();  // for the relax, and the next substep's warm start and solve
+    updateSeparations();  // for the relax, and the next substep's solve
     forEachIsland([&](std::size_t island) {
       solveJoints(island, h, /*useBias=*/false);
-      sweep(island, inverseH, settings, /*useBias=*/false, /*lastRelax=*/last);
+      solve(island, inverseH, settings, /*useBias=*/false, /*lastRelax=*/last);
     });
   }
   applyRestitution(settings);

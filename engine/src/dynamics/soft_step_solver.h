@@ -82,21 +82,26 @@ class SoftStepSolver final : public ContactSolver {
   };
   // One manifold point, in three arrays indexed alike, so that each pass streams only what it
   // reads (Box2D v3 keeps its solver points apart from the manifold the same way): the sweeps of
-  // every substep read and write Point; updateJacobians, once a substep, reads PointFrame; the
+  // every substep read and write Point; updateSeparations, once a substep, reads PointFrame; the
   // step's start and end (prepare, restitution, the report) use PointReport.
-  struct Point {  // 304 bytes
-    Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();  // the point from each centre of mass, world [m]
-    Vec3 crossA = Vec3::Zero(), crossB = Vec3::Zero();      // r x n [m]
-    Vec3 angularA = Vec3::Zero(), angularB = Vec3::Zero();  // I^-1 (r x n)
-    std::array<Vec3, 2> frictionA{}, frictionB{};          // I^-1 (r x t_k)
+  // A Point holds the lever arms and effective masses of the step's start only (Box2D v3 and
+  // Box3D prepare them once a step, contact_solver.c); the sweeps form r x n and I^-1 (r x n)
+  // from them as they go: computing is cheaper than streaming those six vectors from memory (the
+  // point was 304 bytes and the sweeps of Box3D's large pyramid waited on memory).
+  struct Point {  // 112 bytes
+    // From each centre of mass now to the point both bodies push at, world [m]: one point for
+    // both, so that every impulse changes x x P + L of the pair by (p - p) x j = 0 and angular
+    // momentum is exchanged exactly (fixed arms, as Box2D keeps them, would lose
+    // (dx_B - dx_A) x j). updateSeparations moves it with the bodies once a substep.
+    Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();
     double separation = 0.0;         // s at the current poses [m]
-    double normalMass = 0.0;         // 1 / (n^T K n) [kg]
+    double normalMass = 0.0;         // 1 / (n^T K n) at the step's start [kg]
     std::array<double, 2> tangentMass{};  // 1 / (t_k^T K t_k) [kg]
+    double tangentCoupling = 0.0;    // t1^T K t2, for seed 000's K_TT (friction_law.h) [1/kg]
     double normalImpulse = 0.0;      // this substep's (warm start: the last one's) [N s]
     std::array<double, 2> tangentImpulse{};  // along t1, t2 [N s]
-    double tangentCoupling = 0.0;    // t1^T K t2, for seed 000's K_TT (friction_law.h) [1/kg]
   };
-  static_assert(sizeof(Point) == 304, "the size the comment above states");
+  static_assert(sizeof(Point) == 112, "the size the comment above states");
   struct PointFrame {
     // The point as each body carries it, body frame [m]; for a sphere or capsule, the point of
     // its core (centre or axis) under the contact, and the surface point is roundA / roundB
@@ -167,8 +172,26 @@ class SoftStepSolver final : public ContactSolver {
   // last step ended in (a new one first assumes sticking).
   std::optional<bool> seedSlides(const Vec3& anchorA, const Vec3& anchorB, const Constraint& c, const SolverState& stateA,
                   const SolverState& stateB, const Material& material, const Settings& settings) const;
-  void updateJacobians(const Constraint& c, const PointFrame& f, Point& p) const;
-  void updateJacobians();
+  // The point's arms and separation at the current poses (every substep); with `masses`, its
+  // effective masses too (once a step, at prepare: Box2D v3 and Box3D keep them for the step).
+  void updateArms(const Constraint& c, const PointFrame& f, Point& p, bool masses) const;
+  void updateSeparations();
+  // u_rel,N at point p of constraint c, body 1 = B, with the arms now.
+  double normalVelocity(const Constraint& c, const Point& p, const SolverState& A, const SolverState& B) const {
+    return c.normal.dot(B.linearVelocity + B.angularVelocity.cross(p.anchorB) - A.linearVelocity -
+                        A.angularVelocity.cross(p.anchorA));
+  }
+  // Impulse j on B at point p of constraint c, -j on A, with the arms now.
+  void applyImpulse(const Constraint& c, const Point& p, const Vec3& j, SolverState& A, SolverState& B) const {
+    if (c.a != 0) {
+      A.linearVelocity -= sims_[c.a].inverseMass * j;
+      A.angularVelocity -= sims_[c.a].inverseInertiaNow * p.anchorA.cross(j);
+    }
+    if (c.b != 0) {
+      B.linearVelocity += sims_[c.b].inverseMass * j;
+      B.angularVelocity += sims_[c.b].inverseInertiaNow * p.anchorB.cross(j);
+    }
+  }
   void integrateVelocities(double h);
   // Island k's share of a substep (solver_islands.h): the sweeps below run island by island.
   void warmStart(std::size_t island);
@@ -176,10 +199,6 @@ class SoftStepSolver final : public ContactSolver {
   // The normal impulses of one constraint on the pair's velocities, before its friction.
   void solveNormals(Constraint& c, double inverseH, const Settings& settings, bool useBias, bool lastRelax, Vec3& vA,
                     Vec3& wA, Vec3& vB, Vec3& wB);
-  void sweep(std::size_t island, double inverseH, const Settings& settings, bool useBias, bool lastRelax) {
-    solve(island, inverseH, settings, useBias, lastRelax);
-    if (!useBias) addTotals(island);
-  }
   // A sweep's velocities of slot `slot` written back, unless it is the ground (slot 0, never
   // written): the one write-back of the contact sweeps and the joints.
   void storeVelocities(int slot, const Vec3& v, const Vec3& w) {
@@ -187,8 +206,6 @@ class SoftStepSolver final : public ContactSolver {
     states_[slot].linearVelocity = v;
     states_[slot].angularVelocity = w;
   }
-  // Adds what island k's points applied over a substep to their reports (PointReport).
-  void addTotals(std::size_t island);
   // f(k) for every island k, on Settings::threads threads when the step is large enough to pay
   // for waking them.
   template <typename F>
@@ -215,6 +232,7 @@ class SoftStepSolver final : public ContactSolver {
     Mat3 inertia = Mat3::Zero(), inverse = Mat3::Zero();  // body frame
   };
   std::vector<BodyInertia> inertias_;  // per slot
+  std::vector<Mat3> rotations_;  // per slot: R now, for the separations (integratePositions)
   std::vector<Constraint> constraints_;
   std::vector<Point> points_;
   std::vector<PointFrame> frames_;    // per point

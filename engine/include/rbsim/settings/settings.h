@@ -83,8 +83,8 @@ struct Settings {
   // (0.77 m/s at the end), rests sinking 17 cm at 60 Hz on 8, 7 cm at 100 Hz on 8, and rests
   // sinking 4.8 cm at 120 Hz on 10 (0.003 m/s; 12 substeps: 4.5 cm, 20 % more time).
   int substeps = 10;  // [substeps]
-  // Soft step: the contact spring's natural frequency, capped at a quarter of the substep rate
-  // (Box2D v3's cap); its damping ratio (Box2D v3's 10: heavily over-damped, so nothing bounces
+  // Soft step: the contact spring's natural frequency, capped at a fifth of the substep rate
+  // (measured in soft_step_solver.cpp; Box2D v3 caps at a quarter, Box3D at an eighth); its damping ratio (Box2D v3's 10: heavily over-damped, so nothing bounces
   // off the spring); and the fastest a penetration is pushed out (Box2D v3's contactSpeed).
   double contactHertz = 120.0;        // [Hz]
   double contactDampingRatio = 10.0;  // [1]
