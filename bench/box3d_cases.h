@@ -14,7 +14,8 @@ struct Box3dScene {
   const char* name;  // assets/scenes/box3d/<name>.json
   int steps;         // Box3D's benchmark program's step count for the scene
   // bullet_box3d_scenes builds it too: its loader knows boxes, spheres, hull files and ball joints,
-  // not compound bodies or kinematic motions (the washer's drum), ragdolls, spawners or mesh grounds (rain).
+  // not compound bodies or kinematic motions (the washer's drum, the junkyard's walls and pusher, the
+  // trees), ragdolls, spawners (rain, large_world) or mesh grounds (rain, trees).
   bool inBullet;
 };
 
@@ -23,7 +24,12 @@ inline constexpr Box3dScene kBox3dScenes[] = {{"large_pyramid", 200, true},
                                               {"joint_grid", 100, true},
                                               {"convex_pile", 500, true},
                                               {"washer", 1000, false},
-                                              {"rain", 400, false}};
+                                              {"rain", 400, false},
+                                              {"junkyard", 500, false},
+                                              {"large_world", 500, false},
+                                              {"trees100", 500, false},
+                                              {"trees50", 500, false},
+                                              {"trees25", 500, false}};
 
 // User and system time of every thread of this process so far [s].
 inline double processCpuSeconds() {

@@ -1,6 +1,7 @@
 // Box3D's own benchmark scenes (erincatto/box3d shared/benchmarks.c, commit 30c67b5), written as
 // rbsim scene files in assets/scenes/box3d/ (issue 34): large_pyramid, many_pyramids, joint_grid
-// and convex_pile (issue 34), washer and rain (issue 40), each run for the steps Box3D's `benchmark` program runs it. Prints per scene:
+// and convex_pile (issue 34), washer and rain (issue 40), junkyard, large_world, trees100, trees50
+// and trees25, each run for the steps Box3D's `benchmark` program runs it. Prints per scene:
 // the load time (scene file to World), wall and CPU ms per step (median and mean), each stage's
 // share, and the end state: the fastest body, the top body's drift and sink, the deepest
 // penetration and the bodies awake. Not a Google Benchmark: one long run per scene is the
@@ -120,7 +121,7 @@ int main(int argc, char** argv) {
     const bool file = name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0;
     if (!file && std::none_of(std::begin(bench::kBox3dScenes), std::end(bench::kBox3dScenes),
                               [&](const bench::Box3dScene& s) { return name == s.name; })) {
-      std::fprintf(stderr, "box3d_scenes: --scenes: no scene \"%s\"; expected large_pyramid, many_pyramids, joint_grid, convex_pile, washer, rain or a .json file\n", name.c_str());
+      std::fprintf(stderr, "box3d_scenes: --scenes: no scene \"%s\"; expected large_pyramid, many_pyramids, joint_grid, convex_pile, washer, rain, junkyard, large_world, trees100, trees50, trees25 or a .json file\n", name.c_str());
       return 2;
     }
   }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Writes five of Box3D's benchmark scenes as rbsim scene files, next to this script:
+# Writes Box3D's eleven benchmark scenes (benchmark/main.c) as rbsim scene files, next to this script:
 #
 #   large_pyramid.json    CreateLargePyramid: a 2D pyramid of 100 rows, 5050 unit cubes
 #   many_pyramids.json    CreateManyPyramids + CreateSmallPyramid: 14 x 14 pyramids of 10 rows, 10780 cubes
@@ -9,6 +9,13 @@
 #   rain.json             CreateRain + StepRain: 10 x 10 cells of a grid mesh and a torus mesh (+ rain_cell.obj),
 #                         a column of 10 groups of 3 ragdolls dropped at the benchmark's steps, the
 #                         oldest column cleared and dropped again once all ten have fallen
+#   junkyard.json         CreateJunkyard + StepJunkyard: 10584 rock hulls (+ junkyard_rock.obj) dropped into a
+#                         walled yard, a kinematic prism (+ junkyard_pusher.obj) going round it on keyframes
+#   large_world.json      CreateLargeWorld + StepLargeWorld: a 10 km floor of static boxes (coarser than Box3D's,
+#                         see there), 100 spheres dropped one every 5 steps by spawners
+#   trees100.json, trees50.json, trees25.json
+#                         CreateTrees(1, 2, 4): 50 trees of 22 hexagonal prisms toppling onto a wave mesh of
+#                         1, 0.5, 0.25 m cells (+ trees<N>_ground.obj: the mesh, or a strip of it)
 #
 # Layouts follow Box3D (github.com/erincatto/box3d) at commit
 # 30c67b5e6d0a3a66f0f506c69ce9e9e0587e3b7c, shared/benchmarks.c: CreateLargePyramid,
@@ -19,7 +26,8 @@
 # 4 substeps and 30 Hz contacts: --set world.substeps=4 --set world.contact_hertz=30), density
 # 1000 unless the benchmark sets its own, and each file runs the benchmark's step count.
 #
-# What rbsim's format cannot say the same way (see also the "caption" of each file):
+# What rbsim's format cannot say the same way (see also the "caption" of each file, and the notes
+# above junkyard(), large_world() and trees() for those scenes):
 #  - Box3D's ground is a static box whose top face is y = 0; here it is the plane y = 0 (infinite).
 #  - A body's "position" in rbsim is its centre of mass: the hull's bodies are placed at Box3D's
 #    body origin plus the hull's centre of mass (the OBJ keeps Box3D's points as they are).
@@ -523,6 +531,351 @@ def rain():
     write_scene("rain.json", head, bodies)
 
 
+# ---------------------------------------------------------------------------------------------
+# Box3D's float32 trigonometry, for the points its creators compute: b3ComputeCosSin (a rational
+# approximation of cos and sin after b3UnwindAngle, normalised; src/math_functions.c), which
+# b3Sin, b3Cos, b3CreateCylinder, b3CreateRock and b3CreateWaveMesh all use.
+B3_PI = f32(3.14159265359)
+
+
+def b3_cos_sin(radians):
+    x = f32(math.remainder(f32(radians), f32(2.0 * B3_PI)))  # b3UnwindAngle: remainderf, exact
+    pi2 = f32(B3_PI * B3_PI)
+    if x < f32(0.5 * B3_PI) * -1.0 or x > f32(0.5 * B3_PI):
+        y = f32(x + B3_PI) if x < 0.0 else f32(x - B3_PI)
+        y2 = f32(y * y)
+        c = -f32(f32(pi2 - f32(4.0 * y2)) / f32(pi2 + y2))
+    else:
+        y2 = f32(x * x)
+        c = f32(f32(pi2 - f32(4.0 * y2)) / f32(pi2 + y2))
+    y = f32(x + B3_PI) if x < 0.0 else x
+    sign = -1.0 if x < 0.0 else 1.0
+    num_ = f32(f32(16.0 * y) * f32(B3_PI - y))
+    s = sign * f32(num_ / f32(f32(5.0 * pi2) - f32(f32(4.0 * y) * f32(B3_PI - y))))
+    mag = f32(math.sqrt(f32(f32(s * s) + f32(c * c))))
+    inv = f32(1.0 / mag) if mag > 0.0 else 0.0
+    return f32(c * inv), f32(s * inv)
+
+
+def b3_cylinder_points(height, radius, y_offset, sides):
+    """b3CreateCylinder's points: bottom and top of each side in turn, alpha accumulated in float."""
+    points, alpha = [], 0.0
+    delta = f32(f32(2.0 * B3_PI) / sides)
+    for _ in range(sides):
+        c, s = b3_cos_sin(alpha)
+        points.append([f32(radius * c), f32(y_offset), f32(radius * s)])
+        points.append([f32(radius * c), f32(y_offset + height), f32(radius * s)])
+        alpha = f32(alpha + delta)
+    return points
+
+
+def outward(points, triangles):
+    """Each triangle wound counter-clockwise seen from outside a convex solid's centre."""
+    centre = [sum(p[a] for p in points) / len(points) for a in range(3)]
+    fixed = []
+    for tri in triangles:
+        a, b, c = (points[i] for i in tri)
+        if dot(cross(sub(b, a), sub(c, a)), sub(a, centre)) > 0.0:
+            fixed.append(list(tri))
+        else:
+            fixed.append([tri[0], tri[2], tri[1]])
+    return fixed
+
+
+def prism_triangles(sides):
+    """A prism of b3_cylinder_points' order (2i bottom, 2i + 1 top): sides as two triangles each,
+    caps as fans (b3CreateHull keeps them as quads and polygons: the same solid)."""
+    tris = []
+    for i in range(sides):
+        j = (i + 1) % sides
+        tris += [(2 * i, 2 * j, 2 * j + 1), (2 * i, 2 * j + 1, 2 * i + 1)]
+    for i in range(1, sides - 1):
+        tris += [(0, 2 * i, 2 * i + 2), (1, 2 * i + 1, 2 * i + 3)]
+    return tris
+
+
+def write_obj(name, header, points, triangles, digits=9):
+    with open(os.path.join(HERE, name), "w") as out:
+        out.writelines("# %s\n" % line for line in header)
+        out.writelines("v %s %s %s\n" % tuple("%.*g" % (digits, c) for c in p) for p in points)
+        out.writelines("f %d %d %d\n" % (a + 1, b + 1, c + 1) for a, b, c in triangles)
+    print("wrote %s: %d vertices, %d triangles, %d bytes" % (name, len(points), len(triangles),
+                                                             os.path.getsize(os.path.join(HERE, name))))
+
+
+def sleep_keys(linear, extent):
+    """Box3D sleeps a body when |v| + |omega x maxExtent| < sleepThreshold for 0.5 s (b3_timeToSleep);
+    rbsim tests |v| and |omega| apart: the threshold, and the threshold over the body's reach."""
+    return {"sleep_linear_speed": linear, "sleep_angular_speed": num(linear / extent, 6), "time_to_sleep": 0.5}
+
+
+# ---------------------------------------------------------------------------------------------
+# CreateJunkyard + StepJunkyard (release: 24 layers): a static ground (box 240 x 2 x 240 m, top
+# at y = 0) with four walls (half extents 1 x 8 x 50 m centred at x = +-50, y = 7, and 50 x 8 x 1 at
+# z = +-50); 24 x 21 x 21 = 10584 rocks (b3CreateRock(1.5): the hull of 10 points of a Fibonacci
+# lattice on a sphere of radius 1.5, density 1000, friction 0.6) at (-40 + 4X, 25 + 4Y, -40 + 4Z);
+# a kinematic pusher (b3CreateCylinder(24, 4, 0, 16): a 16-sided prism of radius 4 m from y = 0 to
+# 24) at (35, 0, 0) that StepJunkyard moves, before every step, to the point at -6 degrees/s along
+# the circle of radius 35 m about the y axis with b3Body_SetTargetTransform, without turning it.
+# rbsim's keyframes do the same: each step ends on the next key, the pusher keeps its orientation;
+# the keys are one a step, Box3D's float32 path (its angle accumulated as degrees += -0.1f, its
+# b3ComputeCosSin, which is up to 0.1 degree off the exact circle), round the whole circle (3600
+# steps, 60 s), and loop: the wrap jumps by the gap printed when the script runs (8 mm; a step
+# moves it 6 cm). Here the ground box is the plane y = 0 (as in the other scenes) and the walls
+# one static compound body of four boxes; the rocks' sleep test is split as sleep_keys says. Box3D's
+# own layout starts the lowest rocks over the pusher up to 0.38 m into its top (a rock reaches
+# 1.38 m below its origin, the pusher's top is at 24 m): so does this one.
+JUNKYARD_STEPS = 500
+
+
+def junkyard():
+    rock = []  # b3CreateRock( 1.5f )
+    phi = f32(f32(1.0 + f32(math.sqrt(5.0))) / 2.0)
+    dc, ds = b3_cos_sin(f32(f32(2.0 * B3_PI) / phi))
+    c, s = 1.0, 0.0
+    for i in range(10):
+        z = f32(1.0 - f32(f32(2.0 * i + 1.0) / 10.0))
+        rxy = f32(math.sqrt(f32(1.0 - f32(z * z))))
+        rock.append([f32(f32(1.5 * rxy) * c), f32(f32(1.5 * rxy) * s), f32(1.5 * z)])
+        c, s = f32(f32(dc * c) - f32(ds * s)), f32(f32(ds * c) + f32(dc * s))
+    rock_faces = convex_hull(rock)
+    assert sorted({v for f in rock_faces for v in f}) == list(range(10)) and len(rock_faces) == 16
+    rock_volume, rock_centroid = volume_and_centroid(rock, rock_faces)
+    write_obj("junkyard_rock.obj", ["Box3D %s shared/benchmarks.c CreateJunkyard's rock: b3CreateRock(1.5), the hull of 10"
+                                    % BOX3D_COMMIT[:7],
+                                    "points of a Fibonacci lattice on a sphere of radius 1.5 m, computed as Box3D does in float32.",
+                                    "Volume %.6f m^3, centre of mass (%.6f, %.6f, %.6f). Written by make_box3d_scenes.py."
+                                    % (rock_volume, *rock_centroid)], rock, rock_faces)
+
+    pusher = b3_cylinder_points(24.0, 4.0, 0.0, 16)
+    pusher_faces = outward(pusher, prism_triangles(16))
+    pusher_volume, pusher_centroid = volume_and_centroid(pusher, pusher_faces)
+    write_obj("junkyard_pusher.obj", ["Box3D %s shared/benchmarks.c CreateJunkyard's pusher: b3CreateCylinder(24, 4, 0, 16), a"
+                                      % BOX3D_COMMIT[:7],
+                                      "16-sided prism of radius 4 m from y = 0 to 24 m (float32 as Box3D computes it). Volume %.4f"
+                                      " m^3." % pusher_volume, "Written by make_box3d_scenes.py."], pusher, pusher_faces)
+
+    colors = [[0.55, 0.5, 0.45], [0.65, 0.55, 0.4], [0.5, 0.55, 0.6]]
+    bodies = [{"name": "walls", "static": True, "position": [0, 7, 0], "color": [0.5, 0.5, 0.55],
+               "shapes": [{"type": "box", "extents": vec(e), "position": vec(p), "friction_static": FRICTION,
+                           "friction_kinetic": FRICTION}
+                          for e, p in (((2, 16, 100), (-50, 0, 0)), ((2, 16, 100), (50, 0, 0)),
+                                       ((100, 16, 2), (0, 0, -50)), ((100, 16, 2), (0, 0, 50)))]}]
+    # The pusher's path: key k is where its centre of mass is after k steps, as Box3D computes it.
+    dt = 1.0 / 60.0
+    radius = 35.0
+    keys, degrees = [], f32(0.0)
+    for k in range(3601):
+        c, s = b3_cos_sin(f32(f32(degrees * B3_PI) / 180.0))
+        p = [f32(radius * c) + pusher_centroid[0], pusher_centroid[1], f32(radius * s) + pusher_centroid[2]]
+        keys.append({"time": num(k * dt, 12), "position": vec(p, 9)})
+        degrees = f32(degrees + f32(-6.0 * f32(dt)))  # StepJunkyard: degrees += omega * timeStep
+    gap = math.dist(keys[0]["position"], keys[-1]["position"])
+    assert gap < 0.01, gap
+    print("junkyard: after 3600 steps the pusher is %.2g m from its start (where the keys loop)" % gap)
+    bodies.append({"name": "pusher", "shape": {"type": "mesh", "file": "junkyard_pusher.obj"}, "density": 1000,
+                   "kinematic": True, "friction_static": FRICTION, "friction_kinetic": FRICTION,
+                   "position": keys[0]["position"], "color": [0.8, 0.3, 0.25],
+                   "motion": {"keyframes": keys, "loop": True}})
+    for Y in range(24):
+        for X in range(21):
+            for Z in range(21):
+                origin = (-40.0 + 4.0 * X, 4.0 * Y + 24.0 + 1.0, -40.0 + 4.0 * Z)
+                bodies.append({"shape": {"type": "mesh", "file": "junkyard_rock.obj"}, "density": 1000,
+                               "friction_static": FRICTION, "friction_kinetic": FRICTION,
+                               "position": vec([origin[a] + rock_centroid[a] for a in range(3)]),
+                               "color": colors[Y % 3]})
+    assert len(bodies) == 2 + 24 * 21 * 21
+    reach = max(math.sqrt(dot(sub(p, rock_centroid), sub(p, rock_centroid))) for p in rock)
+    head = {
+        "title": "Box3D benchmark junkyard: 10584 rock hulls in a walled yard, a kinematic pusher going round",
+        "world": world_block(JUNKYARD_STEPS, True, **sleep_keys(0.05, reach)),
+        "view": view_block([65, 70, 80], [0, 30, 0],
+                           "Box3D %s shared/benchmarks.c CreateJunkyard, StepJunkyard: 24 x 21 x 21 rocks (b3CreateRock(1.5), "
+                           "10-point hulls, density 1000, friction 0.6) dropped from 25 to 117 m into a yard walled at "
+                           "+-50 m (walls 16 m high); a kinematic 16-sided prism of radius 4 m and height 24 m goes round "
+                           "the circle of radius 35 m at -6 degrees/s without turning (keyframes, one a step); "
+                           "dt 1/60 s, sleep on, 500 steps; ground: the plane y = 0 (Box3D: a static box 240 x 2 x 240 m, "
+                           "top at y = 0, that also holds the walls)" % BOX3D_COMMIT[:7], fov=60),
+        "planes": [ground_plane()],
+    }
+    write_scene("junkyard.json", head, bodies)
+
+
+# ---------------------------------------------------------------------------------------------
+# CreateLargeWorld + StepLargeWorld (release: STATIC_FLOOR_GRID 1000, STATIC_FLOOR_CELL_SIZE 10,
+# STATIC_FLOOR_SPHERES 100, STATIC_FLOOR_DROP_INTERVAL 5): a floor of 1000 x 1000 static boxes of
+# 10 x 0.5 x 10 m (centres at y = 0, tops at y = 0.25) spanning 10 km, and spheres of radius 0.5
+# (density 1000, friction 0.6) created at y = 1.5 one every 5 steps from step 5 on (StepLargeWorld
+# runs before step i, i = 5, 10, ...: 99 spheres within the 500 steps), sphere n over the inner
+# 80 % of the floor on a 10 x 10 grid: x = -4000 + 800 (n % 10 + 0.5), z = -4000 + 800 (n / 10 + 0.5).
+# Each sphere is a spawner of one body at its step ("start", and an "end" half a step later).
+#
+# The floor is coarser here: LARGE_WORLD_CELL m boxes, (10000 / LARGE_WORLD_CELL)^2 of them. A
+# million static bodies would take ~150 MB of scene file (rbsim reads at most 64 MiB); spawners make
+# dynamic bodies only and a compound holds at most 128 shapes, so the format has no compact form of
+# a grid of static bodies. The floor's top, extent and material are Box3D's; every cell size that
+# divides 200 m keeps the drop points on cell corners, as Box3D's are (each sphere lands where four
+# boxes meet). What Box3D measures here, its broad phase holding a million static proxies, is not
+# reproduced: rbsim's broad phase holds 10^4 floor boxes.
+LARGE_WORLD_CELL = 100.0
+LARGE_WORLD_STEPS = 500
+
+
+def large_world():
+    span, cell = 10000.0, LARGE_WORLD_CELL
+    grid = int(round(span / cell))
+    assert grid * cell == span and 200.0 % cell == 0.0
+    bodies = []
+    for i in range(grid):
+        for j in range(grid):
+            bodies.append({"shape": {"type": "box", "extents": vec((cell, 0.5, cell))}, "static": True, "mass": 1,
+                           "position": vec((-0.5 * span + (i + 0.5) * cell, 0, -0.5 * span + (j + 0.5) * cell)),
+                           "friction_static": FRICTION, "friction_kinetic": FRICTION,
+                           "color": [0.55, 0.6, 0.55] if (i + j) % 2 else [0.45, 0.5, 0.5]})
+    dt = 1.0 / 60.0
+    side, half = 10, f32(0.5 * 10.0 * 1000)
+    inset = f32(f32(f32(0.1) * 2.0) * half)
+    usable = f32(f32(2.0 * half) - f32(2.0 * inset))
+    spawn = []
+    for n in range(100):  # the 100th would fall at step 500, after the run
+        x = f32(f32(-half + inset) + f32((n % side + 0.5) * f32(usable / side)))
+        z = f32(f32(-half + inset) + f32((n // side + 0.5) * f32(usable / side)))
+        assert x % cell == 0.0 and z % cell == 0.0
+        step = 5 * (n + 1)
+        spawn.append({"name": "sphere%d" % n,
+                      "body": {"shape": {"type": "sphere", "radius": 0.5}, "density": 1000,
+                               "friction_static": FRICTION, "friction_kinetic": FRICTION, "color": [0.85, 0.45, 0.25]},
+                      "region": {"min": vec((x, 1.5, z)), "max": vec((x, 1.5, z))}, "random_orientation": False,
+                      "start": num(step * dt, 12), "period": num(dt, 12), "end": num((step + 0.5) * dt, 12)})
+    head = {
+        "title": "Box3D benchmark large_world: a 10 km floor of static boxes, spheres dropped on it one every 5 steps",
+        "world": world_block(LARGE_WORLD_STEPS, True, **sleep_keys(0.05, 0.5)),
+        "view": view_block([-3585, 5, -3580], [-3600, 0.5, -3600],
+                           "Box3D %s shared/benchmarks.c CreateLargeWorld, StepLargeWorld: a floor of static boxes "
+                           "%g x 0.5 x %g m (Box3D: 1000 x 1000 boxes of 10 x 0.5 x 10 m) spanning 10 km, tops at "
+                           "y = 0.25; spheres of radius 0.5 (density 1000, friction 0.6) created at y = 1.5 one every 5 "
+                           "steps on a 10 x 10 grid 800 m apart; dt 1/60 s, sleep on, 500 steps; the camera watches "
+                           "the first sphere's corner" % (BOX3D_COMMIT[:7], cell, cell), grid=False),
+        "spawn": spawn,
+    }
+    write_scene("large_world.json", head, bodies)
+
+
+# ---------------------------------------------------------------------------------------------
+# CreateTrees( scale ) for trees25 (scale 4), trees50 (2) and trees100 (1), release sizes: a static
+# b3CreateWaveMesh(150 scale, 200 scale, 1 / scale, 0.4, 0.05, 0.1): a grid of 150 x 200 m in cells
+# of 1 / scale m, y = 0.4 sin(2 pi 0.1 (x + 75)) sin(2 pi 0.05 (z + 100)) at the grid points, default
+# material (friction 0.6); 50 trees, each one body of 22 hulls b3CreateCylinder(l + 2 r, r, y - r, 6)
+# (l = 1.5, r from 0.75 shrinking by 0.95 a hull, y from 1 by l + 2 r): hexagonal prisms stacked 53 m
+# high, density 1, friction 0.9, sleep threshold 0.2 m/s; tree i at (0, 1, -70 + 3 i), turning
+# about z at 0.5 (0.5 + 0.5 i / 50) rad/s, the sign alternating, about its body origin (its
+# centre of mass moving at omega x (c - origin)), so the trees topple over and land on the waves.
+#
+# The wave mesh is one OBJ file, <scene>_ground.obj, when it stays under MAX_GROUND_TRIANGLES
+# (~5 MB of OBJ): trees100's 60,000 triangles are Box3D's mesh as it is, one static mesh ground.
+# trees50's 240,000 and trees25's 960,000 (~7.5 and ~30 MB) are cut into strips along x: the
+# heights repeat every 10 m in x from the mesh's corner, so a strip a whole number of periods wide
+# is one mesh file laid side by side (trees50: 3 strips 50 m wide, trees25: 15 strips 10 m wide;
+# the fewest that keep the file under the limit). The same triangles, 3 or 15 static bodies where
+# Box3D has one mesh shape; the strips' boundary edges (trees50: x = -25, 25; trees25: x = -65, -55,
+# ..., 65, across the fallen trees) are felt, where Box3D's one mesh has inner edges, though the
+# surface joins smoothly there. Box3D computes each height from its own angle in float32; the
+# strips repeat the first's: they differ by the figure printed when the script runs (~1e-6 m).
+# Box3D's rolling resistance 0.05 has no rbsim counterpart and is left out.
+MAX_GROUND_TRIANGLES = 160000
+TREE_STEPS = 500
+
+
+def wave_heights(count, cell, frequency):
+    """b3CreateWaveMesh's sin(omega i) along one axis, omega = 2 pi frequency cell in float32."""
+    omega = f32(f32(f32(2.0 * B3_PI) * f32(frequency)) * cell)
+    return [b3_cos_sin(f32(omega * i))[1] for i in range(count + 1)]
+
+
+def trees(scale):
+    name = "trees%d" % (100 // scale)
+    cell = 1.0 / scale
+    x_count, z_count = 150 * scale, 200 * scale
+    amplitude = f32(0.4)
+    rows = wave_heights(x_count, cell, 0.1)     # rowHeight, by ix (columnFrequency 0.1 along x)
+    columns = wave_heights(z_count, cell, 0.05)  # columnHeight, by iz (rowFrequency 0.05 along z)
+    strips = min(n for n in (1, 3, 5, 15) if 2 * x_count * z_count // n <= MAX_GROUND_TRIANGLES)
+    period = x_count // strips  # cells of one strip, a whole number of 10 m periods
+    width = period * cell
+    assert strips * period == x_count and width % 10.0 == 0.0
+    height = lambda ix, iz: f32(f32(amplitude * rows[ix]) * columns[iz])
+    worst = max(abs(height(k * period + j, iz) - height(j, iz))
+                for k in range(strips) for j in range(period + 1) for iz in range(z_count + 1))
+    print("%s: %d strip(s), whose heights are within %.2g m of Box3D's mesh" % (name, strips, worst))
+    vertices, triangles = [], []
+    for j in range(period + 1):
+        for iz in range(z_count + 1):
+            vertices.append([j * cell - 0.5 * width, height(j, iz), -100.0 + iz * cell])
+    for j in range(period):
+        for iz in range(z_count):
+            i1 = iz + (z_count + 1) * j
+            i2, i4 = i1 + 1, i1 + z_count + 1
+            triangles += [(i1, i2, i4 + 1), (i4 + 1, i4, i1)]  # Box3D's two triangles a cell, facing +y
+    obj = name + "_ground.obj"
+    what = ("the whole mesh" if strips == 1 else
+            "a strip %g m wide (x from %g to %g) of it, %d x periods of its 15; %s.json lays %d side by side"
+            % (width, -0.5 * width, 0.5 * width, width // 10, name, strips))
+    write_obj(obj, ["Box3D %s shared/benchmarks.c CreateTrees(%d): b3CreateWaveMesh(%d, %d, %g, 0.4, 0.05, 0.1),"
+                    % (BOX3D_COMMIT[:7], scale, x_count, z_count, cell),
+                    what + ".", "Written by make_box3d_scenes.py."], vertices, triangles)
+    lo = [min(v[a] for v in vertices) for a in range(3)]
+    hi = [max(v[a] for v in vertices) for a in range(3)]
+    centre = [0.5 * (lo[a] + hi[a]) for a in range(3)]  # "inertia": "cube": the mesh's box centre
+    bodies = []
+    for k in range(strips):
+        bodies.append({"name": "ground%d" % k, "shape": {"type": "mesh", "file": obj}, "collide_as": "triangles",
+                       "static": True, "mass": 1, "inertia": "cube",
+                       "position": vec((-75.0 + width * (k + 0.5) + centre[0], centre[1], centre[2]), 9),
+                       "friction_static": FRICTION, "friction_kinetic": FRICTION,
+                       "color": [0.5, 0.6, 0.45] if k % 2 else [0.45, 0.55, 0.42]})
+
+    hulls = []  # in the tree's body frame (Box3D's body origin)
+    y, r, l = f32(1.0), f32(0.75), f32(1.5)
+    for _ in range(22):
+        points = b3_cylinder_points(f32(l + f32(2.0 * r)), r, f32(y - r), 6)
+        hulls.append((points, outward(points, prism_triangles(6))))
+        y = f32(y + f32(l + f32(2.0 * r)))
+        r = f32(0.95 * r)
+    volume, moment = 0.0, [0.0, 0.0, 0.0]
+    for points, faces in hulls:
+        v, c = volume_and_centroid(points, faces)
+        volume += v
+        moment = [moment[a] + v * c[a] for a in range(3)]
+    com = [m / volume for m in moment]
+    reach = max(math.sqrt(dot(sub(p, com), sub(p, com))) for points, _ in hulls for p in points)
+    shapes = [{"type": "hull", "vertices": [vec(p) for p in points], "triangles": faces, "density": 1,
+               "friction_static": 0.9, "friction_kinetic": 0.9} for points, faces in hulls]
+    omega_sign, z = -0.5, -70.0
+    for i in range(50):
+        scale_v = f32(0.5 + f32(f32(0.5 * i) / 50))
+        wz = f32(scale_v * omega_sign)
+        # v = omega x (centre - origin) = (-wz cy, wz cx, 0), the centre (nearly) straight above the origin.
+        bodies.append({"name": "tree%d" % i, "shapes": shapes, "position": vec((com[0], 1.0 + com[1], z + com[2])),
+                       "angular_velocity": [0, 0, num(wz, 9)], "velocity": [num(-wz * com[1], 9), num(wz * com[0], 9), 0],
+                       "color": [0.55, 0.4, 0.25] if i % 2 else [0.45, 0.33, 0.2]})
+        z += 3.0
+        omega_sign = -omega_sign
+    head = {
+        "title": "Box3D benchmark %s: 50 trees of 22 hulls toppling onto a wave mesh of %g m cells" % (name, cell),
+        "world": world_block(TREE_STEPS, True, **sleep_keys(0.2, reach)),
+        "view": view_block([70, 40, 75], [0, 3, 5],
+                           "Box3D %s shared/benchmarks.c CreateTrees(%d): 50 trees, each one body of 22 hexagonal prisms "
+                           "53 m high (density 1, friction 0.9), set turning about z at 0.25 to 0.5 rad/s, sides "
+                           "alternating, topple onto b3CreateWaveMesh(%d, %d, %g, 0.4, 0.05, 0.1) (%d triangles%s); no "
+                           "rolling resistance (Box3D: 0.05); dt 1/60 s, sleep on (0.2 m/s), 500 steps"
+                           % (BOX3D_COMMIT[:7], scale, x_count, z_count, cell, strips * len(triangles),
+                              "" if strips == 1 else ", here %d strips %g m wide of one mesh file" % (strips, width)),
+                           fov=60, grid=False),
+    }
+    write_scene(name + ".json", head, bodies)
+
+
 if __name__ == "__main__":
     rain()
     washer()
@@ -530,3 +883,8 @@ if __name__ == "__main__":
     many_pyramids()
     joint_grid()
     convex_pile()
+    junkyard()
+    large_world()
+    trees(4)
+    trees(2)
+    trees(1)
