@@ -1,0 +1,157 @@
+// Box3D's reference figures for rbsim: one of Box3D's own benchmark scenes (erincatto/box3d
+// 30c67b5, shared/benchmarks.c) stepped on one thread with sleep off, timed, and its end state
+// measured the way rbsim's bench/box3d_scenes.cpp measures its copy of the scene, so the two
+// can be set side by side. Built by build.sh against a scalar and an SSE2 Box3D.
+//   usage: pyramid_sweep --scene large_pyramid|joint_grid --substeps N --steps S [--hertz H]
+//   prints: scene substeps hertz steps ms_per_step fastest_mps top_drift_m top_sink_m
+//   (hertz is the world's contactHertz; Box3D's solver uses min(hertz, 0.125 / substep dt),
+//   src/physics_world.c b3World_Step, so with 2 substeps at 60 Hz it is 15.)
+
+#define _POSIX_C_SOURCE 199309L  // clock_gettime
+
+#include "benchmarks.h"  // Box3D shared/: CreateLargePyramid, CreateJointGrid
+
+#include "box3d/box3d.h"
+#include "box3d/constants.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+// benchmark/main.c steps every scene at 1/60 s.
+#define TIME_STEP ( 1.0f / 60.0f )
+#define MS_PER_S 1e3
+#define NS_PER_MS 1e6
+#define FIRST_BODY_CAPACITY 1024  // grown by doubling
+
+typedef struct Scene
+{
+	const char* name;
+	void ( *create )( b3WorldId worldId );
+} Scene;
+
+static const Scene scenes[] = { { "large_pyramid", CreateLargePyramid }, { "joint_grid", CreateJointGrid } };
+#define SCENE_COUNT ( (int)( sizeof( scenes ) / sizeof( scenes[0] ) ) )
+
+// Box3D has no call that lists a world's bodies, so gather them from their shapes (each body of
+// these two scenes has one) with an overlap query over the whole world.
+typedef struct Bodies
+{
+	b3BodyId* ids;
+	int count, capacity;
+} Bodies;
+
+static bool CollectBody( b3ShapeId shapeId, void* context )
+{
+	Bodies* bodies = context;
+	if ( bodies->count == bodies->capacity )
+	{
+		bodies->capacity = bodies->capacity > 0 ? 2 * bodies->capacity : FIRST_BODY_CAPACITY;
+		bodies->ids = realloc( bodies->ids, (size_t)bodies->capacity * sizeof( b3BodyId ) );
+	}
+	bodies->ids[bodies->count++] = b3Shape_GetBody( shapeId );
+	return true;  // go on
+}
+
+// Creation order: a new world hands out body indices 1, 2, ... as bodies are made.
+static int ByIndex( const void* a, const void* b )
+{
+	return ( (const b3BodyId*)a )->index1 - ( (const b3BodyId*)b )->index1;
+}
+
+static void Usage( void )
+{
+	fprintf( stderr, "usage: pyramid_sweep --scene large_pyramid|joint_grid --substeps N --steps S [--hertz H]\n" );
+	exit( 2 );
+}
+
+int main( int argc, char** argv )
+{
+	const Scene* scene = NULL;
+	int subSteps = 0, steps = 0;
+	float hertz = -1.0f;  // < 0: Box3D's default (b3DefaultWorldDef)
+	for ( int i = 1; i + 1 < argc; i += 2 )
+	{
+		const char* value = argv[i + 1];
+		if ( strcmp( argv[i], "--scene" ) == 0 )
+		{
+			for ( int s = 0; s < SCENE_COUNT; ++s )
+				if ( strcmp( value, scenes[s].name ) == 0 )
+					scene = scenes + s;
+		}
+		else if ( strcmp( argv[i], "--substeps" ) == 0 )
+			subSteps = atoi( value );
+		else if ( strcmp( argv[i], "--steps" ) == 0 )
+			steps = atoi( value );
+		else if ( strcmp( argv[i], "--hertz" ) == 0 )
+			hertz = (float)atof( value );
+		else
+			Usage();
+	}
+	if ( argc % 2 == 0 || scene == NULL || subSteps < 1 || steps < 1 || hertz == 0.0f )
+		Usage();
+
+	// The world as benchmark/main.c makes it for one thread: default definition, continuous on,
+	// one worker (no task callbacks: src/physics_world.c b3CreateWorld then runs everything on the
+	// calling thread), neither capacity function used by these two scenes. Gravity stays Box3D's
+	// default (0, -10, 0) (src/types.c), y up as in rbsim. Changes asked for here: sleep off (the
+	// scene creators turn it off too) and optionally the contact stiffness.
+	b3WorldDef worldDef = b3DefaultWorldDef();
+	worldDef.enableContinuous = true;
+	worldDef.workerCount = 1;
+	worldDef.enableSleep = false;
+	if ( hertz > 0.0f )
+		worldDef.contactHertz = hertz;
+	b3WorldId worldId = b3CreateWorld( &worldDef );
+	scene->create( worldId );
+
+	Bodies bodies = { 0 };
+	b3AABB everything = { { -B3_HUGE, -B3_HUGE, -B3_HUGE }, { B3_HUGE, B3_HUGE, B3_HUGE } };
+	b3World_OverlapAABB( worldId, everything, b3DefaultQueryFilter(), CollectBody, &bodies );
+	qsort( bodies.ids, (size_t)bodies.count, sizeof( b3BodyId ), ByIndex );
+
+	// The top body as rbsim picks it: the dynamic one highest at the start, the first made on a tie.
+	int top = -1;
+	b3Pos topStart = { 0 };
+	for ( int i = 0; i < bodies.count; ++i )
+	{
+		if ( b3Body_GetType( bodies.ids[i] ) != b3_dynamicBody )
+			continue;
+		b3Pos p = b3Body_GetPosition( bodies.ids[i] );
+		if ( top < 0 || p.y > topStart.y )
+		{
+			top = i;
+			topStart = p;
+		}
+	}
+
+	struct timespec t0, t1;
+	clock_gettime( CLOCK_MONOTONIC, &t0 );
+	for ( int s = 0; s < steps; ++s )
+		b3World_Step( worldId, TIME_STEP, subSteps );
+	clock_gettime( CLOCK_MONOTONIC, &t1 );
+	double ms = MS_PER_S * (double)( t1.tv_sec - t0.tv_sec ) + (double)( t1.tv_nsec - t0.tv_nsec ) / NS_PER_MS;
+
+	// End state as rbsim's box3d_scenes.cpp: the fastest dynamic body (its centre-of-mass velocity,
+	// as rbsim reads RigidBody::velocity), the top body's sideways drift and its sink.
+	double fastest = 0.0;
+	for ( int i = 0; i < bodies.count; ++i )
+	{
+		if ( b3Body_GetType( bodies.ids[i] ) != b3_dynamicBody )
+			continue;
+		b3Vec3 v = b3Body_GetLinearVelocity( bodies.ids[i] );
+		fastest = fmax( fastest, sqrt( (double)v.x * v.x + (double)v.y * v.y + (double)v.z * v.z ) );
+	}
+	b3Pos topNow = b3Body_GetPosition( bodies.ids[top] );
+	double drift = hypot( (double)topNow.x - topStart.x, (double)topNow.z - topStart.z );
+	double sink = (double)topStart.y - topNow.y;
+
+	printf( "scene %s substeps %d hertz %g steps %d ms_per_step %.3f fastest_mps %.4f top_drift_m %.4f top_sink_m %.4f\n",
+			scene->name, subSteps, (double)worldDef.contactHertz, steps, ms / steps, fastest, drift, sink );
+
+	free( bodies.ids );
+	b3DestroyWorld( worldId );
+	return 0;
+}
