@@ -17,8 +17,8 @@ namespace {
 // spring much stiffer than the substep can resolve only adds error. Box2D v3's solver.c caps
 // contactHertz at a quarter of the substep rate, Box3D's physics_world.c at an eighth. Measured
 // here (issue 54, a 10-row pyramid of Box3D's cubes, 1000 steps at 1/60 s): at a quarter, 60 Hz
-// on 4 substeps or 30 Hz on 2, the pyramid gains energy step after step (7.6 J after 1000 steps,
-// rocking out of its plane); at 0.22 and below it comes to rest (1e-11 J at 52 Hz on 4 substeps).
+// on 4 substeps or 30 Hz on 2, the pyramid gains energy step after step (6.5 J after 1000 steps
+// on 2, rocking out of its plane); at 0.22 and below it comes to rest (2e-11 J at 52 Hz on 4).
 // The default, 120 Hz on 10 substeps, is 0.2 and keeps its stiffness.
 constexpr double kMaxHertzPerSubstepRate = 0.2;  // [1]
 

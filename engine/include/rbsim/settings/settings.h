@@ -84,8 +84,9 @@ struct Settings {
   // sinking 4.8 cm at 120 Hz on 10 (0.003 m/s; 12 substeps: 4.5 cm, 20 % more time).
   int substeps = 10;  // [substeps]
   // Soft step: the contact spring's natural frequency, capped at a fifth of the substep rate
-  // (measured in soft_step_solver.cpp; Box2D v3 caps at a quarter, Box3D at an eighth); its damping ratio (Box2D v3's 10: heavily over-damped, so nothing bounces
-  // off the spring); and the fastest a penetration is pushed out (Box2D v3's contactSpeed).
+  // (measured in soft_step_solver.cpp; Box2D v3 caps at a quarter, Box3D at an eighth); its
+  // damping ratio (Box2D v3's 10: heavily over-damped, so nothing bounces off the spring); and
+  // the fastest a penetration is pushed out (Box2D v3's contactSpeed).
   double contactHertz = 120.0;        // [Hz]
   double contactDampingRatio = 10.0;  // [1]
   double contactPushSpeed = 3.0;      // [m/s]
