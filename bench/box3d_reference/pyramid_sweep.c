@@ -2,7 +2,7 @@
 // 30c67b5, shared/benchmarks.c) stepped on one thread with sleep off, timed, and its end state
 // measured the way rbsim's bench/box3d_scenes.cpp measures its copy of the scene, so the two
 // can be set side by side. Built by build.sh against a scalar and an SSE2 Box3D.
-//   usage: pyramid_sweep --scene large_pyramid|joint_grid --substeps N --steps S [--hertz H]
+//   usage: pyramid_sweep --scene large_pyramid|joint_grid|column20|column40 --substeps N --steps S [--hertz H]
 //   prints: scene substeps hertz steps ms_per_step fastest_mps top_drift_m top_sink_m
 //   (hertz is the world's contactHertz; Box3D's solver uses min(hertz, 0.125 / substep dt),
 //   src/physics_world.c b3World_Step, so with 2 substeps at 60 Hz it is 15.)
@@ -32,7 +32,46 @@ typedef struct Scene
 	void ( *create )( b3WorldId worldId );
 } Scene;
 
-static const Scene scenes[] = { { "large_pyramid", CreateLargePyramid }, { "joint_grid", CreateJointGrid } };
+// A column of unit cubes on Box3D's ground, as rbsim's bench/contact_scenes stacks them
+// (stack20, stack40): the smallest case where the two engines part (issue 54: at 30 Hz on 4
+// substeps Box3D's column of 40 stands, rbsim's of 20 topples).
+#define COLUMN_HALF_EXTENT 0.5f  // [m]
+#define COLUMN_DENSITY 100.0f    // [kg/m^3], the pyramid's
+static void CreateColumn( b3WorldId worldId, int count )
+{
+	b3World_EnableSleeping( worldId, false );
+	b3BodyDef groundDef = b3DefaultBodyDef();
+	groundDef.position = (b3Pos){ 0.0f, -1.0f, 0.0f };  // CreateLargePyramid's ground: top at y = 0
+	b3BodyId groundId = b3CreateBody( worldId, &groundDef );
+	b3BoxHull ground = b3MakeBoxHull( 400.0f, 1.0f, 400.0f );
+	b3ShapeDef groundShape = b3DefaultShapeDef();
+	b3CreateHullShape( groundId, &groundShape, &ground.base );
+
+	b3BodyDef bodyDef = b3DefaultBodyDef();
+	bodyDef.type = b3_dynamicBody;
+	b3ShapeDef shapeDef = b3DefaultShapeDef();
+	shapeDef.density = COLUMN_DENSITY;
+	b3BoxHull box = b3MakeBoxHull( COLUMN_HALF_EXTENT, COLUMN_HALF_EXTENT, COLUMN_HALF_EXTENT );
+	for ( int i = 0; i < count; ++i )
+	{
+		bodyDef.position = (b3Pos){ 0.0f, ( 2.0f * i + 1.0f ) * COLUMN_HALF_EXTENT, 0.0f };
+		b3BodyId bodyId = b3CreateBody( worldId, &bodyDef );
+		b3CreateHullShape( bodyId, &shapeDef, &box.base );
+	}
+}
+static void CreateColumn20( b3WorldId worldId )
+{
+	CreateColumn( worldId, 20 );
+}
+static void CreateColumn40( b3WorldId worldId )
+{
+	CreateColumn( worldId, 40 );
+}
+
+static const Scene scenes[] = { { "large_pyramid", CreateLargePyramid },
+								{ "joint_grid", CreateJointGrid },
+								{ "column20", CreateColumn20 },
+								{ "column40", CreateColumn40 } };
 #define SCENE_COUNT ( (int)( sizeof( scenes ) / sizeof( scenes[0] ) ) )
 
 // Box3D has no call that lists a world's bodies, so gather them from their shapes (each body of
@@ -63,7 +102,7 @@ static int ByIndex( const void* a, const void* b )
 
 static void Usage( void )
 {
-	fprintf( stderr, "usage: pyramid_sweep --scene large_pyramid|joint_grid --substeps N --steps S [--hertz H]\n" );
+	fprintf( stderr, "usage: pyramid_sweep --scene large_pyramid|joint_grid|column20|column40 --substeps N --steps S [--hertz H]\n" );
 	exit( 2 );
 }
 
