@@ -83,8 +83,9 @@ void run(const SceneCase& scene, int steps, double seconds, const std::vector<st
               "ms/step  threads %d\n",
               scene.name.c_str(), dynamic, world.joints().size(), loadSeconds, steps, 1e3 * wall / steps,
               sorted[sorted.size() / 2], 1e3 * cpu / steps, world.settings().threads);
-  std::printf("%-14s end: fastest %.4f m/s  top drift %.4f m  top sink %.4f m  deepest %.4f m  awake %zu  contacts %zu\n",
-              scene.name.c_str(), fastest, drift, sink, deepest, awake, world.contacts().size());
+  std::printf("%-14s end: fastest %.4f m/s  top drift %.4f m  top sink %.4f m  deepest %.4f m  awake %zu  contacts %zu"
+              " (recycled %zu)\n",
+              scene.name.c_str(), fastest, drift, sink, deepest, awake, world.contacts().size(), world.recycledContacts());
   double total = 0.0;
   for (int s = 0; s < static_cast<int>(Stage::Count); ++s) total += world.stageStats(static_cast<Stage>(s)).seconds;
   std::printf("%-14s stages:", scene.name.c_str());

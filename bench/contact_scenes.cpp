@@ -6,7 +6,7 @@
 // per case is the measurement.
 //   usage: contact_scenes [--csv FILE] [--scenes a,b] [--solvers soft-step,pgs] [--integrators a,b]
 //                         [--dt S] [--substeps N] [--hertz F] [--damping Z] [--push V]   (soft step's settings)
-//                         [--friction cone|seed000]
+//                         [--friction cone|seed000] [--recycle D|auto]  (world.contact_recycle_distance)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -119,6 +119,10 @@ int main(int argc, char** argv) {
     else if (arg == "--hertz") base.contactHertz = std::atof(argv[++i]);
     else if (arg == "--damping") base.contactDampingRatio = std::atof(argv[++i]);
     else if (arg == "--push") base.contactPushSpeed = std::atof(argv[++i]);
+    else if (arg == "--recycle") {
+      const std::string d = argv[++i];
+      base.contactRecycleDistance = d == "auto" ? kAutoRecycleDistance : std::atof(d.c_str());
+    }
     else if (arg == "--friction") {
       if (!parseFrictionModel(argv[++i], base.friction)) {
         std::fprintf(stderr, "contact_scenes: --friction expects cone or seed000, got %s\n", argv[i]);

@@ -119,9 +119,14 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     f.roundA = roundOffset(c.a, contact.childA) * n;
     f.roundB = -roundOffset(c.b, contact.childB) * n;
     // The ground's slot never moves, so its anchors are their own body-frame coordinates.
-    f.localA = c.a == 0 ? position : Vec3(stateA.orientation.conjugate() * (position - f.roundA - xA));
-    f.localB = c.b == 0 ? position : Vec3(stateB.orientation.conjugate() * (position - f.roundB - xB));
-    f.baseSeparation = separation - n.dot((position - xB) - (position - xA));
+    // Each body's copy of the point: one point for a manifold computed this step, the kept arms'
+    // for a recycled one (ContactPoint::offset).
+    const Vec3 offset = m.points[i].offset;
+    const Vec3 pointA = position - 0.5 * offset, pointB = position + 0.5 * offset;
+    f.split = !offset.isZero(0.0);
+    f.localA = c.a == 0 ? pointA : Vec3(stateA.orientation.conjugate() * (pointA - f.roundA - xA));
+    f.localB = c.b == 0 ? pointB : Vec3(stateB.orientation.conjugate() * (pointB - f.roundB - xB));
+    f.baseSeparation = separation - n.dot((pointB - xB) - (pointA - xA));
     updateArms(c, f, p, /*masses=*/true);
     r.relativeVelocity = normalVelocity(c, p, stateA, stateB);
     // Energy of the normal motion from the step's start to the touch: u^2 = u0^2 - 2 a_n s0.
@@ -183,6 +188,10 @@ void SoftStepSolver::updateArms(const Constraint& c, const PointFrame& f, Point&
   p.separation = f.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
   p.anchorA = point - xA;
   p.anchorB = point - xB;
+  if (f.split) {  // a recycled point: each body pushes at its own kept arm, as Box3D's anchors
+    p.anchorA = onA;
+    p.anchorB = onB;
+  }
   if (!masses) return;
   const Mat3& iA = sims_[c.a].inverseInertiaNow;
   const Mat3& iB = sims_[c.b].inverseInertiaNow;

@@ -111,6 +111,7 @@ class SoftStepSolver final : public ContactSolver {
     Vec3 localA = Vec3::Zero(), localB = Vec3::Zero();
     Vec3 roundA = Vec3::Zero(), roundB = Vec3::Zero();  // world [m]; zero for other shapes
     double baseSeparation = 0.0;     // s0 - n . (r_B - r_A) [m]
+    bool split = false;  // recycled: each body pushes at its own copy (ContactPoint::offset)
   };
   struct PointReport {
     double relativeVelocity = 0.0;   // u_rel,N before the step [m/s]

@@ -41,6 +41,20 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
     w.fail("broad_phase", "expected \"sap\" or \"brute-force\", got \"" + broad + "\"");
   }
   s.contactMargin = w.number("contact_margin", s.contactMargin);
+  if (w.has("contact_recycle_distance")) {
+    const nlohmann::json& recycle = w.raw("contact_recycle_distance");
+    if (recycle.is_string()) {
+      if (recycle.get<std::string>() != "auto") {
+        w.fail("contact_recycle_distance", "expected \"auto\" or a distance in [0, 1] m, got \"" + recycle.get<std::string>() + "\"");
+      }
+      s.contactRecycleDistance = kAutoRecycleDistance;
+    } else {
+      s.contactRecycleDistance = w.number("contact_recycle_distance", s.contactRecycleDistance);
+      if (s.contactRecycleDistance < 0.0) {
+        w.fail("contact_recycle_distance", "expected \"auto\" or a distance in [0, 1] m (0: collide every pair every step)");
+      }
+    }
+  }
   const std::string solver = w.string("solver", contactSolverName(s.solver));
   if (solver == "pgs" || solver == "soft-step") {
     s.solver = solver == "pgs" ? Settings::ContactSolverMethod::Pgs : Settings::ContactSolverMethod::SoftStep;

@@ -27,6 +27,11 @@ nlohmann::json worldBlockJson(const Scene& scene) {
   w["ccd_motion_fraction"] = s.ccdMotionFraction;
   w["broad_phase"] = broadPhaseName(s.broadPhase);
   w["contact_margin"] = s.contactMargin;
+  if (s.contactRecycleDistance == kAutoRecycleDistance) {
+    w["contact_recycle_distance"] = "auto";
+  } else {
+    w["contact_recycle_distance"] = s.contactRecycleDistance;
+  }
   w["solver"] = contactSolverName(s.solver);
   w["friction"] = frictionModelName(s.friction);
   w["mesh_contact"] = meshContactName(s.meshContact);

@@ -68,7 +68,17 @@ SettingsProblem checkSettings(const Settings& s) {
   }
   if (!within(s.positionCorrection, 0.0, 1.0)) return {"position_correction", "expected a fraction in [0, 1]"};
   if (!within(s.warmStartDistance, 0.0, inf)) return {"warm_start_distance", "expected a finite distance >= 0 m"};
+  if (s.contactRecycleDistance != kAutoRecycleDistance && !within(s.contactRecycleDistance, 0.0, kMaxContactTolerance)) {
+    return {"contact_recycle_distance", "expected \"auto\" or a distance in [0, 1] m (0: collide every pair every step)"};
+  }
   return {};
+}
+
+double recycleDistance(const Settings& s) {
+  if (s.solver != Settings::ContactSolverMethod::SoftStep) return 0.0;
+  if (s.contactRecycleDistance != kAutoRecycleDistance) return s.contactRecycleDistance;
+  const double h = s.timeStep / s.substeps;
+  return kRecycleGravityFactor * s.gravity.norm() * h * h;
 }
 
 const char* contactSolverName(Settings::ContactSolverMethod method) {

@@ -103,6 +103,11 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       asleep_(other.asleep_),
       pairSlots_(other.pairSlots_),
       planeSlots_(other.planeSlots_),
+      pairFrames_(other.pairFrames_),
+      planeFrames_(other.planeFrames_),
+      recycle_(other.recycle_),
+      recycledCount_(other.recycledCount_),
+      recycleTolerance_(other.recycleTolerance_),
       later_(other.later_),
       compoundSlots_(other.compoundSlots_),
       compoundPlaneSlots_(other.compoundPlaneSlots_),
@@ -215,7 +220,8 @@ void CollisionPipeline::ignorePair(std::size_t a, std::size_t b) {
 }
 
 CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
-                                                       const std::vector<BodySolid>& shapes, double time, Contact& out) {
+                                                       const std::vector<BodySolid>& shapes, double time, Contact& out,
+                                                       RecycleFrame& frame) {
   out.manifold.count = 0;
   // Body indices, the lower first (a destroyed body's index goes to the last body, whose proxy id
   // stays as it was).
@@ -255,6 +261,14 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
     out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, m};
     return Later::Nothing;
   }
+  const bool recyclable = recycleTolerance_ > 0.0;
+  const RecyclePose poseA = poseOf(a, pair.a), poseB = poseOf(b, pair.b);
+  if (recyclable) {
+    if (auto m = recycled(Contact::Kind::BodyBody, pair.a, pair.b, poseA, poseB, frame)) {
+      out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, *m};
+      return Later::Nothing;
+    }
+  }
   std::optional<OrientedBox> boxA, boxB;
   if (a.shape().type == ShapeType::Box && b.shape().type == ShapeType::Box) {
     boxA = OrientedBox{a.position(), a.rotation(), a.shape().halfExtents};
@@ -273,6 +287,7 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
     log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold, c.distance, time));
   }
   out = {Contact::Kind::BodyBody, pair.a, pair.b, 0, c.manifold};
+  if (recyclable && c.manifold.count > 0) frame = recycleFrame(keptKey(Contact::Kind::BodyBody, pair.a, pair.b), c.manifold, poseA, poseB);
   return Later::Nothing;
 }
 
@@ -281,6 +296,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   previous_.swap(contacts_);
   contacts_.clear();
   asleep_.clear();
+  recycleTolerance_ = recycleDistance(settings_);
   for (std::size_t i = 0; i < previous_.size(); ++i) {
     const Contact& c = previous_[i];
     const bool plane = c.kind == Contact::Kind::PlaneBody;
@@ -304,9 +320,11 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   });
   const std::vector<ProxyPair>& pairs = broad_->pairs();
   pairSlots_.resize(pairs.size());
+  pairFrames_.resize(pairs.size());
   later_.assign(pairs.size(), Later::Nothing);
   parallelFor(pairs.size(), threads, [&](std::size_t k) {
-    later_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k]);
+    pairFrames_[k].count = 0;
+    later_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k], pairFrames_[k]);
   });
   collideCompounds(pairs, bodies, shapes, threads);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -336,12 +354,14 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   }
   const std::size_t n = bodies.size();
   planeSlots_.resize(planes.size() * n);
+  planeFrames_.resize(planes.size() * n);
   const CollisionFilter planeFilter;  // planes are in the default category and accept every one
   compoundPlaneSlots_.resize(planes.size() * n);
   parallelFor(planes.size() * n, threads, [&](std::size_t k) {
     const std::size_t p = k / n, i = k % n;
     Contact& out = planeSlots_[k];
     out.manifold.count = 0;
+    planeFrames_[k].count = 0;
     if (!bodies[i].isDynamic()) return;
     const bool compound = bodies[i].isCompound();
     if (compound) compoundPlaneSlots_[k].clear();
@@ -361,6 +381,14 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     }
     if (!shouldCollide(planeFilter, bodies[i].filter())) return;
     const bool round = bodies[i].shape().isRound();
+    const bool recyclable = !round && !shapes[i].implicit && recycleTolerance_ > 0.0;
+    const RecyclePose planePose{}, bodyPose = poseOf(bodies[i], i);
+    if (recyclable) {
+      if (auto m = recycled(Contact::Kind::PlaneBody, p, i, planePose, bodyPose, planeFrames_[k])) {
+        out = {Contact::Kind::PlaneBody, p, i, 0, *m};
+        return;
+      }
+    }
     // An implicit body meets a plane with its samples on the exact surface, whose corners are
     // sharp; its display mesh's are bevelled.
     const ContactManifold m =
@@ -372,6 +400,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
                             static_cast<std::uint32_t>(i), m, 0.0, time));
     }
     out = {Contact::Kind::PlaneBody, p, i, 0, m};
+    if (recyclable && m.count > 0) planeFrames_[k] = recycleFrame(keptKey(Contact::Kind::PlaneBody, p, i), m, planePose, bodyPose);
   });
   for (std::size_t k = 0; k < planeSlots_.size(); ++k) {
     if (planeSlots_[k].manifold.count > 0) contacts_.push_back(planeSlots_[k]);
@@ -379,6 +408,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       contacts_.insert(contacts_.end(), compoundPlaneSlots_[k].begin(), compoundPlaneSlots_[k].end());
     }
   }
+  keepFrames();
 }
 
 }  // namespace rbsim

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "rbsim/collision/impact.h"
 #include "rbsim/collision/narrowphase/query_log.h"
 #include "rbsim/settings/settings.h"
+#include "world/contact_recycling.h"
 
 namespace rbsim {
 
@@ -75,6 +77,8 @@ class CollisionPipeline {
   const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
   std::size_t bodyOfProxy(ProxyId proxy) const { return bodyOfProxy_.at(proxy); }
   const std::vector<Contact>& contacts() const { return contacts_; }
+  // Of this step's contacts, how many were recycled rather than collided (Box3D's profile count).
+  std::size_t recycledCount() const { return recycledCount_; }
   const std::vector<Impact>& impacts() const { return impacts_; }
   const std::vector<Aabb>& boxes() const { return boxes_; }  // per body, as last given to the broad phase
   const QueryLog& queryLog() const { return log_; }
@@ -88,7 +92,7 @@ class CollisionPipeline {
   // The convex or round contact of candidate pair `proxies` into `out` (count 0: none, or a pair
   // to skip), or what is left for later.
   Later collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
-                   double time, Contact& out);
+                   double time, Contact& out, RecycleFrame& frame);
   // The pairs collidePair left to the compound and mesh-ground pass, on `threads` threads into
   // compoundSlots_.
   void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
@@ -100,6 +104,14 @@ class CollisionPipeline {
   void kept(Contact::Kind kind, std::size_t a, std::size_t b, Contact& out) const;
   // All of them, for a pair with a compound body (one contact per pair of children).
   void keptAll(Contact::Kind kind, std::size_t a, std::size_t b, std::vector<Contact>& out) const;
+  // Contact recycling (world/contact_recycling.h): the manifold of the pair (kind, a, b) rebuilt
+  // from the frame it was computed in, if it had one and has moved little enough since; `frame`
+  // gets the frame the contact now carries.
+  std::optional<ContactManifold> recycled(Contact::Kind kind, std::size_t a, std::size_t b, const RecyclePose& poseA,
+                                          const RecyclePose& poseB, RecycleFrame& frame) const;
+  RecyclePose poseOf(const RigidBody& body, std::size_t index) const { return {body.position(), body.orientation(), radius_[index]}; }
+  // The frames of this step's recyclable contacts, sorted by key, for the next step (recycle_).
+  void keepFrames();
 
   Settings settings_;
   std::unique_ptr<BroadPhase> broad_;
@@ -140,6 +152,12 @@ class CollisionPipeline {
   // own slot and gathered in order (manifold.count 0: none). later_ marks the pairs collided
   // after them.
   std::vector<Contact> pairSlots_, planeSlots_;
+  // Per slot: the recycling frame of its contact (count 0: none, a contact that is not recycled).
+  std::vector<RecycleFrame> pairFrames_, planeFrames_;
+  // The frames of the last step's recyclable contacts, sorted by key.
+  std::vector<RecycleFrame> recycle_;
+  std::size_t recycledCount_ = 0;
+  double recycleTolerance_ = 0.0;  // recycleDistance(settings_) of this narrow phase [m]
   std::vector<Later> later_;
   // Per candidate pair and per (plane, body) with a compound body: its contacts, one per pair of
   // children, computed on any thread into their own slot.

@@ -61,6 +61,7 @@ void CollisionPipeline::addBody(const RigidBody& body, const BodySolid& solid) {
 
 void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid) {
   measure(index, body, solid);
+  recycle_.clear();  // the piece is another shape: its pairs are collided afresh
   // Removed and added again, since the piece may be dynamic where the body was static; the pool
   // hands back the smallest free id, which is this one.
   broad_->remove(proxies_[index]);
@@ -73,6 +74,7 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, co
 
 void CollisionPipeline::removeBody(std::size_t index) {
   broad_->remove(proxies_[index]);
+  recycle_.clear();  // keyed by body index, which the last body's move changes: collided afresh next step
   const std::size_t last = proxies_.size() - 1;
   if (index != last) bodyOfProxy_[proxies_[last]] = index;
   swapRemove(proxies_, index);

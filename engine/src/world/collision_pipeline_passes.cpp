@@ -22,6 +22,36 @@ void CollisionPipeline::kept(Contact::Kind kind, std::size_t a, std::size_t b, C
   if (it != asleep_.end() && it->first == key) out = previous_[it->second];
 }
 
+std::optional<ContactManifold> CollisionPipeline::recycled(Contact::Kind kind, std::size_t a, std::size_t b,
+                                                          const RecyclePose& poseA, const RecyclePose& poseB,
+                                                          RecycleFrame& frame) const {
+  const std::uint64_t key = keptKey(kind, a, b);
+  const auto it = std::lower_bound(recycle_.begin(), recycle_.end(), key,
+                                   [](const RecycleFrame& f, std::uint64_t k) { return f.key < k; });
+  if (it == recycle_.end() || it->key != key) return std::nullopt;
+  // Bodies in key order: keptKey puts the lower index first, as collidePair does.
+  std::optional<ContactManifold> m =
+      recycledManifold(*it, poseA, poseB, recycleTolerance_, settings_.contactMargin);
+  if (m) {
+    frame = *it;
+    ++frame.age;
+  }
+  return m;
+}
+
+void CollisionPipeline::keepFrames() {
+  recycle_.clear();
+  for (std::size_t k = 0; k < pairSlots_.size(); ++k) {
+    if (later_[k] == Later::Nothing && pairSlots_[k].manifold.count > 0 && pairFrames_[k].count > 0) recycle_.push_back(pairFrames_[k]);
+  }
+  for (std::size_t k = 0; k < planeSlots_.size(); ++k) {
+    if (planeSlots_[k].manifold.count > 0 && planeFrames_[k].count > 0) recycle_.push_back(planeFrames_[k]);
+  }
+  std::sort(recycle_.begin(), recycle_.end(), [](const RecycleFrame& x, const RecycleFrame& y) { return x.key < y.key; });
+  recycledCount_ = static_cast<std::size_t>(
+      std::count_if(recycle_.begin(), recycle_.end(), [](const RecycleFrame& f) { return f.age > 0; }));
+}
+
 void CollisionPipeline::keptAll(Contact::Kind kind, std::size_t a, std::size_t b, std::vector<Contact>& out) const {
   const std::uint64_t key = keptKey(kind, a, b);
   for (auto it = std::lower_bound(asleep_.begin(), asleep_.end(), std::make_pair(key, std::uint32_t{0}));

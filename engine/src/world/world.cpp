@@ -142,6 +142,7 @@ void World::setSettings(const Settings& settings) {
 }
 
 const std::vector<Contact>& World::contacts() const { return collision_->contacts(); }
+std::size_t World::recycledContacts() const { return collision_->recycledCount(); }
 const std::vector<SolvedContactPoint>& World::contactPoints() const { return solver_->points(); }
 
 void World::addForce(const ScriptedForce& force) {

@@ -37,6 +37,8 @@ const std::vector<Key>& keys() {
       {"collisions", "false", [](const Settings& s) { return !s.detectCollisions; }, ""},
       {"broad_phase", "brute-force", [](const Settings& s) { return s.broadPhase == Settings::BroadPhaseMethod::BruteForce; }, ""},
       {"contact_margin", "0.02", [](const Settings& s) { return s.contactMargin == 0.02; }, "2"},
+      {"contact_recycle_distance", "0.003", [](const Settings& s) { return s.contactRecycleDistance == 0.003; }, "-2"},
+      {"contact_recycle_distance", "0", [](const Settings& s) { return s.contactRecycleDistance == 0.0; }, "often"},
       {"ccd", "false", [](const Settings& s) { return !s.continuousCollision; }, ""},
       {"ccd_motion_fraction", "0.5", [](const Settings& s) { return s.ccdMotionFraction == 0.5; }, "0"},
       {"log_queries", "true", [](const Settings& s) { return s.logQueries; }, ""},

@@ -32,7 +32,7 @@ TEST(WorldBlockJson, EveryKeyChangedReadsBackAsWritten) {
       {"gravity", {1.0, -3.0, 0.5}}, {"dt", 0.01}, {"integrator", "rk4"}, {"inertia", "cube"}, {"duration", 2.5},
       {"sleep", false}, {"sleep_linear_speed", 0.02}, {"sleep_angular_speed", 0.03}, {"time_to_sleep", 0.7},
       {"collisions", false}, {"ccd", false}, {"ccd_motion_fraction", 0.3}, {"broad_phase", "brute-force"},
-      {"contact_margin", 0.03}, {"solver", "pgs"}, {"friction", "seed000"}, {"mesh_contact", "triangles"},
+      {"contact_margin", 0.03}, {"contact_recycle_distance", 0.002}, {"solver", "pgs"}, {"friction", "seed000"}, {"mesh_contact", "triangles"},
       {"substeps", 7}, {"contact_hertz", 45.0}, {"contact_damping_ratio", 3.0}, {"contact_push_speed", 2.5},
       {"velocity_iterations", 13}, {"position_iterations", 5}, {"restitution_threshold", 0.4}, {"contact_slop", 0.007},
       {"position_correction", 0.3}, {"warm_starting", false}, {"warm_start_distance", 0.04}, {"response", false},

@@ -72,16 +72,22 @@ TEST(CollisionWorld, ABoxSinkingThroughTheGroundHasFourContactsOfTheKnownDepth) 
 }
 
 // The query log (seed 004's debugging buffer) records only when asked: a normal run pays nothing.
+// A resting box's contact is recycled after its first step (Settings::contactRecycleDistance): one
+// query; collided afresh every step, four.
 TEST(CollisionWorld, QueriesAreLoggedOnlyWhenAskedFor) {
-  for (bool log : {false, true}) {
-    Settings s = settings();
-    s.logQueries = log;
-    World world(s);
-    world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.0, 0.49, 0.0)));
-    world.addPlane(Plane{Vec3::UnitY(), 0.0});
-    for (int n = 0; n < 4; ++n) world.step();
-    EXPECT_FALSE(world.contacts().empty());
-    EXPECT_EQ(WorldAccess::collision(world).queryLog().total(), log ? 4u : 0u);
+  for (double recycle : {0.0, Settings{}.contactRecycleDistance}) {
+    for (bool log : {false, true}) {
+      Settings s = settings();
+      s.logQueries = log;
+      s.contactRecycleDistance = recycle;
+      World world(s);
+      world.addBody(box(Vec3(1.0, 1.0, 1.0), Vec3(0.0, 0.49, 0.0)));
+      world.addPlane(Plane{Vec3::UnitY(), 0.0});
+      for (int n = 0; n < 4; ++n) world.step();
+      EXPECT_FALSE(world.contacts().empty());
+      const std::size_t queries = recycle > 0.0 ? 1u : 4u;
+      EXPECT_EQ(WorldAccess::collision(world).queryLog().total(), log ? queries : 0u) << recycle;
+    }
   }
 }
 

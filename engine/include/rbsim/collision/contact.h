@@ -17,6 +17,10 @@ struct ContactPoint {
   // Penetration depth [m] along the normal: > 0 when the surfaces overlap, <= 0 when they are
   // apart by -depth (speculative contacts, within the contact margin).
   double depth = 0.0;
+  // Where body B's copy of the point lies from body A's [m]: zero for a manifold computed this
+  // step; a recycled one (world/contact_recycling.h) keeps each body's lever arm as it was when
+  // computed, A's copy at position - offset / 2 and B's at position + offset / 2.
+  Vec3 offset = Vec3::Zero();
 };
 
 inline constexpr int kMaxManifoldPoints = 4;
@@ -27,7 +31,7 @@ struct ContactManifold {
   int count = 0;  // 0 means no contact
 
   void add(const Vec3& position, double depth) {
-    if (count < kMaxManifoldPoints) points[count++] = {position, depth};
+    if (count < kMaxManifoldPoints) points[count++] = {position, depth, Vec3::Zero()};
   }
   double maxDepth() const {
     double d = -std::numeric_limits<double>::infinity();

@@ -17,7 +17,8 @@ namespace rbsim {
 inline constexpr std::initializer_list<const char*> kWorldKeys = {
     "gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "sleep_linear_speed",
     "sleep_angular_speed", "time_to_sleep", "collisions", "ccd", "ccd_motion_fraction", "broad_phase",
-    "contact_margin", "solver", "friction", "mesh_contact", "substeps", "contact_hertz", "contact_damping_ratio", "contact_push_speed",
+    "contact_margin", "contact_recycle_distance", "solver", "friction", "mesh_contact", "substeps", "contact_hertz",
+    "contact_damping_ratio", "contact_push_speed",
     "velocity_iterations", "position_iterations", "restitution_threshold", "contact_slop", "position_correction",
     "warm_starting", "warm_start_distance", "response", "log_queries", "query_log_capacity", "skip_idle_stages", "threads",
     "particle_integrator"};

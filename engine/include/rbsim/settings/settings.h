@@ -55,6 +55,14 @@ struct Settings {
   // Pairs closer than this get speculative contacts (depth < 0), and AABBs are inflated by it, so
   // a contact is known a step before the surfaces meet (Box2D's speculative distance is 4 cm).
   double contactMargin = 0.01;  // [m]
+  // Contact recycling (Box3D's, src/physics_world.c; soft step only): a pair of polyhedra whose
+  // relative pose has moved less than this since its manifold was computed keeps that manifold's
+  // normal and lever arms, and only brings its separations up to date, as the soft step's
+  // substeps do within a step (world/contact_recycling.h). A column of 20 cubes at 30 Hz on 4
+  // substeps stands with it and buckles without it, in Box3D as in rbsim (docs/speed.md).
+  // kAutoRecycleDistance (the scene's "auto") takes kRecycleGravityFactor |g| h^2 for the substep
+  // h (recycleDistance below); 0 collides every pair afresh every step.
+  double contactRecycleDistance = -1.0;  // [m]; kAutoRecycleDistance
   // Continuous collision: a body whose points may move more than ccdMotionFraction of its
   // thinnest extent in one step is swept, and stopped at its time of impact instead of passing
   // through a plane or a body (engine/src/world/continuous_collision.h).
@@ -135,6 +143,14 @@ struct Settings {
 // Contact tolerances (contactMargin, contactSlop): a tolerance, not a reach. Past a metre every
 // body near another is a contact pair each step, and the narrow phase runs on all n^2/2.
 inline constexpr double kMaxContactTolerance = 1.0;  // [m]
+// Settings::contactRecycleDistance's automatic value.
+inline constexpr double kAutoRecycleDistance = -1.0;
+// The automatic recycling distance in units of |g| h^2, how far gravity moves a body in a substep
+// of h squared: a soft contact's sink, and the motions of a resting stack, scale with h^2 (its
+// stiffness is capped by the substep rate). 6 keeps the 100-row pyramid standing on 4 substeps
+// (1.0 mm: top drift 5.7 cm, where 0.5 mm gave 37 cm and 0.2 mm 2.0 m) and its 10-substep end as
+// accurate as without recycling (0.17 mm; 1 mm drifted it 5.2 cm) (docs/speed.md).
+inline constexpr double kRecycleGravityFactor = 6.0;  // [1]
 // Gravity above the surface gravity of a neutron star (~2e12 m/s^2) is no scene's.
 inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
 // A query log longer than this holds more than anyone reads, at ~200 B a record.
@@ -162,5 +178,8 @@ struct SettingsProblem {
 // The one check of every field (World's constructor and the scene loader both use it, so a value
 // is refused with the same words wherever it comes from).
 SettingsProblem checkSettings(const Settings& settings);
+// Settings::contactRecycleDistance in metres: the automatic one worked out, 0 for the PGS solver
+// (it collides after moving the bodies; recycling is the soft step's).
+double recycleDistance(const Settings& settings);
 
 }  // namespace rbsim

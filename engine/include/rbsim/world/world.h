@@ -164,6 +164,8 @@ class World {
   // The contact manifolds of the last narrow phase, and every contact point of the last step
   // with the impulse the solver gave it.
   const std::vector<Contact>& contacts() const;
+  // How many of contacts() the last narrow phase recycled (Settings::contactRecycleDistance).
+  std::size_t recycledContacts() const;
   const std::vector<SolvedContactPoint>& contactPoints() const;
   const Material& bodyMaterial(BodyId body) const { return bodyMaterials_[indexOf(body)]; }
   // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
