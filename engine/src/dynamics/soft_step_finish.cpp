@@ -113,26 +113,31 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
   }
 }
 
-void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Contact>& contacts) {
+void SoftStepSolver::report() const {
+  solved_.clear();
   for (const Constraint& c : constraints_) {
-    const ContactManifold& m = contacts[c.contact].manifold;
     const SolverState& A = states_[c.a];
     const SolverState& B = states_[c.b];
-    for (std::size_t j = 0; j < c.pointCount; ++j) {
-      const Point& p = points_[c.firstPoint + j];
+    for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
+      const PointReport& r = reports_[j];
       SolvedContactPoint out;
       out.contact = c.contact;
-      out.position = m.points[j].position;
+      out.position = r.position;
       out.normal = c.normal;
-      out.depth = m.points[j].depth;
-      const PointReport& r = reports_[c.firstPoint + j];
+      out.depth = r.depth;
       out.normalImpulse = r.totalNormalImpulse;
       out.frictionImpulse = r.totalFriction;
       out.approachVelocity = r.relativeVelocity;
-      out.normalVelocity = normalVelocity(c, p, A, B);
+      out.normalVelocity = normalVelocity(c, points_[j], A, B);
       out.sticking = c.sticking && !c.slipping;
       solved_.push_back(out);
     }
+  }
+  reported_ = true;
+}
+
+void SoftStepSolver::finish(std::vector<RigidBody>& bodies) {
+  for (const Constraint& c : constraints_) {
     Cached cache;
     cache.key = c.key;
     cache.count = static_cast<int>(c.pointCount);
@@ -149,6 +154,7 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies, const std::vector<Co
   std::sort(nextCache_.begin(), nextCache_.end(), [](const Cached& a, const Cached& b) { return a.key < b.key; });
   cache_.swap(nextCache_);
   nextCache_.clear();
+  reported_ = false;
 
   for (std::size_t i = 1; i < states_.size(); ++i) {
     const SolverState& s = states_[i];

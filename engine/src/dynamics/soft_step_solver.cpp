@@ -53,6 +53,7 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
 void SoftStepSolver::bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) {
   clearAdvanced();
   solved_.clear();
+  reported_ = true;
   const RigidBody& moved = bodies[last];
   // A turned pair: the anchors were the moved body's (B); they become the partner's, and the
   // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
@@ -108,6 +109,8 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     PointReport r;
     const Vec3& position = m.points[i].position;
     const double separation = -m.points[i].depth;
+    r.position = position;
+    r.depth = m.points[i].depth;
     // A round side's surface point lies r - depth / 2 from its core along the normal
     // (collision/narrowphase/shape_pairs.h puts the point midway between the surfaces).
     const auto roundOffset = [&](int slot, std::uint16_t child) {
@@ -386,6 +389,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
   frames_.clear();
   reports_.clear();
   solved_.clear();
+  reported_ = true;
   joints_.clear();
 
   const double h = settings.timeStep / settings.substeps;
@@ -443,7 +447,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
     });
   }
   applyRestitution(settings);
-  finish(bodies, contacts);
+  finish(bodies);
 }
 
 }  // namespace rbsim

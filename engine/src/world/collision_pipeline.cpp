@@ -105,6 +105,8 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       planeSlots_(other.planeSlots_),
       pairFrames_(other.pairFrames_),
       planeFrames_(other.planeFrames_),
+      keptPairFrames_(other.keptPairFrames_),
+      keptPlaneFrames_(other.keptPlaneFrames_),
       recycle_(other.recycle_),
       recycledCount_(other.recycledCount_),
       recycleTolerance_(other.recycleTolerance_),

@@ -17,6 +17,7 @@
 #include "rbsim/collision/narrowphase/query_log.h"
 #include "rbsim/settings/settings.h"
 #include "world/contact_recycling.h"
+#include "world/key_index.h"
 
 namespace rbsim {
 
@@ -110,7 +111,7 @@ class CollisionPipeline {
   std::optional<ContactManifold> recycled(Contact::Kind kind, std::size_t a, std::size_t b, const RecyclePose& poseA,
                                           const RecyclePose& poseB, RecycleFrame& frame) const;
   RecyclePose poseOf(const RigidBody& body, std::size_t index) const { return {body.position(), body.orientation(), radius_[index]}; }
-  // The frames of this step's recyclable contacts, sorted by key, for the next step (recycle_).
+  // The frames of this step's recyclable contacts, indexed by key, for the next step.
   void keepFrames();
 
   Settings settings_;
@@ -154,8 +155,10 @@ class CollisionPipeline {
   std::vector<Contact> pairSlots_, planeSlots_;
   // Per slot: the recycling frame of its contact (count 0: none, a contact that is not recycled).
   std::vector<RecycleFrame> pairFrames_, planeFrames_;
-  // The frames of the last step's recyclable contacts, sorted by key.
-  std::vector<RecycleFrame> recycle_;
+  // The last step's frames (pairFrames_ and planeFrames_ as they were), and the index of those
+  // that may be recycled: by keptKey, to a pair slot k, or to pairs + k for a plane slot k.
+  std::vector<RecycleFrame> keptPairFrames_, keptPlaneFrames_;
+  KeyIndex recycle_;
   std::size_t recycledCount_ = 0;
   double recycleTolerance_ = 0.0;  // recycleDistance(settings_) of this narrow phase [m]
   std::vector<Later> later_;

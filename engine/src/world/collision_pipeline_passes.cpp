@@ -26,30 +26,43 @@ std::optional<ContactManifold> CollisionPipeline::recycled(Contact::Kind kind, s
                                                           const RecyclePose& poseA, const RecyclePose& poseB,
                                                           RecycleFrame& frame) const {
   const std::uint64_t key = keptKey(kind, a, b);
-  const auto it = std::lower_bound(recycle_.begin(), recycle_.end(), key,
-                                   [](const RecycleFrame& f, std::uint64_t k) { return f.key < k; });
-  if (it == recycle_.end() || it->key != key) return std::nullopt;
+  const std::optional<std::uint32_t> slot = recycle_.find(key);
+  if (!slot) return std::nullopt;
+  const RecycleFrame& last =
+      *slot < keptPairFrames_.size() ? keptPairFrames_[*slot] : keptPlaneFrames_[*slot - keptPairFrames_.size()];
   // Bodies in key order: keptKey puts the lower index first, as collidePair does.
-  std::optional<ContactManifold> m =
-      recycledManifold(*it, poseA, poseB, recycleTolerance_, settings_.contactMargin);
+  std::optional<ContactManifold> m = recycledManifold(last, poseA, poseB, recycleTolerance_, settings_.contactMargin);
   if (m) {
-    frame = *it;
+    frame = last;
     ++frame.age;
   }
   return m;
 }
 
 void CollisionPipeline::keepFrames() {
-  recycle_.clear();
-  for (std::size_t k = 0; k < pairSlots_.size(); ++k) {
-    if (later_[k] == Later::Nothing && pairSlots_[k].manifold.count > 0 && pairFrames_[k].count > 0) recycle_.push_back(pairFrames_[k]);
+  const auto kept = [&](std::size_t k) {
+    return later_[k] == Later::Nothing && pairSlots_[k].manifold.count > 0 && pairFrames_[k].count > 0;
+  };
+  const auto keptPlane = [&](std::size_t k) { return planeSlots_[k].manifold.count > 0 && planeFrames_[k].count > 0; };
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < pairSlots_.size(); ++k) count += kept(k);
+  for (std::size_t k = 0; k < planeSlots_.size(); ++k) count += keptPlane(k);
+  recycle_.reset(count);
+  recycledCount_ = 0;
+  const std::size_t pairs = pairSlots_.size();
+  for (std::size_t k = 0; k < pairs; ++k) {
+    if (!kept(k)) continue;
+    recycle_.insert(pairFrames_[k].key, static_cast<std::uint32_t>(k));
+    recycledCount_ += pairFrames_[k].age > 0;
   }
   for (std::size_t k = 0; k < planeSlots_.size(); ++k) {
-    if (planeSlots_[k].manifold.count > 0 && planeFrames_[k].count > 0) recycle_.push_back(planeFrames_[k]);
+    if (!keptPlane(k)) continue;
+    recycle_.insert(planeFrames_[k].key, static_cast<std::uint32_t>(pairs + k));
+    recycledCount_ += planeFrames_[k].age > 0;
   }
-  std::sort(recycle_.begin(), recycle_.end(), [](const RecycleFrame& x, const RecycleFrame& y) { return x.key < y.key; });
-  recycledCount_ = static_cast<std::size_t>(
-      std::count_if(recycle_.begin(), recycle_.end(), [](const RecycleFrame& f) { return f.age > 0; }));
+  // This step's frames become the last step's; the arrays are refilled next step.
+  keptPairFrames_.swap(pairFrames_);
+  keptPlaneFrames_.swap(planeFrames_);
 }
 
 void CollisionPipeline::keptAll(Contact::Kind kind, std::size_t a, std::size_t b, std::vector<Contact>& out) const {
