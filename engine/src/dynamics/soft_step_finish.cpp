@@ -154,6 +154,7 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies) {
   std::sort(nextCache_.begin(), nextCache_.end(), [](const Cached& a, const Cached& b) { return a.key < b.key; });
   cache_.swap(nextCache_);
   nextCache_.clear();
+  indexCache();
   reported_ = false;
 
   for (std::size_t i = 1; i < states_.size(); ++i) {

@@ -42,7 +42,7 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   }
   sims_.push_back(sim);
   inertias_.push_back({b.inertiaBody(), b.inverseInertiaBody()});
-  rotations_.push_back(b.rotation());
+  poses_.push_back({b.rotation(), b.position()});
   states_.push_back(SolverState{b.velocity(), b.angularVelocity(), Vec3::Zero(), b.orientation()});
   s = static_cast<int>(sims_.size() - 1);
   advanced_[body] = 1;
@@ -63,12 +63,17 @@ void SoftStepSolver::bodyRemoved(std::size_t removed, std::size_t last, const st
     for (int j = 0; j < entry.count; ++j) entry.frictionImpulses[j] = -entry.frictionImpulses[j];
     return true;
   });
+  indexCache();
 }
 
 const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {
-  const auto it = std::lower_bound(cache_.begin(), cache_.end(), key,
-                                   [](const Cached& c, std::uint64_t k) { return c.key < k; });
-  return it != cache_.end() && it->key == key ? &*it : nullptr;
+  const std::optional<std::uint32_t> at = cacheIndex_.find(key);
+  return at ? &cache_[*at] : nullptr;
+}
+
+void SoftStepSolver::indexCache() {
+  cacheIndex_.reset(cache_.size());
+  for (std::size_t i = 0; i < cache_.size(); ++i) cacheIndex_.insert(cache_[i].key, static_cast<std::uint32_t>(i));
 }
 
 void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
@@ -103,6 +108,15 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   // The normal acceleration the applied forces give the pair, for the speed at which the
   // surfaces meet within the step (restitution).
   const double normalAcceleration = n.dot(simB.acceleration - simA.acceleration);
+  // A round side's surface point lies r - depth / 2 from its core along the normal
+  // (collision/narrowphase/shape_pairs.h puts the point midway between the surfaces); -1: not round.
+  const auto roundRadius = [&](int slot, std::uint16_t child) {
+    if (slot == 0) return -1.0;
+    const RigidBody& body = bodies[sims_[slot].body];
+    const Shape& shape = body.isCompound() ? body.children()[child].shape : body.shape();
+    return shape.isRound() ? shape.radius : -1.0;
+  };
+  const double radiusA = roundRadius(c.a, contact.childA), radiusB = roundRadius(c.b, contact.childB);
   for (int i = 0; i < m.count; ++i) {
     Point p;
     PointFrame f;
@@ -111,16 +125,8 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     const double separation = -m.points[i].depth;
     r.position = position;
     r.depth = m.points[i].depth;
-    // A round side's surface point lies r - depth / 2 from its core along the normal
-    // (collision/narrowphase/shape_pairs.h puts the point midway between the surfaces).
-    const auto roundOffset = [&](int slot, std::uint16_t child) {
-      if (slot == 0) return 0.0;
-      const RigidBody& body = bodies[sims_[slot].body];
-      const Shape& shape = body.isCompound() ? body.children()[child].shape : body.shape();
-      return shape.isRound() ? shape.radius + 0.5 * separation : 0.0;
-    };
-    f.roundA = roundOffset(c.a, contact.childA) * n;
-    f.roundB = -roundOffset(c.b, contact.childB) * n;
+    if (radiusA >= 0.0) f.roundA = (radiusA + 0.5 * separation) * n;
+    if (radiusB >= 0.0) f.roundB = -(radiusB + 0.5 * separation) * n;
     // The ground's slot never moves, so its anchors are their own body-frame coordinates.
     // Each body's copy of the point: one point for a manifold computed this step, the kept arms'
     // for a recycled one (ContactPoint::offset).
@@ -176,8 +182,11 @@ void SoftStepSolver::updateArms(const Constraint& c, const PointFrame& f, Point&
   // anchor (Point::anchorA).
   const SolverState& A = states_[c.a];
   const SolverState& B = states_[c.b];
-  const Vec3 xA = sims_[c.a].position0 + A.deltaPosition, xB = sims_[c.b].position0 + B.deltaPosition;
-  const Vec3 onA = rotations_[c.a] * f.localA + f.roundA, onB = rotations_[c.b] * f.localB + f.roundB;
+  const Pose& poseA = poses_[c.a];
+  const Pose& poseB = poses_[c.b];
+  const Vec3& xA = poseA.position;
+  const Vec3& xB = poseB.position;
+  const Vec3 onA = poseA.rotation * f.localA + f.roundA, onB = poseB.rotation * f.localB + f.roundB;
   // A round body against the ground (a plane or a static body, which never moves) takes the
   // impulse where it carries the point: the ground's copy stays where the step began, and
   // halfway to it would put the force behind a ball rolling on, a torque that is not there.
@@ -353,9 +362,10 @@ void SoftStepSolver::integratePositions(double h) {
     SolverState& s = states_[i];
     BodySim& sim = sims_[i];
     s.deltaPosition += h * s.linearVelocity;
+    poses_[i].position = sim.position0 + s.deltaPosition;
     if (sim.kinematic) {  // turns at its prescribed omega, which no impulse changes
       s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
-      rotations_[i] = s.orientation.toRotationMatrix();
+      poses_[i].rotation = s.orientation.toRotationMatrix();
       return;
     }
     // The rotation by angle |omega| h (seed 004's alternative), with L = I omega carried over:
@@ -365,7 +375,7 @@ void SoftStepSolver::integratePositions(double h) {
     const Vec3 L = R * (inertias_[i].inertia * (R.transpose() * s.angularVelocity));
     s.orientation = expMapStep(s.orientation, s.angularVelocity, h);
     const Mat3 next = s.orientation.toRotationMatrix();
-    rotations_[i] = next;
+    poses_[i].rotation = next;
     sim.inverseInertiaNow = next * inertias_[i].inverse * next.transpose();
     s.angularVelocity = sim.inverseInertiaNow * L;
   });
@@ -383,7 +393,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
   states_.assign(1, SolverState{});
   sims_.assign(1, BodySim{});
   inertias_.assign(1, BodyInertia{});
-  rotations_.assign(1, Mat3::Identity());
+  poses_.assign(1, Pose{});
   constraints_.clear();
   points_.clear();
   frames_.clear();

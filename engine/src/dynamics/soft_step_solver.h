@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "dynamics/contact_key.h"
+#include "math/key_index.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/joints/joint_rows.h"
 #include "rbsim/dynamics/softness.h"
@@ -47,6 +48,7 @@ class SoftStepSolver final : public ContactSolver {
   void forget() override {
     clearAdvanced();
     cache_.clear();
+    cacheIndex_.clear();
     solved_.clear();
     reported_ = true;
   }
@@ -242,7 +244,13 @@ class SoftStepSolver final : public ContactSolver {
     Mat3 inertia = Mat3::Zero(), inverse = Mat3::Zero();  // body frame
   };
   std::vector<BodyInertia> inertias_;  // per slot
-  std::vector<Mat3> rotations_;  // per slot: R now, for the separations (integratePositions)
+  // Per slot: R and x now, for the separations (integratePositions); apart from the states, so
+  // that updateArms reads two cache lines a body instead of four.
+  struct Pose {
+    Mat3 rotation = Mat3::Identity();
+    Vec3 position = Vec3::Zero();  // [m]
+  };
+  std::vector<Pose> poses_;
   std::vector<Constraint> constraints_;
   std::vector<Point> points_;
   std::vector<PointFrame> frames_;    // per point
@@ -253,6 +261,8 @@ class SoftStepSolver final : public ContactSolver {
   mutable std::vector<SolvedContactPoint> solved_;
   mutable bool reported_ = true;  // solved_ is this step's (or there is no step to report)
   std::vector<Cached> cache_, nextCache_;  // sorted by key
+  KeyIndex cacheIndex_;  // cache_'s entries by key (cached())
+  void indexCache();
   Softness softness_;  // of every contact this step
   std::vector<JointConstraint> joints_;
   Softness jointSoftness_;  // of every joint this step

@@ -17,7 +17,7 @@
 #include "rbsim/collision/narrowphase/query_log.h"
 #include "rbsim/settings/settings.h"
 #include "world/contact_recycling.h"
-#include "world/key_index.h"
+#include "math/key_index.h"
 
 namespace rbsim {
 
