@@ -4,9 +4,10 @@
 // another, so islands are solved at the same time on several threads, each island's constraints
 // one after another in the order the solver was given them: the result is bit for bit the
 // sequential solve's, whatever the thread count. (Graph colouring, Box2D v3's constraint_graph.c,
-// solves one island on several threads, but reorders its Gauss-Seidel sweeps: measured here, a
-// column of 40 boxes then drifted 23 cm instead of under 5, and Box3D's 100-row pyramid still moved
-// at 0.29 m/s after 10 s instead of 0.003 m/s. Bullet and PhysX split by islands the same way.)
+// solves one island on several threads, but reorders its Gauss-Seidel sweeps, and in colour order
+// soft contacts stay at rest only up to about a tenth of the substep rate where this order holds a
+// fifth: Box3D caps them at an eighth for that. docs/speed.md, "Graph colouring", has the
+// measurements. Bullet and PhysX split by islands the same way.)
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
