@@ -27,9 +27,9 @@
 #include <vector>
 
 #include "dynamics/contact_key.h"
-#include "math/key_index.h"
 #include "dynamics/contact_solver.h"
 #include "dynamics/joints/joint_rows.h"
+#include "math/key_index.h"
 #include "rbsim/dynamics/softness.h"
 #include "rbsim/dynamics/solver_islands.h"
 #include "rbsim/math/parallel.h"
@@ -177,6 +177,7 @@ class SoftStepSolver final : public ContactSolver {
   void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
                const Settings& settings);
   const Cached* cached(std::uint64_t key) const;
+  void indexCache();  // cacheIndex_ for cache_ as it now is
   // Seed 000's regime at a collision (a point approaching faster than
   // Settings::restitutionThreshold): sliding when the sticking impulse leaves the mu_s cone
   // (collisionImpulse, dynamics/impulse.h). Empty for a resting point, which keeps the regime its
@@ -261,8 +262,7 @@ class SoftStepSolver final : public ContactSolver {
   mutable std::vector<SolvedContactPoint> solved_;
   mutable bool reported_ = true;  // solved_ is this step's (or there is no step to report)
   std::vector<Cached> cache_, nextCache_;  // sorted by key
-  KeyIndex cacheIndex_;  // cache_'s entries by key (cached())
-  void indexCache();
+  KeyIndex cacheIndex_;  // cache_'s entries by key (cached()), rebuilt by indexCache()
   Softness softness_;  // of every contact this step
   std::vector<JointConstraint> joints_;
   Softness jointSoftness_;  // of every joint this step

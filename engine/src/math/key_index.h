@@ -1,9 +1,9 @@
 #pragma once
 // A table from nonzero 64-bit keys to 32-bit indices, rebuilt every step: open addressing with
 // linear probing at most half full, Fibonacci hashing (Knuth, TAOCP vol. 3, 6.4). The collision
-// pipeline finds last step's recycling frame of a pair with it: one probe into a table of 16-byte
-// entries, where a binary search over the sorted 400-byte frames took 14 cache misses and sorting
-// them took 4 % of a pyramid's step.
+// pipeline finds last step's recycling frame of a pair with it, and the soft step a manifold's
+// warm start: one probe into a table of 16-byte entries, where a binary search over sorted
+// 400-byte frames took 14 cache misses, and sorting them took 4 % of a pyramid's step.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -25,6 +25,7 @@ class KeyIndex {
   }
   void clear() { slots_.clear(); }
   // Maps `key` (nonzero; 0 marks an empty slot) to `index`; a key given twice keeps the first.
+  // At most the `count` of the last reset: the table is then half full, and a probe ends.
   void insert(std::uint64_t key, std::uint32_t index) {
     for (std::size_t s = home(key);; s = (s + 1) & (slots_.size() - 1)) {
       if (slots_[s].key == key) return;

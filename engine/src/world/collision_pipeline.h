@@ -16,8 +16,8 @@
 #include "rbsim/collision/impact.h"
 #include "rbsim/collision/narrowphase/query_log.h"
 #include "rbsim/settings/settings.h"
-#include "world/contact_recycling.h"
 #include "math/key_index.h"
+#include "world/contact_recycling.h"
 
 namespace rbsim {
 

@@ -324,5 +324,40 @@ TEST(SoftStep, SolvedImpulsesSatisfySeed001sConditionsToOneSubstepOfGravity) {
   EXPECT_GT(checked, 250);
 }
 
+// World::contactPoints() is built when first asked for after a step (soft_step_solver.h): it must
+// be that step's, the same on every call and in a copy of the World, and empty once a body of the
+// step is gone. A box at rest on the ground: the step's normal impulses carry its weight, m g dt.
+TEST(SoftStep, ContactPointsAreTheLastStepsAndGoWithItsBodies) {
+  for (double dt : {kDt60, kDt240}) {
+    World world(settingsAt(dt));
+    world.addPlane(Plane{}, softFriction(0.6));
+    const double mass = 2.0;
+    const BodyId box = world.addBody(test::boxWith(Vec3::Ones(), mass, Vec3(0.0, 0.5, 0.0), softFriction(0.6), "box"));
+    const auto weightCarried = [&](const std::vector<SolvedContactPoint>& points) {
+      double total = 0.0;
+      for (const SolvedContactPoint& p : points) total += p.normalImpulse;
+      return total / (mass * world.settings().gravity.norm() * dt);
+    };
+    for (int i = 0; i < 120; ++i) world.step();
+    const std::vector<SolvedContactPoint> first = world.contactPoints();
+    ASSERT_EQ(first.size(), 4u) << dt;
+    EXPECT_NEAR(weightCarried(first), 1.0, 1e-6) << dt;
+    const World copy = world;
+    ASSERT_EQ(copy.contactPoints().size(), first.size());
+    for (std::size_t k = 0; k < first.size(); ++k) {
+      EXPECT_EQ(world.contactPoints()[k].normalImpulse, first[k].normalImpulse);
+      EXPECT_EQ(copy.contactPoints()[k].normalImpulse, first[k].normalImpulse);
+      EXPECT_EQ(copy.contactPoints()[k].position, first[k].position);
+    }
+    // Twice the weight for one step: the next step's points carry it, not the last step's.
+    world.body(box).applyForce(Vec3(0.0, -mass * world.settings().gravity.norm(), 0.0));
+    world.step();
+    EXPECT_NEAR(weightCarried(world.contactPoints()), 2.0, 0.05) << dt;
+    world.step();  // not asked for before the body goes
+    world.destroyBody(box);
+    EXPECT_TRUE(world.contactPoints().empty()) << dt;
+  }
+}
+
 }  // namespace
 }  // namespace rbsim

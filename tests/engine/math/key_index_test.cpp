@@ -11,7 +11,7 @@
 namespace rbsim {
 namespace {
 
-TEST(KeyIndex, FindsWhatAMapFindsForCrowdedAndRandomKeys) {
+TEST(KeyIndex, FindsWhatAMapFindsUpToItsFillLimit) {
   std::mt19937_64 random(54);
   for (std::size_t count : {1u, 7u, 100u, 5000u}) {
     KeyIndex index;
