@@ -65,7 +65,9 @@ inline FrictionImpulse coneFriction(const FrictionPoint& p) {
   out.sticking = squared <= limit * limit;
   // A point that does not push has no friction: the common case of a speculative point, spared
   // the square root and the division on the sweep's chain.
-  if (!out.sticking) out.total = limit == 0.0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(out.total * (limit / std::sqrt(squared)));
+  if (!out.sticking) {
+    out.total = limit == 0.0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(out.total * (limit / std::sqrt(squared)));
+  }
   return out;
 }
 

@@ -48,7 +48,9 @@ class KeyIndex {
     std::uint64_t key = 0;
     std::uint32_t index = 0;
   };
-  std::size_t home(std::uint64_t key) const { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_); }
+  // 2^64 / phi, odd: Fibonacci hashing spreads consecutive keys over the table's top bits.
+  static constexpr std::uint64_t kGoldenMultiplier = 0x9E3779B97F4A7C15ull;
+  std::size_t home(std::uint64_t key) const { return static_cast<std::size_t>((key * kGoldenMultiplier) >> shift_); }
 
   std::vector<Slot> slots_;
   int shift_ = 60;  // 64 - log2(capacity)
