@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dynamics/friction_law.h"
 #include "dynamics/soft_step_solver.h"
 #include "rbsim/dynamics/impulse.h"
 
@@ -23,7 +24,7 @@ constexpr double kTouchingGap = 1e-6;  // [m]
 
 }  // namespace
 
-void SoftStepSolver::collide(const Settings& settings) {
+void SoftStepSolver::collide(const Settings& settings, double h) {
   // Seed 000 "Collision": u_rel,N^new = -c_R u_rel,N, one point at a time, each with the
   // velocities the points before it left, and swept until nothing approaches (Guendelman,
   // Bridson, Fedkiw 2003, "Nonconvex rigid bodies with stacking", collision processing before
@@ -31,50 +32,62 @@ void SoftStepSolver::collide(const Settings& settings) {
   // pair, as Newton's cradle does, where one simultaneous solve would move the row together.
   // Only pairs touching at one point: a patch (a box landing flat) bounces in applyRestitution,
   // whose sweeps share the rebound among its points instead of tipping it at the first one.
-  // With Settings::friction = seed000 the collision takes seed 000's whole impulse, friction
-  // included (collisionImpulse, dynamics/impulse.h), as the seed writes it for one collision.
-  const double dt = settings.timeStep;
+  // The collision takes seed 000's whole impulse, friction included (collisionImpulse,
+  // dynamics/impulse.h), as the seed writes it for one collision, with either friction model.
+  if (bouncing_.empty()) return;
   for (int sweep = 0; sweep < kCollisionSweeps; ++sweep) {
     bool collided = false;
-    for (const Constraint& c : constraints_) {
-      if (c.pointCount != 1 || c.restitution == 0.0) continue;
+    for (const std::size_t index : bouncing_) {
+      const Constraint& c = constraints_[index];
       Point& p = points_[c.firstPoint];
       SolverState& A = states_[c.a];
       SolverState& B = states_[c.b];
       const Vec3& n = c.normal;
       const double vn = normalVelocity(c, p, A, B);
-      // Slower approaches are resting contact; a gap the approach does not close within the step
-      // is left for a later step.
-      if (-vn <= settings.restitutionThreshold || p.separation + vn * dt > settings.contactSlop) continue;
-      // A point still short of the surface meets it within the substeps, and bounces in
-      // applyRestitution with its speed at the touch: reversed here, above the ground, it lost the
-      // energy of the gap (a ball dropped 1 cm left at 37 % of c_R u_c at 1/60 s, or not at all).
-      if (p.separation > kTouchingGap) continue;
+      // Slower approaches are resting contact; a gap the approach does not close within this
+      // substep is left for a later one. A collision within the substep is taken at its start,
+      // with the speed the substep moves at, up to |u| h short of the touch: met by the soft
+      // contacts instead, the impact's first part stopped the ball as an inelastic push spread
+      // over the bodies it touches (Newton's cradle hit mid-step passed 0.52 of the speed on),
+      // and its bounce came after the substeps without the friction the seed gives it.
+      if (-vn <= settings.restitutionThreshold || p.separation + vn * h > kTouchingGap) continue;
+      // Taken s above the surface, the bounce leaves with the speed that carries it as far as
+      // c_R times the speed at the touch would, leave^2 = (c_R u_c)^2 + 2 a_N s (PGS does the
+      // same): c_R u from there gave a c_R = 0.3 ball dropped 1 cm at 1/60 s 29 % too much. The
+      // speed at the touch is the one prepare found from the energy at the step's start (a
+      // substep's velocity leads it by up to g h); for a pair set moving within the step, as a
+      // cradle's next ball is, u_c^2 = u^2 - 2 a_N s. Where the bounce would not carry it back
+      // up here, it goes on to the surface and bounces there. This substep's kick of the applied
+      // forces, already in u, is kept on top of the bounce: replaced by it, each bounce at 1/60 s
+      // gained g h |u| (a ball with c_R = 1 rose 7 mm over its 1 m).
       PointReport& report = reports_[c.firstPoint];
+      const double gap = std::max(p.separation, 0.0), kick = c.normalAcceleration * h;
+      const double touch = report.impactSpeed > 0.0 ? report.impactSpeed * report.impactSpeed
+                                                    : (vn - kick) * (vn - kick) - 2.0 * c.normalAcceleration * gap;
+      const double leave = c.restitution * c.restitution * touch + 2.0 * c.normalAcceleration * gap;
+      if (leave < 0.0) continue;
+      const double away = std::sqrt(leave) + kick;  // u_rel,N after the collision
+      if (away <= 0.0) continue;
       report.impactSpeed = 0.0;  // it has bounced: applyRestitution must not bounce it again
       collided = true;
-      if (settings.friction == Settings::FrictionModel::Seed000) {
-        // Seed 000 "Friction", literally: the whole impulse of the collision from the 3x3 K_T,
-        // sticking if inside the mu_s cone, kinetic (N - mu_k T) j_n otherwise.
-        const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
-        const Mat3& iA = sims_[c.a].inverseInertiaNow;
-        const Mat3& iB = sims_[c.b].inverseInertiaNow;
-        const Vec3& rA = p.anchorA;
-        const Vec3& rB = p.anchorB;
-        const Vec3 u = B.linearVelocity + B.angularVelocity.cross(rB) - A.linearVelocity -
-                       A.angularVelocity.cross(rA);  // u_rel, body 1 = B
-        const CollisionImpulse hit = collisionImpulse<3>(impulseFactor(mA, iA, rA) + impulseFactor(mB, iB, rB), u, n,
-                                                         Material{c.restitution, c.staticFriction, c.kineticFriction});
-        const Vec3& j = hit.impulse;
-        report.totalNormalImpulse += j.dot(n);
-        report.totalFriction += j - j.dot(n) * n;
-        report.sliding = !hit.sticking;  // the regime the substeps carry on with
-        applyImpulse(c, p, j, A, B);
-        continue;
-      }
-      const double impulse = -(1.0 + c.restitution) * vn * p.normalMass;  // j = N j_n only
-      report.totalNormalImpulse += impulse;
-      applyImpulse(c, p, impulse * n, A, B);
+      // Seed 000 "Friction", literally: the whole impulse of the collision from the 3x3 K_T,
+      // sticking if inside the mu_s cone, kinetic (N - mu_k T) j_n otherwise. Coulomb's law
+      // for one impulse, so the cone takes it too (the models part in resting and sliding
+      // contact, friction_law.h).
+      const double mA = sims_[c.a].inverseMass, mB = sims_[c.b].inverseMass;
+      const Mat3& iA = sims_[c.a].inverseInertiaNow;
+      const Mat3& iB = sims_[c.b].inverseInertiaNow;
+      const Vec3& rA = p.anchorA;
+      const Vec3& rB = p.anchorB;
+      const Vec3 u = B.linearVelocity + B.angularVelocity.cross(rB) - A.linearVelocity -
+                     A.angularVelocity.cross(rA);  // u_rel, body 1 = B
+      const CollisionImpulse hit = collisionImpulse<3>(impulseFactor(mA, iA, rA) + impulseFactor(mB, iB, rB), u, n,
+                                                       Material{away / -vn, c.staticFriction, c.kineticFriction});
+      const Vec3& j = hit.impulse;
+      report.totalNormalImpulse += j.dot(n);
+      report.totalFriction += j - j.dot(n) * n;
+      report.sliding = !hit.sticking;  // the regime the substeps carry on with
+      applyImpulse(c, p, j, A, B);
     }
     if (!collided) return;
   }
@@ -106,8 +119,33 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
         const double total = std::max(p.normalImpulse + impulse, 0.0);
         const double delta = total - p.normalImpulse;
         p.normalImpulse = total;
-        reports_[j].totalNormalImpulse += delta;
+        PointReport& report = reports_[j];
+        report.totalNormalImpulse += delta;
         applyImpulse(c, p, delta * n, A, B);
+        // The bounce is the impact's last part, and friction acts with it: the substeps gave
+        // the part that stopped the approach its mu j_n, and without this the rebound's c_R of it
+        // slid free (a ball hitting the ground mid-step at 12 m/s left at 11.4 instead of seed
+        // 000's 11.1 m/s). Same law, same regime, the bounce's impulse as its normal impulse.
+        report.bounceImpulse += delta;
+        FrictionPoint point;
+        point.accumulated = report.bounceFriction;
+        const Vec3 slip = B.linearVelocity + B.angularVelocity.cross(p.anchorB) - A.linearVelocity -
+                          A.angularVelocity.cross(p.anchorA);
+        point.slip = {c.tangent1.dot(slip), c.tangent2.dot(slip)};
+        point.tangentMass = {p.tangentMass[0], p.tangentMass[1]};
+        point.coupling = p.tangentCoupling;
+        point.normalImpulse = report.bounceImpulse;
+        point.staticFriction = c.staticFriction;
+        point.kineticFriction = c.kineticFriction;
+        point.sliding = settings.friction == Settings::FrictionModel::Seed000 ? report.sliding : !c.sticking;
+        const Eigen::Vector2d next = frictionImpulse(settings.friction, point).total;
+        const Eigen::Vector2d change = next - report.bounceFriction;
+        report.bounceFriction = next;
+        p.tangentImpulse[0] += change[0];
+        p.tangentImpulse[1] += change[1];
+        const Vec3 friction = change[0] * c.tangent1 + change[1] * c.tangent2;
+        report.totalFriction += friction;
+        applyImpulse(c, p, friction, A, B);
       }
     }
   }

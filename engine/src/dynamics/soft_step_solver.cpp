@@ -108,6 +108,7 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   // The normal acceleration the applied forces give the pair, for the speed at which the
   // surfaces meet within the step (restitution).
   const double normalAcceleration = n.dot(simB.acceleration - simA.acceleration);
+  c.normalAcceleration = normalAcceleration;
   // A round side's surface point lies r - depth / 2 from its core along the normal
   // (collision/narrowphase/shape_pairs.h puts the point midway between the surfaces); -1: not round.
   const auto roundRadius = [&](int slot, std::uint16_t child) {
@@ -117,6 +118,7 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     return shape.isRound() ? shape.radius : -1.0;
   };
   const double radiusA = roundRadius(c.a, contact.childA), radiusB = roundRadius(c.b, contact.childB);
+  bool collides = false, collisionSlides = false;
   for (int i = 0; i < m.count; ++i) {
     Point p;
     PointFrame f;
@@ -125,13 +127,24 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
     const double separation = -m.points[i].depth;
     r.position = position;
     r.depth = m.points[i].depth;
-    if (radiusA >= 0.0) f.roundA = (radiusA + 0.5 * separation) * n;
-    if (radiusB >= 0.0) f.roundB = -(radiusB + 0.5 * separation) * n;
     // The ground's slot never moves, so its anchors are their own body-frame coordinates.
     // Each body's copy of the point: one point for a manifold computed this step, the kept arms'
     // for a recycled one (ContactPoint::offset).
     const Vec3 offset = m.points[i].offset;
-    const Vec3 pointA = position - 0.5 * offset, pointB = position + 0.5 * offset;
+    Vec3 pointA = position - 0.5 * offset, pointB = position + 0.5 * offset;
+    // A round side's copy of a speculative point (s > 0) is its own surface point: the surfaces
+    // meet there within the step, and a copy halfway across the gap would stay s / 2 beyond the
+    // surface, the lever arm of the impact's friction (a ball 35 mm above the ground spun 17 %
+    // too fast). Its core is R from it.
+    const double gap = 0.5 * std::max(separation, 0.0), inside = 0.5 * std::min(separation, 0.0);
+    if (radiusA >= 0.0) {
+      f.roundA = (radiusA + inside) * n;
+      pointA -= gap * n;
+    }
+    if (radiusB >= 0.0) {
+      f.roundB = -(radiusB + inside) * n;
+      pointB += gap * n;
+    }
     f.split = !offset.isZero(0.0);
     f.localA = c.a == 0 ? pointA : Vec3(stateA.orientation.conjugate() * (pointA - f.roundA - xA));
     f.localB = c.b == 0 ? pointB : Vec3(stateB.orientation.conjugate() * (pointB - f.roundB - xB));
@@ -153,15 +166,19 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
         }
       }
     }
-    if (settings.friction == Settings::FrictionModel::Seed000) {
-      if (const std::optional<bool> slides = seedSlides(p.anchorA, p.anchorB, c, stateA, stateB, material, settings)) {
-        r.sliding = *slides;
-      }
+    // At a collision both models take seed 000's regime for the impact: kinetic when the
+    // impulse that stops the slip leaves the mu_s cone of the whole impact (Coulomb's law for one
+    // impulse), whatever the contact did before.
+    if (const std::optional<bool> slides = seedSlides(p.anchorA, p.anchorB, c, stateA, stateB, material, settings)) {
+      r.sliding = *slides;
+      collides = true;
+      collisionSlides = collisionSlides || *slides;
     }
     points_.push_back(p);
     frames_.push_back(f);
     reports_.push_back(r);
   }
+  if (collides) c.sticking = !collisionSlides;  // the cone's regime is the patch's
   constraints_.push_back(c);
 }
 
@@ -187,14 +204,16 @@ void SoftStepSolver::updateArms(const Constraint& c, const PointFrame& f, Point&
   const Vec3& xA = poseA.position;
   const Vec3& xB = poseB.position;
   const Vec3 onA = poseA.rotation * f.localA + f.roundA, onB = poseB.rotation * f.localB + f.roundB;
-  // A round body against the ground (a plane or a static body, which never moves) takes the
-  // impulse where it carries the point: the ground's copy stays where the step began, and
-  // halfway to it would put the force behind a ball rolling on, a torque that is not there.
-  // (Other shapes keep the midpoint, whose lag of half a step's slide the box suites are
-  // measured with.)
+  // A round body against a flat one (the ground, or a box, whose copy is a material point of
+  // it) takes the impulse where it carries the point: the other copy stays where the step began
+  // on it, and halfway to it would put the force behind a ball rolling on, a torque that is not
+  // there; before the touch it is the ball's own surface point, the impact's lever arm R. (Two
+  // flat or two round sides keep the midpoint, whose lag of half a step's slide the box suites
+  // are measured with.)
   Vec3 point = 0.5 * (xA + onA + xB + onB);
-  if (c.a == 0 && !f.roundB.isZero(0.0)) point = xB + onB;
-  if (c.b == 0 && !f.roundA.isZero(0.0)) point = xA + onA;
+  const bool roundA = !f.roundA.isZero(0.0), roundB = !f.roundB.isZero(0.0);
+  if (roundB && !roundA) point = xB + onB;
+  if (roundA && !roundB) point = xA + onA;
   // The separation now, from the anchors carried by the bodies (no collision detection within
   // the step; Box2D v3's comment at the top of contact_solver.c).
   p.separation = f.baseSeparation + c.normal.dot(B.deltaPosition - A.deltaPosition + onB - onA);
@@ -277,7 +296,11 @@ void SoftStepSolver::solveNormals(Constraint& c, double inverseH, const Settings
     // reached the ground at 3.15 of its 4.42 m/s and rebounded to half the height e = 1 asks
     // for (examples/python/restitution_sweep.py); a box dropped flat 1 m left at 93 % of c_R u_c
     // and spun up to 26 rad/s on landing (0.35 rad/s kept for patches too; issue 36).
-    if (lastRelax && s > 0.0 && c.restitution > 0.0 && -vn > settings.restitutionThreshold) continue;
+    // A single point's fast approach belongs to the collision pass at the next substep's start
+    // (collide): slowed here to close the gap exactly, it met the surface at a fraction of its
+    // speed and bounced with that fraction (a ball 49 mm above the ground at 1/240 s left at
+    // 0.3 of its 1.5 m/s).
+    if (s > 0.0 && c.restitution > 0.0 && -vn > settings.restitutionThreshold && (lastRelax || c.pointCount == 1)) continue;
     const double impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
     // Accumulated and kept repulsive (seed 001: f_i >= 0).
     const double total = std::max(p.normalImpulse + impulse, 0.0);
@@ -433,16 +456,20 @@ void SoftStepSolver::solve(const SolverInput& input) {
     prepare(bodies, contact, i, material, settings);
   }
 
+  bouncing_.clear();
+  for (std::size_t i = 0; i < constraints_.size(); ++i) {
+    if (constraints_[i].pointCount == 1 && constraints_[i].restitution > 0.0) bouncing_.push_back(i);
+  }
   threads_ = settings.threads;
   islands_.build(
       states_.size(), constraints_.size(), [&](std::size_t i) { return constraints_[i].a; },
       [&](std::size_t i) { return constraints_[i].b; }, joints_.size(), [&](std::size_t i) { return joints_[i].base; },
       [&](std::size_t i) { return joints_[i].moving; });
-  collide(settings);
   const double inverseH = 1.0 / h;
   for (int substep = 0; substep < settings.substeps; ++substep) {
     const bool last = substep == settings.substeps - 1;
     integrateVelocities(h);
+    collide(settings, h);
     forEachIsland([&](std::size_t island) {
       warmStartJoints(island);
       warmStart(island);  // the last substep's impulses (at the first, the last step's, when kept)

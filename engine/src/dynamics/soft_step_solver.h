@@ -132,12 +132,16 @@ class SoftStepSolver final : public ContactSolver {
     double totalNormalImpulse = 0.0;  // [N s]
     Vec3 totalFriction = Vec3::Zero();  // world [N s]
     bool sliding = false;  // slipping at the end of the last step (seed 000's regime, friction_law.h)
+    // The restitution pass's share of the impact, and the friction it brought (applyRestitution).
+    double bounceImpulse = 0.0;  // [N s]
+    Eigen::Vector2d bounceFriction = Eigen::Vector2d::Zero();  // along t1, t2 [N s]
   };
   struct Constraint {  // one manifold
     int a = 0, b = 0;  // body slots; 0 is the ground
     Vec3 normal = Vec3::UnitY(), tangent1 = Vec3::UnitX(), tangent2 = Vec3::UnitZ();
     double staticFriction = 0.0, kineticFriction = 0.0;  // mu_s, mu_k [1]
     double restitution = 0.0;  // [1]
+    double normalAcceleration = 0.0;  // n . (a_B - a_A) from the applied forces (gravity) [m/s^2]
     Softness softness;
     bool sticking = true;      // this step's regime: the last step ended without slipping
     bool slipping = false;     // the patch ended the step slipping (then mu_k next step)
@@ -225,7 +229,7 @@ class SoftStepSolver final : public ContactSolver {
     parallelForUneven(islands_.count(), threads_, constraints_.size() + joints_.size() >= kMinParallelItems, f);
   }
   void integratePositions(double h);
-  void collide(const Settings& settings);  // single-point collisions, before the substeps
+  void collide(const Settings& settings, double h);  // single-point collisions within the substep h
   void applyRestitution(const Settings& settings);
   void finish(std::vector<RigidBody>& bodies);
   void report() const;  // solved_ from this step's constraints
@@ -253,6 +257,7 @@ class SoftStepSolver final : public ContactSolver {
   };
   std::vector<Pose> poses_;
   std::vector<Constraint> constraints_;
+  std::vector<std::size_t> bouncing_;  // the constraints collide() looks at: one point, c_R > 0
   std::vector<Point> points_;
   std::vector<PointFrame> frames_;    // per point
   std::vector<PointReport> reports_;  // per point

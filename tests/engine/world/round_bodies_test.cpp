@@ -120,7 +120,9 @@ TEST_P(RoundBodies, ACapsuleRestsAcrossABox) {
 // no friction; the first arrives at 1 m/s. The seed's law u_N' = -c_R u_N (the restitution
 // threshold off, world.restitution_threshold = 0) applied contact by contact down the line hands
 // the whole momentum on: the last ball leaves at 1 m/s and the others stay, within the solver's
-// tolerance (5 % of the speed).
+// tolerance (5 % of the speed). The hit comes at a step's end (the first ball 5 cm short of
+// 0.2 m away) and within one (1.2 mm further): there the soft step's substeps used to meet it as
+// an inelastic push through the row, and the last ball left at 0.52 m/s (issue 55).
 TEST_P(RoundBodies, NewtonsCradlePassesAnElasticHitDownTheLine) {
   if (GetParam().solver == Solver::Pgs) {
     GTEST_SKIP() << "PGS solves the row's contacts together: the five leave at 0.42 m/s and less (REPORT)";
@@ -128,27 +130,28 @@ TEST_P(RoundBodies, NewtonsCradlePassesAnElasticHitDownTheLine) {
   Settings s = settings();
   s.gravity = Vec3::Zero();
   s.restitutionThreshold = 0.0;
-  World w(s);
   constexpr double r = 0.1, speed = 1.0;
   Material elastic;
   elastic.restitution = 1.0;
   elastic.staticFriction = elastic.kineticFriction = 0.0;
-  for (int i = 0; i < 5; ++i) {
-    BodyDef ball = shapeBodyDef(Shape::sphere(r), 1.0, "ball" + std::to_string(i));
-    // The first ball starts a step's travel and a bit away, so the hit happens within the run.
-    ball.position = Vec3(i == 0 ? -2.0 * r - 0.05 : 2.0 * r * i, 0.0, 0.0);
-    ball.velocity = Vec3(i == 0 ? speed : 0.0, 0.0, 0.0);
-    ball.material = elastic;
-    w.addBody(ball);
+  for (const double away : {0.05, 0.0512}) {  // [m]
+    World w(s);
+    for (int i = 0; i < 5; ++i) {
+      BodyDef ball = shapeBodyDef(Shape::sphere(r), 1.0, "ball" + std::to_string(i));
+      ball.position = Vec3(i == 0 ? -2.0 * r - away : 2.0 * r * i, 0.0, 0.0);
+      ball.velocity = Vec3(i == 0 ? speed : 0.0, 0.0, 0.0);
+      ball.material = elastic;
+      w.addBody(ball);
+    }
+    for (int i = 0; i < steps(0.5); ++i) w.step();
+    const auto& b = w.bodies();
+    EXPECT_NEAR(b[4].velocity().x(), speed, 0.05 * speed) << "first ball " << away << " m short";
+    for (int i = 0; i < 4; ++i) EXPECT_LT(b[i].velocity().norm(), 0.05 * speed) << i << ", " << away << " m short";
+    double momentum = 0.0, energy = 0.0;
+    for (const RigidBody& ball : b) momentum += ball.state().linearMomentum.x(), energy += ball.kineticEnergy();
+    EXPECT_NEAR(momentum, speed, 1e-9);  // the solver's impulses are equal and opposite
+    EXPECT_NEAR(energy, 0.5 * speed * speed, 0.05 * 0.5 * speed * speed);
   }
-  for (int i = 0; i < steps(0.5); ++i) w.step();
-  const auto& b = w.bodies();
-  EXPECT_NEAR(b[4].velocity().x(), speed, 0.05 * speed);
-  for (int i = 0; i < 4; ++i) EXPECT_LT(b[i].velocity().norm(), 0.05 * speed) << i;
-  double momentum = 0.0, energy = 0.0;
-  for (const RigidBody& ball : b) momentum += ball.state().linearMomentum.x(), energy += ball.kineticEnergy();
-  EXPECT_NEAR(momentum, speed, 1e-9);          // the solver's impulses are equal and opposite
-  EXPECT_NEAR(energy, 0.5 * speed * speed, 0.05 * 0.5 * speed * speed);
 }
 
 INSTANTIATE_TEST_SUITE_P(DtAndSolver, RoundBodies,
