@@ -156,7 +156,7 @@ render::FrameData buildFrame(const World& world
     bv.worldVertices.reserve(body.vertexCount());
     for (const Vec3& p : body.worldVertices()) bv.worldVertices.push_back(toGlm(p));
     bv.triangles = &body.mesh().triangles;
-    bv.mesh = body.sharedMesh();
+    if (view.instancing) bv.mesh = body.sharedMesh();  // else drawn from worldVertices alone
     bv.position = toGlm(body.position());
     const Mat3& R = body.rotation();
     for (int c = 0; c < 3; ++c) bv.rotation[c] = toGlm(R.col(c));

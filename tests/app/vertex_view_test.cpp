@@ -1,6 +1,7 @@
 // view.vertices (seed 004 section 2, "do this transform yourself"): the dots are the engine's own
-// vertex list p' = R p + x, and the body the renderer draws from R and x (as an instance, in the
-// vertex shader) covers exactly the polygon those vertices span on the image.
+// vertex list p' = R p + x, and the body the renderer draws, from those vertices (demo 2,
+// view.instancing false) or from R and x (an instance, in the vertex shader), covers exactly the
+// polygon those vertices span on the image.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -68,8 +69,14 @@ constexpr float kOutlineReach = 2.5f;
 
 TEST(VertexView, TheDrawnBodyCoversThePolygonOfTheEnginesVertexList) {
   constexpr int kWidth = 960, kHeight = 540;
+  // Demo 2 draws from the vertex list itself (view.instancing false); instanced, the renderer
+  // must draw the same polygon from R and x.
   Phase phase = loadPhase(assetDir() + "/scenes/assignment2_a_manual_pose.json",
                           {"view.size=[960,540]", "view.overlay=false", "view.axes=false", "view.grid=false"});
+  ASSERT_FALSE(phase.scene().view.instancing);
+  ASSERT_FALSE(render::drawnAsInstance(buildFrame(buildWorld(phase.scene()), phase.scene(), "").bodies[0]));
+  phase = loadPhase(assetDir() + "/scenes/assignment2_a_manual_pose.json",
+                    {"view.size=[960,540]", "view.overlay=false", "view.axes=false", "view.grid=false", "view.instancing=true"});
   const Scene& scene = phase.scene();
   ASSERT_TRUE(scene.view.vertices);
   render::OffscreenRenderer renderer(kWidth, kHeight, render::defaultShaderDir());

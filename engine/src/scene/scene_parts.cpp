@@ -175,6 +175,7 @@ void parseViewFields(const JsonObject& v, ViewDesc& view) {
   view.aabbs = v.boolean("aabbs", view.aabbs);
   view.contacts = v.boolean("contacts", view.contacts);
   view.vertices = v.boolean("vertices", view.vertices);
+  view.instancing = v.boolean("instancing", view.instancing);
   view.follow = v.boolean("follow", view.follow);
   view.caption = v.string("caption", view.caption);
   if (v.has("plots")) {

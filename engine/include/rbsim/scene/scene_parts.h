@@ -67,7 +67,7 @@ std::pair<Plane, Material> parsePlaneBlock(const nlohmann::json& plane, const st
 JointDef parseJointBlock(const nlohmann::json& joint, const std::string& file, const std::string& path, const World& world);
 
 inline constexpr std::initializer_list<const char*> kViewKeys = {
-    "camera", "size", "fps", "overlay", "panel", "wireframe", "axes", "grid", "aabbs", "contacts", "vertices", "selected", "follow",
+    "camera", "size", "fps", "overlay", "panel", "wireframe", "axes", "grid", "aabbs", "contacts", "vertices", "instancing", "selected", "follow",
     "caption", "plots", "plot_of", "plot_seconds"};
 // The fields of a view block but "selected" (a body of the file: the caller's) into `view`.
 void parseViewFields(const JsonObject& v, ViewDesc& view);

@@ -32,6 +32,10 @@ struct ViewDesc {
   // Draw each body's vertex list p' = R p + x as the engine computed it (seed 004 section 2: "do
   // this transform yourself"), as dots over the body the renderer drew from R and x.
   bool vertices = false;
+  // Bodies that share a mesh may be drawn as instances of it: its body-space copy moved by (R, x)
+  // on the GPU. Off, every body is drawn from the world vertices the engine computed, as seed 004's
+  // assignment asks ("do this transform yourself"); demo 2 draws so.
+  bool instancing = true;
   std::size_t selected = 0;            // body shown in the overlay
   // The camera moves with the selected body (eye and target keep their offset from it), so a
   // body that rolls or flies away stays in view.
