@@ -2,6 +2,7 @@
 making Markdown from the CSVs in bench/results/. Numbers are never typed here, only read."""
 import math
 import os
+import subprocess
 
 from results import GoogleBenchmark, MissingData, by_keys, read_csv
 
@@ -36,13 +37,36 @@ def path(results, name):
     return os.path.join(results, name)
 
 
+def committed_on(csv_path):
+    """The day a CSV was last committed (git), or None outside a checkout."""
+    try:
+        out = subprocess.run(["git", "log", "-1", "--format=%cs", "--", os.path.basename(csv_path)],
+                             cwd=os.path.dirname(os.path.abspath(csv_path)), capture_output=True, text=True,
+                             check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return out or None
+
+
 def machine(results):
     m = {r["key"]: r["value"] for r in read_csv(path(results, "machine.csv"))}
-    return (f"The benchmarks' last {m['mode']} run by {COMMAND} ({m['date']}, commit {m['commit']}, "
+    text = (f"The benchmarks' last {m['mode']} run by {COMMAND} ({m['date']}, commit {m['commit']}, "
             f"{m['bench_seconds']} s): {m['cpu']}, {m['nproc']} cores, {m['memory_gib']} GiB, {m['os']}, "
-            f"{m['compiler']}, Release build; load average {m['load_before']} before and {m['load_after']} after, "
-            f"on a machine shared with other builds (the benchmarks ran under `nice -n 19`): timings are noisy, "
-            f"errors and counts exact.\n")
+            f"{m['compiler']}, Release; load {m['load_before']} before, {m['load_after']} after, shared with "
+            f"other builds (under `nice -n 19`): timings are noisy, errors and counts exact.")
+    # The CSVs single benchmarks rewrote after that run (issue 55: the blocks and plots mix dates, so
+    # each is named with the day it was committed).
+    run_day = m["date"][:10]
+    later = {}
+    for name in sorted(os.listdir(results)):
+        if name.endswith(".csv") and name != "machine.csv":
+            day = committed_on(path(results, name))
+            if day is not None and day > run_day:
+                later.setdefault(day, []).append(name[:-4])
+    if later:
+        text += (" CSVs rewritten since by single runs: " +
+                 "; ".join(f"{', '.join(names)} ({day[5:]})" for day, names in sorted(later.items())) + ".")
+    return text + "\n"
 
 
 def particles(results):
