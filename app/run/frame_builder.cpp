@@ -1,8 +1,10 @@
 #include "run/frame_builder.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "render/pane_layout.h"
+#include "rbsim/math/rotation.h"
 #include "rbsim/world/queries.h"
 #include "rbsim/world/systems.h"
 #include "run/collision_view.h"
@@ -197,6 +199,10 @@ render::FrameData buildFrame(const World& world
     const Quat& q = body.orientation();
     char quat[96];
     std::snprintf(quat, sizeof quat, "%+.4f %+.4f %+.4f %+.4f", q.w(), q.x(), q.y(), q.z());
+    // Yaw, pitch, roll about z, y', x'' (math/rotation.h), the scene's euler_zyx_deg.
+    const Vec3 euler = eulerZyxFromRotation(R) * (180.0 / M_PI);
+    char angles[96];
+    std::snprintf(angles, sizeof angles, "%+.2f %+.2f %+.2f deg", euler.x(), euler.y(), euler.z());
     const RowLevel main = rigidSubject ? RowLevel::Essential : RowLevel::Detail;
     overlay.rows.insert(overlay.rows.end(), {
         // A body spawned while the World stepped has no inertia method in the scene's list.
@@ -207,6 +213,7 @@ render::FrameData buildFrame(const World& world
         {"R row 2", formatVec(R.row(1).transpose(), ""), RowLevel::Detail},
         {"R row 3", formatVec(R.row(2).transpose(), ""), RowLevel::Detail},
         {"q (w x y z)", quat, RowLevel::Detail},
+        {"Euler zyx", angles, RowLevel::Detail},
         {"v", formatVec(body.velocity(), "m/s"), rigid},
         {"omega", formatVec(body.angularVelocity(), "rad/s"), rigid},
         {"P", formatVec(body.state().linearMomentum, "kg m/s"), RowLevel::Detail},

@@ -1,8 +1,17 @@
 #include "rbsim/math/rotation.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 namespace rbsim {
+
+namespace {
+// Below this cos(pitch) [1] yaw and roll turn about one axis (gimbal lock) and only their
+// difference is defined; atan2 of the rounding left in the other entries would be noise.
+constexpr double kGimbalLockCosine = 1e-12;
+}  // namespace
 
 Mat3 star(const Vec3& a) {
   Mat3 s;
@@ -40,6 +49,26 @@ double rotationAngleBetween(const Mat3& A, const Mat3& B) {
   const double c = 0.5 * (D.trace() - 1.0);
   const double s = 0.5 * Vec3(D(2, 1) - D(1, 2), D(0, 2) - D(2, 0), D(1, 0) - D(0, 1)).norm();
   return std::atan2(s, c);
+}
+
+Quat quatFromEulerZyx(const Vec3& yawPitchRoll) {
+  const Quat yaw(Eigen::AngleAxisd(yawPitchRoll.x(), Vec3::UnitZ()));
+  const Quat pitch(Eigen::AngleAxisd(yawPitchRoll.y(), Vec3::UnitY()));
+  const Quat roll(Eigen::AngleAxisd(yawPitchRoll.z(), Vec3::UnitX()));
+  return (yaw * pitch * roll).normalized();
+}
+
+Vec3 eulerZyxFromRotation(const Mat3& R) {
+  // R = Rz(psi) Ry(theta) Rx(phi): R(2,0) = -sin(theta), R(2,1) = cos(theta) sin(phi),
+  // R(2,2) = cos(theta) cos(phi), R(1,0) = sin(psi) cos(theta), R(0,0) = cos(psi) cos(theta).
+  const double sinPitch = std::clamp(-R(2, 0), -1.0, 1.0);
+  const double cosPitch = std::hypot(R(0, 0), R(1, 0));
+  const double pitch = std::atan2(sinPitch, cosPitch);
+  if (cosPitch > kGimbalLockCosine) {
+    return {std::atan2(R(1, 0), R(0, 0)), pitch, std::atan2(R(2, 1), R(2, 2))};
+  }
+  // Gimbal lock: R(0,1) = -sin(psi -+ phi) etc.; phi = 0 leaves psi from the first two columns.
+  return {std::atan2(-R(0, 1), R(1, 1)), pitch, 0.0};
 }
 
 double orthonormalityError(const Mat3& R) {

@@ -194,12 +194,12 @@ Vec3 JsonObject::positiveVec3(const char* key) const {
 
 std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
   if (!has(key)) return std::nullopt;
-  const JsonObject o = object(key, {"quaternion", "matrix", "axis_angle_deg", "normalize"});
+  const JsonObject o = object(key, {"quaternion", "matrix", "axis_angle_deg", "euler_zyx_deg", "normalize"});
   // Normalising is the scene's choice ("normalize": true), never rbsim's: a quaternion or matrix
   // typed with a few digits is otherwise taken only when it is a rotation to within 1e-6.
   const bool normalize = o.boolean("normalize", false);
   if (o.value_.size() != (o.has("normalize") ? 2u : 1u)) {
-    fail(key, "give exactly one of quaternion, matrix, axis_angle_deg");
+    fail(key, "give exactly one of quaternion, matrix, axis_angle_deg, euler_zyx_deg");
   }
   if (o.has("quaternion")) {
     const std::vector<double> n = o.numbers("quaternion", 4);
@@ -243,7 +243,14 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
     }
     return Quat(R).normalized();
   }
-  if (!o.has("axis_angle_deg")) fail(key, "give exactly one of quaternion, matrix, axis_angle_deg");
+  if (o.has("euler_zyx_deg")) {
+    // Yaw about z, pitch about the new y, roll about the newest x (math/rotation.h), degrees.
+    const std::vector<double> n = o.numbers("euler_zyx_deg", 3);
+    Vec3 radians;
+    for (int i = 0; i < 3; ++i) radians[i] = std::fmod(n[static_cast<std::size_t>(i)], 360.0) * M_PI / 180.0;
+    return quatFromEulerZyx(radians);
+  }
+  if (!o.has("axis_angle_deg")) fail(key, "give exactly one of quaternion, matrix, axis_angle_deg, euler_zyx_deg");
   const std::vector<double> n = o.numbers("axis_angle_deg", 4);
   const Vec3 axis(n[0], n[1], n[2]);
   if (!(axis.stableNorm() > 0.0)) o.fail("axis_angle_deg", "the axis must be non-zero");

@@ -103,5 +103,37 @@ TEST(OrthonormalityError, IsFrobeniusNormOfRtRMinusI) {
   EXPECT_NEAR(orthonormalityError(shear), std::sqrt(0.01 + 0.01 + 0.0001), 1e-15);
 }
 
+// Euler angles, yaw-pitch-roll about z, y', x'' (issue 55): each angle alone is the rotation
+// about its axis, the composition is Rz Ry Rx, and angles read back from a rotation give it again,
+// at random and at gimbal lock (pitch +-90 degrees, where yaw and roll share an axis).
+TEST(EulerZyx, EachAngleTurnsAboutItsAxisInTheStatedOrder) {
+  const double yaw = 0.7, pitch = -0.4, roll = 1.9;
+  EXPECT_TRUE(allNear(Mat3(quatFromEulerZyx(Vec3(yaw, 0, 0)).toRotationMatrix()), rotationFromAxisAngle(Vec3(0, 0, yaw)), 1e-15));
+  EXPECT_TRUE(allNear(Mat3(quatFromEulerZyx(Vec3(0, pitch, 0)).toRotationMatrix()), rotationFromAxisAngle(Vec3(0, pitch, 0)), 1e-15));
+  EXPECT_TRUE(allNear(Mat3(quatFromEulerZyx(Vec3(0, 0, roll)).toRotationMatrix()), rotationFromAxisAngle(Vec3(roll, 0, 0)), 1e-15));
+  const Mat3 expected = rotationFromAxisAngle(Vec3(0, 0, yaw)) * rotationFromAxisAngle(Vec3(0, pitch, 0)) *
+                        rotationFromAxisAngle(Vec3(roll, 0, 0));
+  EXPECT_TRUE(allNear(Mat3(quatFromEulerZyx(Vec3(yaw, pitch, roll)).toRotationMatrix()), expected, 1e-14));
+}
+
+TEST(EulerZyx, AnglesReadBackFromARotationGiveItAgain) {
+  std::mt19937 random(55);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI), half(-M_PI / 2, M_PI / 2);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 angles(angle(random), half(random), angle(random));
+    const Mat3 R = quatFromEulerZyx(angles).toRotationMatrix();
+    const Vec3 back = eulerZyxFromRotation(R);
+    EXPECT_TRUE(allNear(back, angles, 1e-9)) << back.transpose() << " from " << angles.transpose();
+    EXPECT_LT(rotationAngleBetween(Mat3(quatFromEulerZyx(back).toRotationMatrix()), R), 1e-12);
+  }
+  for (const double pitch : {M_PI / 2, -M_PI / 2}) {
+    const Mat3 R = quatFromEulerZyx(Vec3(0.8, pitch, 0.3)).toRotationMatrix();
+    const Vec3 back = eulerZyxFromRotation(R);
+    EXPECT_NEAR(back.y(), pitch, 1e-7);
+    EXPECT_EQ(back.z(), 0.0) << "at gimbal lock roll is taken as 0";
+    EXPECT_LT(rotationAngleBetween(Mat3(quatFromEulerZyx(back).toRotationMatrix()), R), 1e-7);
+  }
+}
+
 }  // namespace
 }  // namespace rbsim

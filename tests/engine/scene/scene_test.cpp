@@ -54,6 +54,27 @@ class SceneFiles : public testing::Test {
   std::filesystem::path dir_;
 };
 
+// Euler angles as scene input (issue 55): yaw about z, pitch about y', roll about x'', degrees,
+// the convention math/rotation.h states; the same pose as the axis-angle product it names.
+TEST(ParseScene, TakesEulerAnglesYawPitchRoll) {
+  const json doc = json::parse(R"({
+    "world": {"dt": 0.01, "duration": 0.1},
+    "bodies": [{"name": "box", "shape": {"type": "box", "extents": [1, 2, 3]}, "mass": 1,
+                "orientation": {"euler_zyx_deg": [30, -20, 75]}}]})");
+  const Scene scene = parseScene(doc, "test.json", RBSIM_TEST_DATA_DIR);
+  const Mat3 expected = rotationFromAxisAngle(Vec3(0, 0, M_PI / 6)) * rotationFromAxisAngle(Vec3(0, -M_PI / 9, 0)) *
+                        rotationFromAxisAngle(Vec3(5 * M_PI / 12, 0, 0));
+  EXPECT_TRUE(allNear(scene.bodies[0].orientation.toRotationMatrix(), expected, 1e-14));
+  json bad = doc;
+  bad["bodies"][0]["orientation"] = {{"euler_zyx_deg", {30, 20}}};
+  try {
+    parseScene(bad, "test.json", RBSIM_TEST_DATA_DIR);
+    FAIL() << "two angles accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bodies[0].orientation.euler_zyx_deg"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ParseScene, BuildsTheExpectedBodies) {
   const json doc = json::parse(R"({
     "title": "two bodies",

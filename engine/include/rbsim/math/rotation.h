@@ -28,6 +28,14 @@ Mat3 orthonormalize(const Mat3& R);
 Mat3 rotationFromAxisAngle(const Vec3& axisAngle);
 Quat quatFromAxisAngle(const Vec3& axisAngle);
 
+// Euler angles (seed 000 lists them among the orientation choices), one convention, stated:
+// yaw psi about z, then pitch theta about the new y, then roll phi about the newest x (intrinsic
+// z-y'-x'', the aerospace "ZYX" angles), R = Rz(psi) Ry(theta) Rx(phi); angles [rad] as
+// (psi, theta, phi). From a rotation: theta in [-pi/2, pi/2], psi and phi in (-pi, pi]; at
+// theta = +-pi/2 (gimbal lock) only psi -+ phi is defined, and phi is taken as 0.
+Quat quatFromEulerZyx(const Vec3& yawPitchRoll);
+Vec3 eulerZyxFromRotation(const Mat3& R);
+
 // Angle [rad] of the relative rotation A^T B, in [0, pi]: the orientation error used by tests.
 double rotationAngleBetween(const Mat3& A, const Mat3& B);
 
