@@ -146,8 +146,11 @@ ReferenceCase torquedBox(double duration) {
   settings.integrator = Integrator::Rk4;
   settings.allowSleep = false;
   World world(settings);
-  world.addBody(c.body);
-  for (const ScriptedForce& f : c.forces) world.addForce(f);
+  const BodyId body = world.addBody(c.body);
+  for (ScriptedForce f : c.forces) {  // the case's forces name no body until it is in a World
+    f.body = body;
+    world.addForce(f);
+  }
   const long samples = std::lround(duration * kReferenceGrid) + 1;
   auto grid = std::make_shared<std::vector<Quat>>();
   grid->reserve(static_cast<std::size_t>(samples));

@@ -26,8 +26,11 @@ World makeWorld(const ReferenceCase& c, Integrator integrator, double dt) {
   settings.integrator = integrator;
   settings.allowSleep = false;  // the sweep measures integration, never a body put to rest
   World world(settings);
-  world.addBody(c.body);
-  for (const ScriptedForce& f : c.forces) world.addForce(f);
+  const BodyId body = world.addBody(c.body);
+  for (ScriptedForce f : c.forces) {  // the case's forces name no body until it is in a World
+    f.body = body;
+    world.addForce(f);
+  }
   return world;
 }
 

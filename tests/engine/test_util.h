@@ -39,7 +39,8 @@ inline const std::vector<Integrator>& allIntegrators() {
   static const std::vector<Integrator> all = {Integrator::EulerMatrix, Integrator::EulerQuat,
                                               Integrator::ExpMap, Integrator::SymplecticEuler,
                                               Integrator::Rk4, Integrator::ImplicitGyro,
-                                              Integrator::Dlm, Integrator::Exact, Integrator::Exact4};
+                                              Integrator::Dlm, Integrator::Exact, Integrator::Exact4,
+                                              Integrator::Newmark};
   return all;
 }
 

@@ -13,7 +13,7 @@ V0 = np.array([0.5, 3.0, 0.25])
 FALL = {
     "euler-matrix": "explicit", "euler-quat": "explicit", "expmap": "explicit",
     "symplectic-euler": "semi-implicit", "implicit-gyro": "semi-implicit",
-    "rk4": "exact", "dlm": "exact", "exact": "exact", "exact4": "exact",
+    "rk4": "exact", "dlm": "exact", "exact": "exact", "exact4": "exact", "newmark": "exact",
 }
 
 

@@ -29,6 +29,8 @@ enum class Integrator {
                     // around it (Strang splitting; Celledoni et al., SIAM J. Sci. Comput. 2008)
   Exact4,           // Yoshida's fourth-order composition of exact's step (Phys. Lett. A 150,
                     // 262, 1990); without torque one exact flow, as the composition would be
+  Newmark,          // Newmark's average acceleration (beta = 1/4, gamma = 1/2; seed 000: "Newmark
+                    // for better accuracy and stability"), Euler's equations in the body frame
 };
 
 // Whether the integrator keeps a FreeFlowMemo per body.
