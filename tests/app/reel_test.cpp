@@ -22,6 +22,7 @@
 #include "run/progress.h"
 #include "run/reel.h"
 #include "run/runner.h"
+#include "shell_command.h"
 
 namespace rbsim::app {
 namespace {
@@ -115,6 +116,47 @@ TEST(ReelChapters, TheRealReelsChaptersMeetYouTubesRules) {
   for (const ReelDemo& d : plan.demos) {
     EXPECT_NE(titles.find("Demo " + std::to_string(d.demo.number)), std::string::npos) << titles;
   }
+}
+
+// The committed reel is the code's (issue 55: it was 73 commits old and lacked demo 8):
+// videos/chapters.txt is, to the byte, what the reel's plan writes today; the README's demo table
+// lists every demo as the program does, in the chapters' order; and the committed MP4 lasts as long
+// as the plan (ffprobe). A demo added, renamed, re-described or lengthened fails it until the reel
+// is rendered again (`rbsim demo all`) and the README follows.
+TEST(CommittedReel, IsTheReelTheCodePlansAndTheReadmeTableAgrees) {
+  const std::filesystem::path source(RBSIM_SOURCE_DIR);
+  const ReelOptions options;
+  const ReelPlan plan = planReel(allDemos(), options);
+  const std::vector<ReelChapter> chapters = reelChapters(plan, options);
+  EXPECT_EQ(readFile(source / "videos" / "chapters.txt"), youtubeChapters(chapters))
+      << "render the reel again: build/rbsim demo all";
+  static const std::regex row(R"(^\| (\d+) \| `([a-z0-9_]+)` \| (.+) \| `videos/([a-z0-9_]+)\.mp4` \|$)");
+  std::istringstream readme(readFile(source / "README.md"));
+  std::vector<std::string> listed;
+  for (std::string line; std::getline(readme, line);) {
+    std::smatch m;
+    if (!std::regex_match(line, m, row)) continue;
+    const Demo* demo = findDemo(std::stoi(m[1].str()));
+    ASSERT_NE(demo, nullptr) << line;
+    EXPECT_EQ(m[2].str(), demo->name) << line;
+    EXPECT_EQ(m[3].str(), demo->description) << line;
+    EXPECT_EQ(m[4].str(), demo->name) << line;
+    listed.push_back("Demo " + m[1].str() + " " + m[2].str() + ":");  // a chapter shortens the rest
+  }
+  ASSERT_EQ(listed.size(), allDemos().size()) << "one README row per demo";
+  std::string titles;
+  for (const ReelChapter& c : chapters) titles += c.title + "\n";
+  std::size_t from = 0;
+  for (const std::string& demo : listed) {
+    const std::size_t at = titles.find(demo, from);
+    EXPECT_NE(at, std::string::npos) << demo << " is not a chapter after the one before it:\n" << titles;
+    if (at != std::string::npos) from = at;
+  }
+  const auto [code, output] = rbsim::test::runCommand(
+      "ffprobe -v error -show_entries format=duration -of csv=p=0 " +
+      rbsim::test::shellQuote((source / "videos" / "rbsim-demos.mp4").string()));
+  ASSERT_EQ(code, 0) << output;
+  EXPECT_NEAR(std::stod(output), static_cast<double>(plan.totalFrames) / options.fps, 0.1);
 }
 
 ChapterCandidate candidate(std::size_t demo, std::uint64_t frame, const std::string& title) {
