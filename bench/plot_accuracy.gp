@@ -13,8 +13,9 @@ if (!exists("outdir")) outdir = 'bench/results'
 box = 'torque-free-box'
 pi_rad = pi  # the largest possible orientation error [rad]
 
-# gnuplot's default colours repeat after eight: the ninth integrator gets its own.
+# gnuplot's default colours repeat after eight: the ninth and tenth integrators get their own.
 set linetype 9 lc rgb '#8b4513' lw 1 pt 10
+set linetype 10 lc rgb '#e7298a' lw 1 pt 12
 set datafile separator comma
 set datafile columnheaders  # 'nan' cells read as NaN: not drawn
 set encoding utf8
