@@ -130,6 +130,7 @@ w = px(16.9); h = px(6.0)
 set terminal pngcairo size w,h enhanced font printfont linewidth 3
 set output outdir.'/report_accuracy.png'
 set linetype 9 lc rgb '#8b4513' pt 10
+set linetype 10 lc rgb '#e7298a' pt 12
 set logscale xy
 set format x '%g'
 set format y '1e%T'
