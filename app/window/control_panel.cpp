@@ -144,7 +144,7 @@ PanelRequests drawControlPanel(const PanelView& view, int imageWidth, int imageH
     }
     const std::string solver = contactSolverName(scene.settings.solver);
     if (ImGui::BeginCombo("solver", solver.c_str())) {
-      for (const char* name : {"soft-step", "pgs"}) {
+      for (const char* name : {"soft-step", "pgs", "lcp"}) {
         if (ImGui::Selectable(name, solver == name)) out.assignments.push_back({"world.solver", quoted(name), true});
       }
       ImGui::EndCombo();

@@ -128,7 +128,7 @@ PYBIND11_MODULE(rbsim, m) {
       "data_dirs()\n--\n\n-> {\"assets\": path, \"shaders\": path}: the folders the module reads scenes by name and shaders "
       "from (<prefix>/share/rbsim when installed; `rbsim list` prints the program's)");
   m.def("integrators", &rbsim::integratorNames, "integrators()\n--\n\n-> [str]: the names world.integrator accepts");
-  m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs"}; },
+  m.def("solvers", [] { return std::vector<std::string>{"soft-step", "pgs", "lcp"}; },
         "solvers()\n--\n\n-> [str]: the names world.solver accepts");
 
   py::class_<PyBodyId>(m, "BodyId",

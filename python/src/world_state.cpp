@@ -98,7 +98,7 @@ void bindWorldState(py::module_& m, py::class_<PyWorld>& world) {
   liveSetting(world, "integrator", [](const Settings& s) { return std::string(integratorName(s.integrator)); },
               "settable: one of rbsim.integrators(), from the next step");
   liveSetting(world, "solver", [](const Settings& s) { return std::string(contactSolverName(s.solver)); },
-              "\"soft-step\" or \"pgs\"; settable (the new solver starts without warm starts; PGS refuses joints)");
+              "\"soft-step\", \"pgs\" or \"lcp\"; settable (the new solver starts without warm starts; PGS and LCP refuse joints)");
   liveSetting(world, "substeps", [](const Settings& s) { return s.substeps; }, "soft-step substeps per step; settable");
   liveSetting(world, "friction", [](const Settings& s) { return std::string(frictionModelName(s.friction)); },
               "\"cone\" or \"seed000\"; settable");

@@ -135,4 +135,4 @@ def test_settings_and_names():
     world = rbsim.World(dt=0.01, integrator="rk4", solver="pgs", gravity=[0, -1.62, 0])
     assert world.settings["integrator"] == "rk4" and world.settings["solver"] == "pgs"
     assert world.settings["gravity"] == (0, -1.62, 0) and world.dt == 0.01
-    assert set(rbsim.solvers()) == {"soft-step", "pgs"}
+    assert set(rbsim.solvers()) == {"soft-step", "pgs", "lcp"}

@@ -51,7 +51,7 @@ def test_the_corpus_gives_cases():
     ({"dt": 0}, "dt", "expected a positive time step"),
     ({"dt": math.nan}, "dt", "finite"),
     ({"integrator": "rk5"}, "integrator", 'did you mean "rk4"'),
-    ({"solver": "fast"}, "solver", 'expected "soft-step" or "pgs"'),
+    ({"solver": "fast"}, "solver", 'expected "soft-step", "pgs" or "lcp"'),
     ({"gravty": [0, 0, 0]}, "gravty", 'did you mean "gravity"'),
     ({"substeps": 2.5}, "substeps", "expected an integer"),
     ({"gravity": [0, -9.81]}, "gravity", "3"),

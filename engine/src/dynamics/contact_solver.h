@@ -1,9 +1,11 @@
 #pragma once
 // The seam between World::step and the contact solvers (stage SolveContacts), as the broad phase
 // keeps sweep and prune beside brute force: SoftStepSolver (soft_step_solver.h) is the default,
-// PgsSolver (pgs_solver.h) the reference. The World picks one from Settings::solver when it is
-// built (makeContactSolver) and asks it where in the step it goes. A new solver implements this
-// class and adds a Settings::ContactSolverMethod (docs/architecture.md, "Adding a solver").
+// PgsSolver (pgs_solver.h) the reference, LcpSolver (lcp_solver.h) the exact one for small scenes
+// (seed 001's resting contact as a linear complementarity problem, issue 55). The World picks one
+// from Settings::solver when it is built (makeContactSolver) and asks it where in the step it
+// goes. A new solver implements this class and adds a Settings::ContactSolverMethod
+// (docs/architecture.md, "Adding a solver").
 #include <cstddef>
 #include <memory>
 #include <vector>

@@ -124,8 +124,9 @@ JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settin
     j.fail("type", "expected \"ball\", \"hinge\", \"prismatic\" or \"weld\", got \"" + type + "\"");
   }
   def.name = j.string("name", "");
-  if (settings.solver == Settings::ContactSolverMethod::Pgs) {
-    j.fail("type", "joints need world.solver \"soft-step\"; the PGS solver does not solve joints");
+  if (settings.solver != Settings::ContactSolverMethod::SoftStep) {
+    const std::string which = settings.solver == Settings::ContactSolverMethod::Pgs ? "PGS" : "LCP";
+    j.fail("type", "joints need world.solver \"soft-step\"; the " + which + " solver does not solve joints");
   }
   const std::size_t a = bodyNamed(j, "body_a", bodies);
   def.bodyA = bodies.ids[a];

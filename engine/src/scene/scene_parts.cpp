@@ -56,10 +56,12 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
     }
   }
   const std::string solver = w.string("solver", contactSolverName(s.solver));
-  if (solver == "pgs" || solver == "soft-step") {
-    s.solver = solver == "pgs" ? Settings::ContactSolverMethod::Pgs : Settings::ContactSolverMethod::SoftStep;
+  if (solver == "pgs" || solver == "soft-step" || solver == "lcp") {
+    s.solver = solver == "pgs"   ? Settings::ContactSolverMethod::Pgs
+               : solver == "lcp" ? Settings::ContactSolverMethod::Lcp
+                                 : Settings::ContactSolverMethod::SoftStep;
   } else {
-    w.fail("solver", "expected \"soft-step\" or \"pgs\", got \"" + solver + "\"");
+    w.fail("solver", "expected \"soft-step\", \"pgs\" or \"lcp\", got \"" + solver + "\"");
   }
   const std::string friction = w.string("friction", frictionModelName(s.friction));
   if (!parseFrictionModel(friction, s.friction)) {

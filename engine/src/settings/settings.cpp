@@ -59,6 +59,10 @@ SettingsProblem checkSettings(const Settings& s) {
   if (s.velocityIterations < 1 || s.velocityIterations > kMaxSolverIterations) {
     return {"velocity_iterations", "expected at least 1 and " + sweeps};
   }
+  // The lcp solver's friction is the cone at each manifold's centroid (dynamics/lcp_solver.h).
+  if (s.solver == Settings::ContactSolverMethod::Lcp && s.friction == Settings::FrictionModel::Seed000) {
+    return {"friction", "the lcp solver has the cone's friction only; expected \"cone\" with world.solver \"lcp\""};
+  }
   if (s.positionIterations < 0 || s.positionIterations > kMaxSolverIterations) {
     return {"position_iterations", "expected 0 or more and " + sweeps};
   }
@@ -82,7 +86,12 @@ double recycleDistance(const Settings& s) {
 }
 
 const char* contactSolverName(Settings::ContactSolverMethod method) {
-  return method == Settings::ContactSolverMethod::Pgs ? "pgs" : "soft-step";
+  switch (method) {
+    case Settings::ContactSolverMethod::Pgs: return "pgs";
+    case Settings::ContactSolverMethod::Lcp: return "lcp";
+    case Settings::ContactSolverMethod::SoftStep: break;
+  }
+  return "soft-step";
 }
 
 const char* broadPhaseName(Settings::BroadPhaseMethod method) {

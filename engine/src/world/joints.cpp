@@ -14,7 +14,9 @@ namespace rbsim {
 std::size_t World::addJoint(const JointDef& def) {
   const std::string who = "joint" + (def.name.empty() ? std::string() : " '" + def.name + "'");
   if (!solver_->solvesJoints()) {
-    throw std::invalid_argument(who + ": joints need the soft-step solver (world.solver \"soft-step\"); PGS does not solve them");
+    throw std::invalid_argument(who + ": joints need the soft-step solver (world.solver \"soft-step\"); " +
+                                std::string(settings_.solver == Settings::ContactSolverMethod::Pgs ? "PGS" : "LCP") +
+                                " does not solve them");
   }
   if (!isValid(def.bodyA)) throw std::invalid_argument(who + ": body_a names no body");
   const bool world = def.bodyB == kWorldAnchor;

@@ -128,8 +128,9 @@ void World::setSettings(const Settings& settings) {
   if (settings.solver != settings_.solver) {
     solver = makeContactSolver(settings.solver);
     if (!joints_.empty() && !solver->solvesJoints()) {
-      throw std::invalid_argument("the World has " + std::to_string(joints_.size()) +
-                                  " joints, and the PGS solver solves none (keep the soft-step solver)");
+      const std::string which = settings.solver == Settings::ContactSolverMethod::Pgs ? "PGS" : "LCP";
+      throw std::invalid_argument("the World has " + std::to_string(joints_.size()) + " joints, and the " + which +
+                                  " solver solves none (keep the soft-step solver)");
     }
   }
   if (settings.timeStep != settings_.timeStep) {

@@ -80,8 +80,10 @@ struct Settings {
   // The contact solver, behind one seam (engine/src/dynamics/contact_solver.h). SoftStep
   // (soft_step_solver.h, the default): substeps of soft contact constraints with relaxation
   // (Catto, "Solver2D", 2024; Box2D v3). Pgs (pgs_solver.h): projected Gauss-Seidel with split
-  // impulses, kept as the reference.
-  enum class ContactSolverMethod { SoftStep, Pgs };
+  // impulses, kept as the reference. Lcp (lcp_solver.h, issue 55): seed 001's resting contact as
+  // an exact linear complementarity problem per island, by Dantzig's principal pivoting, for small
+  // scenes (kMaxLcpRows contact points an island); PGS's step and friction otherwise.
+  enum class ContactSolverMethod { SoftStep, Pgs, Lcp };
   ContactSolverMethod solver = ContactSolverMethod::SoftStep;
   // Soft step: substeps per step, each one solve sweep with bias and one relax sweep without.
   // Box2D v3 runs 4 with 30 Hz contacts; at dt = 1/60 s that sinks a column of 20 unit boxes
@@ -156,7 +158,7 @@ inline constexpr double kMaxGravity = 1e13;  // [m/s^2]
 // A query log longer than this holds more than anyone reads, at ~200 B a record.
 inline constexpr std::size_t kMaxQueryLogCapacity = 1000000;  // [records]
 
-// The scene names of the methods: "soft-step" | "pgs", "sap" | "brute-force", "samples" | "triangles"
+// The scene names of the methods: "soft-step" | "pgs" | "lcp", "sap" | "brute-force", "samples" | "triangles"
 // (scene/scene_parts.cpp reads them, worldBlockJson writes them).
 const char* contactSolverName(Settings::ContactSolverMethod method);
 const char* broadPhaseName(Settings::BroadPhaseMethod method);
