@@ -66,7 +66,7 @@ class ClampedFactor {
   auto lower() const { return l_.topLeftCorner(k_, k_).triangularView<Eigen::Lower>(); }
 
  public:
-  explicit ClampedFactor(Index capacity) : l_(capacity, capacity) {}
+  explicit ClampedFactor(Index capacity) : l_(MatrixXd::Zero(capacity, capacity)) {}
   // y = L^-1 v: M_jC M_CC^-1 M_Cj = |y|^2 for v = M_Cj.
   VectorXd forward(const VectorXd& v) const { return lower().solve(v); }
   // x = M_CC^-1 v = L^-T L^-1 v.

@@ -82,7 +82,7 @@ struct Settings {
   // (Catto, "Solver2D", 2024; Box2D v3). Pgs (pgs_solver.h): projected Gauss-Seidel with split
   // impulses, kept as the reference. Lcp (lcp_solver.h, issue 55): seed 001's resting contact as
   // an exact linear complementarity problem per island, by Dantzig's principal pivoting, for small
-  // scenes (kMaxLcpRows contact points an island); PGS's step and friction otherwise.
+  // scenes (kMaxLcpRows contact points an island), with PGS's friction cone beside it.
   enum class ContactSolverMethod { SoftStep, Pgs, Lcp };
   ContactSolverMethod solver = ContactSolverMethod::SoftStep;
   // Soft step: substeps per step, each one solve sweep with bias and one relax sweep without.
