@@ -10,7 +10,7 @@
 #include "rbsim/dynamics/impulse.h"
 #include "rbsim/integrate/integrator.h"
 #include "rbsim/integrate/simulation_error.h"
-#include "world/islands.h"
+#include "math/disjoint_sets.h"
 
 namespace rbsim {
 namespace {
@@ -377,10 +377,10 @@ void LcpSolver::solve(const SolverInput& input) {
   }
   pseudoVelocities_.assign(bodies_.size(), Velocity{});
 
-  // Islands: bodies of finite mass linked by their contacts (world/islands.h); a patch between
+  // Islands: bodies of finite mass linked by their contacts (math/disjoint_sets.h); a patch between
   // two bodies of infinite mass moves nothing and gets no impulse.
   const auto dynamic = [&](int slot) { return bodies_[static_cast<std::size_t>(slot)].inverseMass > 0.0; };
-  Islands islands(bodies_.size());
+  DisjointSets islands(bodies_.size());
   for (const Patch& patch : patches_) {
     if (dynamic(patch.body1) && dynamic(patch.body2)) islands.link(patch.body1, patch.body2);
   }

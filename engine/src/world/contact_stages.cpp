@@ -6,7 +6,7 @@
 
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
-#include "world/islands.h"
+#include "math/disjoint_sets.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {
@@ -67,7 +67,7 @@ void World::wakeTouchedIslands() {
     return dynamicPair(c) && bodies_[c.a].awake() != bodies_[c.b].awake();
   });
   if (!touched) return;
-  Islands islands(bodies_.size());
+  DisjointSets islands(bodies_.size());
   for (const Contact& c : contacts) {
     if (dynamicPair(c)) islands.link(c.a, c.b);
   }

@@ -14,7 +14,7 @@
 #include "math/fnv.h"
 #include "rbsim/fracture/fracture.h"
 #include "world/collision_pipeline.h"
-#include "world/islands.h"
+#include "math/disjoint_sets.h"
 #include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
@@ -337,7 +337,7 @@ void World::updateSleep() {
     body.setRestingTime(slow ? body.restingTime() + dt : 0.0);
   }
   // An island sleeps when its least rested body has rested long enough.
-  Islands islands(bodies_.size());
+  DisjointSets islands(bodies_.size());
   for (const Contact& contact : collision_->contacts()) {
     if (contact.kind == Contact::Kind::BodyBody && !bodies_[contact.a].isStatic() && !bodies_[contact.b].isStatic()) {
       islands.link(contact.a, contact.b);

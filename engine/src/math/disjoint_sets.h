@@ -1,7 +1,8 @@
 #pragma once
-// Islands: sets of dynamic bodies linked by contacts, which fall asleep together (as Box2D's
-// b2Island), so that a stack never sleeps in part and is woken again by its own awake half.
-// Static bodies and planes link nothing: every box on the ground is its own island.
+// Disjoint sets over indices (union-find): the World's islands, sets of dynamic bodies linked by
+// contacts, which fall asleep together (as Box2D's b2Island), so that a stack never sleeps in part
+// and is woken again by its own awake half; and the exact LCP solver's islands, its independent
+// problems. Static bodies and planes link nothing: every box on the ground is its own island.
 #include <cstddef>
 #include <numeric>
 #include <vector>
@@ -9,9 +10,9 @@
 namespace rbsim {
 
 // Disjoint sets over body indices, with path halving and union by size.
-class Islands {
+class DisjointSets {
  public:
-  explicit Islands(std::size_t count) : parent_(count), size_(count, 1) {
+  explicit DisjointSets(std::size_t count) : parent_(count), size_(count, 1) {
     std::iota(parent_.begin(), parent_.end(), std::size_t{0});
   }
   std::size_t find(std::size_t i) {
