@@ -57,7 +57,7 @@ void Flags::attach(CLI::App& cmd, FlagSet set) {
       ->type_name("KEY=VALUE")
       ->check(nonEmpty);
   option("--plot", plot, "Q1,Q2,...",
-         "time plots (view.plots) of ke, pe, E, |P|, |L|, contacts, error; of the whole scene, or of the "
+         "time plots (view.plots) of ke, pe, E, |P|, |L|, contacts, error, drift; of the whole scene, or of the "
          "selected body with --set view.plot_of=selected");
   cmd.add_flag("--no-render", noRender, "simulate only: no frames, no video");
   cmd.add_flag("--no-overlay", noOverlay, "hide the variables panel (view.overlay=false)");

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "rbsim/collision/contact.h"
+#include "rbsim/math/rotation.h"
 
 namespace rbsim::app {
 
@@ -56,6 +57,14 @@ double plotQuantity(const std::string& name, const World& world, bool selectedOn
     return L.norm();
   }
   if (name == "contacts") return static_cast<double>(contactsOf(world, selectedOnly, selected));
+  if (name == "drift") {
+    // How far R is from a rotation, ||R^T R - I||_F: zero but for rounding unless euler-matrix runs
+    // without drift correction (seed 004 "Drift correction"); the scene's largest.
+    if (one) return orthonormalityError(bodies[selected].rotation());
+    double largest = 0.0;
+    for (const RigidBody& b : bodies) largest = std::max(largest, orthonormalityError(b.rotation()));
+    return largest;
+  }
   if (name == "error") {
     if (freeFlight == nullptr) return std::numeric_limits<double>::quiet_NaN();
     const FreeFlightError::Reading reading = freeFlight->read(world);
@@ -72,6 +81,7 @@ std::pair<std::string, std::string> plotUnitAndTitle(const std::string& name, bo
   if (name == "|L|") return {"kg m^2/s", selectedOnly ? "|L| about the centre of mass" : "|L| about the origin"};
   if (name == "contacts") return {"", "contact points"};
   if (name == "error") return {"rad", "angle from the exact spin"};
+  if (name == "drift") return {"", "||R^T R - I||, R's drift from a rotation"};
   return {"", name};
 }
 

@@ -52,7 +52,7 @@ class Scene:
 class World:
     # The keys of a scene's "world" block (docs/scene-format.md), e.g. World(dt=1/60, integrator="rk4").
     def __init__(self, /, *, gravity: Vec3 = (0.0, -9.81, 0.0), dt: float = 0.004166666666666667,
-                 integrator: str = 'exact', inertia: str = 'exact', duration: float = 5.0,
+                 integrator: str = 'exact', drift_correction: bool = True, inertia: str = 'exact', duration: float = 5.0,
                  steps: Optional[int] = None, sleep: bool = True, sleep_linear_speed: float = 0.01,
                  sleep_angular_speed: float = 0.035, time_to_sleep: float = 0.5, collisions: bool = True,
                  ccd: bool = True, ccd_motion_fraction: float = 0.25, broad_phase: str = 'sap',

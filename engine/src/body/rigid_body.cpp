@@ -99,6 +99,13 @@ void RigidBody::setState(const BodyState& state) {
   updateDerived();
 }
 
+void RigidBody::setState(const BodyState& state, const Mat3& rotation) {
+  state_ = state;
+  updateDerived();
+  inputs_.rotation = rotation;
+  inputs_.angularVelocity = inverseInertiaWorld() * state_.angularMomentum;
+}
+
 void RigidBody::setPosition(const Vec3& x) {
   state_.position = x;
   wake();

@@ -137,9 +137,13 @@ std::vector<std::string> integratorNames() {
   return names;
 }
 
+Mat3 eulerMatrixUpdate(const Mat3& R, const Vec3& omega, double dt) {
+  // Seed 004 "RB rotational update": R(t + dt) = R(t) + omega* R(t) dt.
+  return R + dt * star(omega) * R;
+}
+
 Mat3 eulerMatrixStep(const Mat3& R, const Vec3& omega, double dt) {
-  // Seed 004 "RB rotational update": R(t + dt) = R(t) + omega* R(t) dt, then "Drift correction".
-  return orthonormalize(R + dt * star(omega) * R);
+  return orthonormalize(eulerMatrixUpdate(R, omega, dt));  // then seed 004's "Drift correction"
 }
 
 Quat eulerQuatStep(const Quat& q, const Vec3& omega, double dt) {

@@ -28,6 +28,7 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
   s.gravity = w.vec3("gravity", s.gravity);
   s.timeStep = w.number("dt", s.timeStep);
   s.allowSleep = w.boolean("sleep", s.allowSleep);
+  s.driftCorrection = w.boolean("drift_correction", s.driftCorrection);
   s.sleepLinearSpeed = w.number("sleep_linear_speed", s.sleepLinearSpeed);
   s.sleepAngularSpeed = w.number("sleep_angular_speed", s.sleepAngularSpeed);
   s.timeToSleep = w.number("time_to_sleep", s.timeToSleep);
@@ -102,7 +103,6 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
   const int capacity = integer("query_log_capacity", static_cast<int>(s.queryLogCapacity));
   s.queryLogCapacity = capacity < 1 ? 0 : static_cast<std::size_t>(capacity);
   s.skipIdleStages = w.boolean("skip_idle_stages", s.skipIdleStages);
-  if (const SettingsProblem problem = checkSettings(s)) w.fail(problem.key.c_str(), problem.expectation);
   const std::string integrator = w.string("integrator", integratorName(s.integrator));
   if (!parseIntegrator(integrator, s.integrator)) {
     std::string names;
@@ -111,6 +111,7 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
     const std::string hint = near.empty() ? "" : " (did you mean \"" + near + "\"?)";
     w.fail("integrator", "unknown integrator \"" + integrator + "\"" + hint + "; expected one of " + names);
   }
+  if (const SettingsProblem problem = checkSettings(s)) w.fail(problem.key.c_str(), problem.expectation);
 }
 
 void parseWorldBlock(const JsonObject& w, Scene& scene) {

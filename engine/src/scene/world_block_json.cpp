@@ -16,6 +16,7 @@ nlohmann::json worldBlockJson(const Scene& scene) {
   w["gravity"] = {s.gravity.x(), s.gravity.y(), s.gravity.z()};
   w["dt"] = s.timeStep;
   w["integrator"] = integratorName(s.integrator);
+  w["drift_correction"] = s.driftCorrection;
   w["inertia"] = inertiaMethodName(s.inertia);
   w["duration"] = scene.duration;
   w["sleep"] = s.allowSleep;

@@ -31,6 +31,10 @@ SettingsProblem checkSettings(const Settings& s) {
     return {"gravity", "expected finite components, |g| at most " + formatNumber(kMaxGravity) +
                            " m/s^2 (above a neutron star's surface gravity)"};
   }
+  if (!s.driftCorrection && s.integrator != Integrator::EulerMatrix) {
+    return {"drift_correction", std::string("expected true with integrator \"") + integratorName(s.integrator) +
+                                    "\": false keeps euler-matrix's raw R, and only that integrator has one"};
+  }
   if (!within(s.sleepLinearSpeed, 0.0, inf)) return {"sleep_linear_speed", "expected a finite speed >= 0 m/s"};
   if (!within(s.sleepAngularSpeed, 0.0, inf)) return {"sleep_angular_speed", "expected a finite speed >= 0 rad/s"};
   if (!within(s.timeToSleep, 0.0, inf) || s.timeToSleep == 0.0) return {"time_to_sleep", "expected a finite time > 0 s"};

@@ -294,12 +294,19 @@ void World::integrateBodies(bool withGravity) {
   const std::size_t count = bodies_.size();
   std::array<BodyState, kIntegrateBatch> next;
   std::array<RigidBody*, kIntegrateBatch> stepped;
+  // euler-matrix without drift correction keeps each dynamic body's raw R (RigidBody::setState).
+  const bool rawMatrix = settings_.integrator == Integrator::EulerMatrix && !settings_.driftCorrection;
+  std::array<Mat3, kIntegrateBatch> raw;
   for (std::size_t first = 0; first < count; first += kIntegrateBatch) {
     const std::size_t end = std::min(count, first + kIntegrateBatch);
     std::size_t n = 0;  // awake bodies of the batch
     const auto commit = [&](std::size_t stepCount) {
       for (std::size_t k = 0; k < stepCount; ++k) {
-        stepped[k]->setState(next[k]);
+        if (rawMatrix && stepped[k]->isDynamic()) {
+          stepped[k]->setState(next[k], raw[k]);
+        } else {
+          stepped[k]->setState(next[k]);
+        }
         stepped[k]->clearAccumulators();
       }
     };
@@ -313,6 +320,7 @@ void World::integrateBodies(bool withGravity) {
         if (addGravity) body.applyForce(body.mass() * gravity);  // F = 0 + m g, as AccumulateForces would
         FreeFlowMemo* memo = usesFreeFlow(settings_.integrator) ? &body.freeFlowMemo() : nullptr;
         next[n] = integrate(settings_.integrator, body.state(), body.stepInputs(), dt, memo);
+        if (rawMatrix) raw[n] = eulerMatrixUpdate(body.rotation(), body.angularVelocity(), dt);
       }
       if (!isFinite(next[n])) {
         commit(n);  // the bodies before it have stepped, as they would have one at a time

@@ -22,6 +22,7 @@ struct Key {
   std::string value;      // a valid value unlike the default, as --set writes it
   std::function<bool(const Settings&)> reached;  // the field has the value
   std::string bad;        // a value checkSettings refuses ("" for booleans and names)
+  std::string with;       // another key's assignment the value needs, as --set writes it ("" for none)
 };
 
 const std::vector<Key>& keys() {
@@ -29,6 +30,7 @@ const std::vector<Key>& keys() {
       {"gravity", "[0,-1.62,0]", [](const Settings& s) { return s.gravity.y() == -1.62; }, "[0,0,1e14]"},
       {"dt", "0.01", [](const Settings& s) { return s.timeStep == 0.01; }, "0.5"},
       {"integrator", "rk4", [](const Settings& s) { return s.integrator == Integrator::Rk4; }, ""},
+      {"drift_correction", "false", [](const Settings& s) { return !s.driftCorrection; }, "", "world.integrator=euler-matrix"},
       {"inertia", "cube", [](const Settings& s) { return s.inertia == InertiaMethod::Cube; }, ""},
       {"sleep", "false", [](const Settings& s) { return !s.allowSleep; }, ""},
       {"sleep_linear_speed", "0.02", [](const Settings& s) { return s.sleepLinearSpeed == 0.02; }, "-1"},
@@ -77,7 +79,9 @@ class SettingsKeys : public testing::Test {
 TEST_F(SettingsKeys, EveryFieldIsSetByItsKeyAndReachesTheWorld) {
   for (const Key& k : keys()) {
     ASSERT_FALSE(k.reached(Settings{})) << k.name << ": the value tried is the default";
-    const Scene scene = loadScene(path_, {"world." + k.name + "=" + k.value});
+    std::vector<std::string> overrides = {"world." + k.name + "=" + k.value};
+    if (!k.with.empty()) overrides.push_back(k.with);
+    const Scene scene = loadScene(path_, overrides);
     EXPECT_TRUE(k.reached(scene.settings)) << k.name;
     const World world = buildWorld(scene);
     EXPECT_TRUE(k.reached(world.settings())) << k.name;

@@ -29,7 +29,7 @@ TEST(WorldBlockJson, TheDefaultsReadBackAsTheDefaults) {
 
 TEST(WorldBlockJson, EveryKeyChangedReadsBackAsWritten) {
   const nlohmann::json changed = {
-      {"gravity", {1.0, -3.0, 0.5}}, {"dt", 0.01}, {"integrator", "rk4"}, {"inertia", "cube"}, {"duration", 2.5},
+      {"gravity", {1.0, -3.0, 0.5}}, {"dt", 0.01}, {"integrator", "euler-matrix"}, {"drift_correction", false}, {"inertia", "cube"}, {"duration", 2.5},
       {"sleep", false}, {"sleep_linear_speed", 0.02}, {"sleep_angular_speed", 0.03}, {"time_to_sleep", 0.7},
       {"collisions", false}, {"ccd", false}, {"ccd_motion_fraction", 0.3}, {"broad_phase", "brute-force"},
       {"contact_margin", 0.03}, {"contact_recycle_distance", 0.002}, {"solver", "pgs"}, {"friction", "seed000"}, {"mesh_contact", "triangles"},

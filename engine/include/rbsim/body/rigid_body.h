@@ -43,6 +43,10 @@ class alignas(64) RigidBody {
   // State Y(t).
   const BodyState& state() const { return state_; }
   void setState(const BodyState& state);  // the integrators' entry point; updates all derived
+  // The state with R as given rather than R(q): euler-matrix without drift correction (Settings::
+  // driftCorrection), whose matrix is no longer a rotation. I(t)^-1 = R I_body^-1 R^T, omega and
+  // the world vertices then all use that R, as seed 004 computes them; q is R's nearest rotation.
+  void setState(const BodyState& state, const Mat3& rotation);
 
   // Manual set (seed 004 "TO DO: change x and R and redraw"): each updates every derived
   // quantity and every world vertex. Orientation must be a rotation (checked, never normalised).

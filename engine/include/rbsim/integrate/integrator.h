@@ -42,6 +42,8 @@ std::vector<std::string> integratorNames();
 
 // One rotation step of each method for a constant angular velocity omega [rad/s] over dt [s].
 Mat3 eulerMatrixStep(const Mat3& R, const Vec3& omega, double dt);
+// The same update without the drift correction: R + dt omega* R, no longer a rotation.
+Mat3 eulerMatrixUpdate(const Mat3& R, const Vec3& omega, double dt);
 Quat eulerQuatStep(const Quat& q, const Vec3& omega, double dt);
 Quat expMapStep(const Quat& q, const Vec3& omega, double dt);
 

@@ -15,7 +15,7 @@ namespace rbsim {
 
 // The keys of a scene's "world" block.
 inline constexpr std::initializer_list<const char*> kWorldKeys = {
-    "gravity", "dt", "integrator", "inertia", "duration", "steps", "sleep", "sleep_linear_speed",
+    "gravity", "dt", "integrator", "drift_correction", "inertia", "duration", "steps", "sleep", "sleep_linear_speed",
     "sleep_angular_speed", "time_to_sleep", "collisions", "ccd", "ccd_motion_fraction", "broad_phase",
     "contact_margin", "contact_recycle_distance", "solver", "friction", "mesh_contact", "substeps", "contact_hertz",
     "contact_damping_ratio", "contact_push_speed",

@@ -49,7 +49,7 @@ struct ViewDesc {
 };
 
 // The quantities view.plots may name.
-inline const std::vector<std::string> kPlotQuantities = {"ke", "pe", "E", "|P|", "|L|", "contacts", "error"};
+inline const std::vector<std::string> kPlotQuantities = {"ke", "pe", "E", "|P|", "|L|", "contacts", "error", "drift"};
 
 // How one particle system is drawn: camera-facing sprites whose colour, opacity and size follow
 // the particle's age fraction a = age / lifetime from birth (a = 0) to death (a = 1).

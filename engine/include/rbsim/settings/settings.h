@@ -35,6 +35,11 @@ struct Settings {
   // docs/integrators.md).
   Integrator integrator = Integrator::Exact;
   InertiaMethod inertia = InertiaMethod::Exact;  // default for bodies that do not choose
+  // Seed 004 "Drift correction": euler-matrix re-orthonormalises R after each R += dt omega* R.
+  // false keeps the raw matrix, so the drift the seed warns of (the body shears and grows) shows;
+  // only euler-matrix reads it. A contact or joint solve works on the body's nearest rotation, and
+  // R restarts from it there.
+  bool driftCorrection = true;
 
   // Sleeping (Box2D's b2_linearSleepTolerance, b2_angularSleepTolerance, b2_timeToSleep): a body
   // slower than both speeds for timeToSleep is put to sleep (its momenta set to zero) and is not
