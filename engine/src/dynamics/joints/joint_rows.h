@@ -8,6 +8,7 @@
 // Box2D v3 src/revolute_joint.c and prismatic_joint.c solve their axial rows this way.
 #include <algorithm>
 
+#include "rbsim/dynamics/impulse.h"
 #include "rbsim/dynamics/joint.h"
 #include "rbsim/dynamics/softness.h"
 #include "rbsim/math/types.h"
@@ -138,6 +139,11 @@ void solveBallAngular(Joint& joint, const Extra& extra, const Frame& f, double h
                       Pair& p);  // spring, friction, twist and cone limits
 void solvePrismatic(Joint& joint, const Extra& extra, const Frame& f, double h, const Softness& soft, bool useBias, Pair& p);
 void solveWeld(Joint& joint, const Extra& extra, const Frame& f, const Softness& soft, Pair& p);
+// The weld's parts (joints/weld.cpp): its 6x6 block K_A + K_B (seed 002 2.2.1) in (linear at the
+// anchor, angular) rows; the block solved as one with one softness; Box2D v3's split 3 + 3 form.
+Mat6 weldBlock(const Pair& p, const Frame& f);
+void solveWeldCoupled(Joint& joint, const Frame& f, const Softness& soft, Pair& p);
+void solveWeldSplit(Joint& joint, const Frame& f, const Softness& linear, const Softness& angular, Pair& p);
 // The ball's swing axis and twist Jacobian for a step (Extra), from the sides' world axes.
 void prepareBallLimits(const Vec3& coneAxis, const Vec3& twistAxis, Extra& extra);
 
