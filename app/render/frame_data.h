@@ -125,6 +125,31 @@ struct OverlayPlot {
   bool nonNegative = false;        // a length, an energy of motion, a count: the axis starts at 0
 };
 
+// An image of coloured samples with line segments over it, and its legend: a layer of a body's
+// signed distance grid (app/run/sdf_slice_view.h), drawn with ImGui (slice_panel.cpp).
+struct OverlayLegendEntry {
+  std::vector<glm::vec3> swatches;  // one or more colours, side by side
+  std::string text;
+};
+struct OverlayMap {
+  std::string title;
+  int columns = 0, rows = 0;       // samples; column 0 at the left, row 0 at the bottom
+  std::vector<glm::vec3> colors;   // per sample, columns fastest; RGB in [0, 1] as shown
+  std::vector<glm::vec4> lines;    // segments (u0, v0, u1, v1) in sample coordinates
+  glm::vec3 lineColor{0.0f};
+  float lineWidthPixels = 2.0f;    // in a 720-row image, scaled with the image height
+  std::vector<glm::vec3> colorBar;           // a gradient under the map, left to right; empty: none
+  std::vector<std::string> colorBarLabels;   // spread evenly under the bar, first at its left end
+  std::vector<OverlayLegendEntry> legend;
+};
+// Maps side by side in a column at the image's right, under a heading and lines of notes.
+struct OverlayMaps {
+  std::string heading;
+  std::vector<std::string> notes;
+  std::vector<OverlayMap> maps;
+  float leftFraction = 0.5f;  // the column's left edge, of the image width [1]
+};
+
 // How much the panel shows (view.panel): a compact panel is the title, the caption and at most
 // kCompactRows (panel_rows.h) of the rows, chosen by their level; a full one every row.
 enum class PanelMode { Compact, Full, Off };
@@ -156,6 +181,7 @@ struct OverlayData {
   // (pane_layout.h), instead of at the bottom right.
   bool plotsUnderPanel = false;
   float plotsBottomInset = 0.0f;  // the plots stand this far above the image's bottom [px] (a timeline below)
+  OverlayMaps maps;  // none when maps.maps is empty
 };
 
 struct FrameData {

@@ -87,7 +87,7 @@ Overlay::~Overlay() {
 
 bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* ui) {
   const bool panel = data.panel != PanelMode::Off && !(data.title.empty() && data.caption.empty() && data.rows.empty());
-  if (!panel && data.labels.empty() && data.plots.empty() && ui == nullptr) return false;
+  if (!panel && data.labels.empty() && data.plots.empty() && data.maps.maps.empty() && ui == nullptr) return false;
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
@@ -102,6 +102,7 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
   drawLabels(data);
   const float panelBottom = panel ? drawPanel(data) : 0.0f;
   drawPlots(data, panelBottom);
+  drawMaps(data);
   if (ui != nullptr && ui->draw) {
     ImGui::PushFont(bodyFont_);
     ui->draw();

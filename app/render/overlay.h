@@ -39,6 +39,8 @@ class Overlay {
   void drawLabels(const OverlayData& data);  // inside an ImGui frame
   // Inside an ImGui frame (plot_panel.cpp); `top` is where plots under the panel may start [px].
   void drawPlots(const OverlayData& data, float top);
+  // Inside an ImGui frame (slice_panel.cpp): data.maps in its column at the right.
+  void drawMaps(const OverlayData& data);
 
   int width_;
   int height_;

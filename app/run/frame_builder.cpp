@@ -10,6 +10,7 @@
 #include "run/collision_view.h"
 #include "run/particle_view.h"
 #include "run/planar_view.h"
+#include "run/sdf_slice_view.h"
 #include "run/soft_view.h"
 #include "run/to_glm.h"
 
@@ -230,6 +231,7 @@ render::FrameData buildFrame(const World& world
   if (planarWorld(world) != nullptr) addPlanarView(world, scene, frame);
   if (view.aabbs || view.contacts) addCollisionView(world, scene, frame);
   if (!world.joints().empty()) addJointLines(world, frame);
+  if (view.sdfSlice) addSdfSliceView(world, scene, frame);
   return frame;
 }
 

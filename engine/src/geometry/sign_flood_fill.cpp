@@ -93,9 +93,14 @@ SignRegions floodFillSigns(const GridLattice& shape, const TriangleBvh& bvh, con
   SignRegions out;
   for (int r = 0; r < regions; ++r) out.regions += offSurface[r] ? 1 : 0;
   out.inside.resize(n);
+  out.kind.resize(n);
   for (std::size_t p = 0; p < n; ++p) {
     const int r = region[p];
     out.inside[p] = !touchesBoundary[r] && vote[r] >= 0;
+    out.kind[p] = touchesBoundary[r] ? SdfFillRegion::Outside
+                  : !offSurface[r]   ? SdfFillRegion::OnSurface
+                  : out.inside[p]    ? SdfFillRegion::Inside
+                                     : SdfFillRegion::Cavity;
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rbsim/geometry/grid_lattice.h"
+#include "rbsim/geometry/signed_distance_grid.h"
 #include "geometry/triangle_bvh.h"
 
 namespace rbsim {
@@ -19,6 +20,7 @@ enum class SurfaceProximity : std::uint8_t { Far, WithinOneCell, OnSurface };
 
 struct SignRegions {
   std::vector<bool> inside;  // per grid point
+  std::vector<SdfFillRegion> kind;  // per grid point: the kind of its region (never Unknown)
   int regions = 0;           // connected regions with a point off the surface
 };
 

@@ -151,7 +151,10 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
     if (!candidate[p]) continue;
     const Vec3i c = shape.coordinates(p);
     const auto hit = bvh.closestWithin(shape.point(c.x(), c.y(), c.z()), radius);
-    if (!hit) continue;
+    if (!hit) {
+      candidate[p] = false;  // kept below as the band's points (SdfStage::ExactBand)
+      continue;
+    }
     labels[p] = MarchLabel::Black;
     distance[p] = hit->distance;
     if (hit->distance <= kOnSurfaceCells * h) {
@@ -162,6 +165,7 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
     ++grid.stats_.exactPoints;
   }
 
+  const std::vector<bool>& exact = candidate;  // now exactly the points the band valued
   grid.stats_.exactSeconds = since(phase);
   phase = std::clock();
   grid.stats_.marchedPoints = fastMarch(shape, labels, distance);
@@ -171,8 +175,12 @@ SignedDistanceGrid SignedDistanceGrid::build(const Mesh& mesh, const SdfGridOpti
   grid.stats_.signSeconds = since(phase);
   grid.stats_.regions = sign.regions;
   grid.values_ = std::move(distance);
+  grid.provenance_.resize(n);
   for (std::size_t p = 0; p < n; ++p) {
     if (sign.inside[p]) grid.values_[p] = -grid.values_[p];
+    // Points the exact band left White were marched (fastMarch leaves every point Black).
+    const SdfStage stage = exact[p] ? SdfStage::ExactBand : SdfStage::Marched;
+    grid.provenance_[p] = static_cast<std::uint8_t>(static_cast<unsigned>(stage) | static_cast<unsigned>(sign.kind[p]) << 2);
   }
   grid.stats_.seconds = since(start);
   return grid;
@@ -193,6 +201,16 @@ SignedDistanceGrid SignedDistanceGrid::fromValues(const GridLattice& shape, std:
   grid.shape_ = shape;
   grid.values_ = std::move(values);
   return grid;
+}
+
+SdfStage SignedDistanceGrid::stage(int i, int j, int k) const {
+  if (provenance_.empty()) return SdfStage::Given;
+  return static_cast<SdfStage>(provenance_[shape_.index(i, j, k)] & 0x3u);
+}
+
+SdfFillRegion SignedDistanceGrid::fillRegion(int i, int j, int k) const {
+  if (provenance_.empty()) return SdfFillRegion::Unknown;
+  return static_cast<SdfFillRegion>(provenance_[shape_.index(i, j, k)] >> 2 & 0x7u);
 }
 
 double SignedDistanceGrid::interpolate(const Vec3& p, Vec3* gradient) const {

@@ -21,6 +21,7 @@
 #include "scene/ragdoll_parser.h"
 #include "scene/planar_parser.h"
 #include "rbsim/scene/scene_parts.h"
+#include "scene/sdf_slice_parser.h"
 #include "scene/soft_parser.h"
 #include "rbsim/scene/strict_json.h"
 
@@ -42,6 +43,7 @@ void parseView(const JsonObject& root, Scene& scene) {
   const JsonObject v = root.object("view", kViewKeys);
   parseViewFields(v, scene.view);
   if (v.has("selected")) scene.view.selected = scene_detail::findBody(scene.bodies, v, "selected");
+  if (v.has("sdf_slice")) scene.view.sdfSlice = parseSdfSlice(v.object("sdf_slice", kSdfSliceKeys), scene);
 }
 
 void checkWorkBudget(const JsonObject& root, const Scene& scene) {

@@ -3,6 +3,7 @@
 // Functions"): signed distances phi [m] at the points of a grid laid over a padded bounding box of
 // a closed triangle mesh, trilinearly interpolated between them; phi < 0 inside, > 0 outside.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,16 @@ inline constexpr double kMaxSdfGridPoints = 1.6e7;     // [points]: ~640 MB and 
 // Budget of marking the exact band: each triangle visits the grid points of its box grown by the
 // band; a mesh of many long triangles crossing the whole grid would visit points x triangles.
 inline constexpr double kMaxSdfBandVisits = 1e9;       // [point visits], ~1 s
+
+// Which stage of build() set a grid point's value (seed 000 "Constructing Signed Distance
+// Functions"): the exact distance to the mesh within the narrow band, or fast marching beyond it.
+// Given: a grid made by fromValues (an implicit shape's samples, a file), no stage of build().
+enum class SdfStage : std::uint8_t { Given, ExactBand, Marched };
+// Where the sign flood fill (seed 000 "Sign of phi") put a grid point: Outside, in a region that
+// reached the grid's boundary; Inside, in an enclosed region the mesh's normals vote inside;
+// Cavity, in an enclosed region they vote outside (a hollow body's hole); OnSurface, a point on
+// the surface itself, cut off from every neighbour. Unknown for a grid made by fromValues.
+enum class SdfFillRegion : std::uint8_t { Unknown, Outside, Inside, Cavity, OnSurface };
 
 struct SdfGridOptions {
   int resolution = 32;     // cells along the longest side of the mesh's bounding box [1], >= 4
@@ -81,6 +92,10 @@ class SignedDistanceGrid {
   Vec3 point(int i, int j, int k) const { return shape_.point(i, j, k); }
   double value(int i, int j, int k) const { return values_[shape_.index(i, j, k)]; }
   const BuildStats& stats() const { return stats_; }
+  // How build() came to value(i, j, k): kept (one byte a point) so that a slice can show the
+  // narrow band and the flood fill's regions (geometry/sdf_slice.h).
+  SdfStage stage(int i, int j, int k) const;
+  SdfFillRegion fillRegion(int i, int j, int k) const;
 
  private:
   // phi and its gradient at a point of the grid's box.
@@ -88,6 +103,8 @@ class SignedDistanceGrid {
 
   GridLattice shape_;
   std::vector<double> values_;
+  // Per point: SdfStage in bits 0-1, SdfFillRegion in bits 2-4; empty for fromValues grids.
+  std::vector<std::uint8_t> provenance_;
   BuildStats stats_;
 };
 

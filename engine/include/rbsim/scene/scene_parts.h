@@ -68,7 +68,7 @@ JointDef parseJointBlock(const nlohmann::json& joint, const std::string& file, c
 
 inline constexpr std::initializer_list<const char*> kViewKeys = {
     "camera", "size", "fps", "overlay", "panel", "wireframe", "axes", "grid", "aabbs", "contacts", "vertices", "instancing", "selected", "follow",
-    "caption", "plots", "plot_of", "plot_seconds"};
+    "caption", "plots", "plot_of", "plot_seconds", "sdf_slice"};
 // The fields of a view block but "selected" (a body of the file: the caller's) into `view`.
 void parseViewFields(const JsonObject& v, ViewDesc& view);
 // What a single picture of a view block uses, over `view`: "camera", "overlay", "wireframe",

@@ -3,12 +3,24 @@
 // look): plain data the scene loader fills and the app turns into pixels. The engine itself
 // never reads it.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rbsim/math/types.h"
 
 namespace rbsim {
+
+// A layer of one body's signed distance grid shown beside the scene (view.sdf_slice; app/run/
+// sdf_slice_view.h): phi with its zero contour, and the narrow band and flood-fill regions that
+// built it (seed 000 "Constructing Signed Distance Functions"). In the body frame, so it moves
+// with the body; the layer nearest the offset is shown.
+struct SdfSliceDesc {
+  std::size_t body = 0;   // index into the scene's bodies; the body has a grid
+  int axis = 2;           // the layer's normal, a body axis: 0 x, 1 y, 2 z
+  double offset = 0.0;    // along the axis from the centre of mass at t = 0 [m]
+  double sweepTo = 0.0;   // at the scene's end [m], moved linearly in time; = offset: still
+};
 
 // How the scene is shown; plain data, the app turns it into pixels.
 struct ViewDesc {
@@ -46,6 +58,7 @@ struct ViewDesc {
   std::vector<std::string> plots;
   bool plotSelected = false;
   double plotSeconds = 0.0;  // [s]
+  std::optional<SdfSliceDesc> sdfSlice;  // none: no slice shown
 };
 
 // The quantities view.plots may name.
