@@ -125,9 +125,7 @@ bool Overlay::draw(const OverlayData& data, float deltaSeconds, const UiFrame* u
 void Overlay::drawLabels(const OverlayData& data) {
   const ImGuiIO& io = ImGui::GetIO();
   const ImGuiStyle& style = ImGui::GetStyle();
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
-                                 ImGuiWindowFlags_NoFocusOnAppearing;
+  const ImGuiWindowFlags flags = kFixedPanelFlags;
   ImGui::PushFont(labelFont_);
   for (std::size_t i = 0; i < data.labels.size(); ++i) {
     const OverlayLabel& label = data.labels[i];

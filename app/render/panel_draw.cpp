@@ -154,9 +154,7 @@ float Overlay::drawPanel(const OverlayData& data) {
   if (layout.width <= 0.0f) return 0.0f;
   ImGui::SetNextWindowPos(ImVec2(layout.x, layout.y));
   ImGui::SetNextWindowSize(ImVec2(layout.width, layout.height));
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
-                                 ImGuiWindowFlags_NoFocusOnAppearing;
+  const ImGuiWindowFlags flags = kFixedPanelFlags;
   if (ImGui::Begin("##rbsim-overlay", nullptr, flags)) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const float left = layout.x + 0.5f * ImGui::GetStyle().WindowPadding.x;

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include "render/overlay_style.h"
 #include "overlay.h"
 #include "pane_layout.h"
 #include "plot_ticks.h"
@@ -63,9 +64,7 @@ void Overlay::drawPlots(const OverlayData& data, float top) {
   const float right = underPanel ? margin + width : data.plotsRight > 0.0f ? data.plotsRight : io.DisplaySize.x - margin;
   ImGui::SetNextWindowPos(ImVec2(right - width, io.DisplaySize.y - data.plotsBottomInset - height - margin));
   ImGui::SetNextWindowSize(ImVec2(width, height));  // fixed: see overlay.h
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
-                                 ImGuiWindowFlags_NoFocusOnAppearing;
+  const ImGuiWindowFlags flags = kFixedPanelFlags;
   if (ImGui::Begin("##rbsim-plots", nullptr, flags)) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);

@@ -52,9 +52,7 @@ void Overlay::drawMaps(const OverlayData& data) {
   const ImVec2 size(io.DisplaySize.x - margin - left, io.DisplaySize.y - 2.0f * margin);
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);  // fixed: see overlay.h
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoNav |
-                                 ImGuiWindowFlags_NoFocusOnAppearing;
+  const ImGuiWindowFlags flags = kFixedPanelFlags;
   if (ImGui::Begin("##rbsim-maps", nullptr, flags)) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
