@@ -90,7 +90,7 @@ class SoftStepSolver final : public ContactSolver {
   };
   // One manifold point, in three arrays indexed alike, so that each pass streams only what it
   // reads (Box2D v3 keeps its solver points apart from the manifold the same way): the sweeps of
-  // every substep read and write Point; updateSeparations, once a substep, reads PointFrame; the
+  // every substep read and write Point; the relax, once a substep, reads PointFrame too; the
   // step's start and end (prepare, restitution, the report) use PointReport.
   // A Point holds the lever arms and effective masses of the step's start only (Box2D v3 and
   // Box3D prepare them once a step, contact_solver.c); the sweeps form r x n and I^-1 (r x n)
@@ -100,7 +100,7 @@ class SoftStepSolver final : public ContactSolver {
     // From each centre of mass now to the point both bodies push at, world [m]: one point for
     // both, so that every impulse changes x x P + L of the pair by (p - p) x j = 0 and angular
     // momentum is exchanged exactly (fixed arms, as Box2D keeps them, would lose
-    // (dx_B - dx_A) x j). updateSeparations moves it with the bodies once a substep.
+    // (dx_B - dx_A) x j). The relax moves it with the bodies once a substep (updateArms).
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero();
     double separation = 0.0;         // s at the current poses [m]
     double normalMass = 0.0;         // 1 / (n^T K n) at the step's start [kg]
@@ -191,7 +191,6 @@ class SoftStepSolver final : public ContactSolver {
   // The point's arms and separation at the current poses (every substep); with `masses`, its
   // effective masses too (once a step, at prepare: Box2D v3 and Box3D keep them for the step).
   void updateArms(const Constraint& c, const PointFrame& f, Point& p, bool masses) const;
-  void updateSeparations();
   // u_rel,N at point p of constraint c, body 1 = B, with the arms now.
   double normalVelocity(const Constraint& c, const Point& p, const SolverState& A, const SolverState& B) const {
     return c.normal.dot(B.linearVelocity + B.angularVelocity.cross(p.anchorB) - A.linearVelocity -
@@ -226,7 +225,7 @@ class SoftStepSolver final : public ContactSolver {
   // for waking them.
   template <typename F>
   void forEachIsland(F&& f) const {
-    parallelForUneven(islands_.count(), threads_, constraints_.size() + joints_.size() >= kMinParallelItems, f);
+    parallelForUneven(islands_.count(), threads_, constraints_.size() + joints_.size() >= detail::minParallelItems(), f);
   }
   void integratePositions(double h);
   void collide(const Settings& settings, double h);  // single-point collisions within the substep h

@@ -1,9 +1,9 @@
-// Settings::threads (issue 34): a step's loops over bodies, pairs and solver islands run on OpenMP
-// threads, and the result must not depend on how many: the state of every body after a pyramid of
+// Settings::threads (issue 34): a step's loops over bodies, pairs and solver islands run on the
+// threads of oneTBB's pool (issue 54), and the result must not depend on how many: the state of every body after a pyramid of
 // boxes settles, after a grid of spheres hangs on ball joints, and after a hundred separate stacks
-// settle, is bit for bit the same for 1, 2 and 4 threads (4 on a 2-core machine too). Each scene
-// has more than kMinParallelItems bodies, pairs and constraints, so every parallel loop runs on
-// threads.
+// settle, is bit for bit the same for 1, 2 and 4 threads (4 on a 2-core machine too). The tests
+// lower the pool's threshold to kTestMinParallelItems, which each scene's bodies, pairs, points
+// and constraints exceed, so every parallel loop runs on threads.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -117,23 +117,30 @@ std::uint64_t jointGridHash(int threads, int n, int steps) {
   return stateHash(world);
 }
 
+// Far below the default (kDefaultMinParallelItems), so that these scenes of 600 to 1600 bodies
+// hand every loop to the pool.
+constexpr std::size_t kTestMinParallelItems = 16;  // [items]
+
 // Under the sanitizers a few steps: each still runs every parallel loop (the sanitized suite's
 // time is CI's longest part).
 const int kStepScale = test::kSanitizedBuild ? 1 : 3;
 
 TEST(Threads, APyramidEndsBitForBitTheSameOnOneTwoAndFourThreads) {
+  const detail::ScopedMinParallelItems pool(kTestMinParallelItems);
   const std::uint64_t one = pyramidHash(1, 40, 10 * kStepScale);
   EXPECT_EQ(pyramidHash(2, 40, 10 * kStepScale), one);
   EXPECT_EQ(pyramidHash(4, 40, 10 * kStepScale), one);
 }
 
 TEST(Threads, AJointGridEndsBitForBitTheSameOnOneTwoAndFourThreads) {
+  const detail::ScopedMinParallelItems pool(kTestMinParallelItems);
   const std::uint64_t one = jointGridHash(1, 40, 7 * kStepScale);
   EXPECT_EQ(jointGridHash(2, 40, 7 * kStepScale), one);
   EXPECT_EQ(jointGridHash(4, 40, 7 * kStepScale), one);
 }
 
 TEST(Threads, AHundredStacksEndBitForBitTheSameOnOneTwoAndFourThreads) {
+  const detail::ScopedMinParallelItems pool(kTestMinParallelItems);
   const std::uint64_t one = stacksHash(1, 100, 6, 20 * kStepScale);
   EXPECT_EQ(stacksHash(2, 100, 6, 20 * kStepScale), one);
   EXPECT_EQ(stacksHash(4, 100, 6, 20 * kStepScale), one);
@@ -176,11 +183,12 @@ TEST(Threads, IslandsSplitAtTheGroundAndKeepTheOrderGiven) {
 
 // An exception in any item reaches the caller, once, after every thread is done.
 TEST(Threads, AnItemsExceptionReachesTheCaller) {
-  std::vector<int> done(4 * kMinParallelItems, 0);
+  const detail::ScopedMinParallelItems pool(kTestMinParallelItems);
+  std::vector<int> done(4 * kTestMinParallelItems, 0);
   EXPECT_THROW(parallelFor(done.size(), 4,
                            [&](std::size_t i) {
                              done[i] = 1;
-                             if (i == 3 * kMinParallelItems) throw std::runtime_error("item failed");
+                             if (i == 3 * kTestMinParallelItems) throw std::runtime_error("item failed");
                            }),
                std::runtime_error);
 }

@@ -137,9 +137,9 @@ struct Settings {
   bool warmStarting = true;
   double warmStartDistance = 0.02;  // [m]
 
-  // Threads that share a step's loops over bodies, pairs and graph colours (OpenMP). Every loop
-  // splits its work into the same pieces whatever the count, and each piece writes only its own
-  // slots, so a step gives bit-identical results for any number of threads.
+  // Threads that share a step's loops over bodies, pairs and solver islands (oneTBB's pool, which
+  // sleeps between loops; math/parallel.h). Each piece of work writes only its own slots and each
+  // island is swept in one order, so a step gives bit-identical results for any number of threads.
   int threads = machineThreads();  // [threads], in [1, kMaxThreads]
 
   // false runs every stage of World::step every step, needed or not: it exists to measure what
