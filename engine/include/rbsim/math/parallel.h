@@ -54,7 +54,7 @@ void parallelFor(std::size_t n, int threads, F&& f) {
     F& f;
     std::atomic<bool> failed{false};
     std::exception_ptr failure;  // written by the one item that set `failed`
-  } context{f};
+  } context{f, {}, {}};
   detail::runOnPool(n, threads, true, &context, [](void* c, std::size_t begin, std::size_t end) {
     Context& x = *static_cast<Context*>(c);
     for (std::size_t i = begin; i < end; ++i) {
