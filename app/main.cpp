@@ -39,13 +39,13 @@ using rbsim::app::Flags;
 using rbsim::app::FlagSet;
 using rbsim::app::RunOptions;
 
-// Everything printed on stdout (the summary, `list`) is checked too: `rbsim run ... > /dev/full`
-// must not report success.
-int finishStdout(int code) {
+// Everything printed on stdout (the summary, `list`, --version, --help) is checked too:
+// `rbsim run ... > /dev/full` must not report success. `what` names what was printed.
+int finishStdout(int code, const char* what = "the summary") {
   errno = 0;
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
     const int why = errno;
-    std::fprintf(stderr, "rbsim: error: standard output: cannot write the summary (%s)\n",
+    std::fprintf(stderr, "rbsim: error: standard output: cannot write %s (%s)\n", what,
                  why != 0 ? std::strerror(why) : "write error");
     return 2;
   }
@@ -201,8 +201,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    // --version and --help end the parse with code 0, their text on stdout.
     const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    return code == 0 ? finishStdout(0, "the version or help text") : 2;
   }
 
   try {

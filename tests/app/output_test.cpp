@@ -7,8 +7,9 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <string>
@@ -135,6 +136,71 @@ TEST(CheckedFile, AFullDiskFailsWithTheOsReason) {
   EXPECT_EQ(file.error(), "No space left on device");
 }
 
+std::string fileText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Issue 56: an output appears whole or not at all, and a file there before stays until it does.
+TEST(CheckedFile, AnOutputAppearsWholeOrNotAtAll) {
+  const fs::path dir = freshDir("atomic");
+  const fs::path path = dir / "out.txt", partial = dir / "out.txt.partial";
+  {
+    render::CheckedFile file;
+    ASSERT_TRUE(file.open(path));
+    ASSERT_TRUE(file.write("first"));
+    EXPECT_FALSE(fs::exists(path)) << "visible before it is whole";
+    ASSERT_TRUE(file.close());
+  }
+  EXPECT_EQ(fileText(path), "first");
+  EXPECT_FALSE(fs::exists(partial));
+  {
+    render::CheckedFile file;  // abandoned half-way, as by an exception: the old file stays
+    ASSERT_TRUE(file.open(path));
+    ASSERT_TRUE(file.write("sec"));
+    EXPECT_EQ(fileText(path), "first");
+  }
+  EXPECT_EQ(fileText(path), "first");
+  EXPECT_FALSE(fs::exists(partial));
+  {
+    render::CheckedFile file;
+    ASSERT_TRUE(file.open(path));
+    ASSERT_TRUE(file.write("second"));
+    ASSERT_TRUE(file.close());
+  }
+  EXPECT_EQ(fileText(path), "second");
+  EXPECT_FALSE(fs::exists(partial));
+  fs::remove_all(dir);
+}
+
+// A run that fails (here it diverges at its first step) leaves the trace and the glTF export of
+// the run before as they were: --gltf truncated its file before the run.
+TEST(CheckedFile, AFailedRunKeepsTheOutputsOfTheRunBefore) {
+  const fs::path dir = freshDir("failed_run");
+  const fs::path gltf = dir / "run.glb", trace = dir / "trace.csv";
+  const std::vector<std::string> scene{"run", std::string(RBSIM_BAD_DATA_DIR) + "/valid.json", "--no-render",
+                                       "--gltf", gltf.string(), "--trace", trace.string()};
+  const auto [good, goodOutput] = runRbsim(scene);
+  ASSERT_EQ(good, 0) << goodOutput;
+  const std::string gltfBefore = fileText(gltf), traceBefore = fileText(trace);
+  ASSERT_GT(gltfBefore.size(), 100u);
+  ASSERT_GT(traceBefore.size(), 100u);
+  std::vector<std::string> diverging = scene;
+  for (const char* set : {"bodies[0].mass=1e-10", "bodies[0].forces=[{\"force\":[1e308,0,0],\"start\":0,\"end\":1}]"}) {
+    diverging.push_back("--set");
+    diverging.push_back(set);
+  }
+  const auto [bad, badOutput] = runRbsim(diverging);
+  EXPECT_EQ(bad, 2) << badOutput;
+  EXPECT_NE(badOutput.find("diverged"), std::string::npos) << badOutput;
+  EXPECT_EQ(fileText(gltf), gltfBefore);
+  EXPECT_EQ(fileText(trace), traceBefore);
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().extension(), entry.path() == gltf ? ".glb" : ".csv") << entry.path() << " left behind";
+  }
+  fs::remove_all(dir);
+}
+
 TEST(TraceWriter, AFullDiskStopsTheRunNamingTheFile) {
   try {
     TraceWriter trace("/dev/full");
@@ -247,6 +313,20 @@ TEST(Stdout, ASummaryThatCannotBeWrittenIsAnError) {
   EXPECT_EQ(code, 2) << output;
   EXPECT_NE(output.find("standard output: cannot write the summary (No space left on device)"), std::string::npos)
       << output;
+}
+
+// Issue 56: `rbsim --version > /dev/full` exited 0.
+TEST(Stdout, VersionAndHelpThatCannotBeWrittenAreErrors) {
+  for (const char* flag : {"--version", "--help"}) {
+    const auto [code, output] = runRbsim({flag}, "2>&1 >/dev/full");
+    EXPECT_EQ(code, 2) << flag << ": " << output;
+    // The reason is the OS's when the last flush fails, "write error" when CLI11's own flush
+    // already failed and stdio kept only the error flag.
+    EXPECT_NE(output.find("standard output: cannot write the version or help text ("), std::string::npos) << output;
+  }
+  const auto [code, output] = runRbsim({"--version"}, "2>&1");
+  EXPECT_EQ(code, 0) << output;
+  EXPECT_NE(output.find("rbsim"), std::string::npos) << output;
 }
 
 TEST(FlagInteger, SaysTheRangeInWordsAndNeverWraps) {
