@@ -225,7 +225,8 @@ py::object PyWorld::rayCast(const py::object& origin, const py::object& directio
   constexpr const char* kCall = "World.ray_cast()";
   const Vec3 o(finiteNumbers(origin, 3, "origin", kCall));
   const Vec3 d(finiteNumbers(direction, 3, "direction", kCall));
-  if (d.squaredNorm() == 0.0) throw InputError(kCall, "direction", "expected a non-zero direction");
+  // stableNorm: a squared norm under- or overflows for lengths below 1e-154 or above 1e154.
+  if (!(d.stableNorm() > 0.0)) throw InputError(kCall, "direction", "expected a non-zero direction");
   double reach = std::numeric_limits<double>::infinity();
   if (!maxDistance.is_none()) {
     reach = finiteNumbers(py::make_tuple(maxDistance), 1, "max_distance", kCall)[0];

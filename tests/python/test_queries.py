@@ -36,6 +36,18 @@ def test_a_ray_finds_the_sphere_the_box_and_the_ground_where_their_equations_say
     assert w.ray_cast((0, 1, 0), (1, 0, 0))["distance"] == 0.0  # from inside the sphere
 
 
+def test_a_ray_direction_of_any_finite_length_is_a_direction():
+    # Issue 56: (1e-200, 0, 0) was refused as zero and (1e200, 0, 0) as not finite, their squared
+    # norms having under- and overflowed; each is the unit direction (1, 0, 0).
+    w = rbsim.World(gravity=[0, 0, 0])
+    w.add_body(shape={"type": "box", "extents": [1.0, 1.0, 1.0]}, mass=1, position=(3, 1, 0))
+    for scale in (1e-200, 1e-160, 1.0, 1e160, 1e200, 5e-324):
+        hit = w.ray_cast((0, 1, 0), (scale, 0, 0))
+        assert hit is not None, scale
+        assert hit["distance"] == pytest.approx(2.5, abs=1e-12)
+        assert hit["normal"] == pytest.approx((-1.0, 0.0, 0.0), abs=1e-12)
+
+
 def test_a_bad_ray_is_refused_naming_the_parameter():
     w = rbsim.World()
     for args, field in [(((0, 0), (1, 0, 0)), "origin"), (((0, 0, 0), (0, 0, 0)), "direction"),

@@ -46,7 +46,9 @@ std::optional<WorldRayHit> meshHit(const RigidBody& body, const Vec3& origin, co
 }  // namespace
 
 std::optional<WorldRayHit> rayCast(const World& world, const Vec3& origin, const Vec3& direction, double maxDistance) {
-  const double length = direction.norm();
+  // stableNorm, not norm: sqrt of the squared norm is 0 below 1e-154 and inf above 1e154, and a
+  // direction of any finite length is a direction (issue 56).
+  const double length = direction.stableNorm();
   if (!(length > 0.0) || !std::isfinite(length)) {
     throw std::invalid_argument("rayCast: expected a non-zero, finite direction");
   }
