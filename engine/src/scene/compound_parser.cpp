@@ -1,5 +1,6 @@
 #include "scene/compound_parser.h"
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -7,6 +8,7 @@
 
 #include "rbsim/body/compound_body.h"
 #include "rbsim/geometry/mesh.h"
+#include "rbsim/io/input_error.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
 
@@ -70,10 +72,46 @@ std::shared_ptr<const Mesh> hullMesh(const JsonObject& s) {
   if (!check.closed || !check.consistentlyOriented || check.degenerateTriangles > 0) {
     s.fail("triangles", "expected a closed, consistently wound mesh: " + check.problem);
   }
-  if (!isConvexSurface(*mesh, kHullConvexityTolerance * (mesh->boundsMax() - mesh->boundsMin()).norm())) {
+  // Inside-out and flat before convex: either would fail the convexity test below, whose advice
+  // (split the part) does not fix them (issue 56). The volume by the divergence theorem, the sum
+  // of a (b x c) / 6 over the triangles, is negative when they wind inward.
+  double volume = 0.0;
+  for (const Triangle& t : mesh->triangles) {
+    volume += mesh->vertices[t[0]].dot(mesh->vertices[t[1]].cross(mesh->vertices[t[2]])) / 6.0;
+  }
+  const double diagonal = (mesh->boundsMax() - mesh->boundsMin()).norm();
+  if (!(std::abs(volume) > kHullConvexityTolerance * diagonal * diagonal * diagonal)) {
+    s.fail("vertices", "expected a solid; these points enclose no volume (they lie in one plane or on one line)");
+  }
+  if (volume < 0.0) {
+    s.fail("triangles", "expected each triangle wound counter-clockwise seen from outside; these wind inward (the "
+                        "enclosed volume comes out negative): reverse every triangle's order");
+  }
+  if (!isConvexSurface(*mesh, kHullConvexityTolerance * diagonal)) {
     s.fail("vertices", "expected a convex solid (a compound's parts are convex; split a concave part in several)");
   }
   return mesh;
+}
+
+bool isPartType(const std::string& type) {
+  return type == "box" || type == "sphere" || type == "capsule" || type == "rounded_box" || type == "hull";
+}
+
+std::string partTypeProblem(const std::string& type) {
+  return "expected \"box\", \"sphere\", \"capsule\", \"rounded_box\" or \"hull\" for a compound's shape, got \"" + type + "\"";
+}
+
+// Each part's type before its keys: a part of a type compounds do not take (a "mesh" with its
+// "file", a "plane") was reported by its first key as unknown (issue 56).
+void checkPartTypes(const JsonObject& b) {
+  if (!b.has("shapes") || !b.raw("shapes").is_array()) return;  // objectArray says what is wrong
+  const nlohmann::json& parts = b.raw("shapes");
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const nlohmann::json& part = parts[i];
+    if (!part.is_object() || !part.contains("type") || !part["type"].is_string()) continue;  // as above
+    const std::string type = part["type"].get<std::string>();
+    if (!isPartType(type)) throw InputError(b.file(), b.pathOf("shapes") + "[" + std::to_string(i) + "].type", partTypeProblem(type));
+  }
 }
 
 Shape partShape(const JsonObject& s, std::shared_ptr<const Mesh>& mesh) {
@@ -101,8 +139,7 @@ Shape partShape(const JsonObject& s, std::shared_ptr<const Mesh>& mesh) {
   } catch (const std::invalid_argument& e) {
     s.fail("type", e.what());
   }
-  s.fail("type", "expected \"box\", \"sphere\", \"capsule\", \"rounded_box\" or \"hull\" for a compound's shape, got \"" +
-                    type + "\"");
+  s.fail("type", partTypeProblem(type));
 }
 
 }  // namespace
@@ -127,6 +164,7 @@ void parseCompoundShapes(const JsonObject& b, BodyDef& def) {
   if (b.has("shape")) b.fail("shapes", "a body has one \"shape\" or several \"shapes\", not both");
   if (b.has("density")) b.fail("density", "a compound body's densities are its shapes'; expected \"density\" in each");
   if (b.has("sdf")) b.fail("sdf", "a compound body collides as its shapes; expected no grid");
+  checkPartTypes(b);
   const std::vector<JsonObject> shapes =
       b.objectArray("shapes", {"type", "extents", "radius", "length", "vertices", "triangles", "position", "orientation", "density", "restitution",
                                "friction_static", "friction_kinetic", "filter"});

@@ -20,6 +20,12 @@ std::size_t bodyNamed(const JsonObject& j, const char* key, const JointBodies& b
     for (std::size_t i = bodies.names.size(); i-- > 0;) bodies.first[bodies.names[i]] = i;
   }
   if (const auto it = bodies.first.find(name); it != bodies.first.end()) return it->second;
+  for (const std::string& ragdoll : bodies.ragdolls) {
+    if (name.rfind(ragdoll + "_", 0) == 0) {
+      j.fail(key, "no body is named \"" + name + "\": the bones of ragdoll \"" + ragdoll +
+                      "\" are made when the World is built, and a scene's joints connect only its listed bodies");
+    }
+  }
   j.fail(key, "no body is named \"" + name + "\"");
 }
 
@@ -175,6 +181,7 @@ void parseJoints(const JsonObject& root, Scene& scene) {
     bodies.dynamic.push_back(!b.isStatic && !b.isKinematic);
     bodies.ids.push_back(sceneBodyId(bodies.ids.size()));
   }
+  for (const RagdollDef& r : scene.ragdolls) bodies.ragdolls.push_back(r.name);
   for (const JsonObject& j : root.objectArray("joints", kJointKeys)) scene.joints.push_back(parseJoint(j, bodies, scene.settings));
 }
 

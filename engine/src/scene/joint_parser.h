@@ -22,6 +22,9 @@ struct JointBodies {
   std::vector<std::string> names;
   std::vector<char> dynamic;
   std::vector<BodyId> ids;  // what the joint names them by: sceneBodyId(i) in a scene, the World's own ids in a World
+  // A scene's ragdolls, whose bones are made with the World, after its joints: a joint that names
+  // one is told so (their names are the ragdoll's, "_", and the bone's).
+  std::vector<std::string> ragdolls;
   // The first body of each name, filled on the first look-up: a joint finds its bodies by hashing,
   // not by scanning every name (a 100 x 100 joint grid has 19701 joints and 10000 bodies).
   mutable std::unordered_map<std::string, std::size_t> first;

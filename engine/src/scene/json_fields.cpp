@@ -110,6 +110,15 @@ std::optional<double> JsonObject::optionalPositive(const char* key) const {
 int JsonObject::positiveInt(const char* key, int fallback) const {
   if (!has(key)) return fallback;
   const nlohmann::json& v = value_.at(key);
+  if (v.is_number_float()) {
+    // nlohmann-json reads a whole number past 64 bits as a double: it is too large, not a
+    // fraction (issue 56: substeps = 10**30 was "expected an integer, got a number").
+    const double d = v.get<double>();
+    if (std::isfinite(d) && d == std::floor(d) && d > static_cast<double>(kMaxCount)) {
+      fail(key, "expected a positive integer, got " + formatNumber(d) + " (the limit is " + std::to_string(kMaxCount) + ")");
+    }
+    fail(key, "expected an integer, got " + formatNumber(d));
+  }
   if (!v.is_number_integer()) fail(key, std::string("expected an integer, got ") + typeName(v));
   // nlohmann-json keeps every integer >= 0 as unsigned, and one above 2^63 - 1 would read as a
   // negative long long: compare each as the number it is.

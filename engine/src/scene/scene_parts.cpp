@@ -77,7 +77,12 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
   const auto integer = [&](const char* key, int fallback) {
     if (!w.has(key)) return fallback;
     const double x = w.number(key, fallback);
-    if (x != std::floor(x) || std::abs(x) > 1e9) w.fail(key, "expected an integer");
+    // Each says what it got (issue 56: substeps = 10**30 and 2.5 were both "expected an integer");
+    // checkSettings then holds each key to its own range.
+    if (x != std::floor(x)) w.fail(key, "expected an integer, got " + formatNumber(x));
+    if (std::abs(x) > static_cast<double>(kMaxCount)) {
+      w.fail(key, "expected an integer no larger than " + formatNumber(static_cast<double>(kMaxCount)) + " in magnitude, got " + formatNumber(x));
+    }
     return static_cast<int>(x);
   };
   s.substeps = integer("substeps", s.substeps);

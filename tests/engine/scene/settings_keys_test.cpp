@@ -22,7 +22,7 @@ struct Key {
   std::string value;      // a valid value unlike the default, as --set writes it
   std::function<bool(const Settings&)> reached;  // the field has the value
   std::string bad;        // a value checkSettings refuses ("" for booleans and names)
-  std::string with;       // another key's assignment the value needs, as --set writes it ("" for none)
+  std::string with{};     // another key's assignment the value needs, as --set writes it ("" for none)
 };
 
 const std::vector<Key>& keys() {
