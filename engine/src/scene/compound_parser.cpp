@@ -200,6 +200,11 @@ void parseCompoundShapes(const JsonObject& b, BodyDef& def) {
 void parseMotion(const JsonObject& b, std::size_t index, Scene& scene) {
   const JsonObject m = b.object("motion", {"pivot", "angular_velocity", "keyframes", "loop"});
   if (!scene.bodies[index].isKinematic) b.fail("motion", "only a kinematic body follows a motion; expected \"kinematic\": true");
+  // The motion sets the body's velocities every step: one given beside it was silently lost
+  // (issue 56).
+  for (const char* key : {"velocity", "angular_velocity"}) {
+    if (b.has(key)) b.fail(key, "a body that follows a \"motion\" moves as the motion says; expected no " + std::string(key) + " beside it");
+  }
   KinematicMotion motion;
   motion.body = sceneBodyId(index);
   if (m.has("keyframes")) {
