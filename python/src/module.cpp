@@ -1,7 +1,8 @@
 // The Python module `rbsim` (issue 23): pybind11 over the engine's public API and the scene
 // format. Errors become Python exceptions carrying the command line's messages: InputError (a
-// ValueError, with .file, .field and .problem), SimulationError and RenderError (RuntimeErrors);
-// the engine's std::invalid_argument is pybind11's ValueError.
+// ValueError, with .file, .field and .problem), SimulationError and RenderError (RuntimeErrors).
+// A call checks its arguments and names itself; an engine check it did not repeat
+// (std::invalid_argument) is still an InputError, of the file "rbsim" (issue 56, item 8).
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -41,15 +42,21 @@ PyObject* inputErrorType = nullptr;
 PyObject* simulationErrorType = nullptr;
 PyObject* renderErrorType = nullptr;
 
+void raiseInputError(const rbsim::InputError& e) {
+  py::object exception = py::reinterpret_borrow<py::object>(inputErrorType)(e.what());
+  exception.attr("file") = e.file();
+  exception.attr("field") = e.field();
+  exception.attr("problem") = e.problem();
+  PyErr_SetObject(inputErrorType, exception.ptr());
+}
+
 void translate(std::exception_ptr error) {
   try {
     if (error) std::rethrow_exception(error);
   } catch (const rbsim::InputError& e) {
-    py::object exception = py::reinterpret_borrow<py::object>(inputErrorType)(e.what());
-    exception.attr("file") = e.file();
-    exception.attr("field") = e.field();
-    exception.attr("problem") = e.problem();
-    PyErr_SetObject(inputErrorType, exception.ptr());
+    raiseInputError(e);
+  } catch (const std::invalid_argument& e) {
+    raiseInputError(rbsim::InputError("rbsim", "", e.what()));
   } catch (const rbsim::SimulationError& e) {
     PyErr_SetString(simulationErrorType, e.what());
   } catch (const rbsim::render::RenderError& e) {

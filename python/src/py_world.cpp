@@ -61,7 +61,16 @@ PyWorld::PyWorld(Scene scene) : scene_(std::move(scene)), world_(buildWorld(scen
   for (const RigidBody& body : world_.bodies()) names_.insert(body.name());
 }
 
+void PyWorld::waitIdle() const {
+  while (busy_->stepping) {
+    py::gil_scoped_release release;  // the stepping thread takes the GIL back when it ends
+    std::unique_lock<std::mutex> lock(busy_->mutex);
+    busy_->idle.wait(lock, [this] { return !busy_->stepping; });
+  }
+}
+
 std::size_t PyWorld::index(const PyBodyId& id, const char* call) const {
+  waitIdle();
   if (id.world != serial_) {
     throw InputError(call, "body", "this id is of another World (World " + std::to_string(id.world) + "; this is World " +
                                        std::to_string(serial_) + "); ids name bodies of the World that gave them");
@@ -74,8 +83,11 @@ std::size_t PyWorld::index(const PyBodyId& id, const char* call) const {
 }
 
 PyBodyId PyWorld::addBody(const py::kwargs& body) {
-  const std::size_t index = world_.bodies().size();
   nlohmann::json keys = toJson(body, kBodyCall, "");
+  // After the conversion, which may run Python code (and so let another thread start a step), and
+  // before the first look at the World; so in every call below.
+  waitIdle();
+  const std::size_t index = world_.bodies().size();
   if (keys.is_object() && !keys.contains("name")) {
     std::size_t n = index;
     while (names_.count("body" + std::to_string(n)) != 0) ++n;
@@ -119,7 +131,14 @@ void PyWorld::removeBody(const PyBodyId& id) {
 }
 
 std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
-  world_.addSpawner(parseSpawnerBlock(toJson(spawn, kSpawnerCall, ""), kSpawnerCall, "", "", world_.settings()));
+  const nlohmann::json keys = toJson(spawn, kSpawnerCall, "");
+  waitIdle();
+  const SpawnerDef def = parseSpawnerBlock(keys, kSpawnerCall, "", "", world_.settings());
+  try {
+    world_.addSpawner(def);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(kSpawnerCall, "", e.what());  // the engine's checks (World::addSpawner)
+  }
   return world_.spawners().size() - 1;
 }
 
@@ -134,10 +153,12 @@ void PyWorld::setKillVolume(const py::object& volume) {
       throw InputError(kCall, "kill_volume", "expected (min x, min y, min z, max x, max y, max z) with min < max along every axis");
     }
   }
+  waitIdle();
   world_.setKillVolume(box);
 }
 
 py::object PyWorld::killVolume() const {
+  waitIdle();
   const Aabb& box = world_.killVolume();
   if (box.empty()) return py::none();
   return py::make_tuple(box.min.x(), box.min.y(), box.min.z(), box.max.x(), box.max.y(), box.max.z());
@@ -145,24 +166,28 @@ py::object PyWorld::killVolume() const {
 
 std::size_t PyWorld::addPlane(const py::kwargs& plane) {
   const auto [p, material] = parsePlaneBlock(toJson(plane, kPlaneCall, ""), kPlaneCall, "");
+  waitIdle();
   world_.addPlane(p, material);
   return world_.planes().size() - 1;
 }
 
 void PyWorld::addForce(const PyBodyId& id, const py::kwargs& force) {
+  const nlohmann::json keys = toJson(force, kForceCall, "");
   const std::size_t i = index(id, kForceCall);
   const RigidBody& body = world_.bodies()[i];
   if (!body.isDynamic()) {
     throw InputError(kForceCall, "body", "\"" + body.name() + "\" is " + (body.isStatic() ? "static" : "kinematic") +
                                              ": forces act on dynamic bodies only");
   }
-  ScriptedForce f = parseForceBlock(toJson(force, kForceCall, ""), kForceCall, "", i, body.fileFrame().axes);
+  ScriptedForce f = parseForceBlock(keys, kForceCall, "", i, body.fileFrame().axes);
   f.body = id.id;
   world_.addForce(f);
 }
 
 std::size_t PyWorld::addJoint(const py::kwargs& joint) {
-  const JointDef def = parseJointBlock(toJson(joint, kJointCall, ""), kJointCall, "", world_);
+  const nlohmann::json keys = toJson(joint, kJointCall, "");
+  waitIdle();
+  const JointDef def = parseJointBlock(keys, kJointCall, "", world_);
   try {
     return world_.addJoint(def);
   } catch (const std::invalid_argument& e) {
@@ -172,11 +197,6 @@ std::size_t PyWorld::addJoint(const py::kwargs& joint) {
 
 void PyWorld::setPose(const PyBodyId& id, const py::object& position, const py::object& orientation,
                       const py::object& velocity, const py::object& angularVelocity) {
-  index(id, kPoseCall);  // a stale id is an input error, not an invalid_argument
-  RigidBody& body = world_.body(id.id);
-  if (!body.isDynamic() && !body.isKinematic() && (!velocity.is_none() || !angularVelocity.is_none())) {
-    throw InputError(kPoseCall, "velocity", "a static body cannot move");
-  }
   // Every value is checked before any is set, so a refused call changes nothing.
   std::optional<Vec3> x, v, w;
   std::optional<Quat> q;
@@ -191,6 +211,11 @@ void PyWorld::setPose(const PyBodyId& id, const py::object& position, const py::
   }
   if (!velocity.is_none()) v = Vec3(finiteNumbers(velocity, 3, "velocity"));
   if (!angularVelocity.is_none()) w = Vec3(finiteNumbers(angularVelocity, 3, "angular_velocity"));
+  index(id, kPoseCall);  // a stale id is an input error, not an invalid_argument; waits for a step
+  RigidBody& body = world_.body(id.id);
+  if (!body.isDynamic() && !body.isKinematic() && (v || w)) {
+    throw InputError(kPoseCall, "velocity", "a static body cannot move");
+  }
   // A scene's ranges, so that a pose set from Python is one a scene could give.
   checkPoseRanges(kPoseCall, x ? &*x : nullptr, v ? &*v : nullptr, w ? &*w : nullptr,
                   0.5 * (body.mesh().boundsMax() - body.mesh().boundsMin()).norm());
@@ -202,11 +227,25 @@ void PyWorld::setPose(const PyBodyId& id, const py::object& position, const py::
 
 void PyWorld::step(long long steps) {
   if (steps < 0) throw InputError("World.step()", "steps", "expected a number of steps >= 0, got " + std::to_string(steps));
+  waitIdle();  // a second thread's step() waits for the first's
+  // Marked busy for the whole call, the signal checks between chunks included; cleared however it
+  // ends, with the GIL held (the destructor runs after the release below has ended).
+  busy_->stepping = true;
+  struct Idle {
+    Busy& busy;
+    ~Idle() {
+      {
+        const std::lock_guard<std::mutex> lock(busy.mutex);
+        busy.stepping = false;
+      }
+      busy.idle.notify_all();
+    }
+  } idle{*busy_};
   for (long long done = 0; done < steps;) {
     const long long chunk = std::min(kStepsBetweenSignalChecks, steps - done);
     {
-      // Other Python threads run while this World steps (as MuJoCo's mj_step lets them); the
-      // World itself is not for two threads at once.
+      // Other Python threads run while this World steps (as MuJoCo's mj_step lets them); a call
+      // of theirs on this World waits (waitIdle).
       py::gil_scoped_release release;
       for (long long i = 0; i < chunk; ++i) world_.step();
     }
@@ -232,6 +271,7 @@ py::object PyWorld::rayCast(const py::object& origin, const py::object& directio
     reach = finiteNumbers(py::make_tuple(maxDistance), 1, "max_distance", kCall)[0];
     if (!(reach >= 0.0)) throw InputError(kCall, "max_distance", "expected a distance >= 0 [m], got " + formatNumber(reach));
   }
+  waitIdle();
   const std::optional<WorldRayHit> hit = rbsim::rayCast(world_, o, d, reach);
   if (!hit) return py::none();
   py::dict out;

@@ -3,8 +3,11 @@
 // names a renderer reads), built from a scene file or from keyword arguments that are blocks of
 // the scene format (engine/include/rbsim/scene/scene_parts.h), so Python meets the same keys and messages as
 // the command line.
+#include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -71,9 +74,23 @@ class PyWorld {
   // Back to `saved`, bit for bit (World.set_state); InputError for a state of another World.
   void restore(const Saved& saved);
 
-  World& world() { return world_; }
-  const World& world() const { return world_; }
-  const Scene& scene() const { return scene_; }
+  // Every reader and writer of the World goes through these, or calls waitIdle() first.
+  World& world() {
+    waitIdle();
+    return world_;
+  }
+  const World& world() const {
+    waitIdle();
+    return world_;
+  }
+  const Scene& scene() const {
+    waitIdle();
+    return scene_;
+  }
+  // One World, one thread at a time (issue 56, item 6): step() releases the GIL, so another Python
+  // thread may call this World mid-step. It waits here, the GIL released, until the step ends.
+  // Called with the GIL held; returns with it held and no step running.
+  void waitIdle() const;
   // The body's row now; InputError naming `call` and the field "body" for an id of another World
   // or of a removed body.
   std::size_t index(const PyBodyId& id, const char* call) const;
@@ -85,6 +102,13 @@ class PyWorld {
   World world_;
   std::unordered_set<std::string> names_;  // every body's, for add_body's duplicate check
   std::uint64_t serial_;                   // this World's number among those the module made
+  // Whether a step() runs, written with the GIL and the mutex held; a unique_ptr keeps PyWorld movable.
+  struct Busy {
+    std::mutex mutex;
+    std::condition_variable idle;
+    std::atomic<bool> stepping{false};
+  };
+  std::unique_ptr<Busy> busy_ = std::make_unique<Busy>();
 };
 
 // Every body's state as NumPy arrays, one row per body in World order (python/src/state_arrays.cpp).

@@ -20,6 +20,12 @@ nlohmann::json convert(const py::handle& value, const std::string& file, const s
   // bool before int: True is an int in Python.
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
   if (py::isinstance<py::int_>(value)) {
+    // As a scene file's integers parse (nlohmann::json): one >= 0 unsigned, so that hull indices
+    // and filter masks with bit 63 read as they do from a file; a negative one signed.
+    try {
+      return value.cast<unsigned long long>();
+    } catch (const py::cast_error&) {
+    }
     try {
       return value.cast<long long>();
     } catch (const py::cast_error&) {

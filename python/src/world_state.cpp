@@ -23,6 +23,7 @@ void PyWorld::setSetting(const char* key, const py::handle& value) {
   const std::string call = "World";  // the message reads "World: dt: expected ..."
   nlohmann::json block = nlohmann::json::object();
   block[key] = toJson(value, call, key);
+  waitIdle();  // after the conversion, which may run Python code (PyWorld::waitIdle)
   Settings settings = world_.settings();
   parseWorldSettings(JsonObject(block, call, "", {key}), settings);
   try {
@@ -34,10 +35,12 @@ void PyWorld::setSetting(const char* key, const py::handle& value) {
 }
 
 std::shared_ptr<PyWorld::Saved> PyWorld::save() const {
+  waitIdle();
   return std::make_shared<Saved>(Saved{scene_, world_, names_, serial_});
 }
 
 void PyWorld::restore(const Saved& saved) {
+  waitIdle();
   if (saved.serial != serial_) {
     throw InputError("World.set_state()", "state",
                      "this state is of another World (World " + std::to_string(saved.serial) + "; this is World " +

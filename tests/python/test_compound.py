@@ -50,6 +50,34 @@ def test_filters_let_a_group_pass_through_itself():
         world.add_body(shape={"type": "sphere", "radius": 0.5}, mass=1.0, filter={"group": 1.5})
 
 
+def test_python_ints_read_as_a_scene_file_reads_them():
+    # Issue 56, item 6: every int became a signed JSON integer, so a hull's indices (unsigned in the
+    # parser) were refused and masks with bit 63 could not be given.
+    corners = [[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)]
+    # The cube's twelve triangles, wound outward (vertex index = 4 x + 2 y + z over the corners).
+    triangles = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                 [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+    world = rbsim.World(dt=1 / 240)
+    world.add_plane()
+    world.add_body(name="hull", mass=1.0, position=[0, 0.5, 0],
+                   shapes=[{"type": "hull", "vertices": corners, "triangles": triangles}])
+    top_bit = 1 << 63
+    world.add_body(name="high", shape={"type": "sphere", "radius": 0.5}, mass=1.0, position=[3, 0.5, 0],
+                   filter={"category": top_bit, "mask": (1 << 64) - 1})
+    # Bit 63 only: it meets no plane or body of the default category 1, and falls through the ground.
+    world.add_body(name="ghost", shape={"type": "sphere", "radius": 0.5}, mass=1.0, position=[-3, 0.5, 0],
+                   filter={"category": top_bit, "mask": top_bit})
+    world.step(240)
+    assert world.x[0][1] == pytest.approx(0.5, abs=1e-3)  # the unit cube hull rests on its face
+    assert world.x[1][1] == pytest.approx(0.5, abs=1e-3)
+    assert world.x[2][1] < -1.0
+    with pytest.raises(rbsim.InputError, match=r"mask"):
+        world.add_body(shape={"type": "sphere", "radius": 0.5}, mass=1.0, filter={"mask": 1 << 64})
+    with pytest.raises(rbsim.InputError, match=r"triangles"):
+        world.add_body(mass=1.0, shapes=[{"type": "hull", "vertices": corners,
+                                          "triangles": [[-1, 1, 3]] + triangles[1:]}])
+
+
 def test_a_turntable_carries_a_box_round():
     world = rbsim.World(dt=1 / 240)
     world.add_body(name="table", shape={"type": "box", "extents": [2, 0.2, 2]}, mass=10.0, kinematic=True,
@@ -84,6 +112,20 @@ def test_a_spawner_rains_balls_and_the_kill_volume_takes_them_away():
         world.kill_volume = (0, 0, 0, -1, 1, 1)
     world.kill_volume = None
     assert world.kill_volume is None
+
+
+def test_the_solver_cannot_switch_to_one_without_joints_while_a_ragdoll_spawner_waits():
+    # Issue 56, item 6: the switch was taken, and every later burst failed mid-step, leaving eleven
+    # jointless bones each time.
+    world = rbsim.World(dt=1 / 60)
+    world.add_plane()
+    world.add_spawner(name="fig", period=0.5, start=0.25, ragdoll={}, region={"min": (0, 2, 0), "max": (0, 2, 0)})
+    for solver in ("pgs", "lcp"):
+        with pytest.raises(rbsim.InputError, match=r"World: solver: .*spawner 'fig' makes ragdolls"):
+            world.solver = solver
+    assert world.solver == "soft-step"
+    world.step(20)  # t = 0.33 s: the first burst is in, every bone with its joints
+    assert len(world) == 11 and len(world.joints()) == 10
 
 
 def test_a_spawner_drops_ragdolls_at_offsets_and_clears_them_at_their_age():

@@ -132,6 +132,14 @@ void World::setSettings(const Settings& settings) {
       throw std::invalid_argument("the World has " + std::to_string(joints_.size()) + " joints, and the " + which +
                                   " solver solves none (keep the soft-step solver)");
     }
+    // A ragdoll spawner's later bursts need joints too (addSpawner refuses one under PGS): the
+    // switch would leave them to fail in the middle of a step (issue 56, item 6).
+    const auto ragdolls = std::find_if(spawners_.begin(), spawners_.end(), [](const Spawner& s) { return s.def.ragdoll.has_value(); });
+    if (ragdolls != spawners_.end() && !solver->solvesJoints()) {
+      const std::string which = settings.solver == Settings::ContactSolverMethod::Pgs ? "PGS" : "LCP";
+      throw std::invalid_argument("the spawner '" + ragdolls->def.name + "' makes ragdolls, whose joints the " + which +
+                                  " solver does not solve (keep the soft-step solver)");
+    }
   }
   if (settings.timeStep != settings_.timeStep) {
     timeOrigin_ = time();
