@@ -10,6 +10,7 @@
 #include "rbsim/integrate/free_rigid_body.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene_parts.h"
+#include "rbsim/world/made_names.h"
 #include "rbsim/world/ray_cast.h"
 #include "to_json.h"
 
@@ -97,6 +98,10 @@ PyBodyId PyWorld::addBody(const py::kwargs& body) {
   if (names_.count(block.def.name) != 0) {
     throw InputError(kBodyCall, "name", "duplicate body name \"" + block.def.name + "\"");
   }
+  // Nor one a spawner will give (issue 56, item 4).
+  for (const Spawner& spawner : world_.spawners()) {
+    if (spawnerMakesName(spawner.def, block.def.name)) throw InputError(kBodyCall, "name", madeNameProblem(spawner.def, block.def.name));
+  }
   const BodyId id = world_.addBody(block.def);
   names_.insert(block.def.name);
   scene_.inertiaMethods.push_back(block.inertiaMethod);
@@ -131,9 +136,24 @@ void PyWorld::removeBody(const PyBodyId& id) {
 }
 
 std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
-  const nlohmann::json keys = toJson(spawn, kSpawnerCall, "");
+  nlohmann::json keys = toJson(spawn, kSpawnerCall, "");
   waitIdle();
+  const auto spawnerNamed = [this](const std::string& name) {
+    return std::any_of(world_.spawners().begin(), world_.spawners().end(), [&](const Spawner& s) { return s.def.name == name; });
+  };
+  if (keys.is_object() && !keys.contains("name")) keys["name"] = freeSpawnerName(spawnerNamed);
   const SpawnerDef def = parseSpawnerBlock(keys, kSpawnerCall, "", "", world_.settings());
+  // Its bodies' names must be its own (issue 56, item 4).
+  if (spawnerNamed(def.name)) {
+    throw InputError(kSpawnerCall, "name", "another spawner is named \"" + def.name + "\"; expected a name of its own");
+  }
+  for (const std::string& name : names_) {
+    if (spawnerMakesName(def, name)) {
+      throw InputError(kSpawnerCall, "name", "its bodies are named " + def.name + "_k" + (def.ragdoll ? "_bone" : "") +
+                                                 " (k = 0, 1, ...), and a body is already named \"" + name +
+                                                 "\"; expected a name of its own");
+    }
+  }
   try {
     world_.addSpawner(def);
   } catch (const std::invalid_argument& e) {

@@ -128,6 +128,33 @@ def test_the_solver_cannot_switch_to_one_without_joints_while_a_ragdoll_spawner_
     assert len(world) == 11 and len(world.joints()) == 10
 
 
+def test_names_made_while_the_world_steps_stay_unique():
+    # Issue 56, item 4: spawners, the bones of spawned ragdolls and add_body could each give two
+    # bodies one name, and two unnamed spawners were both "spawn".
+    world = rbsim.World(dt=1 / 60)
+    world.add_plane()
+    world.add_spawner(period=0.25, region={"min": (0, 2, 0), "max": (1, 3, 1)},
+                      body={"shape": {"type": "sphere", "radius": 0.1}, "mass": 1})
+    world.add_spawner(period=0.25, region={"min": (3, 2, 0), "max": (4, 3, 1)},
+                      body={"shape": {"type": "sphere", "radius": 0.1}, "mass": 1})
+    world.add_spawner(name="fig", period=0.5, ragdoll={}, region={"min": (-3, 2, 0), "max": (-3, 2, 0)})
+    with pytest.raises(rbsim.InputError, match=r'World.add_body\(\): name: the spawner "spawn1" .* may make "spawn1_4"'):
+        world.add_body(name="spawn1_4", shape={"type": "sphere", "radius": 0.1}, mass=1)
+    with pytest.raises(rbsim.InputError, match=r'may make "fig_2_head"'):
+        world.add_body(name="fig_2_head", shape={"type": "sphere", "radius": 0.1}, mass=1)
+    world.add_body(name="fig_2", shape={"type": "sphere", "radius": 0.1}, mass=1, position=(8, 1, 0))  # not a bone's
+    with pytest.raises(rbsim.InputError, match=r'World.add_spawner\(\): name: another spawner is named "fig"'):
+        world.add_spawner(name="fig", period=1.0, ragdoll={}, region={"min": (0, 2, 0), "max": (0, 2, 0)})
+    world.add_body(name="drop_3", shape={"type": "sphere", "radius": 0.1}, mass=1, position=(9, 1, 0))
+    with pytest.raises(rbsim.InputError, match=r'its bodies are named drop_k .* a body is already named "drop_3"'):
+        world.add_spawner(name="drop", period=1.0, region={"min": (0, 2, 0), "max": (0, 2, 0)},
+                          body={"shape": {"type": "sphere", "radius": 0.1}, "mass": 1})
+    world.step(60)
+    names = world.names
+    assert len(names) == len(set(names))
+    assert {"spawn_0", "spawn1_0", "fig_0_pelvis", "fig_1_head", "fig_2", "drop_3"} <= set(names)
+
+
 def test_a_spawner_drops_ragdolls_at_offsets_and_clears_them_at_their_age():
     world = rbsim.World(dt=1 / 60)
     world.add_plane()

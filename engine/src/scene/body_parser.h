@@ -66,6 +66,8 @@ inline constexpr std::initializer_list<const char*> kSpawnKeys = {
     "count", "seed", "name", "body", "ragdoll", "offsets", "lifetime", "region", "speed", "angular_speed",
     "random_orientation", "period", "start", "end"};
 // One spawn block; `spawnedVertices` counts the vertices of every block so far (a budget).
-void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices);
+// Without "name", the block is named `defaultName`.
+void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices,
+                const std::string& defaultName = "spawn");
 
 }  // namespace rbsim::scene_detail

@@ -3,11 +3,13 @@
 // cone, twist, spring, friction or weld softness (docs/scene-format.md, "Joints").
 #include "scene/joint_parser.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <tuple>
 #include <utility>
 
+#include "rbsim/world/made_names.h"
 #include "scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
@@ -21,7 +23,8 @@ std::size_t bodyNamed(const JsonObject& j, const char* key, const JointBodies& b
   }
   if (const auto it = bodies.first.find(name); it != bodies.first.end()) return it->second;
   for (const std::string& ragdoll : bodies.ragdolls) {
-    if (name.rfind(ragdoll + "_", 0) == 0) {
+    const auto bones = ragdollBodyNames(ragdoll);
+    if (std::find(bones.begin(), bones.end(), name) != bones.end()) {
       j.fail(key, "no body is named \"" + name + "\": the bones of ragdoll \"" + ragdoll +
                       "\" are made when the World is built, and a scene's joints connect only its listed bodies");
     }

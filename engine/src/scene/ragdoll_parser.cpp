@@ -1,7 +1,9 @@
 #include "scene/ragdoll_parser.h"
 
+#include <set>
 #include <string>
 
+#include "rbsim/world/made_names.h"
 #include "scene/input_ranges.h"
 #include "scene/joint_parser.h"  // the joint springs' bounds, kMaxJointHertz and kMaxJointDampingRatio
 
@@ -36,19 +38,54 @@ void parseRagdollFigure(const JsonObject& r, RagdollDef& def) {
 }
 
 void parseRagdolls(const JsonObject& root, Scene& scene) {
-  int n = 0;
-  for (const JsonObject& r : root.objectArray("ragdolls", {"name", "position", "orientation", "velocity", "scale", "mass",
-                                                           "joint_friction", "joint_hertz", "joint_damping_ratio"})) {
+  // Every name taken so far: the bodies' and the bones' of the ragdolls spawned at load. A ragdoll
+  // takes exactly its eleven bones' names (issue 56, item 4: a body "left_x" no longer blocks a
+  // ragdoll "left").
+  std::set<std::string> taken, ragdollNames;
+  for (const BodyDef& b : scene.bodies) taken.insert(b.name);
+  for (const RagdollDef& spawned : scene.ragdolls) {
+    ragdollNames.insert(spawned.name);
+    for (const std::string& bone : ragdollBodyNames(spawned.name)) taken.insert(bone);
+  }
+  const std::vector<JsonObject> blocks = root.objectArray(
+      "ragdolls", {"name", "position", "orientation", "velocity", "scale", "mass", "joint_friction", "joint_hertz", "joint_damping_ratio"});
+  std::set<std::string> given;
+  for (const JsonObject& r : blocks) {
+    if (r.has("name")) given.insert(r.string("name", ""));
+  }
+  // An unnamed ragdoll is ragdoll<n>, n its place among the blocks, or the first after that no
+  // ragdoll has and whose bones' names are free.
+  const auto free = [&](const std::string& name) {
+    if (given.count(name) != 0 || ragdollNames.count(name) != 0) return false;
+    for (const std::string& bone : ragdollBodyNames(name)) {
+      if (taken.count(bone) != 0) return false;
+    }
+    return true;
+  };
+  std::size_t n = 0;
+  for (const JsonObject& r : blocks) {
     RagdollDef def;
-    def.name = r.string("name", "ragdoll" + std::to_string(n++));
+    if (r.has("name")) {
+      def.name = r.string("name", "");
+    } else {
+      while (!free("ragdoll" + std::to_string(n))) ++n;
+      def.name = "ragdoll" + std::to_string(n);
+    }
+    ++n;
     def.position = r.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     def.velocity = r.boundedVec3("velocity", Vec3::Zero(), kMaxSpeed, "m/s", "the speed of light");
     parseRagdollFigure(r, def);
-    for (const BodyDef& b : scene.bodies) {
-      if (b.name.rfind(def.name + "_", 0) == 0) r.fail("name", "body \"" + b.name + "\" already starts with \"" + def.name + "_\"; expected a name of its own");
+    if (!ragdollNames.insert(def.name).second) {
+      r.fail("name", "another ragdoll is named \"" + def.name + "\"; expected a name of its own");
     }
-    for (const RagdollDef& other : scene.ragdolls) {
-      if (other.name == def.name) r.fail("name", "another ragdoll is named \"" + def.name + "\"; expected a name of its own");
+    for (const std::string& bone : ragdollBodyNames(def.name)) {
+      if (!taken.insert(bone).second) {
+        r.fail("name", "its bones are named " + def.name + "_pelvis, " + def.name + "_torso, ..., and a body is already named \"" +
+                           bone + "\"; expected a name of its own");
+      }
+      for (const SpawnerDef& spawner : scene.spawners) {
+        if (spawnerMakesName(spawner, bone)) r.fail("name", madeNameProblem(spawner, bone));
+      }
     }
     scene.ragdolls.push_back(def);
   }

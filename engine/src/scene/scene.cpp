@@ -21,6 +21,7 @@
 #include "scene/ragdoll_parser.h"
 #include "scene/planar_parser.h"
 #include "rbsim/scene/scene_parts.h"
+#include "rbsim/world/made_names.h"
 #include "scene/sdf_slice_parser.h"
 #include "scene/soft_parser.h"
 #include "rbsim/scene/strict_json.h"
@@ -66,6 +67,23 @@ void checkWorkBudget(const JsonObject& root, const Scene& scene) {
   throw InputError(root.file(), bySteps ? "world.steps" : "world.duration", problem.str());
 }
 
+// No body, listed or made at load (a ragdoll's bones), has a name a periodic spawner will make
+// while the World steps (issue 56, item 4): two bodies would share it.
+void checkSpawnedNames(const std::string& file, const std::vector<JsonObject>& bodies, const Scene& scene) {
+  if (scene.spawners.empty()) return;
+  const auto check = [&](const std::string& name, const JsonObject* listed) {
+    for (const SpawnerDef& spawner : scene.spawners) {
+      if (!spawnerMakesName(spawner, name)) continue;
+      if (listed != nullptr) listed->fail("name", madeNameProblem(spawner, name));
+      throw InputError(file, "spawn", madeNameProblem(spawner, name));  // a ragdoll spawned at load
+    }
+  };
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) check(scene.bodies[i].name, i < bodies.size() ? &bodies[i] : nullptr);
+  for (const RagdollDef& ragdoll : scene.ragdolls) {  // the listed ones were checked by parseRagdolls
+    for (const std::string& bone : ragdollBodyNames(ragdoll.name)) check(bone, nullptr);
+  }
+}
+
 }  // namespace
 
 std::uint64_t Scene::stepCount() const {
@@ -103,6 +121,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
       throw InputError(file, "spawn", problem + " (spawned names are NAME_k)");
     }
   }
+  checkSpawnedNames(file, bodies, scene);
   checkWorkBudget(root, scene);
   scene_detail::parsePlanes(root, scene);
   scene_detail::parseJoints(root, scene);

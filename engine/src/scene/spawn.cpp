@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <set>
 #include <string>
 
 #include "rbsim/math/uniform_random.h"
 #include "rbsim/scene/json_fields.h"
+#include "rbsim/world/made_names.h"
 #include "rbsim/world/spawner.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
@@ -70,10 +72,26 @@ void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic,
 
 void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
   double spawnedVertices = 0.0;  // over every block so far
-  for (const JsonObject& s : root.objectArray("spawn", kSpawnKeys)) parseSpawn(s, baseDir, scene, shapes, spawnedVertices);
+  const std::vector<JsonObject> blocks = root.objectArray("spawn", kSpawnKeys);
+  // Each block's name, given or the first default no block gives: two blocks of one name would
+  // name their bodies alike (issue 56, item 4).
+  std::set<std::string> names;
+  for (const JsonObject& s : blocks) {
+    if (s.has("name")) names.insert(s.string("name", ""));
+  }
+  std::set<std::string> used;
+  for (const JsonObject& s : blocks) {
+    const std::string name =
+        s.has("name") ? s.string("name", "") : freeSpawnerName([&](const std::string& n) { return names.count(n) != 0 || used.count(n) != 0; });
+    if (!used.insert(name).second) {
+      s.fail("name", "another spawn block is named \"" + name + "\"; expected a name of its own (its bodies are named NAME_k)");
+    }
+    parseSpawn(s, baseDir, scene, shapes, spawnedVertices, name);
+  }
 }
 
-void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices) {
+void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices,
+                const std::string& defaultName) {
   {
     const int count = s.positiveInt("count", 1);
     if (count > kMaxSpawnCount) s.fail("count", "expected at most " + std::to_string(kMaxSpawnCount) + " bodies per block");
@@ -108,7 +126,7 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
                            std::to_string(kMaxSpawnCount) + " (a longer period, fewer bodies, or an end)");
     }
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
-    const std::string prefix = s.string("name", "spawn");
+    const std::string prefix = s.string("name", defaultName);
     const JsonObject region = s.object("region", {"min", "max"});
     const Vec3 lo = region.boundedVec3("min", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start"),
                hi = region.boundedVec3("max", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start");

@@ -69,6 +69,8 @@ constexpr JointShape kJoints[kBoneCount - 1] = {
 
 }  // namespace
 
+const char* boneName(Bone bone) { return kBones[static_cast<std::size_t>(bone)].name; }
+
 Ragdoll addRagdoll(World& world, const RagdollDef& def) {
   Ragdoll ragdoll;
   const double s = def.scale;

@@ -38,6 +38,9 @@ struct Ragdoll {
   std::array<std::size_t, kBoneCount - 1> joints{};  // World::joints() rows: waist, neck, shoulders, elbows, hips, knees
 };
 
+// "pelvis", "torso", ..., "lower_leg_right": what a bone's body is named after.
+const char* boneName(Bone bone);
+
 // Adds the figure's bodies and joints to `world` (which must use the soft-step solver).
 Ragdoll addRagdoll(World& world, const RagdollDef& def);
 
