@@ -52,16 +52,16 @@ GltfFormat gltfFormatOf(const std::string& path) {
                    "expected a file name ending in .glb (binary glTF 2.0) or .gltf (glTF 2.0 JSON, its buffer embedded)");
 }
 
-void checkGltfBudget(const std::string& file, std::uint64_t frames, std::size_t bodies) {
+void checkGltfBudget(const std::string& file, std::uint64_t frames, double bodies) {
   char text[160];
   if (frames > kMaxGltfFrames) {
     std::snprintf(text, sizeof text, "%llu frames are more than an animation may have (%llu): lower view.fps (--fps) or run fewer steps",
                   static_cast<unsigned long long>(frames), static_cast<unsigned long long>(kMaxGltfFrames));
     throw InputError(file, "--gltf", text);
   }
-  const double bytes = static_cast<double>(frames) * static_cast<double>(bodies) * kGltfBytesPerBodyFrame;
+  const double bytes = static_cast<double>(frames) * bodies * kGltfBytesPerBodyFrame;
   if (bytes <= kMaxGltfBytes) return;
-  std::snprintf(text, sizeof text, "%llu frames of %zu bodies need at least %.3g bytes (%g a body a frame); the limit is %.3g: "
+  std::snprintf(text, sizeof text, "%llu frames of up to %.6g bodies need at least %.3g bytes (%g a body a frame); the limit is %.3g: "
                 "lower view.fps (--fps) or run fewer steps",
                 static_cast<unsigned long long>(frames), bodies, bytes, kGltfBytesPerBodyFrame, kMaxGltfBytes);
   throw InputError(file, "--gltf", text);

@@ -33,8 +33,9 @@ inline constexpr double kMaxGltfBytes = 1e9;  // [B]
 inline constexpr double kGltfBytesPerBodyFrame = 28.0;  // [B]
 
 // Throws InputError(file, "--gltf", ...) with the estimate and the limit when `frames` frames of
-// `bodies` bodies pass kMaxGltfFrames or kMaxGltfBytes. `file` is the scene's.
-void checkGltfBudget(const std::string& file, std::uint64_t frames, std::size_t bodies);
+// up to `bodies` bodies at once (Scene::mostBodiesAtOnce) pass kMaxGltfFrames or kMaxGltfBytes.
+// `file` is the scene's.
+void checkGltfBudget(const std::string& file, std::uint64_t frames, double bodies);
 
 class GltfFile {
  public:

@@ -61,7 +61,7 @@ void checkGltfScene(const Scene& scene) {
   if (!scene.particleSystems.empty()) refuse("particle systems");
   if (!scene.softBodies.empty()) refuse("soft bodies");
   if (scene.planar) refuse("a 2D world (planar)");
-  if (scene.bodies.empty()) throw InputError(scene.file, "--gltf", "the scene has no rigid bodies: a glTF export writes rigid bodies alone");
+  if (!(scene.mostBodiesAtOnce() > 0.0)) throw InputError(scene.file, "--gltf", "the scene has no rigid bodies: a glTF export writes rigid bodies alone");
 }
 
 }  // namespace rbsim::app

@@ -310,7 +310,7 @@ double mostAlive(const ParticleSystemDef& d) {
 void workPerStep(const ParticleSystemDef& d, const Scene& scene, double& work, double& pairs, std::string& what) {
   const double n = static_cast<double>(d.capacity), substeps = d.substeps;
   double tests = 1.0 + static_cast<double>(d.attractors.size());
-  if (d.collision.bodies) tests += static_cast<double>(scene.bodies.size());
+  if (d.collision.bodies) tests += scene.mostBodiesAtOnce();  // ragdoll bones and spawned bodies too
   if (d.collision.planes) tests += static_cast<double>(scene.planes.size());
   const double updates = n * tests * substeps;
   const double springs = d.cloth.enabled ? 6.0 * d.cloth.nu * d.cloth.nv * substeps : 0.0;

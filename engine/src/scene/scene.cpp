@@ -48,14 +48,8 @@ void parseView(const JsonObject& root, Scene& scene) {
 }
 
 void checkWorkBudget(const JsonObject& root, const Scene& scene) {
-  // Spawners count with every body they will have added by the end (none removed: a bound).
-  double bodies = static_cast<double>(scene.bodies.size() + kBoneCount * scene.ragdolls.size());
-  for (const SpawnerDef& s : scene.spawners) {
-    const double span = std::min(s.end, scene.duration) - s.start;
-    const double perBurst = static_cast<double>(s.count) * static_cast<double>(s.offsets.size()) *
-                            static_cast<double>(s.ragdoll ? kBoneCount : 1);
-    if (span > 0.0) bodies += perBurst * std::ceil(span / s.period);
-  }
+  // Every body the scene makes, counted at the most it holds at once: a bound on each step's.
+  const double bodies = scene.mostBodiesAtOnce();
   const double work = bodies * static_cast<double>(scene.stepCount());
   if (work <= kMaxBodySteps) return;
   std::ostringstream problem;

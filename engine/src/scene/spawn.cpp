@@ -64,7 +64,7 @@ Spawner firstBurst(const SpawnerDef& def) {
   return draws;
 }
 
-void spawnRagdolls(const JsonObject& s, bool periodic, SpawnerDef& spawner, Scene& scene);
+void spawnRagdolls(const JsonObject& s, bool periodic, double bursts, SpawnerDef& spawner, Scene& scene, double& spawnedVertices);
 void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic, double bursts, SpawnerDef& spawner,
                  Scene& scene, ShapeCache* shapes, double& spawnedVertices);
 
@@ -125,6 +125,8 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
                            " s add " + formatNumber(bodiesPerBurst * bursts) + " bodies; expected at most " +
                            std::to_string(kMaxSpawnCount) + " (a longer period, fewer bodies, or an end)");
     }
+    // The bursts alive at once, whose vertices are held at once: a lifetime removes the older ones.
+    const double aliveBursts = std::isfinite(lifetime) ? std::min(bursts, std::ceil(lifetime / period) + 1.0) : bursts;
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
     const std::string prefix = s.string("name", defaultName);
     const JsonObject region = s.object("region", {"min", "max"});
@@ -159,16 +161,28 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     spawner.randomOrientation = randomOrientation;
     spawner.seed = static_cast<std::uint64_t>(seed);
     if (ragdoll) {
-      spawnRagdolls(s, periodic, spawner, scene);
+      spawnRagdolls(s, periodic, aliveBursts, spawner, scene, spawnedVertices);
     } else {
-      spawnBodies(s, baseDir, periodic, bursts, spawner, scene, shapes, spawnedVertices);
+      spawnBodies(s, baseDir, periodic, aliveBursts, spawner, scene, shapes, spawnedVertices);
     }
   }
 }
 
 namespace {
 
-void spawnRagdolls(const JsonObject& s, bool periodic, SpawnerDef& spawner, Scene& scene) {
+// Every spawned body keeps its own world-frame copy of its mesh: `copies` of `vertices` each join
+// the budget of every block so far.
+void addSpawnedVertices(const JsonObject& s, double copies, std::size_t vertices, const char* what, double& spawnedVertices) {
+  spawnedVertices += copies * static_cast<double>(vertices);
+  if (spawnedVertices > kMaxSpawnedVertices) {
+    s.fail("count", formatNumber(copies) + " " + what + " of " + std::to_string(vertices) +
+                        " vertices bring the spawned bodies to " + formatNumber(spawnedVertices) +
+                        " vertices (each body keeps its own world-frame copy); the limit is " +
+                        formatNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
+  }
+}
+
+void spawnRagdolls(const JsonObject& s, bool periodic, double bursts, SpawnerDef& spawner, Scene& scene, double& spawnedVertices) {
   if (scene.settings.solver != Settings::ContactSolverMethod::SoftStep) {
     s.fail("ragdoll", "a ragdoll's joints need the soft-step solver; expected world.solver \"soft-step\"");
   }
@@ -176,6 +190,9 @@ void spawnRagdolls(const JsonObject& s, bool periodic, SpawnerDef& spawner, Scen
   RagdollDef figure;
   parseRagdollFigure(s.object("ragdoll", kRagdollFigureKeys), figure);
   spawner.ragdoll = figure;
+  // The bones count with the bodies (issue 56, item 1: they were skipped).
+  const double figures = static_cast<double>(spawner.count) * static_cast<double>(spawner.offsets.size()) * bursts;
+  addSpawnedVertices(s, figures, ragdollVertexCount(), "figures", spawnedVertices);
   if (periodic) {
     scene.spawners.push_back(spawner);
     return;
@@ -199,13 +216,7 @@ void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic,
   parseScripts(body, first, scene);
   const BodyDef prototype = scene.bodies[first];
   const double copies = static_cast<double>(spawner.count) * static_cast<double>(spawner.offsets.size()) * bursts;
-  spawnedVertices += copies * static_cast<double>(prototype.mesh->vertices.size());
-  if (spawnedVertices > kMaxSpawnedVertices) {
-    s.fail("count", formatNumber(copies) + " bodies of " + std::to_string(prototype.mesh->vertices.size()) +
-                        " vertices bring the spawned bodies to " + formatNumber(spawnedVertices) +
-                        " vertices (each body keeps its own world-frame copy); the limit is " +
-                        formatNumber(kMaxSpawnedVertices) + " vertices: spawn fewer bodies or a coarser mesh");
-  }
+  addSpawnedVertices(s, copies, prototype.mesh->vertices.size(), "bodies", spawnedVertices);
   // The fastest spin a draw can give keeps the surface below light speed, as for a body's own
   // angular_velocity; with the template's mass within kMaxMassScale, m v and I omega stay finite.
   const double radius = 0.5 * (prototype.mesh->boundsMax() - prototype.mesh->boundsMin()).norm();

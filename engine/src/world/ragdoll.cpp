@@ -69,6 +69,12 @@ constexpr JointShape kJoints[kBoneCount - 1] = {
 
 }  // namespace
 
+std::size_t ragdollVertexCount() {
+  // The capsules' vertex count depends on their segments and rings alone, not on their size.
+  const std::size_t perBone = makeCapsule(1.0, 1.0, kCapsuleSegments, kCapsuleRings).vertices.size();
+  return kBoneCount * perBone;
+}
+
 const char* boneName(Bone bone) { return kBones[static_cast<std::size_t>(bone)].name; }
 
 Ragdoll addRagdoll(World& world, const RagdollDef& def) {

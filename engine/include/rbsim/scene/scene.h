@@ -60,6 +60,11 @@ struct Scene {
   ViewDesc view;
 
   std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep
+  // The most bodies the scene's World holds at once over `duration`: the listed ones, every
+  // ragdoll's bones and what the spawners' bursts add, less what their lifetimes have removed
+  // (issue 56, item 1: the budgets of outputs count everything the scene will make). A double:
+  // an estimate no product can wrap. The kill volume is not counted: it may remove nothing.
+  double mostBodiesAtOnce() const;
 };
 
 // Reads and parses a scene file; `overrides` are "path=value" assignments (the --set flag)

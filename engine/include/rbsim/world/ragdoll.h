@@ -41,6 +41,9 @@ struct Ragdoll {
 // "pelvis", "torso", ..., "lower_leg_right": what a bone's body is named after.
 const char* boneName(Bone bone);
 
+// The vertices of one figure's eleven capsule meshes, which a spawned figure copies.
+std::size_t ragdollVertexCount();
+
 // Adds the figure's bodies and joints to `world` (which must use the soft-step solver).
 Ragdoll addRagdoll(World& world, const RagdollDef& def);
 
