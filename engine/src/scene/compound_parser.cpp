@@ -11,6 +11,7 @@
 #include "rbsim/io/input_error.h"
 #include "scene/body_parser.h"
 #include "scene/input_ranges.h"
+#include "scene/motion_ranges.h"
 
 namespace rbsim::scene_detail {
 
@@ -230,6 +231,7 @@ void parseMotion(const JsonObject& b, std::size_t index, Scene& scene) {
     const std::size_t dot = problem.find(':');
     m.fail(motion.kind == KinematicMotion::Kind::Keyframes ? "keyframes" : problem.substr(0, dot).c_str(), problem);
   }
+  checkMotionSpeeds(m, motion, scene.bodies[index], scene.settings.timeStep);
   scene.motions.push_back(motion);
 }
 

@@ -1,9 +1,11 @@
 #include "scene/ragdoll_parser.h"
 
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "rbsim/world/made_names.h"
+#include "rbsim/world/world.h"
 #include "scene/input_ranges.h"
 #include "scene/joint_parser.h"  // the joint springs' bounds, kMaxJointHertz and kMaxJointDampingRatio
 
@@ -34,6 +36,24 @@ void parseRagdollFigure(const JsonObject& r, RagdollDef& def) {
   def.jointDampingRatio = r.number("joint_damping_ratio", def.jointDampingRatio);
   if (!(def.jointDampingRatio >= 0.0) || def.jointDampingRatio > kMaxJointDampingRatio) {
     r.fail("joint_damping_ratio", "expected a ratio from 0 to " + formatNumber(kMaxJointDampingRatio));
+  }
+  // Every bone's mass and principal moments, and their inverses, within 1e+-150, as a listed
+  // body's (body_parser.cpp, checkMassScale): a figure of 1e-300 kg failed as a divergence that
+  // named no file or field (issue 56, item 5). The figure is built to read them.
+  World probe{Settings{}};
+  try {
+    static_cast<void>(addRagdoll(probe, def));
+  } catch (const std::invalid_argument& e) {
+    r.fail("mass", std::string("a bone cannot be made: ") + e.what());
+  }
+  const auto inScale = [](double x) { return x <= kMaxMassScale && 1.0 / x <= kMaxMassScale; };
+  for (const RigidBody& bone : probe.bodies()) {
+    const double least = bone.principalMoments().minCoeff(), most = bone.principalMoments().maxCoeff();
+    if (inScale(bone.mass()) && inScale(least) && inScale(most)) continue;
+    r.fail("mass", "a figure of " + formatNumber(def.mass) + " kg at scale " + formatNumber(def.scale) + " gives its bone " +
+                       bone.name().substr(def.name.size() + 1) + " a mass of " + formatNumber(bone.mass()) +
+                       " kg and principal moments from " + formatNumber(least) + " to " + formatNumber(most) +
+                       " kg m^2; expected each and its inverse within 1e+-150 (the solver multiplies one by another)");
   }
 }
 

@@ -139,6 +139,16 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
       region.fail("max", "the region's extent max - min overflows (" + formatNumber(extent.maxCoeff()) +
                              " m); expected a finite size along every axis");
     }
+    // A copy starts at a drawn point plus its offset: the sum, not each part, is held to 1e6 m
+    // (issue 56, item 5: a region and an offset each at 1e6 m put bodies at 2e6 m).
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+      const double far = (lo + offsets[i]).cwiseAbs().cwiseMax((hi + offsets[i]).cwiseAbs()).stableNorm();
+      if (!(far <= kMaxCoordinate)) {
+        s.fail("offsets", "offsets[" + std::to_string(i) + "] puts copies up to " + formatNumber(far) +
+                              " m from the origin (the region's corner plus the offset); expected at most " +
+                              formatNumber(kMaxCoordinate) + " m (" + kFarFromOrigin + ")");
+      }
+    }
     const auto [speedLo, speedHi] = range(s, "speed", "m/s");
     if (speedHi > kMaxSpeed) s.fail("speed", "expected speeds below the speed of light, 299792458 m/s");
     const auto [spinLo, spinHi] = range(s, "angular_speed", "rad/s");
