@@ -57,6 +57,13 @@ void appendVec(std::vector<std::uint8_t>& out, const Vec3& v) {
 }  // namespace
 
 RecordedFile recordedFileOf(const std::string& path) {
+  // A regular file only, as the loaders read (engine/src/io/read_file.cpp): a FIFO put in a mesh's
+  // place would block the read for ever, a device never end (issue 56, item 7).
+  std::error_code ec;
+  const std::filesystem::file_type type = std::filesystem::status(path, ec).type();
+  if (!ec && type != std::filesystem::file_type::regular && type != std::filesystem::file_type::not_found) {
+    throw InputError(path, "--record", "is not a regular file (a folder, FIFO, device or socket); expected the file a scene read");
+  }
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (f == nullptr) throw InputError(path, "--record", std::string("cannot read it to checksum it (") + std::strerror(errno) + ")");
   RecordedFile out{std::filesystem::absolute(path).lexically_normal().string(), 0, 0};
@@ -73,7 +80,11 @@ RecordWriter::RecordWriter(const std::string& path, const RecordingHeader& heade
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   std::error_code ec;
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  file_ = std::fopen(path.c_str(), "wb");
+  // Written beside its name and renamed when closed whole (issue 56, item 7): a run that fails
+  // keeps the recording of the run before. A device or FIFO is written in place.
+  const std::filesystem::file_type type = std::filesystem::status(path, ec).type();
+  partial_ = type == std::filesystem::file_type::regular || type == std::filesystem::file_type::not_found ? path + ".partial" : path;
+  file_ = std::fopen(partial_.c_str(), "wb");
   if (file_ == nullptr) throw InputError(path, "--record", std::string("cannot create the recording (") + std::strerror(errno) + ")");
   nlohmann::json phases = nlohmann::json::array();
   for (const RecordedPhase& p : header.phases) {
@@ -96,7 +107,11 @@ RecordWriter::RecordWriter(const std::string& path, const RecordingHeader& heade
 }
 
 RecordWriter::~RecordWriter() {
-  if (file_ != nullptr) std::fclose(file_);
+  if (file_ != nullptr) {  // not closed: the run failed, and its recording is not whole
+    std::fclose(file_);
+    std::error_code ec;
+    if (partial_ != path_) std::filesystem::remove(partial_, ec);
+  }
   if (compressor_ != nullptr) libdeflate_free_compressor(static_cast<libdeflate_compressor*>(compressor_));
 }
 
@@ -164,8 +179,20 @@ void RecordWriter::close() {
   put(end, sizeof end);
   put(&entries_, sizeof entries_);
   const bool failed = std::fclose(file_) != 0;
+  const int error = errno;
   file_ = nullptr;
-  if (failed) throw InputError(path_, "--record", std::string("cannot write the recording (") + std::strerror(errno) + ")");
+  std::error_code ec;
+  if (failed) {
+    if (partial_ != path_) std::filesystem::remove(partial_, ec);
+    throw InputError(path_, "--record", std::string("cannot write the recording (") + std::strerror(error) + ")");
+  }
+  if (partial_ != path_) {
+    std::filesystem::rename(partial_, path_, ec);
+    if (ec) {
+      std::filesystem::remove(partial_, ec);
+      throw InputError(path_, "--record", "cannot move the finished recording into place (" + ec.message() + ")");
+    }
+  }
 }
 
 RecordReader::RecordReader(const std::string& path) : path_(path) {
@@ -308,8 +335,8 @@ void RecordReader::checkFiles(std::size_t phase) const {
     RecordedFile now;
     try {
       now = recordedFileOf(recorded.path);
-    } catch (const InputError&) {
-      fail("its scene read " + recorded.path + ", which is gone or unreadable now");
+    } catch (const InputError& e) {
+      fail("its scene read " + recorded.path + ", which is gone, unreadable or not a regular file now (" + e.problem() + ")");
     }
     if (now.bytes != recorded.bytes || now.crc32 != recorded.crc32) {
       fail("its scene read " + recorded.path + ", which has changed since it was recorded (" + std::to_string(recorded.bytes) +

@@ -40,7 +40,8 @@ struct RecordedFile {
   std::uint64_t bytes = 0;
   std::uint32_t crc32 = 0;
 };
-// The file's size and CRC-32 now; InputError naming it when it cannot be read.
+// The file's size and CRC-32 now; InputError naming it when it cannot be read or is not a
+// regular file.
 RecordedFile recordedFileOf(const std::string& path);
 
 struct RecordedPhase {
@@ -78,6 +79,7 @@ class RecordWriter {
   void put(const void* data, std::size_t bytes);
 
   std::string path_;
+  std::string partial_;  // what is written: path_ + ".partial", renamed by close(); path_ for a device
   std::FILE* file_ = nullptr;
   std::vector<std::uint8_t> raw_;
   std::vector<std::uint8_t> deflated_;

@@ -37,8 +37,11 @@ FrameSink::FrameSink(SinkOptions options) : options_(std::move(options)) {
 }
 
 FrameSink::~FrameSink() {
+  // Not finished: the run failed. Its video is thrown away (the last run's stays); its PNG frames
+  // each appeared whole as they were written.
+  if (video_) video_->abandon();
   try {
-    finish();
+    if (png_) png_->finish();
   } catch (...) {
     // Destructors must not throw; callers who care call finish() themselves.
   }

@@ -40,7 +40,7 @@ class FrameSink {
   // Creates the folders and starts ffmpeg before any frame exists, so a missing ffmpeg or an
   // unwritable path fails at once. Throws RenderError naming the path or program.
   explicit FrameSink(SinkOptions options);
-  ~FrameSink();  // finishes if finish() was not called, ignoring errors
+  ~FrameSink();  // without finish(): the run failed; abandons the video (VideoEncoder::abandon)
   FrameSink(const FrameSink&) = delete;
   FrameSink& operator=(const FrameSink&) = delete;
 

@@ -103,15 +103,25 @@ void concatVideos(const std::vector<std::filesystem::path>& parts, const std::fi
     // (-map_chapters takes them from there instead of from the first input, ffmpeg(1)).
     args.insert(args.end(), {"-f", "ffmetadata", "-i", metadata.string(), "-map", "0", "-map_chapters", "1"});
   }
-  args.insert(args.end(), {"-c", "copy", "-movflags", "+faststart", output.string()});
+  // Written beside its name and renamed when whole, as every video (VideoEncoder): a failed join
+  // keeps the reel there was. The extension stays last: ffmpeg picks the container from it.
+  const std::filesystem::path partial = output.parent_path() / (output.stem().string() + ".partial" + output.extension().string());
+  args.insert(args.end(), {"-c", "copy", "-movflags", "+faststart", partial.string()});
   std::string errors;
   const int status = runFfmpeg(args, errors);
   std::error_code ignored;
   std::filesystem::remove(list, ignored);
   std::filesystem::remove(metadata, ignored);
   if (status != 0) {
+    std::filesystem::remove(partial, ignored);
     throw RenderError("ffmpeg could not join " + std::to_string(parts.size()) + " videos into " + output.string() +
                       " (exit status " + std::to_string(status) + "): " + ffmpegLogTail(errors));
+  }
+  std::error_code moved;
+  std::filesystem::rename(partial, output, moved);
+  if (moved) {
+    std::filesystem::remove(partial, ignored);
+    throw RenderError("cannot move the joined reel " + partial.string() + " to " + output.string() + ": " + moved.message());
   }
 }
 

@@ -39,24 +39,37 @@ bool writeAll(int fd, const std::uint8_t* data, std::size_t size) {
 
 VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height, int fps,
                            std::size_t queueFrames)
-    : output_(std::move(output)), width_(width), height_(height), fps_(fps), queue_(queueFrames) {
+    : output_(std::move(output)),
+      // The extension stays last: ffmpeg picks the container from it.
+      partial_(output_.parent_path() / (output_.stem().string() + ".partial" + output_.extension().string())),
+      width_(width), height_(height), fps_(fps), queue_(queueFrames) {
   const std::filesystem::path parent = output_.parent_path();
   ensureWritableDirectory(parent.empty() ? std::filesystem::path(".") : parent);
-  // Opened for appending, so an existing file is left alone until ffmpeg replaces it.
-  const int fd = ::open(output_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0666);
-  if (fd < 0) throw RenderError("cannot write video file " + output_.string() + ": " + std::strerror(errno));
+  std::error_code ec;
+  if (std::filesystem::is_directory(output_, ec)) throw RenderError("cannot write video file " + output_.string() + ": " + std::strerror(EISDIR));
+  // The existing video is left alone until the new one is whole.
+  const int fd = ::open(partial_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw RenderError("cannot write video file " + partial_.string() + ": " + std::strerror(errno));
   ::close(fd);
   spawn();
   writer_ = std::thread([this] { writeLoop(); });
   stderrReader_ = std::thread([this] { drainStderr(); });
 }
 
-VideoEncoder::~VideoEncoder() {
-  try {
-    finish();
-  } catch (...) {
-    // Destructors must not throw; finish() reports the error to callers who want it.
+VideoEncoder::~VideoEncoder() { abandon(); }
+
+void VideoEncoder::abandon() {
+  if (finished_) return;
+  finished_ = true;
+  if (pid_ > 0) ::kill(pid_, SIGKILL);  // its output is thrown away: no need to let it finish
+  queue_.close();
+  writer_.join();
+  stderrReader_.join();
+  int status = 0;
+  while (pid_ > 0 && waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
+  std::error_code ec;
+  std::filesystem::remove(partial_, ec);
 }
 
 void VideoEncoder::spawn() {
@@ -70,7 +83,7 @@ void VideoEncoder::spawn() {
   }
   const std::string size = std::to_string(width_) + "x" + std::to_string(height_);
   const std::string rate = std::to_string(fps_);
-  const std::string out = output_.string();
+  const std::string out = partial_.string();
   std::vector<std::string> args = {"ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo",
                                    "-pix_fmt", "rgba", "-s", size, "-r", rate, "-i", "-",
                                    "-c:v", "libx264", "-pix_fmt", "yuv420p", "-preset",
@@ -92,8 +105,10 @@ void VideoEncoder::spawn() {
     close(in[1]);
     close(err[0]);
     pid_ = -1;
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec);
     throw RenderError(rc == ENOENT ? std::string("ffmpeg not found on PATH: it is needed to write "
-                                                 "the video ") + out +
+                                                 "the video ") + output_.string() +
                                          " (install the ffmpeg package, or run without a video)"
                                    : "could not start ffmpeg: " + std::string(strerror(rc)));
   }
@@ -176,6 +191,12 @@ void VideoEncoder::finish() {
       error_ = failure + " while writing " + output_.string() +
                (stderrText_.empty() ? std::string() : ":\n" + ffmpegLogTail(stderrText_));
     }
+    std::error_code ec;
+    if (error().empty()) {
+      std::filesystem::rename(partial_, output_, ec);
+      if (ec) setError("cannot move the finished video " + partial_.string() + " to " + output_.string() + ": " + ec.message());
+    }
+    if (!error().empty()) std::filesystem::remove(partial_, ec);
   }
   const std::string message = error();
   if (!message.empty()) throw RenderError(message);

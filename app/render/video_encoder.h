@@ -15,11 +15,13 @@ namespace rbsim::render {
 
 class VideoEncoder {
  public:
-  // Creates the output's parent folders, checks the file can be written and starts ffmpeg.
+  // Creates the output's parent folders, checks the file can be written and starts ffmpeg, which
+  // writes NAME.partial.EXT beside the output (issue 56, item 7): the video appears whole, when
+  // finish() succeeds, or not at all, and a failed run keeps the video of the run before.
   // Throws RenderError if ffmpeg is not on PATH or the path cannot be written (names it).
   VideoEncoder(std::filesystem::path output, int width, int height, int fps,
                std::size_t queueFrames);
-  ~VideoEncoder();  // finishes, swallowing errors (call finish() to see them)
+  ~VideoEncoder();  // abandons the video unless finish() ran
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
@@ -27,9 +29,11 @@ class VideoEncoder {
   // No more frames: ffmpeg gets end-of-file once the queue has drained and finishes the file on
   // its own; finish() then only waits. No submit() after it.
   void closeInput() { queue_.close(); }
-  // Closes ffmpeg's input and waits for it; throws RenderError with ffmpeg's exit status and
-  // its error output when it failed.
+  // Closes ffmpeg's input and waits for it, then renames the finished file into place; throws
+  // RenderError with ffmpeg's exit status and its error output when it failed (nothing renamed).
   void finish();
+  // Stops ffmpeg and removes the unfinished file: the run failed. Nothing after it.
+  void abandon();
   // Empty while all is well; otherwise why frames are being dropped (ffmpeg died early).
   std::string error() const;
   double meanWriteMs() const { return writeMs_.mean(); }
@@ -41,6 +45,7 @@ class VideoEncoder {
   void setError(const std::string& message);
 
   std::filesystem::path output_;
+  std::filesystem::path partial_;  // what ffmpeg writes, renamed to output_ when whole
   int width_;
   int height_;
   int fps_;

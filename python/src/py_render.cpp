@@ -106,11 +106,27 @@ class PyVideoWriter {
     if (const std::string error = encoder_->error(); !error.empty()) throw render::RenderError(error);
   }
 
+  // A writer dropped without close() finishes its video, as Python's files flush when collected.
+  ~PyVideoWriter() {
+    try {
+      close();
+    } catch (...) {
+      // Destructors must not throw; close() reports the error to callers who want it.
+    }
+  }
+  PyVideoWriter(PyVideoWriter&&) = default;
+
   // Waits for ffmpeg to finish the file; RenderError with its output when it failed.
   void close() {
     if (!encoder_) return;
     std::unique_ptr<render::VideoEncoder> encoder = std::move(encoder_);
     encoder->finish();
+  }
+
+  // The with-block ended by an exception: the video is thrown away, not left half made.
+  void abandon() {
+    if (encoder_) encoder_->abandon();
+    encoder_.reset();
   }
 
   long frames() const { return frames_; }
@@ -157,7 +173,13 @@ void bindRendering(py::module_& m) {
       .def("close", &PyVideoWriter::close, "close(self, /)\n--\n\nwaits for ffmpeg to finish the file")
       .def_property_readonly("frames", &PyVideoWriter::frames)
       .def("__enter__", [](PyVideoWriter& w) -> PyVideoWriter& { return w; })
-      .def("__exit__", [](PyVideoWriter& w, const py::args&) { w.close(); });
+      .def("__exit__", [](PyVideoWriter& w, const py::args& exc) {
+        if (!exc.empty() && !exc[0].is_none()) {
+          w.abandon();
+        } else {
+          w.close();
+        }
+      });
 }
 
 }  // namespace rbsim::python

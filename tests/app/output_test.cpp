@@ -201,6 +201,35 @@ TEST(CheckedFile, AFailedRunKeepsTheOutputsOfTheRunBefore) {
   fs::remove_all(dir);
 }
 
+TEST(CheckedFile, AFailedRunKeepsTheVideoAndTheRecordingOfTheRunBefore) {
+  // Issue 56, item 7: ffmpeg wrote the video in place and the recording was truncated at its
+  // start, so a run failing halfway left half a video and a recording with no end.
+  const fs::path dir = freshDir("failed_video");
+  const fs::path video = dir / "run.mp4", recording = dir / "run.rbrec";
+  const std::vector<std::string> scene{"run", std::string(RBSIM_BAD_DATA_DIR) + "/valid.json", "--size", "64x64",
+                                       "--video", video.string(), "--record", recording.string(), "--quiet"};
+  const auto [good, goodOutput] = runRbsim(scene);
+  ASSERT_EQ(good, 0) << goodOutput;
+  const std::string videoBefore = fileText(video), recordingBefore = fileText(recording);
+  ASSERT_GT(videoBefore.size(), 100u);
+  ASSERT_GT(recordingBefore.size(), 100u);
+  std::vector<std::string> diverging = scene;
+  // Halfway (t = 0.05 s of 0.1 s), after frames have gone to ffmpeg and steps to the recording.
+  for (const char* set : {"bodies[0].mass=1e-10", "bodies[0].forces=[{\"force\":[1e308,0,0],\"start\":0.05,\"end\":1}]"}) {
+    diverging.push_back("--set");
+    diverging.push_back(set);
+  }
+  const auto [bad, badOutput] = runRbsim(diverging);
+  EXPECT_EQ(bad, 2) << badOutput;
+  EXPECT_NE(badOutput.find("diverged"), std::string::npos) << badOutput;
+  EXPECT_EQ(fileText(video), videoBefore);
+  EXPECT_EQ(fileText(recording), recordingBefore);
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_TRUE(entry.path() == video || entry.path() == recording) << entry.path() << " left behind";
+  }
+  fs::remove_all(dir);
+}
+
 TEST(TraceWriter, AFullDiskStopsTheRunNamingTheFile) {
   try {
     TraceWriter trace("/dev/full");

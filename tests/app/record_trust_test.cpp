@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -217,7 +218,8 @@ TEST(RecordTrust, AReplayWorksFromAnyFolderAndRefusesAChangedMesh) {
       << R"({"world": {"dt": 0.01, "steps": 20}, "bodies": [{"name": "h", "shape": {"type": "mesh", "file": "meshes/handle.obj"},
             "mass": 1, "angular_velocity": [0, 1, 3]}]})";
   const auto rbsimIn = [&](const fs::path& where, const std::string& args) {
-    return test::runCommand("cd " + test::shellQuote(where.string()) + " && " + test::shellQuote(RBSIM_BINARY) + " " + args + " 2>&1");
+    return test::runCommand("cd " + test::shellQuote(where.string()) + " && timeout 120 " + test::shellQuote(RBSIM_BINARY) + " " + args +
+                            " 2>&1");
   };
   auto [code, output] = rbsimIn(dir / "made", "run s.json --no-render --record r.rbrec --quiet");
   ASSERT_EQ(code, 0) << output;
@@ -227,6 +229,13 @@ TEST(RecordTrust, AReplayWorksFromAnyFolderAndRefusesAChangedMesh) {
   std::tie(code, output) = rbsimIn(dir / "elsewhere", "replay ../made/r.rbrec --no-render --quiet");
   EXPECT_EQ(code, 2) << output;
   EXPECT_NE(output.find("handle.obj, which has changed since it was recorded"), std::string::npos) << output;
+  // A FIFO in the mesh's place (issue 56, item 7): the check opened it and waited for a writer for
+  // ever. `timeout` turns a hang into a failure here instead of a stuck suite.
+  fs::remove(dir / "made" / "meshes" / "handle.obj");
+  ASSERT_EQ(mkfifo((dir / "made" / "meshes" / "handle.obj").c_str(), 0600), 0);
+  std::tie(code, output) = rbsimIn(dir / "elsewhere", "replay ../made/r.rbrec --no-render --quiet");
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("handle.obj, which is gone, unreadable or not a regular file now"), std::string::npos) << output;
   fs::remove_all(dir);
 }
 

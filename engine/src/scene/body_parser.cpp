@@ -254,10 +254,12 @@ void checkMassScale(const JsonObject& b, const BodyDef& def) {
   const auto inScale = [](double x) { return x <= kMaxMassScale && 1.0 / x <= kMaxMassScale; };
   if (inScale(def.mass) && inScale(least) && inScale(most)) return;
   const Vec3 size = def.mesh->boundsMax() - def.mesh->boundsMin();
+  // Each printed apart from the bound it is nearer, so a value just past it does not read as it.
+  const auto shown = [](double x) { return formatPastLimit(x, x >= 1.0 ? kMaxMassScale : 1.0 / kMaxMassScale); };
   b.fail(b.has("density") ? "density" : "mass",
-         "a mass of " + formatNumber(def.mass) + " kg for a body of size " + formatNumber(size.x()) + " x " +
+         "a mass of " + shown(def.mass) + " kg for a body of size " + formatNumber(size.x()) + " x " +
              formatNumber(size.y()) + " x " + formatNumber(size.z()) + " m gives principal moments of inertia from " +
-             formatNumber(least) + " to " + formatNumber(most) + " kg m^2; expected the mass, the moments and their "
+             shown(least) + " to " + shown(most) + " kg m^2; expected the mass, the moments and their "
              "inverses each within 1e+-150 (the solver multiplies one by another): a mass (or density) nearer the "
              "body's size");
 }

@@ -188,7 +188,7 @@ Vec3 JsonObject::boundedVec3(const char* key, const Vec3& fallback, double limit
                               const char* what) const {
   const Vec3 v = vec3(key, fallback);
   if (!(v.stableNorm() <= limit)) {
-    fail(key, "its length " + formatNumber(v.stableNorm()) + " " + unit + " exceeds " + formatNumber(limit) + " " + unit +
+    fail(key, "its length " + formatPastLimit(v.stableNorm(), limit) + " " + unit + " exceeds " + formatNumber(limit) + " " + unit +
                   " (" + what + "); expected a smaller value");
   }
   return v;
