@@ -72,8 +72,9 @@ bool climbs(const RigidBody& body) {
   return s.type == ShapeType::ConvexHull && s.hull->vertices.size() > kHillClimbMinVertices;
 }
 
+// The body's collision shape (a compound's children), not its display mesh: continuous_collision.h.
 SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) {
-  return SweptBody{&body.mesh().vertices, start, body.state(), radius};
+  return SweptBody{&body.shape(), &body.children(), start, body.state(), radius};
 }
 
 }  // namespace
@@ -155,7 +156,7 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   std::vector<Aabb> stepBoxes(bodies.size());
   for (std::size_t j = 0; j < bodies.size(); ++j) {
     stepBoxes[j] = boxes_[j];
-    if (bodies[j].awake()) stepBoxes[j].grow(Aabb::of(bodies[j].worldVertices()));
+    if (bodies[j].awake()) stepBoxes[j].grow(bodyBounds(bodies[j]));
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!isFast(i)) continue;
@@ -164,8 +165,8 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     for (const Plane& plane : planes) {
       if (const auto s = timeOfImpact(swept, plane)) first = std::min(first, *s);
     }
-    Aabb sweep = Aabb::of(worldVerticesAt(swept, 0.0));
-    sweep.grow(Aabb::of(bodies[i].worldVertices()));
+    Aabb sweep = boundsAt(swept, 0.0);
+    sweep.grow(boundsAt(swept, 1.0));
     for (std::size_t j = 0; j < bodies.size(); ++j) {
       if (j == i || hasGrid_[j] || !sweep.overlaps(stepBoxes[j])) continue;
       const SweptBody partner = sweptOf(bodies[j], start_[j], radius_[j]);
@@ -184,7 +185,7 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
   parallelFor(bodies.size(), settings_.threads, [&](std::size_t i) {
     if (!bodies[i].awake()) return;
     Aabb box = bodyBounds(bodies[i]);
-    if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
+    if (isFast(i)) box.grow(boundsAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0));
     const double dt = settings_.timeStep;
     reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
                       dt * settings_.gravity.norm());
