@@ -66,6 +66,9 @@ PosedMesh posedMesh(const RigidBody& body, const BodySolid& solid) {
 
 PosedShape posed(const RigidBody& body) { return {&body.shape(), body.rotation(), body.position()}; }
 
+// A hull's face planes where it is; none for a box (its SAT has its own) or a grid body's hull.
+PosedFaces facesOf(const RigidBody& body) { return {body.shape().faces.get(), body.rotation(), body.position()}; }
+
 // A hull large enough that GJK climbs its vertex graph rather than scanning it.
 bool climbs(const RigidBody& body) {
   const Shape& s = body.shape();
@@ -278,13 +281,14 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
     boxB = OrientedBox{b.position(), b.rotation(), b.shape().halfExtents};
   }
   ConvexContact c;
-  if (!boxA && (climbs(a) || climbs(b))) {
+  if (boxA) {
+    c = collideConvex(a.worldVertices(), b.worldVertices(), margin, &*boxA, &*boxB);
+  } else {
+    // A hull's faces let a face meet the other body where EPA's axis is two edges' (collideHulls).
     const PosedHullSupport hullA(posed(a)), hullB(posed(b));
     const PointSetSupport pointsA(a.worldVertices()), pointsB(b.worldVertices());
-    c = collideConvex(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(),
-                      climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), margin);
-  } else {
-    c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr, boxB ? &*boxB : nullptr);
+    c = collideHulls(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(), facesOf(a),
+                     climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), facesOf(b), margin);
   }
   if (settings_.logQueries) {
     log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold, c.distance, time));
