@@ -66,14 +66,18 @@ PosedMesh posedMesh(const RigidBody& body, const BodySolid& solid) {
 
 PosedShape posed(const RigidBody& body) { return {&body.shape(), body.rotation(), body.position()}; }
 
+// A hull's face planes where it is; none for a box (its SAT has its own) or a grid body's hull.
+PosedFaces facesOf(const RigidBody& body) { return {body.shape().faces.get(), body.rotation(), body.position()}; }
+
 // A hull large enough that GJK climbs its vertex graph rather than scanning it.
 bool climbs(const RigidBody& body) {
   const Shape& s = body.shape();
   return s.type == ShapeType::ConvexHull && s.hull->vertices.size() > kHillClimbMinVertices;
 }
 
+// The body's collision shape (a compound's children), not its display mesh: continuous_collision.h.
 SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) {
-  return SweptBody{&body.mesh().vertices, start, body.state(), radius};
+  return SweptBody{&body.shape(), &body.children(), start, body.state(), radius};
 }
 
 }  // namespace
@@ -155,7 +159,7 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   std::vector<Aabb> stepBoxes(bodies.size());
   for (std::size_t j = 0; j < bodies.size(); ++j) {
     stepBoxes[j] = boxes_[j];
-    if (bodies[j].awake()) stepBoxes[j].grow(Aabb::of(bodies[j].worldVertices()));
+    if (bodies[j].awake()) stepBoxes[j].grow(bodyBounds(bodies[j]));
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!isFast(i)) continue;
@@ -164,8 +168,8 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     for (const Plane& plane : planes) {
       if (const auto s = timeOfImpact(swept, plane)) first = std::min(first, *s);
     }
-    Aabb sweep = Aabb::of(worldVerticesAt(swept, 0.0));
-    sweep.grow(Aabb::of(bodies[i].worldVertices()));
+    Aabb sweep = boundsAt(swept, 0.0);
+    sweep.grow(boundsAt(swept, 1.0));
     for (std::size_t j = 0; j < bodies.size(); ++j) {
       if (j == i || hasGrid_[j] || !sweep.overlaps(stepBoxes[j])) continue;
       const SweptBody partner = sweptOf(bodies[j], start_[j], radius_[j]);
@@ -184,7 +188,7 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
   parallelFor(bodies.size(), settings_.threads, [&](std::size_t i) {
     if (!bodies[i].awake()) return;
     Aabb box = bodyBounds(bodies[i]);
-    if (isFast(i)) box.grow(Aabb::of(worldVerticesAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0)));
+    if (isFast(i)) box.grow(boundsAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0));
     const double dt = settings_.timeStep;
     reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
                       dt * settings_.gravity.norm());
@@ -277,13 +281,14 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
     boxB = OrientedBox{b.position(), b.rotation(), b.shape().halfExtents};
   }
   ConvexContact c;
-  if (!boxA && (climbs(a) || climbs(b))) {
+  if (boxA) {
+    c = collideConvex(a.worldVertices(), b.worldVertices(), margin, &*boxA, &*boxB);
+  } else {
+    // A hull's faces let a face meet the other body where EPA's axis is two edges' (collideHulls).
     const PosedHullSupport hullA(posed(a)), hullB(posed(b));
     const PointSetSupport pointsA(a.worldVertices()), pointsB(b.worldVertices());
-    c = collideConvex(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(),
-                      climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), margin);
-  } else {
-    c = collideConvex(a.worldVertices(), b.worldVertices(), margin, boxA ? &*boxA : nullptr, boxB ? &*boxB : nullptr);
+    c = collideHulls(climbs(a) ? static_cast<const SupportMap&>(hullA) : pointsA, a.worldVertices(), facesOf(a),
+                     climbs(b) ? static_cast<const SupportMap&>(hullB) : pointsB, b.worldVertices(), facesOf(b), margin);
   }
   if (settings_.logQueries) {
     log_.record(summarize(c.usedBoxSat ? QueryKind::BoxBox : QueryKind::ConvexConvex, pair.a, pair.b, c.manifold, c.distance, time));

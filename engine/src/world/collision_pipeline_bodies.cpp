@@ -22,17 +22,11 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const 
   meshGround_[index] = isMeshGround(body, solid) ? 1 : 0;
   hasGrid_[index] = solid.sdf || body.isCompound() || meshGround_[index] ? 1 : 0;
   gap_[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;
-  double radius = 0.0;
-  Aabb local;
-  for (const Vec3& p : body.mesh().vertices) {
-    radius = std::max(radius, p.norm());
-    local.grow(p);
-  }
-  if (body.shape().isRound()) {  // the exact shape, not its inscribed display mesh
-    radius = body.shape().boundingRadius();
-    const auto [lo, hi] = body.shape().worldBounds(Mat3::Identity(), Vec3::Zero());
-    local = {lo, hi};
-  }
+  // The collision shape's, not the display mesh's (a round shape's is inscribed in it, and a body
+  // built in C++ may carry any mesh): continuous collision sweeps the shape with this radius.
+  double radius = body.shape().boundingRadius();
+  const auto [lo, hi] = body.shape().worldBounds(Mat3::Identity(), Vec3::Zero());
+  Aabb local{lo, hi};
   if (body.isCompound()) {  // its children, not their display meshes
     radius = compoundRadius(body);
     local = compoundBounds(body);

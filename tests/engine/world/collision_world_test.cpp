@@ -272,8 +272,8 @@ TEST(CollisionWorld, ATumblingBoxLandsWithoutGainingEnergyWithEitherSolver) {
 TEST(ContinuousCollision, ConservativeAdvancementFindsTheAnalyticTimeOfImpact) {
   // A unit cube's bottom at y = 1.5 moving down 4 m in the step reaches the plane at s = 0.375;
   // conservative advancement stops with the face in (0, kImpactSeparation] above it.
-  const Mesh cube = makeBox(Vec3::Ones());
-  SweptBody swept{&cube.vertices, {}, {}, std::sqrt(0.75)};
+  const Shape cube = Shape::box(Vec3::Constant(0.5));
+  SweptBody swept{&cube, nullptr, {}, {}, std::sqrt(0.75)};
   swept.start.position = Vec3(0.0, 2.0, 0.0);
   swept.end.position = Vec3(0.0, -2.0, 0.0);
   const auto s = timeOfImpact(swept, Plane{Vec3::UnitY(), 0.0});

@@ -11,6 +11,7 @@
 #include "collision/narrowphase/box_box.h"
 #include "collision/narrowphase/gjk.h"
 #include "rbsim/math/types.h"
+#include "rbsim/shapes/face_planes.h"
 
 namespace rbsim {
 
@@ -45,6 +46,26 @@ ConvexContact collideConvex(const std::vector<Vec3>& a, const std::vector<Vec3>&
 ConvexContact collideConvex(const SupportMap& supportA, const std::vector<Vec3>& a, const SupportMap& supportB,
                             const std::vector<Vec3>& b, double margin = 0.0,
                             double featureTolerance = kSupportFeatureTolerance);
+
+// A face axis within this [m] of EPA's separation is taken in its place, so that a face meets the
+// other hull (a manifold of several points) rather than two edges at one point: Box3D keeps its
+// face contact unless the edge axis separates more by B3_LINEAR_SLOP, 5 mm (convex_manifold.c,
+// b3CollideHulls, edgeTol), as Box2D's polygon manifold prefers a face (b2_linearSlop).
+inline constexpr double kFaceAxisPreference = 5e-3;
+
+// A hull's face planes (shapes/face_planes.h) where its body is: rotation R and position x.
+struct PosedFaces {
+  const FacePlanes* planes = nullptr;
+  Mat3 rotation = Mat3::Identity();
+  Vec3 position = Vec3::Zero();  // [m]
+};
+
+// collideConvex for two hulls that know their faces (either may be null): when EPA's normal is
+// not a face's (two edges, or a vertex on an edge), the face of A most along it or of B most
+// against it is taken instead when its separation is within kFaceAxisPreference of EPA's.
+ConvexContact collideHulls(const SupportMap& supportA, const std::vector<Vec3>& a, const PosedFaces& facesA,
+                           const SupportMap& supportB, const std::vector<Vec3>& b, const PosedFaces& facesB,
+                           double margin = 0.0);
 
 struct ConvexDistance {
   bool overlap = false;

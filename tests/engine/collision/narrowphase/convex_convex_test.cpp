@@ -10,6 +10,7 @@
 
 #include "collision/narrowphase/epa.h"
 #include "collision/narrowphase/gjk.h"
+#include "rbsim/geometry/mesh.h"
 #include "narrowphase_test_util.h"
 #include "test_util.h"
 
@@ -121,6 +122,35 @@ TEST(CollideConvex, TetrahedronFaceDownOnABoxHasThreePoints) {
   }
 }
 
+TEST(CollideConvex, ATiltedFacePressedIntoAFaceKeepsEveryPenetratingCorner) {
+  // A unit cube turned 5 degrees about z, its lowest edge 0.1 m into a slab whose top is y = 0:
+  // its other bottom edge is sin 5 deg higher, still 0.1 - 0.0872 = 0.0128 m in. The manifold
+  // holds all four bottom corners at their own depths; with only the lowest edge (the corners
+  // within kSupportFeatureTolerance of the deepest) the cube turned about that edge deeper into
+  // the slab, as the hulls of Box3D's convex pile did (issue 56). Either body may be A.
+  const double depth = 0.1, tilt = 5.0 * M_PI / 180.0;
+  const Mat3 R = rotationAbout(Vec3::UnitZ(), tilt);
+  const Vec3 centre(0.0, -depth + 0.5 * (std::sin(tilt) + std::cos(tilt)), 0.0);
+  const std::vector<Vec3> cube = boxCorners(makeOrientedBox(centre, kConvexHalf, R));
+  const std::vector<Vec3> slab = boxCorners(makeOrientedBox(Vec3(0.0, -0.5, 0.0), Vec3(2.0, 0.5, 2.0)));
+  for (const bool slabIsA : {true, false}) {
+    const ConvexContact c = slabIsA ? collideConvex(slab, cube) : collideConvex(cube, slab);
+    EXPECT_NEAR(c.depth, depth, 1e-9) << "the analytic overlap, slab is A: " << slabIsA;
+    EXPECT_TRUE(allNear(c.manifold.normal, slabIsA ? Vec3::UnitY() : Vec3(-Vec3::UnitY()), 1e-9));
+    ASSERT_EQ(c.manifold.count, 4) << "slab is A: " << slabIsA;
+    EXPECT_NEAR(c.manifold.maxDepth(), depth, 1e-9);
+    for (const Vec3& corner : cube) {
+      if (corner.y() >= 0.0) continue;  // above the slab
+      // Each corner in the slab is a point of depth -y, midway between the surfaces.
+      EXPECT_TRUE(convexHolds(c.manifold, Vec3(corner.x(), 0.5 * corner.y(), corner.z())))
+          << corner.transpose() << ", slab is A: " << slabIsA;
+    }
+    for (int k = 0; k < c.manifold.count; ++k) {
+      EXPECT_NEAR(c.manifold.points[k].depth, -2.0 * c.manifold.points[k].position.y(), 1e-9);
+    }
+  }
+}
+
 // Apart, the box path reports the SAT separation: the distance when faces are closest, a lower
 // bound (the gap along one axis) when corners are.
 TEST(CollideConvex, BoxPathReportsTheSatSeparationWhenApart) {
@@ -169,6 +199,44 @@ TEST(CollideConvex, RandomBoxPairsPutEveryPointBetweenTheTwoSurfaces) {
     ASSERT_NEAR(c.manifold.maxDepth(), c.depth, 1e-6) << "trial " << trial;
   }
   EXPECT_GT(overlapping, 600);
+}
+
+// The same pairs through collideHulls, each box a hull with its face planes: where EPA's axis is
+// two edges' and a face's is within kFaceAxisPreference of it, the face's manifold is taken.
+// Every point still lies between the two surfaces, none deeper than the face axis allows, and
+// the deepest is within kFaceAxisPreference of EPA's depth (a reference face whose prism missed
+// the overlap once gave 3 mm for 0.26 m).
+TEST(CollideConvex, RandomBoxHullsThroughTheirFacesKeepTheDepth) {
+  std::mt19937 rng(415);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), size(0.1, 1.0), reach(0.0, 1.5);
+  int overlapping = 0, facePathPoints = 0, plainPoints = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    const OrientedBox a = makeOrientedBox(Vec3(u(rng), u(rng), u(rng)), Vec3(size(rng), size(rng), size(rng)),
+                                          test::randomRotation(rng));
+    const OrientedBox b = makeOrientedBox(a.centre + Vec3(u(rng), u(rng), u(rng)).normalized() * reach(rng),
+                                          Vec3(size(rng), size(rng), size(rng)), test::randomRotation(rng));
+    if (std::abs(test::satSeparation(a, b)) < 1e-6) continue;  // touching: either answer is right
+    const Shape hullA = Shape::convexHull(makeBox(2.0 * a.halfExtents));
+    const Shape hullB = Shape::convexHull(makeBox(2.0 * b.halfExtents));
+    const std::vector<Vec3> cornersA = boxCorners(a), cornersB = boxCorners(b);
+    const PointSetSupport supportA(cornersA), supportB(cornersB);
+    const ConvexContact c = collideHulls(supportA, cornersA, PosedFaces{hullA.faces.get(), a.rotation, a.centre},
+                                         supportB, cornersB, PosedFaces{hullB.faces.get(), b.rotation, b.centre});
+    if (!c.overlap) continue;
+    ++overlapping;
+    const Vec3& n = c.manifold.normal;
+    for (int i = 0; i < c.manifold.count; ++i) {
+      const ContactPoint& p = c.manifold.points[i];
+      ASSERT_NEAR(test::boxSignedDistance(a, p.position + n * (0.5 * p.depth)), 0.0, 1e-6) << "trial " << trial;
+      ASSERT_NEAR(test::boxSignedDistance(b, p.position - n * (0.5 * p.depth)), 0.0, 1e-6) << "trial " << trial;
+      ASSERT_LE(p.depth, c.depth + kFaceAxisPreference + 1e-9) << "trial " << trial;
+    }
+    ASSERT_GE(c.manifold.maxDepth(), c.depth - kFaceAxisPreference - 1e-9) << "trial " << trial;
+    facePathPoints += c.manifold.count;
+    plainPoints += collideConvex(cornersA, cornersB).manifold.count;
+  }
+  EXPECT_GT(overlapping, 600);
+  EXPECT_GT(facePathPoints, plainPoints) << "faces give the pairs more points than EPA's axis alone";
 }
 
 TEST(CollideConvex, RandomPointSetsGiveFiniteConsistentManifolds) {
