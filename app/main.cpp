@@ -260,6 +260,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "rbsim: error: %s%s%s%s\n", e.what(), demoFlags.origin(e).c_str(), runFlags.origin(e).c_str(),
                  replayFlags.origin(e).c_str());
     return 2;
+  } catch (const rbsim::StepLimitError& e) {  // the scene asks more of a step than it holds: not a divergence
+    std::fprintf(stderr, "rbsim: error: %s\n", e.what());
+    return 2;
   } catch (const rbsim::SimulationError& e) {
     std::fprintf(stderr, "rbsim: error: the simulation diverged: %s\n", e.what());
     return 2;

@@ -10,6 +10,7 @@
 
 #include "rbsim/math/types.h"
 #include "rbsim/collision/contact.h"
+#include "world/body_removal.h"
 
 namespace rbsim {
 
@@ -23,43 +24,36 @@ inline std::uint64_t pairKey(const Contact& c) {
          ((static_cast<std::uint64_t>(c.a) & kIndexMask) << 24) | (static_cast<std::uint64_t>(c.b) & kIndexMask);
 }
 
-// After World::destroyBody took body `removed` away and moved the last body, `last`, into its
-// index: the warm starts of the removed body's manifolds go, and those of the moved body's follow
-// it to its new index; every other manifold keeps its warm start, where forgetting them all cost
-// a resting stack a cold step (its boxes jumping to 5 cm/s) for each body removed anywhere. A
-// pair in order (the lower index first) that the rename turns round (the moved body, the last,
-// was its second) is handed to `turn(entry, partner)`, which rewrites the entry for the moved
-// body as the first (its points into the partner's frame, its impulses' signs) or returns false
-// to let it start cold (as CollisionPipeline::removeBody turns the pair's contact). `Entry` has a
-// `key` made by pairKey; the list stays sorted by it.
+// After World::destroyBodies (world/body_removal.h): the warm starts of the removed bodies'
+// manifolds go, and those of the moved bodies' follow them to their new indices; every other
+// manifold keeps its warm start, where forgetting them all cost a resting stack a cold step (its
+// boxes jumping to 5 cm/s) for each body removed anywhere. A pair in order (the lower index
+// first) that a move turns round is handed to `turn(entry, moved, partner)` (indices before the
+// removal), which rewrites the entry for the moved body as the first (its points into the
+// partner's frame, its impulses' signs) or returns false to let it start cold (as
+// CollisionPipeline::removeBodies turns the pair's contact). `Entry` has a `key` made by pairKey;
+// the list stays sorted by it.
 template <class Entry, class Turn>
-void renumberCache(std::vector<Entry>& cache, std::size_t removed, std::size_t last, Turn&& turn) {
+void renumberCache(std::vector<Entry>& cache, const BodyRemoval& removal, Turn&& turn) {
   constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << 24) - 1;
-  const std::uint64_t gone = removed, moved = last;
   const auto byKey = [](const Entry& x, const Entry& y) { return x.key < y.key; };
   // The entries left as they were stay in order; the renamed few are sorted and merged back in:
-  // linear in the list for each removed body, not a sort of the whole list.
+  // linear in the list for the whole batch, not a sort of the whole list.
   std::vector<Entry> renamed;
   std::size_t kept = 0;
   for (Entry& entry : cache) {
     const bool plane = (entry.key >> 63) != 0;  // a is a plane's index, not a body's
-    std::uint64_t a = (entry.key >> 24) & kIndexMask, b = entry.key & kIndexMask;
-    if (b == gone || (!plane && a == gone)) continue;
-    if (b != moved && (plane || a != moved)) {
+    std::size_t a = (entry.key >> 24) & kIndexMask, b = entry.key & kIndexMask;
+    if (!removal.involves(b) && (plane || !removal.involves(a))) {
       cache[kept++] = std::move(entry);
       continue;
     }
-    const bool inOrder = a < b;
-    if (b == moved) b = gone;
-    if (!plane && a == moved) a = gone;
-    if (!plane && inOrder && a > b) {
-      // Only a pair of single shapes turns (part 0): a compound's or a mesh ground's part names
-      // its shapes in order, and those manifolds start cold.
-      const bool single = ((entry.key >> 48) & 0x7fff) == 0;
-      if (!single || !turn(entry, static_cast<std::size_t>(a))) continue;
-      std::swap(a, b);
-    }
-    entry.key = (entry.key & ~((kIndexMask << 24) | kIndexMask)) | (a << 24) | b;
+    // Only a pair of single shapes turns (part 0): a compound's or a mesh ground's part names
+    // its shapes in order, and those manifolds start cold.
+    const bool single = ((entry.key >> 48) & 0x7fff) == 0;
+    const auto turnEntry = [&](std::size_t moved, std::size_t partner) { return single && turn(entry, moved, partner); };
+    if (!removal.replay(!plane, a, b, turnEntry, [](std::size_t) {})) continue;
+    entry.key = (entry.key & ~((kIndexMask << 24) | kIndexMask)) | (std::uint64_t{a} << 24) | std::uint64_t{b};
     renamed.push_back(std::move(entry));
   }
   cache.resize(kept);

@@ -22,6 +22,8 @@ namespace rbsim {
 // What stage SolveContacts hands the solver. `bodyMaterials` has one entry per body,
 // `planeMaterials` one per plane; `addGravity`: the forces accumulated in the bodies lack m g
 // (World::step adds gravity in its Integrate pass unless other forces act).
+class BodyRemoval;  // world/body_removal.h
+
 struct SolverInput {
   std::vector<RigidBody>& bodies;
   const std::vector<Contact>& contacts;
@@ -62,11 +64,10 @@ class ContactSolver {
   virtual const std::vector<SolvedContactPoint>& points() const = 0;
   // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
   virtual void forget() = 0;
-  // Body `removed` is gone and the last body, `last`, took its index (World::destroyBody): the
-  // warm starts follow (contact_key.h renumberCache); which bodies the last step advanced is
-  // forgotten.
-  // `bodies` as they were before the removal (bodies[last] is the moved body).
-  virtual void bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) = 0;
+  // Bodies were destroyed and others moved into their indices (World::destroyBodies,
+  // world/body_removal.h): the warm starts follow (contact_key.h renumberCache); which bodies the
+  // last step advanced is forgotten. `bodies` as they were before the removal.
+  virtual void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) = 0;
   // A deep copy, warm starts included (World's copy, a saved state).
   virtual std::unique_ptr<ContactSolver> clone() const = 0;
 

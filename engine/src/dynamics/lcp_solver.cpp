@@ -50,14 +50,14 @@ int LcpSolver::solverBody(const SolverInput& input, std::size_t body) {
   return slot;
 }
 
-void LcpSolver::bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) {
+void LcpSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) {
   clearAdvanced();
   solved_.clear();
   // A turned pair: the points were the moved body's (body 1) and become the partner's; the
   // friction, which acts + on body 1, changes sign (the twist's, about the flipped normal, not),
-  // as PgsSolver::bodyRemoved.
-  renumberCache(cache_, removed, last, [&](Cached& entry, std::size_t partner) {
-    anchorsToPartner(entry.localPoints, entry.count, bodies[last], bodies[partner]);
+  // as PgsSolver::bodiesRemoved.
+  renumberCache(cache_, removal, [&](Cached& entry, std::size_t moved, std::size_t partner) {
+    anchorsToPartner(entry.localPoints, entry.count, bodies[moved], bodies[partner]);
     entry.linearFriction = -entry.linearFriction;
     return true;
   });

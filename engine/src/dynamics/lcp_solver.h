@@ -81,7 +81,7 @@ class LcpSolver final : public ContactSolver {
     cache_.clear();
     solved_.clear();
   }
-  void bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) override;
+  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
   const std::vector<std::size_t>& advancedBodies() const override { return advancedList_; }
   const std::vector<char>& advancedFlags() const override { return advanced_; }  // per World body
   void clearAdvanced() override {

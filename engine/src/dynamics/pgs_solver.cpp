@@ -27,13 +27,12 @@ int PgsSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) {
   return slot;
 }
 
-void PgsSolver::bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) {
+void PgsSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) {
   solved_.clear();
-  const RigidBody& moved = bodies[last];
   // A turned pair: the points were the moved body's (body 1); they become the partner's, and the
   // friction impulses, which act + on body 1, change sign (the twist's, about the flipped normal, not).
-  renumberCache(cache_, removed, last, [&](Cached& entry, std::size_t partner) {
-    anchorsToPartner(entry.localPoints, entry.count, moved, bodies[partner]);
+  renumberCache(cache_, removal, [&](Cached& entry, std::size_t moved, std::size_t partner) {
+    anchorsToPartner(entry.localPoints, entry.count, bodies[moved], bodies[partner]);
     for (int j = 0; j < entry.count; ++j) entry.pointFriction[j] = -entry.pointFriction[j];
     entry.linearFriction = -entry.linearFriction;
     return true;

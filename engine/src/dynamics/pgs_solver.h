@@ -34,7 +34,7 @@ class PgsSolver final : public ContactSolver {
     cache_.clear();
     solved_.clear();
   }
-  void bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) override;
+  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
 
  private:
   // The velocities a sweep reads and changes, 48 bytes per body (as Box2D's b2BodyState): the

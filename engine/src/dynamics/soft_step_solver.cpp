@@ -50,16 +50,15 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   return s;
 }
 
-void SoftStepSolver::bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) {
+void SoftStepSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) {
   clearAdvanced();
   solved_.clear();
   reported_ = true;
-  const RigidBody& moved = bodies[last];
   // A turned pair: the anchors were the moved body's (B); they become the partner's, and the
   // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
   // inside the surface, so its points may miss their match and start cold.
-  renumberCache(cache_, removed, last, [&](Cached& entry, std::size_t partner) {
-    anchorsToPartner(entry.localPoints, entry.count, moved, bodies[partner]);
+  renumberCache(cache_, removal, [&](Cached& entry, std::size_t moved, std::size_t partner) {
+    anchorsToPartner(entry.localPoints, entry.count, bodies[moved], bodies[partner]);
     for (int j = 0; j < entry.count; ++j) entry.frictionImpulses[j] = -entry.frictionImpulses[j];
     return true;
   });

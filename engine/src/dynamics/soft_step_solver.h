@@ -52,7 +52,7 @@ class SoftStepSolver final : public ContactSolver {
     solved_.clear();
     reported_ = true;
   }
-  void bodyRemoved(std::size_t removed, std::size_t last, const std::vector<RigidBody>& bodies) override;
+  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
   void clearAdvanced() override {
     for (std::size_t body : advancedList_) advanced_[body] = 0;
     advancedList_.clear();

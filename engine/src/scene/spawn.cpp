@@ -99,6 +99,10 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     // steps (world/spawner.h); without, all of them at load.
     const bool periodic = s.has("period");
     const double period = periodic ? s.positiveNumber("period", 1.0) : 0.0;
+    if (periodic) {
+      const std::string tooShort = checkSpawnPeriod(period, scene.settings.timeStep);
+      if (!tooShort.empty()) s.fail("period", tooShort.substr(tooShort.find(": ") + 2));
+    }
     const double start = s.number("start", 0.0);
     if (!(start >= 0.0)) s.fail("start", "expected a time >= 0 s");
     const double end = s.number("end", std::numeric_limits<double>::infinity());

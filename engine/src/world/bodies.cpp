@@ -9,7 +9,7 @@
 #include "rbsim/world/world.h"
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
-#include "world/swap_remove.h"
+#include "world/body_removal.h"
 
 #include "rbsim/fracture/fracture.h"
 
@@ -21,14 +21,12 @@ constexpr std::uint32_t kNoSlot = UINT32_MAX;
 // The contact solvers key a pair's manifolds by 24-bit body indices (dynamics/contact_key.h).
 constexpr std::size_t kMaxBodies = (std::size_t{1} << 24) - 1;
 
-// Removes the entries naming the body `removed`; the others name theirs by id, which stays.
-template <typename T>
-void removeNaming(std::vector<T>& items, BodyId removed) {
-  items.erase(std::remove_if(items.begin(), items.end(), [&](const T& item) { return item.body == removed; }),
-              items.end());
-}
-
 }  // namespace
+
+template <typename T>
+void World::removeStale(std::vector<T>& items) const {
+  items.erase(std::remove_if(items.begin(), items.end(), [&](const T& item) { return !isValid(item.body); }), items.end());
+}
 
 BodyId World::addBody(const BodyDef& def) {
   if (bodies_.size() >= kMaxBodies) {
@@ -77,54 +75,76 @@ BodyId World::idAt(std::size_t index) const {
   return {slot, slots_[slot].generation};
 }
 
-void World::destroyBody(BodyId id) {
-  const std::size_t removed = indexOf(id);
-  const std::size_t last = bodies_.size() - 1;
-  // Whatever rested on it must notice it is gone (as Box2D's b2DestroyBody wakes its contacts).
-  for (const Contact& c : collision_->contacts()) {
-    if (c.kind != Contact::Kind::BodyBody) continue;
-    if (c.a == removed) bodies_[c.b].wake();
-    if (c.b == removed) bodies_[c.a].wake();
+void World::destroyBody(BodyId id) { destroyBodies({id}); }
+
+void World::destroyBodies(const std::vector<BodyId>& ids) {
+  // Every id is checked before anything changes: a stale or repeated one leaves the World as it was.
+  std::vector<char> listed(slots_.size(), 0);
+  for (const BodyId id : ids) {
+    static_cast<void>(indexOf(id));  // throws on a stale id
+    if (listed[id.slot]) {
+      throw std::invalid_argument("destroyBodies: body '" + body(id).name() + "' (slot " + std::to_string(id.slot) +
+                                  ") is listed twice");
+    }
+    listed[id.slot] = 1;
   }
-  // What names the body goes with it.
-  removeNaming(forces_, id);
-  removeNaming(springs_, id);
-  removeNaming(pendingEvents_, id);
-  removeNaming(motions_, id);
+  if (ids.empty()) return;
+  // The ids, as destroyBody one after another: each slot's generation moves on (every copy of the
+  // id is now stale) and the slot joins the free list; the last body moves into the removed
+  // one's index, keeping its slot, which now points there.
+  std::vector<BodyRemoval::Step> steps;
+  steps.reserve(ids.size());
+  std::size_t count = bodies_.size();
+  for (const BodyId id : ids) {
+    const std::uint32_t removed = slots_[id.slot].index;
+    const std::uint32_t last = static_cast<std::uint32_t>(--count);
+    steps.push_back({removed, last});
+    ++slots_[id.slot].generation;
+    slots_[id.slot].index = freeSlot_;
+    freeSlot_ = id.slot;
+    if (removed != last) {
+      slotOfBody_[removed] = slotOfBody_[last];
+      slots_[slotOfBody_[removed]].index = removed;
+    }
+    slotOfBody_.pop_back();
+  }
+  const BodyRemoval removal(bodies_.size(), std::move(steps));
+  // Whatever rested on a removed body must notice it is gone (as Box2D's b2DestroyBody wakes its
+  // contacts); the contacts follow their bodies.
+  for (const std::size_t touched : collision_->removeBodies(removal)) bodies_[touched].wake();
+  // What names a removed body goes with it (every id these name was valid before the batch).
+  removeStale(forces_);
+  removeStale(springs_);
+  removeStale(pendingEvents_);
+  removeStale(motions_);
   // A joint goes with either of its bodies; its other body wakes to fall free.
-  for (const Joint& joint : joints_) {
-    const bool names = joint.a == removed || joint.b == removed;
-    if (names && joint.a != removed) bodies_[joint.a].wake();
-    if (names && joint.b != removed && joint.b != kWorldIndex) bodies_[joint.b].wake();
-  }
-  joints_.erase(std::remove_if(joints_.begin(), joints_.end(),
-                               [&](const Joint& j) { return j.a == removed || j.b == removed; }),
-                joints_.end());
+  std::size_t keptJoints = 0;
   for (Joint& joint : joints_) {
-    if (joint.a == last) joint.a = removed;
-    if (joint.b == last) joint.b = removed;
+    const std::uint32_t a = removal.newIndex(joint.a);
+    const std::uint32_t b = joint.b == kWorldIndex ? 0 : removal.newIndex(joint.b);
+    if (a == BodyRemoval::kGone || b == BodyRemoval::kGone) {
+      if (a != BodyRemoval::kGone) bodies_[joint.a].wake();
+      if (b != BodyRemoval::kGone && joint.b != kWorldIndex) bodies_[joint.b].wake();
+      continue;
+    }
+    joint.a = a;
+    if (joint.b != kWorldIndex) joint.b = b;
+    joints_[keptJoints++] = std::move(joint);
   }
-  // Warm starts are keyed by body indices: the moved body's follow it (read before the move).
-  solver_->bodyRemoved(removed, last, bodies_);
-  for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(removed, last, removed);
-  if (fracturePatterns_[removed]) --breakableBodies_;
-  swapRemove(bodies_, removed);
-  swapRemove(bodyMaterials_, removed);
-  swapRemove(bodySolids_, removed);
-  swapRemove(fracturePatterns_, removed);
-  collision_->removeBody(removed);
+  joints_.resize(keptJoints);
+  // Warm starts are keyed by body indices: the moved bodies' follow them (read before the moves).
+  solver_->bodiesRemoved(removal, bodies_);
+  for (const BodyRemoval::Step& s : removal.steps()) {
+    for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(s.removed, s.last, s.removed);
+  }
+  for (const std::uint32_t gone : removal.removed()) {
+    if (fracturePatterns_[gone]) --breakableBodies_;
+  }
+  removal.gather(bodies_);
+  removal.gather(bodyMaterials_);
+  removal.gather(bodySolids_);
+  removal.gather(fracturePatterns_);
   updateJointFilter();
-  // The id: the slot's generation moves on (every copy of the id is now stale), and the slot joins
-  // the free list; the body moved into `removed` keeps its slot, which now points there.
-  const std::uint32_t slot = id.slot;
-  ++slots_[slot].generation;
-  slots_[slot].index = freeSlot_;
-  freeSlot_ = slot;
-  if (removed != last) {
-    slotOfBody_[removed] = slotOfBody_[last];
-    slots_[slotOfBody_[removed]].index = static_cast<std::uint32_t>(removed);
-  }
-  slotOfBody_.pop_back();
 }
 
 void World::restore(std::uint64_t stepCount, const std::vector<BodyState>& states, const std::vector<char>& awake) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "collision/broadphase/brute_force.h"
 #include "collision/broadphase/sweep_and_prune.h"
@@ -334,7 +335,17 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     later_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k], pairFrames_[k]);
   });
   collideCompounds(pairs, bodies, shapes, threads);
+  // A pair of compounds gives a contact per pair of children (up to 128^2): the contacts are
+  // bounded with the pairs, before the list grows past what a step may hold.
+  const auto admit = [&](std::size_t more) {
+    if (contacts_.size() + more <= kMaxStepContacts) return;
+    contacts_.clear();
+    throw StepLimitError("the bodies touch in more than " + std::to_string(kMaxStepContacts) +
+                         " contacts, the most a step holds (kMaxStepContacts): compound bodies are piled into one "
+                         "place; expected them spread out");
+  };
   for (std::size_t k = 0; k < pairs.size(); ++k) {
+    admit(later_[k] == Later::Compound || later_[k] == Later::MeshGround ? compoundSlots_[k].size() : later_[k] == Later::Nothing);
     if (later_[k] == Later::Nothing) {
       if (pairSlots_[k].manifold.count > 0) contacts_.push_back(pairSlots_[k]);
       continue;
@@ -352,6 +363,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     const std::vector<ContactManifold> manifolds =
         triangles ? collideMeshes(posedMesh(bodies[pair.a], sa), posedMesh(bodies[pair.b], sb))
                   : collideSdf(bodies[pair.a], sa, bodies[pair.b], sb, margin);
+    admit(manifolds.size());
     for (std::size_t m = 0; m < manifolds.size(); ++m) {
       if (settings_.logQueries) {
         log_.record(summarize(triangles ? QueryKind::TriangleTriangle : QueryKind::Sdf, pair.a, pair.b, manifolds[m], 0.0, time));
@@ -410,6 +422,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     if (recyclable && m.count > 0) planeFrames_[k] = recycleFrame(keptKey(Contact::Kind::PlaneBody, p, i), m, planePose, bodyPose);
   });
   for (std::size_t k = 0; k < planeSlots_.size(); ++k) {
+    admit(1 + (bodies[k % n].isCompound() ? compoundPlaneSlots_[k].size() : 0));
     if (planeSlots_[k].manifold.count > 0) contacts_.push_back(planeSlots_[k]);
     if (bodies[k % n].isCompound()) {
       contacts_.insert(contacts_.end(), compoundPlaneSlots_[k].begin(), compoundPlaneSlots_[k].end());

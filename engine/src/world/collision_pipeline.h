@@ -26,6 +26,8 @@ namespace rbsim {
 // whose shape is the hull of those vertices.
 Aabb bodyBounds(const RigidBody& body);
 
+class BodyRemoval;  // world/body_removal.h
+
 class CollisionPipeline {
  public:
   explicit CollisionPipeline(const Settings& settings);
@@ -39,9 +41,10 @@ class CollisionPipeline {
   // (a body with a grid, BodySolid::sdf, is not its convex hull; an implicit body's display mesh
   // lies up to a cell inside its exact surface).
   void addBody(const RigidBody& body, const BodySolid& solid);
-  // Body `index` was destroyed and the last body moved into its index (World::destroyBody). Its
-  // contacts go, the last body's are renumbered, and the last step's impacts are forgotten.
-  void removeBody(std::size_t index);
+  // Bodies were destroyed (World::destroyBodies, world/body_removal.h): their contacts go, the
+  // moved bodies' are renumbered, and the last step's impacts are forgotten. Returns the bodies
+  // (indices before the removal) that a removed body touched, to be woken.
+  std::vector<std::size_t> removeBodies(const BodyRemoval& removal);
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
   void replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid);

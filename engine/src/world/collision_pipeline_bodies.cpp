@@ -7,7 +7,7 @@
 #include "world/collision_pipeline.h"
 #include "world/compound_contacts.h"
 #include "world/mesh_ground_contacts.h"
-#include "world/swap_remove.h"
+#include "world/body_removal.h"
 
 namespace rbsim {
 
@@ -66,43 +66,43 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, co
   fast_[index] = 0;
 }
 
-void CollisionPipeline::removeBody(std::size_t index) {
-  broad_->remove(proxies_[index]);
-  recycle_.clear();  // keyed by body index, which the last body's move changes: collided afresh next step
-  const std::size_t last = proxies_.size() - 1;
-  if (index != last) bodyOfProxy_[proxies_[last]] = index;
-  swapRemove(proxies_, index);
-  swapRemove(radius_, index);
-  swapRemove(thickness_, index);
-  swapRemove(reach_, index);
-  swapRemove(start_, index);
-  swapRemove(fast_, index);
-  swapRemove(hasGrid_, index);
-  swapRemove(meshGround_, index);
-  swapRemove(gap_, index);
-  swapRemove(boxes_, index);
+std::vector<std::size_t> CollisionPipeline::removeBodies(const BodyRemoval& removal) {
+  for (const std::uint32_t gone : removal.removed()) broad_->remove(proxies_[gone]);
+  recycle_.clear();  // keyed by body index, which the moves change: collided afresh next step
+  for (const auto& [to, from] : removal.moves()) bodyOfProxy_[proxies_[from]] = to;
+  removal.gather(proxies_);
+  removal.gather(radius_);
+  removal.gather(thickness_);
+  removal.gather(reach_);
+  removal.gather(start_);
+  removal.gather(fast_);
+  removal.gather(hasGrid_);
+  removal.gather(meshGround_);
+  removal.gather(gap_);
+  removal.gather(boxes_);
   // The contacts follow the bodies to their new indices (as the solver's warm starts do,
-  // contact_key.h renumberCache): the removed body's go and the last body's take its index, so
-  // that sleeping pairs keep theirs. A pair in order (the lower index first) whose last body's
-  // new index comes first turns round (normal reversed; points are midway, unchanged), or, for a
-  // compound's or mesh ground's manifolds, whose part names their shapes in order, goes.
+  // contact_key.h renumberCache): a removed body's go, waking its partner, and the others take
+  // their bodies' new indices, so that sleeping pairs keep theirs. A pair in order (the lower index
+  // first) that a move turns round has its normal reversed (points are midway, unchanged), or, for
+  // a compound's or mesh ground's manifolds, whose part names their shapes in order, goes.
+  std::vector<std::size_t> touched;
   std::size_t kept = 0;
   for (Contact& c : contacts_) {
     const bool pair = c.kind == Contact::Kind::BodyBody;
-    if (c.b == index || (pair && c.a == index)) continue;
-    const bool inOrder = c.a < c.b;
-    if (c.b == last) c.b = index;
-    if (pair && c.a == last) c.a = index;
-    if (pair && inOrder && c.a > c.b) {
-      if (c.part != 0) continue;
-      std::swap(c.a, c.b);
-      std::swap(c.childA, c.childB);
-      c.manifold.normal = -c.manifold.normal;
+    if (removal.involves(c.b) || (pair && removal.involves(c.a))) {
+      const auto turn = [&c](std::size_t, std::size_t) {
+        if (c.part != 0) return false;
+        std::swap(c.childA, c.childB);
+        c.manifold.normal = -c.manifold.normal;
+        return true;
+      };
+      if (!removal.replay(pair, c.a, c.b, turn, [&](std::size_t partner) { touched.push_back(partner); })) continue;
     }
     contacts_[kept++] = c;
   }
   contacts_.resize(kept);
   impacts_.clear();
+  return touched;
 }
 
 }  // namespace rbsim

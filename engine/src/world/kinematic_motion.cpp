@@ -1,6 +1,7 @@
 // Kinematic bodies on a prescribed motion (world/kinematic_motion.h): each step, the velocity
 // and angular velocity that carry the body from its pose now exactly onto the path's pose at the
 // step's end, for the kinematic integration (x + v dt, exp(omega dt) q: integrate/integrator.h).
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,10 @@ std::string checkKinematicMotion(const KinematicMotion& motion) {
     return {};
   }
   if (motion.keys.empty()) return "keys: expected at least one keyframe";
+  if (motion.keys.size() > kMaxKeyframes) {
+    return "keys: " + std::to_string(motion.keys.size()) + " keyframes; expected at most " + std::to_string(kMaxKeyframes) +
+           " (a key every step of 1/60 s for 27 minutes)";
+  }
   for (std::size_t k = 0; k < motion.keys.size(); ++k) {
     const Keyframe& key = motion.keys[k];
     if (!std::isfinite(key.time)) return keyField(k, "time") + ": expected a finite time [s]";
@@ -51,10 +56,10 @@ Keyframe keyframePoseAt(const KinematicMotion& motion, double t) {
   if (motion.loop && t > last) t = first + std::fmod(t - first, last - first);
   if (t <= first) return keys.front();
   if (t >= last) return keys.back();
-  std::size_t k = 1;
-  while (keys[k].time < t) ++k;
-  const Keyframe& a = keys[k - 1];
-  const Keyframe& b = keys[k];
+  // The first key at or after t (first < t < last: one after the first, and one exists).
+  const auto next = std::lower_bound(keys.begin() + 1, keys.end(), t, [](const Keyframe& key, double time) { return key.time < time; });
+  const Keyframe& a = *(next - 1);
+  const Keyframe& b = *next;
   const double s = (t - a.time) / (b.time - a.time);
   return {t, a.position + s * (b.position - a.position), a.orientation.slerp(s, b.orientation)};
 }

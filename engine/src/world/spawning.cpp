@@ -1,6 +1,8 @@
 // Stage SpawnAndRemove (world/spawner.h): bursts past their lifetime and bodies out of the kill
 // volume removed, then the spawners' due bursts added.
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +38,27 @@ std::string checkSpawner(const SpawnerDef& def) {
   return {};
 }
 
+namespace {
+// Digits to print a count of bursts whole (16666667, not 1.66667e+07), and the stream's default.
+constexpr int kWholeDigits = 15;
+constexpr int kDefaultDigits = 6;
+}  // namespace
+
+std::string checkSpawnPeriod(double period, double timeStep) {
+  if (period >= timeStep * (1.0 - kSpawnPeriodSlack)) return {};
+  std::ostringstream problem;
+  problem << "period: " << period << " s is shorter than the time step, " << timeStep << " s, and would bring "
+          << std::setprecision(kWholeDigits) << std::ceil(timeStep / period) << std::setprecision(kDefaultDigits)
+          << " bursts in one step, all at its instant; expected a period >= "
+          << timeStep << " s (a burst a step at most: raise count for more bodies at once)";
+  return problem.str();
+}
+
+std::string checkSpawner(const SpawnerDef& def, double timeStep) {
+  const std::string problem = checkSpawner(def);
+  return problem.empty() ? checkSpawnPeriod(def.period, timeStep) : problem;
+}
+
 SpawnDraw drawPoint(Spawner& spawner) {
   const SpawnerDef& d = spawner.def;
   UniformRandom& random = spawner.random;
@@ -68,7 +91,7 @@ RagdollDef spawnRagdoll(Spawner& spawner, const SpawnDraw& draw, const Vec3& off
 }
 
 std::size_t World::addSpawner(const SpawnerDef& def) {
-  const std::string problem = checkSpawner(def);
+  const std::string problem = checkSpawner(def, settings_.timeStep);
   if (!problem.empty()) throw std::invalid_argument("spawner '" + def.name + "': " + problem);
   if (def.ragdoll && settings_.solver != Settings::ContactSolverMethod::SoftStep) {
     throw std::invalid_argument("spawner '" + def.name + "': ragdoll: a ragdoll's joints need the soft-step solver");
@@ -118,7 +141,9 @@ void World::spawnAndRemove() {
       expired.push_back(idAt(i));
     }
   }
-  for (const BodyId id : expired) destroyBody(id);
+  // One batch: destroying them one at a time walked every contact and warm start for each body
+  // (a burst of 1e5 resting boxes took about 150 s).
+  destroyBodies(expired);
   removedNow_.insert(removedNow_.end(), expired.begin(), expired.end());
   for (Spawner& spawner : spawners_) {
     while (spawner.nextTime() <= due && spawner.nextTime() < spawner.def.end) {

@@ -141,6 +141,10 @@ void World::setSettings(const Settings& settings) {
                                   " solver does not solve (keep the soft-step solver)");
     }
   }
+  for (const Spawner& spawner : spawners_) {
+    const std::string problem = checkSpawnPeriod(spawner.def.period, settings.timeStep);
+    if (!problem.empty()) throw std::invalid_argument("spawner '" + spawner.def.name + "': " + problem);
+  }
   if (settings.timeStep != settings_.timeStep) {
     timeOrigin_ = time();
     stepsAtOrigin_ = stepCount_;
@@ -232,10 +236,16 @@ void World::step() {
   const bool anyAwakeNow =
       anyAwake || ((posed || pushed) && std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); }));
   const bool collides = settings_.detectCollisions && (!planes_.empty() || bodies_.size() >= 2);
-  if (solver_->order() == ContactSolver::Order::IntegrateFirst) {
-    stepIntegrateFirst(!otherForces, anyAwakeNow, collides);
-  } else {
-    stepCollideFirst(!otherForces, anyAwakeNow, collides);
+  try {
+    if (solver_->order() == ContactSolver::Order::IntegrateFirst) {
+      stepIntegrateFirst(!otherForces, anyAwakeNow, collides);
+    } else {
+      stepCollideFirst(!otherForces, anyAwakeNow, collides);
+    }
+  } catch (const StepLimitError& e) {
+    std::ostringstream when;
+    when << "step " << stepCount_ << " (t = " << t << " s): " << e.what();
+    throw StepLimitError(when.str());
   }
   const bool solved = stats_[static_cast<int>(Stage::SolveContacts)].runs > solveRunsBefore;
   runStage(Stage::BreakBodies, breakableBodies_ > 0 && solved && settings_.respondToContacts, [&] {

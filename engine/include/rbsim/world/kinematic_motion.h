@@ -5,6 +5,7 @@
 // and angular velocity so that the step carries it exactly onto the path's pose at the step's
 // end; bodies resting on it see that velocity at their contacts and are carried by friction
 // (as Box2D's b2Body_SetTargetTransform and Jolt's MoveKinematic).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -35,10 +36,16 @@ struct KinematicMotion {
   bool loop = false;
 };
 
+// The most keyframes a motion holds [1]: a key every step of 1/60 s for 27 minutes, 10 MB of keys.
+// Without a bound a scene of a million keys loaded them all (the step finds its key by bisection,
+// so their number costs memory and load time, not step time).
+constexpr std::size_t kMaxKeyframes = 100000;
+
 // Empty when the motion is usable; otherwise what is wrong, naming the field ("keys[2].time: ...").
 std::string checkKinematicMotion(const KinematicMotion& motion);
 
-// The pose the motion prescribes at time t (keyframes only).
+// The pose the motion prescribes at time t (keyframes only), in O(log keys): the step's key by
+// bisection (a scan from the first took 2.6 ms a step over 1e6 keys).
 Keyframe keyframePoseAt(const KinematicMotion& motion, double t);
 
 }  // namespace rbsim

@@ -46,6 +46,16 @@ struct SpawnerDef {
 
 // Empty when the def is usable; otherwise what is wrong, naming the field.
 std::string checkSpawner(const SpawnerDef& def);
+// The same, and the period against the World's time step (checkSpawnPeriod): World::addSpawner's.
+std::string checkSpawner(const SpawnerDef& def, double timeStep);
+
+// A period shorter than the time step brings several bursts in one step, all at that step's
+// instant: period 1e-9 s made 16.7 million bursts in a step of 1/60 s. A burst a step at most;
+// more bodies at once are a larger count. Relative slack on the comparison [1]: a period written
+// as 1/60 s to ten digits still counts as one step of 1/60 s.
+constexpr double kSpawnPeriodSlack = 1e-9;
+// Empty when at most one burst falls in a step of `timeStep` [s]; otherwise "period: ...".
+std::string checkSpawnPeriod(double period, double timeStep);
 
 // A spawner as the World keeps it: its def, its generator and how far it has got.
 struct Spawner {

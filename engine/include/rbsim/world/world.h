@@ -92,6 +92,11 @@ class World {
   // dense), its id unchanged. The other contacts are renumbered; the solvers' warm starts are
   // forgotten for one step. Throws std::invalid_argument on a stale id.
   void destroyBody(BodyId id);
+  // Destroys the bodies in the order given, leaving the World exactly as destroyBody on each in
+  // turn would (the same indices, ids, contacts and warm starts), in one pass over what names
+  // bodies: O(bodies + contacts + joints + the ids) for the batch, where destroyBody is that for
+  // each id. Throws std::invalid_argument, destroying none, on a stale or repeated id.
+  void destroyBodies(const std::vector<BodyId>& ids);
   bool isValid(BodyId id) const;
   // The body's index in bodies() now; throws std::invalid_argument on a stale id.
   std::size_t indexOf(BodyId id) const;
@@ -190,6 +195,8 @@ class World {
   void solveContacts(bool withGravity);
   void wakeTouchedIslands();  // a sleeping island touched by an awake body wakes whole
   void wakeJointed();         // a joint's sleeping side wakes with its awake one
+  template <typename T>
+  void removeStale(std::vector<T>& items) const;  // the entries whose `body` id is no longer valid
   void updateJointFilter();   // the pairs that must not collide, after joints or indices changed
   void checkFinite(const std::vector<std::size_t>& bodies) const;  // after a solver advanced them
   void updateSleep();

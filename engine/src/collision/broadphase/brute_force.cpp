@@ -37,7 +37,8 @@ void BruteForce::update() {
     const Aabb& b = boxes_[id];
     live.push_back({{b.min.x(), b.min.y(), b.min.z()}, {b.max.x(), b.max.y(), b.max.z()}, id, isStatic_[id]});
   }
-  // Ids ascend in `live`, so the pairs come out sorted by (a, b) without a sort.
+  // Ids ascend in `live`, so the pairs come out sorted by (a, b) without a sort. Counted as they
+  // are found, before the list passes the bound: the old pairs are gone either way.
   pairs_.clear();
   for (std::size_t i = 0; i < live.size(); ++i) {
     const Live& a = live[i];
@@ -48,7 +49,12 @@ void BruteForce::update() {
       const bool hit = (a.min[0] <= b.max[0]) & (b.min[0] <= a.max[0]) & (a.min[1] <= b.max[1]) &
                        (b.min[1] <= a.max[1]) & (a.min[2] <= b.max[2]) & (b.min[2] <= a.max[2]) &
                        !(a.isStatic & b.isStatic);
-      if (hit) pairs_.push_back({a.id, b.id});
+      if (!hit) continue;
+      if (pairs_.size() == kMaxBroadPhasePairs) {
+        pairs_.clear();
+        throwPairLimit(live.size());
+      }
+      pairs_.push_back({a.id, b.id});
     }
   }
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rbsim/collision/broadphase/broad_phase.h"
+#include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
 
@@ -59,6 +60,14 @@ inline void requireProxyBox(const Aabb& box) {
       throw std::invalid_argument("broad phase: a proxy box must be finite");
     if (box.min[k] > box.max[k]) throw std::invalid_argument("broad phase: a proxy box must not be empty (min > max)");
   }
+}
+
+// What both broad phases say when the boxes overlap in more pairs than a step may hold.
+[[noreturn]] inline void throwPairLimit(std::size_t proxies) {
+  throw StepLimitError("the bounding boxes of " + std::to_string(proxies) + " bodies overlap in more than " +
+                       std::to_string(kMaxBroadPhasePairs) +
+                       " pairs, the most a step holds (kMaxBroadPhasePairs, ~8 GB of contacts): bodies are piled into "
+                       "one place; expected them spread out (their positions, a spawner's region and count)");
 }
 
 // The key of pair (a, b), a < b: sorting keys sorts pairs by (a, b).

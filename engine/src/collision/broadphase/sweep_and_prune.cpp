@@ -107,7 +107,9 @@ void SweepAndPrune::update() {
 
   const std::size_t endpointsAfter = axes_[0].size() + 2 * added.size();
   const double cost = rebuildCost(endpointsAfter);
-  const bool rebuildNow = predictedSwaps(added.size()) > cost;
+  // After an update that found too many pairs (rebuild), the lists are sorted on boxes that pairs_
+  // does not reflect: only a rebuild lists them again.
+  const bool rebuildNow = overflowed_ || predictedSwaps(added.size()) > cost;
   appendAdded(added);
   travel_.setZero();
   if (rebuildNow) {
@@ -122,15 +124,29 @@ void SweepAndPrune::update() {
     const std::size_t swapBudget = static_cast<std::size_t>(cost);
     bool sorted = true;
     for (int k = 0; k < kAxes && sorted; ++k) sorted = sortAxis(k, swapBudget);
-    if (sorted) {
-      processCrossings();
+    // More pairs starting than a step may hold (some twice, from two axes): the rebuild counts
+    // them exactly and refuses.
+    if (sorted && processCrossings()) {
       mergeStartedAndEnded();
+      if (pairs_.size() > kMaxBroadPhasePairs) {
+        pairs_.clear();
+        overflowed_ = true;
+        throwPairLimit(ids_.count());
+      }
     } else {
       stats_.path = Path::IncrementalAbandoned;
       rebuild();
     }
   }
   rememberBoxes(added);
+}
+
+// Every live proxy's box becomes the one pairs_ reflects (after the rebuild that follows an
+// overflow, when the proxies added by the failed update were never remembered).
+void SweepAndPrune::rememberAllBoxes() {
+  for (int k = 0; k < kAxes; ++k) prevCoord_[k] = coord_[k];
+  for (ProxyId id : movedIds_) moved_[id] = 0;
+  movedIds_.clear();
 }
 
 // Removed proxies leave the lists in one pass per axis, and their pairs in one pass.
@@ -226,8 +242,12 @@ bool SweepAndPrune::sortAxis(int axis, std::size_t swapBudget) {
   return true;
 }
 
-void SweepAndPrune::processCrossings() {
+bool SweepAndPrune::processCrossings() {
   for (std::size_t c = 0; c < crossingCount_; ++c) {
+    if (started_.size() == kMaxBroadPhasePairs) {
+      crossingCount_ = 0;
+      return false;
+    }
     const ProxyId p = crossings_[c].moving >> 1, q = crossings_[c].passed >> 1;
     if ((crossings_[c].moving & 1u) == 0) {
       // p's min now precedes q's max: the intervals overlap on that axis; test all three.
@@ -239,6 +259,7 @@ void SweepAndPrune::processCrossings() {
     }
   }
   crossingCount_ = 0;
+  return true;
 }
 
 // pairs_ = (pairs_ - ended) + started, all sorted by key, in one pass.
@@ -326,13 +347,25 @@ void SweepAndPrune::rebuild() {
       // One branch, on a rarely true result: separate tests would each be mispredicted often.
       const bool hit = (me.minU <= o.maxU) & (o.minU <= me.maxU) & (me.minV <= o.maxV) & (o.minV <= me.maxV) &
                        !(me.isStatic & o.isStatic);
-      if (hit) started_.push_back(pairKey(id, o.id));
+      if (!hit) continue;
+      if (started_.size() == kMaxBroadPhasePairs) {
+        // Refused before listing more; the next update() rebuilds (overflowed_).
+        started_.clear();
+        pairs_.clear();
+        overflowed_ = true;
+        throwPairLimit(ids_.count());
+      }
+      started_.push_back(pairKey(id, o.id));
     }
     activeSlot[id] = static_cast<std::uint32_t>(active.size());
     active.push_back(me);
   }
   stats_.sweepTests = tests;
   lastSweepTests_ = tests;
+  if (overflowed_) {
+    overflowed_ = false;
+    rememberAllBoxes();
+  }
   std::sort(started_.begin(), started_.end());
   pairs_.clear();
   pairs_.reserve(started_.size());

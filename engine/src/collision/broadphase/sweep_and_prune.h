@@ -90,10 +90,11 @@ class SweepAndPrune final : public BroadPhase {
   double predictedSwaps(std::size_t addedCount) const;
   double rebuildCost(std::size_t endpointsPerAxis) const;
   bool sortAxis(int axis, std::size_t swapBudget);
-  void processCrossings();
+  bool processCrossings();  // false: more pairs started than a step may hold
   void mergeStartedAndEnded();
   void rebuild();
   void rememberBoxes(const std::vector<ProxyId>& added);
+  void rememberAllBoxes();
 
   ProxyIdPool ids_;
   Coords coord_;      // the box given to add() or the last move()
@@ -116,6 +117,7 @@ class SweepAndPrune final : public BroadPhase {
   std::vector<std::uint64_t> started_, ended_;  // pair keys seen by the current update()
   std::vector<ProxyPair> pairs_, merged_;
   std::size_t lastSweepTests_ = 0;
+  bool overflowed_ = false;  // the last update() found too many pairs: the next one rebuilds
   Vec3 slabInvWidth_ = Vec3::Ones();  // [1/m] for the masks; changes only when all are redone
 
   UpdateStats stats_;

@@ -12,6 +12,18 @@ namespace rbsim {
 
 using ProxyId = std::uint32_t;
 
+// The most overlapping pairs a broad phase lists [pairs]. Each pair costs about 2 KB on its way
+// through the narrow phase (a 296-byte contact slot, a 560-byte recycling frame, their copies
+// kept for the next step) and the solver, so the bound holds that to ~8 GB. Boxes resting side
+// by side list 4 pairs a box (its margin-inflated bounds meet its 8 neighbours'), stacked in a
+// cube 13: 1e6 boxes in a layer or 3e5 in a block fit. 1e5 boxes at one point overlap in 5e9
+// pairs, which ended in std::bad_alloc. update() throws StepLimitError
+// (integrate/simulation_error.h) before it lists more.
+constexpr std::size_t kMaxBroadPhasePairs = std::size_t{1} << 22;
+// The most contacts a narrow phase lists [manifolds]: as many as pairs, for the same memory (a
+// pair of compounds gives one per pair of children, up to 128^2).
+constexpr std::size_t kMaxStepContacts = kMaxBroadPhasePairs;
+
 // An overlapping pair, a < b. Pairs of two static proxies are never reported.
 struct ProxyPair {
   ProxyId a = 0, b = 0;
@@ -28,7 +40,10 @@ class BroadPhase {
   virtual ProxyId add(const Aabb& box, bool isStatic = false) = 0;
   virtual void remove(ProxyId id) = 0;
   virtual void move(ProxyId id, const Aabb& box) = 0;  // new box; takes effect at update()
-  virtual void update() = 0;                           // brings pairs() up to date
+  // Brings pairs() up to date. Throws StepLimitError when the boxes overlap in more than
+  // kMaxBroadPhasePairs pairs, before listing more, and leaves pairs() empty; the proxies stay as
+  // they were given, and the next update() lists their pairs afresh.
+  virtual void update() = 0;
   // The overlapping pairs after the last update(), sorted by (a, b), no duplicates.
   virtual const std::vector<ProxyPair>& pairs() const = 0;
   virtual std::size_t proxyCount() const = 0;
