@@ -10,7 +10,7 @@
 
 #include "rbsim/math/types.h"
 #include "rbsim/collision/contact.h"
-#include "world/body_removal.h"
+#include "body/body_removal.h"
 
 namespace rbsim {
 
@@ -24,7 +24,7 @@ inline std::uint64_t pairKey(const Contact& c) {
          ((static_cast<std::uint64_t>(c.a) & kIndexMask) << 24) | (static_cast<std::uint64_t>(c.b) & kIndexMask);
 }
 
-// After World::destroyBodies (world/body_removal.h): the warm starts of the removed bodies'
+// After World::destroyBodies (body/body_removal.h): the warm starts of the removed bodies'
 // manifolds go, and those of the moved bodies' follow them to their new indices; every other
 // manifold keeps its warm start, where forgetting them all cost a resting stack a cold step (its
 // boxes jumping to 5 cm/s) for each body removed anywhere. A pair in order (the lower index

@@ -22,7 +22,7 @@ namespace rbsim {
 // What stage SolveContacts hands the solver. `bodyMaterials` has one entry per body,
 // `planeMaterials` one per plane; `addGravity`: the forces accumulated in the bodies lack m g
 // (World::step adds gravity in its Integrate pass unless other forces act).
-class BodyRemoval;  // world/body_removal.h
+class BodyRemoval;  // body/body_removal.h
 
 struct SolverInput {
   std::vector<RigidBody>& bodies;
@@ -65,7 +65,7 @@ class ContactSolver {
   // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
   virtual void forget() = 0;
   // Bodies were destroyed and others moved into their indices (World::destroyBodies,
-  // world/body_removal.h): the warm starts follow (contact_key.h renumberCache); which bodies the
+  // body/body_removal.h): the warm starts follow (contact_key.h renumberCache); which bodies the
   // last step advanced is forgotten. `bodies` as they were before the removal.
   virtual void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) = 0;
   // A deep copy, warm starts included (World's copy, a saved state).

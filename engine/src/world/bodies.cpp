@@ -9,7 +9,7 @@
 #include "rbsim/world/world.h"
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
-#include "world/body_removal.h"
+#include "body/body_removal.h"
 
 #include "rbsim/fracture/fracture.h"
 

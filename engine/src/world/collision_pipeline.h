@@ -26,7 +26,7 @@ namespace rbsim {
 // whose shape is the hull of those vertices.
 Aabb bodyBounds(const RigidBody& body);
 
-class BodyRemoval;  // world/body_removal.h
+class BodyRemoval;  // body/body_removal.h
 
 class CollisionPipeline {
  public:
@@ -41,7 +41,7 @@ class CollisionPipeline {
   // (a body with a grid, BodySolid::sdf, is not its convex hull; an implicit body's display mesh
   // lies up to a cell inside its exact surface).
   void addBody(const RigidBody& body, const BodySolid& solid);
-  // Bodies were destroyed (World::destroyBodies, world/body_removal.h): their contacts go, the
+  // Bodies were destroyed (World::destroyBodies, body/body_removal.h): their contacts go, the
   // moved bodies' are renumbered, and the last step's impacts are forgotten. Returns the bodies
   // (indices before the removal) that a removed body touched, to be woken.
   std::vector<std::size_t> removeBodies(const BodyRemoval& removal);

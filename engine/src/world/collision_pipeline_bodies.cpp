@@ -7,7 +7,7 @@
 #include "world/collision_pipeline.h"
 #include "world/compound_contacts.h"
 #include "world/mesh_ground_contacts.h"
-#include "world/body_removal.h"
+#include "body/body_removal.h"
 
 namespace rbsim {
 

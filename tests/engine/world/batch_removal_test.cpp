@@ -1,4 +1,4 @@
-// World::destroyBodies (world/body_removal.h): removing a batch leaves the World exactly as
+// World::destroyBodies (body/body_removal.h): removing a batch leaves the World exactly as
 // destroying the same ids one at a time would, on a scene with resting and sleeping contacts,
 // joints, springs, scripted forces and pose events: the same bodies at the same indices, the
 // same ids valid, the same contacts and joints, and the same trajectory after, bit for bit. A

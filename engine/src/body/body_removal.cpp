@@ -1,4 +1,4 @@
-#include "world/body_removal.h"
+#include "body/body_removal.h"
 
 #include <algorithm>
 #include <numeric>
