@@ -141,7 +141,12 @@ class World {
   std::size_t addJoint(const JointDef& def);
   const std::vector<Joint>& joints() const { return joints_; }
 
-  // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite.
+  // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite,
+  // and StepLimitError (a SimulationError) when the bodies overlap in more pairs or contacts than
+  // a step holds (kMaxBroadPhasePairs), before they are listed. The step stops there, its count
+  // not advanced and every per-body structure consistent, but what came before the broad phase
+  // has happened: this step's spawns and removals, pose events and accumulated forces, and under
+  // PGS and LCP the integration. Under soft step with none of these, the World is as it was.
   void step();
   // Puts the World where a recording saw it (app/record; Jolt's PhysicsSystem::RestoreState):
   // at step `stepCount`, every body in `states` with its awake flag, nothing simulated. Contacts
