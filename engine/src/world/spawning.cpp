@@ -137,7 +137,12 @@ void World::spawnAndRemove() {
     for (const BodyId id : expired) listed[indexOf(id)] = 1;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       const Vec3& x = bodies_[i].position();
-      if (listed[i] || ((x.array() >= killVolume_.min.array()).all() && (x.array() <= killVolume_.max.array()).all())) continue;
+      // A static body never leaves the volume, so never goes: a ground whose centre lies outside it
+      // was removed at the first step (issue 56, item 5).
+      if (listed[i] || bodies_[i].isStatic() ||
+          ((x.array() >= killVolume_.min.array()).all() && (x.array() <= killVolume_.max.array()).all())) {
+        continue;
+      }
       expired.push_back(idAt(i));
     }
   }
