@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <stdexcept>
 
@@ -261,20 +262,27 @@ void PyWorld::step(long long steps) {
       busy.idle.notify_all();
     }
   } idle{*busy_};
+  std::exception_ptr failed;
   for (long long done = 0; done < steps;) {
     const long long chunk = std::min(kStepsBetweenSignalChecks, steps - done);
     {
       // Other Python threads run while this World steps (as MuJoCo's mj_step lets them); a call
       // of theirs on this World waits (waitIdle).
       py::gil_scoped_release release;
-      for (long long i = 0; i < chunk; ++i) world_.step();
+      try {
+        for (long long i = 0; i < chunk; ++i) world_.step();
+      } catch (...) {
+        failed = std::current_exception();  // a failed step is undone (World::step); raised below
+      }
     }
     done += chunk;
-    // Spawners and the kill volume add and remove bodies as the World steps: the names follow.
+    // Spawners and the kill volume add and remove bodies as the World steps, the steps before a
+    // failed one included: the names follow.
     if (!world_.spawners().empty() || !world_.killVolume().empty()) {
       names_.clear();
       for (const RigidBody& body : world_.bodies()) names_.insert(body.name());
     }
+    if (failed) std::rethrow_exception(failed);
     // Ctrl-C in a notebook stops a long run between two steps (the World stays consistent).
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   }

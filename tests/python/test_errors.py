@@ -259,3 +259,24 @@ def test_diverging_integrator_raises_simulation_error():
         world.step(100000)
     assert isinstance(e.value, RuntimeError) and "body0" in str(e.value)
     assert world.step_count < 1000
+
+
+def test_a_failed_step_leaves_the_world_as_it_was():
+    # Issue 56, item 6: a step() that raised left the World half-stepped (the bodies before the
+    # diverging one had moved). Now it is undone, and the World steps on once the cause is gone.
+    w = rbsim.World(dt=1 / 60)
+    w.add_plane()
+    for i in range(5):
+        w.add_body(shape={"type": "box", "extents": [1, 1, 1]}, mass=1, position=(0, 0.5 + 1.0 * i, 0))
+    w.step(30)
+    x, q, v, steps = w.x.copy(), w.q.copy(), w.v.copy(), w.step_count
+    wild = w.add_body(shape={"type": "sphere", "radius": 0.1}, mass=1e-10, position=(5, 1, 0))
+    w.add_force(wild, force=[1e308, 0, 0])  # dt |F| / m overflows
+    with pytest.raises(rbsim.SimulationError, match=r"body5.*stopped being finite at step 30"):
+        w.step(3)
+    assert w.step_count == steps
+    assert np.array_equal(w.x[:5], x) and np.array_equal(w.q[:5], q) and np.array_equal(w.v[:5], v)
+    assert w.x[5].tolist() == [5.0, 1.0, 0.0]
+    w.remove_body(wild)
+    w.step(3)
+    assert w.step_count == steps + 3

@@ -214,11 +214,21 @@ void World::addPoseEvent(const PoseEvent& event) {
 
 
 void World::step() {
-  const double t = time();
   stageClock_ = std::chrono::steady_clock::now();
   spawnedNow_.clear();
   removedNow_.clear();
   runStage(Stage::SpawnAndRemove, !spawners_.empty() || !killVolume_.empty(), [&] { spawnAndRemove(); });
+  saveUndo();
+  try {
+    advance();
+  } catch (...) {
+    undoStep();
+    throw;
+  }
+}
+
+void World::advance() {
+  const double t = time();
   const bool anyAwake = std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); });
   const std::uint64_t solveRunsBefore = stats_[static_cast<int>(Stage::SolveContacts)].runs;
   const bool anyForce = std::any_of(forces_.begin(), forces_.end(), [t](const ScriptedForce& f) { return isActive(f, t); });

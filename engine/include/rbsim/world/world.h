@@ -143,10 +143,12 @@ class World {
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite,
   // and StepLimitError (a SimulationError) when the bodies overlap in more pairs or contacts than
-  // a step holds (kMaxBroadPhasePairs), before they are listed. The step stops there, its count
-  // not advanced and every per-body structure consistent, but what came before the broad phase
-  // has happened: this step's spawns and removals, pose events and accumulated forces, and under
-  // PGS and LCP the integration. Under soft step with none of these, the World is as it was.
+  // a step holds (kMaxBroadPhasePairs), before they are listed. A step that throws is undone
+  // (issue 56, item 6; world/step_undo.cpp): every body's state, sleep, resting time and applied
+  // forces, the pending pose events and the step count are as before it, so step() may be called
+  // again after the cause is fixed. Two things stay done: the step's first stage (its spawns and
+  // the kill volume's and lifetimes' removals, which a retry does not repeat), and the warm starts
+  // the contact and joint caches kept from the failed attempt.
   void step();
   // Puts the World where a recording saw it (app/record; Jolt's PhysicsSystem::RestoreState):
   // at step `stepCount`, every body in `states` with its awake flag, nothing simulated. Contacts
@@ -211,6 +213,9 @@ class World {
 
   template <typename Fn>
   bool runStage(Stage stage, bool needed, Fn&& fn);  // true when it ran
+  void advance();     // step()'s stages after SpawnAndRemove
+  void saveUndo();    // what a failed step puts back (world/step_undo.cpp)
+  void undoStep();    // puts it back; never throws
 
   Settings settings_;
   std::vector<RigidBody> bodies_;
@@ -247,6 +252,17 @@ class World {
   double timeOrigin_ = 0.0;            // time() when the time step last changed [s]
   std::uint64_t stepsAtOrigin_ = 0;    // stepCount_ then
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};
+  // A step's undo record, kept between steps so that it allocates only as the World grows.
+  struct StepUndo {
+    std::vector<BodyState> states;
+    std::vector<Mat3> rotations;  // euler-matrix without drift correction keeps R apart from q
+    std::vector<char> awake;
+    std::vector<double> resting;        // [s]
+    std::vector<Vec3> force, torque, bodyTorque;  // the accumulators [N, N m, N m]
+    std::vector<PoseEvent> events;      // pendingEvents_, when some are due
+    bool eventsSaved = false;
+    std::uint64_t stepCount = 0;
+  } undo_;
   std::chrono::steady_clock::time_point stageClock_;  // when the running stage's time began
 };
 
