@@ -1,9 +1,12 @@
 // Box3D's reference figures for rbsim: one of Box3D's own benchmark scenes (erincatto/box3d
-// 30c67b5, shared/benchmarks.c) stepped on one thread with sleep off, timed, and its end state
+// 30c67b5, shared/benchmarks.c) stepped on one thread, timed, and its end state
 // measured the way rbsim's bench/box3d_scenes.cpp measures its copy of the scene, so the two
 // can be set side by side. Built by build.sh against a scalar and an SSE2 Box3D.
-//   usage: pyramid_sweep --scene large_pyramid|joint_grid|column20|column40 --substeps N --steps S [--hertz H]
-//   prints: scene substeps hertz steps ms_per_step fastest_mps top_drift_m top_sink_m
+//   usage: pyramid_sweep --scene large_pyramid|joint_grid|column20|column40|convex_pile --substeps N --steps S [--hertz H]
+//   prints: scene substeps hertz steps ms_per_step fastest_mps top_drift_m top_sink_m deepest_m
+//   half_deepest_mean_m half_deepest_max_m (the deepest overlap of any contact point at the end,
+//   and over the second half of the steps the mean and the worst of each step's deepest; the
+//   per-step reading is outside the timed loop's figure)
 //   (hertz is the world's contactHertz; Box3D's solver uses min(hertz, 0.125 / substep dt),
 //   src/physics_world.c b3World_Step, so with 2 substeps at 60 Hz it is 15.)
 
@@ -30,6 +33,7 @@ typedef struct Scene
 {
 	const char* name;
 	void ( *create )( b3WorldId worldId );
+	bool sleep;  // benchmark/main.c's world keeps sleep on; the stacking scenes' creators turn it off
 } Scene;
 
 // A column of unit cubes on Box3D's ground, as rbsim's bench/contact_scenes stacks them
@@ -68,10 +72,11 @@ static void CreateColumn40( b3WorldId worldId )
 	CreateColumn( worldId, 40 );
 }
 
-static const Scene scenes[] = { { "large_pyramid", CreateLargePyramid },
-								{ "joint_grid", CreateJointGrid },
-								{ "column20", CreateColumn20 },
-								{ "column40", CreateColumn40 } };
+static const Scene scenes[] = { { "large_pyramid", CreateLargePyramid, false },
+								{ "joint_grid", CreateJointGrid, false },
+								{ "column20", CreateColumn20, false },
+								{ "column40", CreateColumn40, false },
+								{ "convex_pile", CreateConvexPile, true } };
 #define SCENE_COUNT ( (int)( sizeof( scenes ) / sizeof( scenes[0] ) ) )
 
 // Box3D has no call that lists a world's bodies, so gather them from their shapes (each body of
@@ -100,9 +105,26 @@ static int ByIndex( const void* a, const void* b )
 	return ( (const b3BodyId*)a )->index1 - ( (const b3BodyId*)b )->index1;
 }
 
+// The deepest overlap of any manifold point of any body's contacts (-separation, 0 if none
+// overlaps), as rbsim's box3d_scenes reads Contact::manifold.maxDepth().
+static double Deepest( const Bodies* bodies )
+{
+	double deepest = 0.0;
+	b3ContactData data[256];
+	for ( int i = 0; i < bodies->count; ++i )
+	{
+		int n = b3Body_GetContactData( bodies->ids[i], data, 256 );
+		for ( int c = 0; c < n; ++c )
+			for ( int m = 0; m < data[c].manifoldCount; ++m )
+				for ( int p = 0; p < data[c].manifolds[m].pointCount; ++p )
+					deepest = fmax( deepest, -(double)data[c].manifolds[m].points[p].separation );
+	}
+	return deepest;
+}
+
 static void Usage( void )
 {
-	fprintf( stderr, "usage: pyramid_sweep --scene large_pyramid|joint_grid|column20|column40 --substeps N --steps S [--hertz H]\n" );
+	fprintf( stderr, "usage: pyramid_sweep --scene large_pyramid|joint_grid|column20|column40|convex_pile --substeps N --steps S [--hertz H]\n" );
 	exit( 2 );
 }
 
@@ -135,12 +157,13 @@ int main( int argc, char** argv )
 	// The world as benchmark/main.c makes it for one thread: default definition, continuous on,
 	// one worker (no task callbacks: src/physics_world.c b3CreateWorld then runs everything on the
 	// calling thread), neither capacity function used by these two scenes. Gravity stays Box3D's
-	// default (0, -10, 0) (src/types.c), y up as in rbsim. Changes asked for here: sleep off (the
-	// scene creators turn it off too) and optionally the contact stiffness.
+	// default (0, -10, 0) (src/types.c), y up as in rbsim. Changes asked for here: sleep off for the
+	// stacking scenes (their creators turn it off too; the convex pile keeps the program's sleep)
+	// and optionally the contact stiffness.
 	b3WorldDef worldDef = b3DefaultWorldDef();
 	worldDef.enableContinuous = true;
 	worldDef.workerCount = 1;
-	worldDef.enableSleep = false;
+	worldDef.enableSleep = scene->sleep;
 	if ( hertz > 0.0f )
 		worldDef.contactHertz = hertz;
 	b3WorldId worldId = b3CreateWorld( &worldDef );
@@ -167,11 +190,22 @@ int main( int argc, char** argv )
 	}
 
 	struct timespec t0, t1;
-	clock_gettime( CLOCK_MONOTONIC, &t0 );
+	double ms = 0.0, halfSum = 0.0, halfMax = 0.0;
+	int halfCount = 0;
 	for ( int s = 0; s < steps; ++s )
+	{
+		clock_gettime( CLOCK_MONOTONIC, &t0 );
 		b3World_Step( worldId, TIME_STEP, subSteps );
-	clock_gettime( CLOCK_MONOTONIC, &t1 );
-	double ms = MS_PER_S * (double)( t1.tv_sec - t0.tv_sec ) + (double)( t1.tv_nsec - t0.tv_nsec ) / NS_PER_MS;
+		clock_gettime( CLOCK_MONOTONIC, &t1 );
+		ms += MS_PER_S * (double)( t1.tv_sec - t0.tv_sec ) + (double)( t1.tv_nsec - t0.tv_nsec ) / NS_PER_MS;
+		if ( 2 * s >= steps )
+		{
+			double d = Deepest( &bodies );
+			halfSum += d;
+			halfMax = fmax( halfMax, d );
+			halfCount += 1;
+		}
+	}
 
 	// End state as rbsim's box3d_scenes.cpp: the fastest dynamic body (its centre-of-mass velocity,
 	// as rbsim reads RigidBody::velocity), the top body's sideways drift and its sink.
@@ -187,8 +221,10 @@ int main( int argc, char** argv )
 	double drift = hypot( (double)topNow.x - topStart.x, (double)topNow.z - topStart.z );
 	double sink = (double)topStart.y - topNow.y;
 
-	printf( "scene %s substeps %d hertz %g steps %d ms_per_step %.3f fastest_mps %.4f top_drift_m %.4f top_sink_m %.4f\n",
-			scene->name, subSteps, (double)worldDef.contactHertz, steps, ms / steps, fastest, drift, sink );
+	printf( "scene %s substeps %d hertz %g steps %d ms_per_step %.3f fastest_mps %.4f top_drift_m %.4f top_sink_m %.4f deepest_m %.4f "
+			"half_deepest_mean_m %.4f half_deepest_max_m %.4f\n",
+			scene->name, subSteps, (double)worldDef.contactHertz, steps, ms / steps, fastest, drift, sink, Deepest( &bodies ),
+			halfSum / ( halfCount > 0 ? halfCount : 1 ), halfMax );
 
 	free( bodies.ids );
 	b3DestroyWorld( worldId );

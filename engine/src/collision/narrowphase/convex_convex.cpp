@@ -21,6 +21,10 @@ constexpr double kFeatureHullTolerance = 1e-9;
 // Two edge features whose directions in the contact plane have a sine below this [1] are
 // parallel: they overlap along a stretch (two points) instead of crossing at one.
 constexpr double kParallelFeatureSine = 1e-6;
+// A hull's vertex within this [m] of one of its face planes lies on that face (the planes are
+// exact to shapes/face_planes.cpp's 1e-9; posing a vertex rounds by ~1e-16 of its distance from
+// the origin, 1e-10 m at the 1e6 m the scene format allows).
+constexpr double kOnFaceTolerance = 1e-7;
 
 // A support feature: its hull seen along n (1 point, 2 for an edge, >= 3 for a face).
 struct Feature {
@@ -100,7 +104,7 @@ enum class Reference { A, B, None };
 // vertices of the side against the reference face besides its feature, each a point where it
 // lies over the face.
 void featureContacts(const Feature& fa, const Feature& fb, Reference reference, const std::vector<Vec3>& incident,
-                     const Vec3& n, std::vector<ContactPoint>& out) {
+                     const std::vector<Vec3>& incidentFace, const Vec3& n, std::vector<ContactPoint>& out) {
   out.clear();
   const auto emit = [&](const Vec3& p, double ha, double hb) {
     out.push_back({p + n * (0.5 * (ha + hb) - n.dot(p)), ha - hb});
@@ -113,6 +117,11 @@ void featureContacts(const Feature& fa, const Feature& fb, Reference reference, 
     clipToPrism(refIsA ? fb.hull : fa.hull, ref.hull, n, clipped);
     for (const Vec3& p : incident) {
       if (insidePrism(p, ref.hull, n)) clipped.push_back(p);
+    }
+    if (incidentFace.size() >= 3) {
+      thread_local std::vector<Vec3> face;
+      clipToPrism(incidentFace, ref.hull, n, face);
+      clipped.insert(clipped.end(), face.begin(), face.end());
     }
     for (const Vec3& p : clipped) {
       const double own = n.dot(p), other = heightAt(ref, p, n);
@@ -140,12 +149,44 @@ void featureContacts(const Feature& fa, const Feature& fb, Reference reference, 
   }
 }
 
+// The incident face (Box3D's b3FindIncidentFace, manifold.c): of the faces of `hull` through
+// every vertex of its support feature `feature` (a vertex or an edge, posed as `vertices`), the
+// one most against the reference normal `towards` (its outward normal . towards least), as the
+// outline of its vertices seen along n, into `out`; empty when the hull knows no faces.
+void incidentFace(const PosedFaces* hull, const std::vector<Vec3>& vertices, const Feature& feature, const Vec3& towards,
+                  std::vector<Vec3>& out) {
+  out.clear();
+  if (hull == nullptr || hull->planes == nullptr || feature.hull.empty()) return;
+  const FacePlanes& f = *hull->planes;
+  const Vec3 local = hull->rotation.transpose() * towards;
+  thread_local std::vector<Vec3> ends, near;
+  ends.clear();
+  for (const Vec3& p : feature.hull) ends.push_back(hull->rotation.transpose() * (p - hull->position));
+  std::size_t best = f.normals.size();
+  for (std::size_t k = 0; k < f.normals.size(); ++k) {
+    const bool through = std::all_of(ends.begin(), ends.end(), [&](const Vec3& p) {
+      return std::abs(f.normals[k].dot(p) - f.offsets[k]) <= kOnFaceTolerance;
+    });
+    if (through && (best == f.normals.size() || f.normals[k].dot(local) < f.normals[best].dot(local))) best = k;
+  }
+  if (best == f.normals.size()) return;
+  const Vec3 normal = hull->rotation * f.normals[best];
+  const double offset = f.offsets[best] + normal.dot(hull->position);
+  near.clear();
+  for (const Vec3& p : vertices) {
+    if (std::abs(normal.dot(p) - offset) <= kOnFaceTolerance) near.push_back(p);
+  }
+  planarConvexHull(near, towards, kFeatureHullTolerance, out);
+}
+
 // `depth` [m]: the pair's penetration along n (EPA's), or minus its distance when apart.
+// facesA, facesB: the hulls' faces where known (else null), for the incident face.
 ContactManifold featureManifold(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& n,
-                                double margin, double tolerance, double depth) {
+                                double margin, double tolerance, double depth, const PosedFaces* facesA = nullptr,
+                                const PosedFaces* facesB = nullptr) {
   thread_local Feature fa, fb;
   thread_local std::vector<ContactPoint> candidates;
-  thread_local std::vector<Vec3> incident;
+  thread_local std::vector<Vec3> incident, face;
   supportFeature(a, n, n, tolerance, fa);
   supportFeature(b, -n, n, tolerance, fb);
   const Reference reference = fa.hull.size() >= 3 ? Reference::A : fb.hull.size() >= 3 ? Reference::B : Reference::None;
@@ -161,7 +202,15 @@ ContactManifold featureManifold(const std::vector<Vec3>& a, const std::vector<Ve
   incident.clear();
   if (reference == Reference::A && fb.hull.size() < 3) nearExtreme(b, -n, reach, incident);
   if (reference == Reference::B && fa.hull.size() < 3) nearExtreme(a, n, reach, incident);
-  featureContacts(fa, fb, reference, incident, n, candidates);
+  // And, as Box3D builds its face contact (convex_manifold.c b3BuildFaceAContact), the other
+  // side's incident face clipped to the reference face's prism: a vertex or an edge pressed
+  // into a small face has its neighbours outside the prism, and the face's outline crossing the
+  // prism gives the points around it that hold the pair from turning about the one point (issue
+  // 56: Box3D's convex pile, hulls of 32 points whose faces are triangles).
+  face.clear();
+  if (reference == Reference::A && fb.hull.size() < 3) incidentFace(facesB, b, fb, n, face);
+  if (reference == Reference::B && fa.hull.size() < 3) incidentFace(facesA, a, fa, -n, face);
+  featureContacts(fa, fb, reference, incident, face, n, candidates);
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                   [&](const ContactPoint& c) { return c.depth < -margin; }),
                    candidates.end());
@@ -282,11 +331,12 @@ ConvexContact collideGeneral(const SupportMap& supportA, const std::vector<Vec3>
   // Box3D compares the edge axis with the clipped points' separation: a small reference face
   // whose prism misses where the hulls overlap most clips away the depth (measured: points 3 mm
   // deep for hulls 0.26 m into each other), and the pair would go on pressing in.
-  if (faceSeparationBest >= separation - kFaceAxisPreference) {
-    out.manifold = featureManifold(a, b, faceNormal, margin, featureTolerance, -faceSeparationBest);
-    if (out.manifold.count > 0 && -out.manifold.maxDepth() <= separation + kFaceAxisPreference) return finish(out);
+  const double preference = kFaceAxisPreference + kDeepFaceAxisPreference * std::max(-separation, 0.0);
+  if (faceSeparationBest >= separation - preference) {
+    out.manifold = featureManifold(a, b, faceNormal, margin, featureTolerance, -faceSeparationBest, facesA, facesB);
+    if (out.manifold.count > 0 && -out.manifold.maxDepth() <= separation + preference) return finish(out);
   }
-  out.manifold = featureManifold(a, b, n, margin, featureTolerance, -separation);
+  out.manifold = featureManifold(a, b, n, margin, featureTolerance, -separation, facesA, facesB);
   return finish(out);
 }
 
