@@ -191,12 +191,37 @@ void RigidBody::updateDerived() {
   worldVerticesStale_ = true;
 }
 
+// Every member but the vertex cache: one added to RigidBody must be added here (and the size).
+static_assert(sizeof(RigidBody) == 512, "a new member of RigidBody: copy it in RigidBody(const RigidBody&)");
+RigidBody::RigidBody(const RigidBody& other)
+    : awake_(other.awake_),
+      isStatic_(other.isStatic_),
+      isKinematic_(other.isKinematic_),
+      worldVerticesStale_(true),
+      mass_(other.mass_),
+      state_(other.state_),
+      inputs_(other.inputs_),
+      restingTime_(other.restingTime_),
+      cold_(other.cold_),
+      freeFlow_(other.freeFlow_) {}
+
+RigidBody& RigidBody::operator=(const RigidBody& other) {
+  if (this != &other) {
+    std::vector<Vec3> cache = std::move(worldVertices_);  // this body's storage, reused
+    *this = RigidBody(other);
+    worldVertices_ = std::move(cache);
+    worldVerticesStale_ = true;
+  }
+  return *this;
+}
+
 void RigidBody::updateWorldVertices() const {
   // R, x and the vertex arrays are copied to locals: stores into worldVertices_ might alias any
   // member as far as the compiler can tell, and it would reload them all for every vertex.
   const Mat3 R = inputs_.rotation;
   const Vec3 x = state_.position;
   const Vec3* body = cold_->mesh->vertices.data();
+  worldVertices_.resize(cold_->mesh->vertices.size());  // a copy starts without them
   Vec3* world = worldVertices_.data();
   const std::size_t count = worldVertices_.size();
   for (std::size_t i = 0; i < count; ++i) world[i] = R * body[i] + x;

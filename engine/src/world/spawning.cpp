@@ -1,5 +1,6 @@
 // Stage SpawnAndRemove (world/spawner.h): bursts past their lifetime and bodies out of the kill
 // volume removed, then the spawners' due bursts added.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -118,11 +119,38 @@ void World::setKillVolume(const Aabb& volume) {
   killVolume_ = volume;
 }
 
+// Half a step early: a burst due at 1.0 s happens at the step starting then, not one later for
+// the rounding of 60 x (1/60); an age likewise.
+double World::spawnDueTime() const { return time() + 0.5 * settings_.timeStep; }
+
+// A static body never leaves the volume, so never goes: a ground whose centre lies outside it
+// was removed at the first step (issue 56, item 5).
+bool World::outsideKillVolume(std::size_t i) const {
+  const Vec3& x = bodies_[i].position();
+  return !killVolume_.empty() && !bodies_[i].isStatic() &&
+         !((x.array() >= killVolume_.min.array()).all() && (x.array() <= killVolume_.max.array()).all());
+}
+
+bool World::spawnDue() const {
+  const double due = spawnDueTime();
+  return std::any_of(spawners_.begin(), spawners_.end(), [due](const Spawner& spawner) {
+    return spawner.nextTime() <= due && spawner.nextTime() < spawner.def.end;
+  });
+}
+
+bool World::removalDue() const {
+  const double due = spawnDueTime();
+  for (const Spawner& spawner : spawners_) {
+    if (!spawner.alive.empty() && spawner.alive.front().time + spawner.def.lifetime <= due) return true;
+  }
+  for (std::size_t i = 0; i < bodies_.size() && !killVolume_.empty(); ++i) {
+    if (outsideKillVolume(i)) return true;
+  }
+  return false;
+}
+
 void World::spawnAndRemove() {
-  const double t = time();
-  // Half a step early: a burst due at 1.0 s happens at the step starting then, not one later for
-  // the rounding of 60 x (1/60); an age likewise.
-  const double due = t + 0.5 * settings_.timeStep;
+  const double due = spawnDueTime();
   std::vector<BodyId> expired;
   for (Spawner& spawner : spawners_) {
     while (!spawner.alive.empty() && spawner.alive.front().time + spawner.def.lifetime <= due) {
@@ -136,14 +164,7 @@ void World::spawnAndRemove() {
     std::vector<char> listed(bodies_.size(), 0);
     for (const BodyId id : expired) listed[indexOf(id)] = 1;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      const Vec3& x = bodies_[i].position();
-      // A static body never leaves the volume, so never goes: a ground whose centre lies outside it
-      // was removed at the first step (issue 56, item 5).
-      if (listed[i] || bodies_[i].isStatic() ||
-          ((x.array() >= killVolume_.min.array()).all() && (x.array() <= killVolume_.max.array()).all())) {
-        continue;
-      }
-      expired.push_back(idAt(i));
+      if (!listed[i] && outsideKillVolume(i)) expired.push_back(idAt(i));
     }
   }
   // One batch: destroying them one at a time walked every contact and warm start for each body

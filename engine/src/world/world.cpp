@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -215,14 +216,33 @@ void World::addPoseEvent(const PoseEvent& event) {
 
 void World::step() {
   stageClock_ = std::chrono::steady_clock::now();
+  // A step whose first stage removes bodies is undone from a copy of the whole World made before
+  // it, which only such steps pay for; one that only spawns by removing what it made (a copy cost
+  // Box3D's large_world, 100 bursts onto 10,000 static boxes, 45 % of its run); any other from the
+  // undo record alone (world/step_undo.cpp).
+  const bool staged = !spawners_.empty() || !killVolume_.empty();
+  std::optional<World> before;
+  undo_.spawnsSaved = false;
+  if (staged && removalDue()) {
+    before.emplace(*this);
+  } else if (staged && spawnDue()) {
+    saveSpawns();
+  }
   spawnedNow_.clear();
   removedNow_.clear();
-  runStage(Stage::SpawnAndRemove, !spawners_.empty() || !killVolume_.empty(), [&] { spawnAndRemove(); });
-  saveUndo();
+  bool saved = false;
   try {
+    runStage(Stage::SpawnAndRemove, !spawners_.empty() || !killVolume_.empty(), [&] { spawnAndRemove(); });
+    saveUndo();
+    saved = true;
     advance();
   } catch (...) {
-    undoStep();
+    if (before) {
+      restoreWhole(std::move(*before));
+    } else {
+      if (saved) undoStep();
+      if (undo_.spawnsSaved) undoSpawns();
+    }
     throw;
   }
 }

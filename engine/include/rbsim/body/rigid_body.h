@@ -21,6 +21,14 @@ namespace rbsim {
 class alignas(64) RigidBody {
  public:
   explicit RigidBody(const BodyDef& def);  // throws std::invalid_argument on an invalid def
+  // A copy leaves the transformed vertices behind (a cache, filled again on the copy's first
+  // access): a World copied to undo a step that removes bodies copied 230 MB of them for 3,000
+  // ragdolls, 0.24 s against the step's 0.4 s (issue 56).
+  RigidBody(const RigidBody& other);
+  RigidBody& operator=(const RigidBody& other);
+  RigidBody(RigidBody&&) noexcept = default;
+  RigidBody& operator=(RigidBody&&) noexcept = default;
+  ~RigidBody() = default;
 
   // Constants.
   const std::string& name() const { return cold_->name; }
@@ -71,7 +79,7 @@ class alignas(64) RigidBody {
   // nobody looks at (free flight, collisions off) need not rewrite them. The storage stays where
   // it is for the body's life, but a reference kept across a pose change shows the new pose only
   // once worldVertex() or worldVertices() has been called again: read through them.
-  std::size_t vertexCount() const { return worldVertices_.size(); }
+  std::size_t vertexCount() const { return cold_->mesh->vertices.size(); }
   const Vec3& bodyVertex(std::size_t i) const { return cold_->mesh->vertices[i]; }
   // The same vertex in the coordinates of the file (or program) the body came from, exactly as
   // given there, and where the body frame sits in them (seed 000's diagonalisation).

@@ -146,9 +146,10 @@ class World {
   // a step holds (kMaxBroadPhasePairs), before they are listed. A step that throws is undone
   // (issue 56, item 6; world/step_undo.cpp): every body's state, sleep, resting time and applied
   // forces, the pending pose events and the step count are as before it, so step() may be called
-  // again after the cause is fixed. Two things stay done: the step's first stage (its spawns and
-  // the kill volume's and lifetimes' removals, which a retry does not repeat), and the warm starts
-  // the contact and joint caches kept from the failed attempt.
+  // again after the cause is fixed. A step whose first stage spawns or removes bodies is undone
+  // from a copy of the whole World made before it: the bodies, ids, names, joints and spawners
+  // are as before too. One thing stays: on a step that spawns and removes nothing, the warm
+  // starts the contact and joint caches kept from the failed attempt.
   void step();
   // Puts the World where a recording saw it (app/record; Jolt's PhysicsSystem::RestoreState):
   // at step `stepCount`, every body in `states` with its awake flag, nothing simulated. Contacts
@@ -194,6 +195,10 @@ class World {
   void applyPoseEvents();
   void driveKinematicBodies();  // world/kinematic_motion.cpp
   void spawnAndRemove();        // world/spawning.cpp
+  bool spawnDue() const;    // whether this step's spawnAndRemove will add a body
+  bool removalDue() const;  // whether it will remove one
+  bool outsideKillVolume(std::size_t i) const;  // body i is taken by the kill volume
+  double spawnDueTime() const;  // bursts and ages up to this time [s] happen at this step
   void accumulateForces(bool withGravity);  // scripted forces and springs, after gravity if asked
   void integrateBodies(bool withGravity);   // adds m g to F first if asked
   // The middle of step() in the solver's order (ContactSolver::Order).
@@ -216,6 +221,9 @@ class World {
   void advance();     // step()'s stages after SpawnAndRemove
   void saveUndo();    // what a failed step puts back (world/step_undo.cpp)
   void undoStep();    // puts it back; never throws
+  void restoreWhole(World&& before) noexcept;  // a copy from before a step that removed bodies
+  void saveSpawns();  // before a step that only spawns: what undoSpawns puts back
+  void undoSpawns();  // removes the bodies the step made
 
   Settings settings_;
   std::vector<RigidBody> bodies_;
@@ -262,6 +270,14 @@ class World {
     std::vector<PoseEvent> events;      // pendingEvents_, when some are due
     bool eventsSaved = false;
     std::uint64_t stepCount = 0;
+    // A step that only spawns (saveSpawns): the bodies before it, the ids' table, the spawners
+    // and the last step's lists of made and removed bodies.
+    bool spawnsSaved = false;
+    std::size_t bodyCount = 0;
+    std::vector<Slot> slots;
+    std::uint32_t freeSlot = UINT32_MAX;
+    std::vector<Spawner> spawners;
+    std::vector<BodyId> spawned, removed;
   } undo_;
   std::chrono::steady_clock::time_point stageClock_;  // when the running stage's time began
 };
