@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rbsim/scene/scene.h"
+#include "rbsim/world/spawner.h"
 
 namespace rbsim {
 
@@ -12,10 +13,8 @@ double Scene::mostBodiesAtOnce() const {
     // Bursts at start, start + period, ... before end and within the run.
     const double last = std::min(spawner.end, duration);
     if (!(last >= spawner.start)) continue;
-    double bursts = std::floor((last - spawner.start) / spawner.period) + 1.0;
-    // A burst lives `lifetime`: at most ceil(lifetime / period) + 1 of them at once.
-    // (ceil, not floor: lifetime / period may round below a whole number the times reach.)
-    if (std::isfinite(spawner.lifetime)) bursts = std::min(bursts, std::ceil(spawner.lifetime / spawner.period) + 1.0);
+    const double bursts = burstsAliveAtOnce(std::floor((last - spawner.start) / spawner.period) + 1.0, spawner.lifetime,
+                                            spawner.period);
     const double perBurst = static_cast<double>(spawner.count) * static_cast<double>(spawner.offsets.size()) *
                             (spawner.ragdoll ? static_cast<double>(kBoneCount) : 1.0);
     bodies += bursts * perBurst;

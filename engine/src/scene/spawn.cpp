@@ -130,7 +130,7 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
                            std::to_string(kMaxSpawnCount) + " (a longer period, fewer bodies, or an end)");
     }
     // The bursts alive at once, whose vertices are held at once: a lifetime removes the older ones.
-    const double aliveBursts = std::isfinite(lifetime) ? std::min(bursts, std::ceil(lifetime / period) + 1.0) : bursts;
+    const double aliveBursts = burstsAliveAtOnce(bursts, lifetime, period);
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
     const std::string prefix = s.string("name", defaultName);
     const JsonObject region = s.object("region", {"min", "max"});

@@ -45,6 +45,10 @@ constexpr int kWholeDigits = 15;
 constexpr int kDefaultDigits = 6;
 }  // namespace
 
+double burstsAliveAtOnce(double bursts, double lifetime, double period) {
+  return std::isfinite(lifetime) ? std::min(bursts, std::ceil(lifetime / period) + 1.0) : bursts;
+}
+
 std::string checkSpawnPeriod(double period, double timeStep) {
   if (period >= timeStep * (1.0 - kSpawnPeriodSlack)) return {};
   std::ostringstream problem;

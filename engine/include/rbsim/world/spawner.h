@@ -57,6 +57,11 @@ constexpr double kSpawnPeriodSlack = 1e-9;
 // Empty when at most one burst falls in a step of `timeStep` [s]; otherwise "period: ...".
 std::string checkSpawnPeriod(double period, double timeStep);
 
+// Of `bursts` made in all every `period` [s], the most alive at once when each lives `lifetime`
+// [s] (infinity: all): ceil(lifetime / period) + 1, ceil and not floor since lifetime / period may
+// round below a whole number the burst times reach. The budgets count with it.
+double burstsAliveAtOnce(double bursts, double lifetime, double period);
+
 // A spawner as the World keeps it: its def, its generator and how far it has got.
 struct Spawner {
   SpawnerDef def;
