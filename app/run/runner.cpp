@@ -11,6 +11,7 @@
 
 #include "export/gltf_file.h"
 #include "export/gltf_track.h"
+#include "rbsim/integrate/simulation_error.h"
 #include "rbsim/io/input_error.h"
 #include "render/frame_sink.h"
 #include "render/offscreen_renderer.h"
@@ -271,7 +272,15 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
         if (replay != nullptr) {
           replay->restoreNext(k, worlds.size(), worlds[k]);
         } else {
-          worlds[k].step();
+          try {
+            worlds[k].step();
+          } catch (const StepLimitError& e) {
+            // What the scene asks of a step is the file's fault: the message names it, and which
+            // of the compared worlds (the brief: the file, the field, what was expected).
+            const std::string which = phase.compared() ? " (" + phase.worlds[k].label + ")" : "";
+            if (phase.file.empty()) throw;
+            throw StepLimitError(phase.file + which + ": " + e.what());
+          }
         }
         summary.simulateSeconds += secondsSince(start);
         if (recorder) recorder->write(k, worlds[k]);
