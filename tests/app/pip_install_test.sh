@@ -13,7 +13,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "pip_install_test: $*" >&2; exit 1; }
 mkdir -p "$work/src/python" "$work/src/docs"
-cp "$source_dir"/{setup.py,pyproject.toml,CMakeLists.txt} "$work/src/"
+cp "$source_dir"/{setup.py,pyproject.toml,CMakeLists.txt,LICENSE} "$work/src/"
 cp -r "$source_dir/shaders" "$source_dir/assets" "$work/src/"
 cp -r "$source_dir/python/stubs" "$work/src/python/"
 cp "$source_dir/docs/python.md" "$work/src/docs/"
@@ -35,6 +35,7 @@ dirs = rbsim.data_dirs()
 assert dirs == {"assets": str(venv / "share/rbsim/assets"), "shaders": str(venv / "share/rbsim/shaders")}, dirs
 version = subprocess.run([sys.executable, "-m", "pip", "show", "rbsim"], capture_output=True, text=True).stdout
 assert f"Version: {rbsim.__version__}" in version, version
+assert "License: MIT" in version, version
 world = rbsim.load_scene("contact_stacking").world()
 world.step(30)
 assert len(world.contacts()) > 0
