@@ -2,6 +2,8 @@
 
 #include <dlfcn.h>
 
+#include <cstdlib>
+
 #include <filesystem>
 #include <system_error>
 #include <vector>
@@ -31,15 +33,25 @@ std::string besideExecutable(const std::string& name) {
     candidates.push_back(exe.parent_path() / name);
     candidates.push_back(exe.parent_path() / ".." / "share" / "rbsim" / name);
   }
-  // The Python module: <prefix>/lib/python3/dist-packages (cmake --install) or a venv's
-  // lib/python3.X/site-packages (pip install .), three folders below <prefix>/share/rbsim.
+  // The Python module, <site>/rbsim/_rbsim*.so, where <site> is <prefix>/lib/python3.X/site-packages
+  // (cmake --install, a venv's pip install), <prefix>/lib/python3.X/dist-packages or
+  // <prefix>/lib/python3/dist-packages (Debian's /usr/local and /usr): four folders below
+  // <prefix>/share/rbsim.
   if (const fs::path module = loadedFrom(); !module.empty() && module.extension() == ".so") {
-    candidates.push_back(module.parent_path() / ".." / ".." / ".." / "share" / "rbsim" / name);
+    candidates.push_back(module.parent_path() / ".." / ".." / ".." / ".." / "share" / "rbsim" / name);
   }
   for (const fs::path& candidate : candidates) {
     if (fs::is_directory(candidate, error)) return fs::weakly_canonical(candidate, error).string();
   }
   return {};
+}
+
+std::string defaultShaderDir() {
+  if (const char* dir = std::getenv("RBSIM_SHADER_DIR"); dir != nullptr && *dir != '\0') {
+    return dir;
+  }
+  if (std::string beside = besideExecutable("shaders"); !beside.empty()) return beside;
+  return RBSIM_DEFAULT_SHADER_DIR;
 }
 
 }  // namespace rbsim::render

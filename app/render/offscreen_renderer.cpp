@@ -3,10 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 
-#include "data_dir.h"
 #include "gl_renderer.h"
 #include "overlay.h"
 #include "render_error.h"
@@ -19,14 +17,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 }  // namespace
-
-std::string defaultShaderDir() {
-  if (const char* dir = std::getenv("RBSIM_SHADER_DIR"); dir != nullptr && *dir != '\0') {
-    return dir;
-  }
-  if (std::string beside = besideExecutable("shaders"); !beside.empty()) return beside;
-  return RBSIM_DEFAULT_SHADER_DIR;
-}
 
 struct OffscreenRenderer::Impl {
   // Declaration order is construction order: the context must exist before any GL object, and

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "data_dir.h"  // defaultShaderDir
 #include "frame_data.h"
 #include "gl_context.h"
 #include "panel_layout.h"
@@ -14,10 +15,6 @@
 #include "ui_frame.h"
 
 namespace rbsim::render {
-
-// The shader folder: env RBSIM_SHADER_DIR if set, else shaders/ beside the executable (a bundle or
-// an install, render/data_dir.h), else the source tree's shaders/ baked in at build time.
-std::string defaultShaderDir();
 
 class OffscreenRenderer {
  public:

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "rbsim/io/input_error.h"
-#include "run/runner.h"
+#include "run/frame_steps.h"
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/strict_json.h"
 

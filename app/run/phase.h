@@ -55,7 +55,7 @@ inline BodyId selectedBodyId(const World& world, std::size_t selected) {
   return selected < world.bodies().size() ? world.idAt(selected) : BodyId{};
 }
 
-// Frames a phase renders: those of its longest world (runner.h's frameCount).
+// Frames a phase renders: those of its longest world (frame_steps.h's frameCount).
 std::uint64_t frameCount(const Phase& phase);
 
 // The world of a scene whose frames are drawn (video, PNGs, window): on one thread unless the

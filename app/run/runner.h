@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/timing.h"
+#include "run/frame_steps.h"
 #include "run/phase.h"
 #include "run/run_options.h"
 #include "rbsim/scene/scene.h"
@@ -34,24 +35,6 @@ struct RunSummary {
   std::size_t gltfBodies = 0;         // the --gltf file's nodes: bodies, and pieces broken off
   std::uint64_t gltfFrames = 0;       // its keys per node
 };
-
-// Frame k of a scene shows the state at the step nearest to k / fps. When dt does not divide
-// 1/fps the frames' times jitter by at most dt/2 but never drift; none is dropped, and a step is
-// shown twice only when dt > 1/fps. Saturates at kHugeCount instead of overflowing.
-std::uint64_t stepOfFrame(std::uint64_t frame, double fps, double dt);
-
-// Counts past this are "too many" (no run gets near it); it is exact in a double, so frame and
-// step arithmetic never overflows a 64-bit integer on the way to a budget check.
-inline constexpr std::uint64_t kHugeCount = std::uint64_t{1} << 62;
-
-// The first frame whose step (stepOfFrame) is `step` or later, computed directly: counting frame
-// by frame would take ~1e11 iterations for 1e9 steps shown at 240 fps with a large dt.
-std::uint64_t firstFrameShowing(std::uint64_t step, double fps, double dt);
-
-// How many frames runPhases renders for a scene of `steps` steps: every k with
-// stepOfFrame(k) <= steps (frame 0 is the initial state), so at least 1.
-std::uint64_t frameCount(std::uint64_t steps, double fps, double dt);
-std::uint64_t frameCount(const Scene& scene);
 
 // Throws InputError naming world.duration if a world of the phase would run 0 steps (a duration
 // under dt / 2): it would show one still frame and say nothing.

@@ -6,13 +6,15 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <utility>
+
 #include "arguments.h"
 #include "py_world.h"
 #include "rbsim/integrate/simulation_error.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene.h"
 #include "rbsim/scene/scene_parts.h"
-#include "render/offscreen_renderer.h"
+#include "render/data_dir.h"
 #include "render/render_error.h"
 #include "run/paths.h"
 #include "run/scene_catalogue.h"
@@ -21,7 +23,7 @@
 namespace py = pybind11;
 
 namespace rbsim::python {
-void bindRendering(py::module_& m);  // py_render.cpp
+void bindRendering(py::module_& m);  // py_render.cpp (render_off.cpp in a physics-only build)
 }  // namespace rbsim::python
 
 namespace {
@@ -99,9 +101,28 @@ std::string worldInitDoc() {
          "World(dt=1/60, integrator=\"rk4\"); None: the default (threads: the machine's cores)";
 }
 
+// The compiled module is rbsim._rbsim, which the package rbsim re-exports (python/rbsim/__init__.py).
+// pybind11 names each class's and function's __module__ after the module's __name__ when it is
+// defined: while the module is filled it is named "rbsim", where its users find the names
+// (rbsim.World.__module__, pickle, help()), and gets its own name back afterwards.
+class PublicName {
+ public:
+  PublicName(py::module_ m, const char* name) : m_(std::move(m)), own_(m_.attr("__name__")) { m_.attr("__name__") = name; }
+  ~PublicName() {
+    if (PyObject_SetAttrString(m_.ptr(), "__name__", own_.ptr()) != 0) PyErr_Clear();  // a destructor must not throw
+  }
+  PublicName(const PublicName&) = delete;
+  PublicName& operator=(const PublicName&) = delete;
+
+ private:
+  py::module_ m_;
+  py::object own_;
+};
+
 }  // namespace
 
-PYBIND11_MODULE(rbsim, m) {
+PYBIND11_MODULE(_rbsim, m) {
+  const PublicName publicName(m, "rbsim");
   // Each call's docstring opens with its signature as Python reads it (types included):
   // pybind11's would show "object" for the parameters arguments.h converts by hand.
   py::options options;

@@ -197,7 +197,7 @@ def test_argument_type_errors_name_the_call_the_parameter_and_the_type(call, wor
 
 
 def test_signatures_show_the_parameters_not_pybind11_s_object():
-    """The types are the stubs' (python/stubs/rbsim.pyi, test_stubs.py); help() and inspect show
+    """The types are the stubs' (python/rbsim/__init__.pyi, test_stubs.py); help() and inspect show
     each parameter with its default, never pybind11's "arg0: object"."""
     import inspect
     assert str(inspect.signature(rbsim.World.step)) == "(self, /, steps=1)"

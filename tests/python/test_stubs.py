@@ -1,4 +1,4 @@
-"""The type stubs (python/stubs/rbsim.pyi, issue 39) against the module: every name in the stubs
+"""The type stubs (python/rbsim/__init__.pyi, issue 39) against the module: every name in the stubs
 exists, every public name of the module has a stub, and a method's parameters in the stubs are
 the ones its docstring's signature gives."""
 import ast
@@ -9,7 +9,7 @@ import rbsim
 
 from conftest import SOURCE
 
-STUBS = SOURCE / "python" / "stubs" / "rbsim.pyi"
+STUBS = SOURCE / "python" / "rbsim" / "__init__.pyi"
 # Names the stubs define for their own annotations, not the module's.
 STUB_ONLY = {"Vec3", "PathLike"}
 # Special methods the stubs declare where the module has them.

@@ -1,6 +1,7 @@
-# Type stubs of the module `rbsim` (python/src, issue 39), for editors and type checkers; installed
-# beside the module. tests/python/test_stubs.py checks that every name here is in the module and
-# every public name of the module is here, with the parameters its docstring gives.
+# Type stubs of the package `rbsim` (python/src, issue 39), for editors and type checkers: with
+# py.typed beside them, a PEP 561 package wherever it is installed (issue 57). tests/python/test_stubs.py
+# checks that every name here is in the module and every public name of the module is here, with
+# the parameters its docstring gives.
 import os
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
