@@ -332,4 +332,5 @@ PYBIND11_MODULE(rbsim, m) {
   rbsim::python::bindParticles(world);
   rbsim::python::bindWorldState(m, world);
   rbsim::python::bindRendering(m);
+  rbsim::python::bindDisk(m, world);
 }
