@@ -185,6 +185,11 @@ def test_a_world_built_in_python_runs_as_its_saved_scene_runs_in_the_program(rbs
         assert rec["time"][row] == replayed.time
         for key in ("x", "q", "v", "omega", "P", "L", "awake"):
             np.testing.assert_array_equal(rec[key][row], getattr(replayed, key), err_msg=key)
+    # The program replays it: the trace of the replay is the run's.
+    code, err = run_cli(rbsim_binary, "replay", str(out["rbrec"]), "--no-render", "--quiet", "--trace",
+                        str(tmp_path / "replay.csv"), "--trace-every", "3")
+    assert code == 0, err
+    assert (tmp_path / "replay.csv").read_bytes() == cli["csv"]
     cli_rec = rbsim.read_recording(tmp_path / "cli.rbrec")
     for key in ("step", "time", "x", "q", "P", "L", "awake"):
         np.testing.assert_array_equal(cli_rec[key], rec[key], err_msg=key)
