@@ -29,6 +29,9 @@ struct PhaseWorld {
 
 struct Phase {
   std::string file;
+  // The scene file's text when the phase was made from text that is no file (Python's World.run):
+  // what a recording keeps of it. Empty: a recording reads `file`.
+  std::string text;
   std::string compareKey;          // empty: a plain scene (one world, no caption)
   std::vector<PhaseWorld> worlds;  // at least one
   // The first world's scene: its view (camera, size, fps), title and caption are the frame's,

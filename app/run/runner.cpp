@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "export/gltf_file.h"
 #include "export/gltf_track.h"
@@ -100,7 +101,7 @@ RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptio
       }
     }
     RecordedPhase recorded{phase.file, std::filesystem::absolute(phase.file).parent_path().lexically_normal().string(),
-                           readSceneFile(phase.file), {}};
+                           phase.text.empty() ? readSceneFile(phase.file) : phase.text, {}};
     for (const PhaseWorld& w : phase.worlds) {
       for (const std::string& file : w.scene.files) {
         const RecordedFile f = recordedFileOf(file);
@@ -155,7 +156,10 @@ void checkGltfRun(const std::vector<Phase>& phases, const std::string& path) {
 }  // namespace
 
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
-                     const FrameObserver& observer, RecordReader* replay) {
+                     const FrameObserver& observer, RecordReader* replay, World* world) {
+  if (world != nullptr && (phases.size() != 1 || phases.front().worlds.size() != 1 || replay != nullptr)) {
+    throw std::invalid_argument("runPhases: a given World is the single world of a single phase, stepped");
+  }
   RunSummary summary;
   const auto wallStart = Clock::now();
   const ViewDesc& first = phases.front().scene().view;
@@ -226,7 +230,18 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     progress.name = std::filesystem::path(phase.file).stem().string();
     std::vector<World> worlds;
     worlds.reserve(phase.worlds.size());
-    for (const PhaseWorld& w : phase.worlds) worlds.push_back(renderer ? buildFramedWorld(w.scene) : buildWorld(w.scene));
+    if (world != nullptr) worlds.push_back(std::move(*world));
+    // The given World goes back to its owner however the phase ends, a failed step included.
+    struct GiveBack {
+      World* to;
+      std::vector<World>& worlds;
+      ~GiveBack() {
+        if (to != nullptr && !worlds.empty()) *to = std::move(worlds.front());
+      }
+    } giveBack{world, worlds};
+    if (world == nullptr) {
+      for (const PhaseWorld& w : phase.worlds) worlds.push_back(renderer ? buildFramedWorld(w.scene) : buildWorld(w.scene));
+    }
     // The overlay's error against the exact spin, of each world's selected body.
     std::vector<FreeFlightError> freeFlight;
     for (std::size_t k = 0; k < worlds.size(); ++k) {

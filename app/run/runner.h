@@ -58,8 +58,11 @@ using FrameObserver = std::function<void(const std::vector<std::uint8_t>& rgbaTo
 // With options.recordPath every step's state is recorded (record/recording.h); with
 // options.gltfPath the bodies and their pose at every frame go to a glTF file (export/), which
 // a run of several phases or a compared phase cannot have (InputError).
+// With `world` (Python's World.run), the single world of a single phase is that World, stepped in
+// place from its step count on, instead of one built from the scene; it must be the World the
+// scene describes. It is moved back into `world` however the run ends.
 RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title,
-                     const FrameObserver& observer = {}, RecordReader* replay = nullptr);
+                     const FrameObserver& observer = {}, RecordReader* replay = nullptr, World* world = nullptr);
 
 void printSummary(const RunSummary& summary, const RunOptions& options);
 

@@ -8,11 +8,12 @@ from ._rbsim import __doc__, __version__  # noqa: F401
 
 from . import _rbsim
 
-_RENDERING = ("Renderer", "VideoWriter")
+_RENDERING = ("Renderer", "VideoWriter", "run")
 
 
 def __getattr__(name):
-    """A physics-only build (RBSIM_PYTHON_RENDER=OFF) has no Renderer: say so, and how to get one."""
+    """A physics-only build (RBSIM_PYTHON_RENDER=OFF) has no Renderer, VideoWriter or run (the program's
+    runner, which draws frames): say so, and how to get them."""
     if name in _RENDERING and not hasattr(_rbsim, name):
         raise AttributeError(f"rbsim.{name}: this rbsim was built physics-only (RBSIM_PYTHON_RENDER=OFF), without "
                              "the renderer; build it with RBSIM_PYTHON_RENDER=ON (docs/python.md, Install)")

@@ -353,4 +353,6 @@ PYBIND11_MODULE(_rbsim, m) {
   rbsim::python::bindParticles(world);
   rbsim::python::bindWorldState(m, world);
   rbsim::python::bindRendering(m);
+  rbsim::python::bindDisk(m, world);
+  rbsim::python::bindRun(m, world);
 }

@@ -61,6 +61,7 @@ PyWorld PyWorld::fromKeywords(const py::kwargs& world) {
 
 PyWorld::PyWorld(Scene scene) : scene_(std::move(scene)), world_(buildWorld(scene_)), serial_(++worldsMade) {
   for (const RigidBody& body : world_.bodies()) names_.insert(body.name());
+  if (scene_.file != kWorldCall) blocks_.loadedFrom(scene_.file);
 }
 
 void PyWorld::waitIdle() const {
@@ -105,6 +106,7 @@ PyBodyId PyWorld::addBody(const py::kwargs& body) {
   }
   const BodyId id = world_.addBody(block.def);
   names_.insert(block.def.name);
+  blocks_.addBody(id, keys, world_.body(id));
   scene_.inertiaMethods.push_back(block.inertiaMethod);
   // The block names its body as a scene's body `index` would be named; in this World, where
   // bodies may have been removed, the body has the id addBody gave it.
@@ -160,6 +162,7 @@ std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
   } catch (const std::invalid_argument& e) {
     throw InputError(kSpawnerCall, "", e.what());  // the engine's checks (World::addSpawner)
   }
+  blocks_.addSpawner(std::move(keys));
   return world_.spawners().size() - 1;
 }
 
@@ -186,9 +189,11 @@ py::object PyWorld::killVolume() const {
 }
 
 std::size_t PyWorld::addPlane(const py::kwargs& plane) {
-  const auto [p, material] = parsePlaneBlock(toJson(plane, kPlaneCall, ""), kPlaneCall, "");
+  nlohmann::json keys = toJson(plane, kPlaneCall, "");
+  const auto [p, material] = parsePlaneBlock(keys, kPlaneCall, "");
   waitIdle();
   world_.addPlane(p, material);
+  blocks_.addPlane(std::move(keys));
   return world_.planes().size() - 1;
 }
 
@@ -203,17 +208,21 @@ void PyWorld::addForce(const PyBodyId& id, const py::kwargs& force) {
   ScriptedForce f = parseForceBlock(keys, kForceCall, "", i, body.fileFrame().axes);
   f.body = id.id;
   world_.addForce(f);
+  blocks_.addForce(id.id, keys);
 }
 
 std::size_t PyWorld::addJoint(const py::kwargs& joint) {
   const nlohmann::json keys = toJson(joint, kJointCall, "");
   waitIdle();
   const JointDef def = parseJointBlock(keys, kJointCall, "", world_);
+  std::size_t row = 0;
   try {
-    return world_.addJoint(def);
+    row = world_.addJoint(def);
   } catch (const std::invalid_argument& e) {
     throw InputError(kJointCall, "", e.what());
   }
+  blocks_.addJoint(keys, world_.joints()[row]);
+  return row;
 }
 
 void PyWorld::setPose(const PyBodyId& id, const py::object& position, const py::object& orientation,
@@ -286,6 +295,18 @@ void PyWorld::step(long long steps) {
     // Ctrl-C in a notebook stops a long run between two steps (the World stays consistent).
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   }
+}
+
+void PyWorld::runOnWorld(const std::function<void(World&)>& work) {
+  waitIdle();
+  struct Names {
+    PyWorld& w;
+    ~Names() {
+      w.names_.clear();
+      for (const RigidBody& body : w.world_.bodies()) w.names_.insert(body.name());
+    }
+  } names{*this};
+  work(world_);
 }
 
 py::object PyWorld::rayCast(const py::object& origin, const py::object& direction, const py::object& maxDistance) const {

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -17,6 +18,7 @@
 
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/world.h"
+#include "scene_blocks.h"
 
 namespace rbsim::python {
 
@@ -51,6 +53,9 @@ class PyWorld {
   void setPose(const PyBodyId& id, const pybind11::object& position, const pybind11::object& orientation,
                const pybind11::object& velocity, const pybind11::object& angularVelocity);
   void step(long long steps);  // steps >= 0; releases the GIL while stepping
+  // Runs `work` on the World (World.run: the program's runner steps it), with the GIL held, then
+  // brings the body names up to date as step() does, however `work` ends.
+  void runOnWorld(const std::function<void(World&)>& work);
   // The first body or plane on the ray (rbsim/world/ray_cast.h), as a dict, or None.
   pybind11::object rayCast(const pybind11::object& origin, const pybind11::object& direction,
                            const pybind11::object& maxDistance) const;
@@ -96,12 +101,14 @@ class PyWorld {
   std::size_t index(const PyBodyId& id, const char* call) const;
   PyBodyId wrap(BodyId id) const { return {id, serial_}; }
   std::uint64_t serial() const { return serial_; }
+  const SceneBlocks& blocks() const { return blocks_; }  // what World.save_scene writes
 
  private:
   Scene scene_;  // settings, view, looks; inertiaMethods kept per body in the World's order
   World world_;
   std::unordered_set<std::string> names_;  // every body's, for add_body's duplicate check
   std::uint64_t serial_;                   // this World's number among those the module made
+  SceneBlocks blocks_;                     // the blocks it was given, for World.save_scene
   // Whether a step() runs, written with the GIL and the mutex held; a unique_ptr keeps PyWorld movable.
   struct Busy {
     std::mutex mutex;
@@ -119,5 +126,10 @@ void bindParticles(pybind11::class_<PyWorld>& world);  // particle_arrays.cpp
 // World.get_state and set_state, and the settings a running World takes as properties
 // (world_state.cpp).
 void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);
+// World.save_scene, World.run's outputs (trace, recording, glTF), rbsim.run and
+// rbsim.read_recording (disk_bindings.cpp).
+void bindDisk(pybind11::module_& m, pybind11::class_<PyWorld>& world);
+// World.run and rbsim.run (run_bindings.cpp; absent from the physics-only module: render_off.cpp).
+void bindRun(pybind11::module_& m, pybind11::class_<PyWorld>& world);
 
 }  // namespace rbsim::python

@@ -129,7 +129,10 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     }
     joint.a = a;
     if (joint.b != kWorldIndex) joint.b = b;
-    joints_[keptJoints++] = std::move(joint);
+    // Not onto itself: a self-move leaves a std::string member empty (libstdc++), and the joints
+    // before the first removed one kept their bodies but lost their names.
+    if (&joints_[keptJoints] != &joint) joints_[keptJoints] = std::move(joint);
+    ++keptJoints;
   }
   joints_.resize(keptJoints);
   // Warm starts are keyed by body indices: the moved bodies' follow them (read before the moves).

@@ -151,9 +151,11 @@ TEST(WorldJoints, JointsFollowDestroyedAndMovedBodies) {
   joint.bodyA = weight;
   joint.bodyB = hook;
   joint.anchor = Vec3(0.0, 1.8, 0.0);
+  joint.name = "rope";
   world.addJoint(joint);
   world.destroyBody(first);  // the weight moves into index 0
   ASSERT_EQ(world.joints().size(), 1u);
+  EXPECT_EQ(world.joints()[0].def.name, "rope");  // a joint kept in its place keeps everything (issue 57)
   EXPECT_EQ(world.joints()[0].def.bodyA, weight);  // the ids stay
   EXPECT_EQ(world.joints()[0].def.bodyB, hook);
   EXPECT_EQ(world.joints()[0].a, 0u);  // the indices the solver reads follow the bodies
