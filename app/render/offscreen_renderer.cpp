@@ -96,7 +96,7 @@ void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui, ExtraIm
   Impl& d = *impl_;
   if (d.pending) throw RenderError("OffscreenRenderer::begin: the previous frame was not finished");
   d.context->makeCurrent();
-  if (extra.depth && !d.depthCapture) d.depthCapture = std::make_unique<DepthCapture>(width(), height());
+  if (extra.depth && !d.depthCapture) d.depthCapture = std::make_unique<DepthCapture>(width(), height(), samples());
   if (extra.segmentation && !d.segmentationPass) {
     d.segmentationPass = std::make_unique<SegmentationPass>(width(), height(), d.shaderDir);
   }

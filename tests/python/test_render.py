@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import rbsim
 
-from conftest import SCENES, run_cli
+from conftest import SCENES, SOURCE, run_cli
 
 W, H = 320, 180
 
@@ -272,3 +272,25 @@ def test_every_body_in_the_image_is_a_body_in_view_and_every_body_in_view_is_in_
     assert {int(v) for v in np.unique(out["segmentation"]) if v < 0} == {-1, -2}
     sky = out["segmentation"] == -1
     assert sky[0].all() and np.isinf(out["depth"][sky]).all() and np.isfinite(out["depth"][~sky]).all()
+
+
+def test_the_docs_camera_images_example_runs():
+    """docs/python.md's "Camera images" snippet, as written (it asserts the body it finds)."""
+    text = (SOURCE / "docs" / "python.md").read_text()
+    code = text.split("## Camera images", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+    exec(compile(code, "docs/python.md", "exec"), {})
+
+
+def test_with_the_panel_the_images_cover_the_scene_s_pane_only():
+    world = static_world()
+    ball = world.add_body(shape={"type": "sphere", "radius": 0.5}, mass=1, static=True, position=[0, 0.5, 0])
+    renderer = rbsim.Renderer(W, H)
+    plain = renderer.render(world, depth=True, segmentation=True)
+    out = renderer.render(world, depth=True, segmentation=True, panel=True)
+    np.testing.assert_array_equal(out["rgba"], renderer.render(world, panel=True))
+    seg, depth = out["segmentation"], out["depth"]
+    # The panel's column on the left shows no surface; the scene, narrower, still shows the ball.
+    column = (seg == -1).all(axis=0).argmin()  # the first column with a surface
+    assert column > W // 5 and (seg[:, :column] == -1).all() and np.isinf(depth[:, :column]).all()
+    assert 0 < (seg == 0).sum() < (plain["segmentation"] == 0).sum()
+    assert np.isfinite(depth[seg != -1]).all() and out["bodies"] == [ball]

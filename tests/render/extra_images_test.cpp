@@ -69,9 +69,9 @@ bool onEdge(const std::vector<std::int32_t>& segments, int x, int y) {
   return false;
 }
 
-class ExtraImages : public ::testing::TestWithParam<int> {};  // samples per pixel
+class ExtraImagesAt : public ::testing::TestWithParam<int> {};  // samples per pixel
 
-TEST_P(ExtraImages, GroundSeenHeadOnReadsItsDistanceAtEveryPixel) {
+TEST_P(ExtraImagesAt, GroundSeenHeadOnReadsItsDistanceAtEveryPixel) {
   OffscreenRenderer renderer(kWidth, kHeight, shaderDir(), GetParam());
   FrameData frame;
   frame.options.overlay = false;
@@ -87,7 +87,7 @@ TEST_P(ExtraImages, GroundSeenHeadOnReadsItsDistanceAtEveryPixel) {
   for (const std::int32_t s : renderer.segmentation()) ASSERT_EQ(s, kSegmentGround);
 }
 
-TEST_P(ExtraImages, BoxSeenFaceOnCoversThePixelCentresOfItsProjectedFace) {
+TEST_P(ExtraImagesAt, BoxSeenFaceOnCoversThePixelCentresOfItsProjectedFace) {
   OffscreenRenderer renderer(kWidth, kHeight, shaderDir(), GetParam());
   FrameData frame;
   frame.options.overlay = false;
@@ -135,7 +135,7 @@ TEST_P(ExtraImages, BoxSeenFaceOnCoversThePixelCentresOfItsProjectedFace) {
   EXPECT_LE(std::abs(count - area), (high.x - low.x) + (high.y - low.y) + 1.0);
 }
 
-TEST_P(ExtraImages, LeaveTheColourImageAsItWas) {
+TEST_P(ExtraImagesAt, LeaveTheColourImageAsItWas) {
   OffscreenRenderer renderer(kWidth, kHeight, shaderDir(), GetParam());
   FrameData frame;
   frame.overlay.title = "extra images";
@@ -151,7 +151,7 @@ TEST_P(ExtraImages, LeaveTheColourImageAsItWas) {
   EXPECT_EQ(renderer.render(frame), plain);  // and the state they leave changes no later frame
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, ExtraImages, ::testing::Values(1, 4));
+INSTANTIATE_TEST_SUITE_P(Samples, ExtraImagesAt, ::testing::Values(1, 4));
 
 }  // namespace
 }  // namespace rbsim::render::test
