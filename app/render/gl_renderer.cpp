@@ -353,8 +353,8 @@ void GlRenderer::drawView(const FrameData& frame, const PaneRect& pane, GLuint f
   drawOpaqueBodies(frame, viewProj);
   glDisable(GL_POLYGON_OFFSET_FILL);
   // The depth image holds the surfaces: it is copied here, before axes, arrows or ghosts write
-  // depth, or at the end when none will. The copy makes llvmpipe finish the frame so far, which
-  // cost 4 ms of 640 x 360 here; at the end it costs only the copy.
+  // depth, or at the end when none will. Here the copy makes llvmpipe finish the frame so far
+  // before it goes on, a wait that a busy machine stretches; at the end there is none.
   const bool annotationsWriteDepth = !geometry_.axes.empty() || !geometry_.forceShafts.empty() ||
                                      !geometry_.arrowHeads.empty() || !geometry_.ghostRanges.empty();
   if (depthCapture_ != nullptr && annotationsWriteDepth) depthCapture_->capture(frameTarget, pane, height_);
