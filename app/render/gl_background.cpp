@@ -107,9 +107,7 @@ void GlRenderer::drawSky(const FrameData& frame, const glm::mat4& viewProj) {
 
 void GlRenderer::drawGround(const FrameData& frame, const glm::mat4& viewProj) {
   const Camera& cam = frame.camera;
-  // Corners at 0.92 of the far distance: inside the far plane for any sensible eye height, and
-  // the ground has faded into the horizon colour long before, so its edge never shows.
-  const float halfSize = 0.65f * cam.farPlane;
+  const float halfSize = kGroundHalfSizeOfFar * cam.farPlane;
   const float viewDistance = glm::length(cam.eye - cam.target);
   const float fadeEnd = 0.95f * halfSize;
   glEnable(GL_DEPTH_TEST);

@@ -282,8 +282,10 @@ void GlRenderer::drawGhosts(const FrameData& frame, const glm::mat4& viewProj) {
   glDisable(GL_BLEND);
 }
 
-void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
+void GlRenderer::draw(const FrameData& frame, PassClock* clock, DepthCapture* depth) {
   const GLuint frameTarget = samples_ > 1 ? multisampled_.fbo : target_;
+  depthCapture_ = depth;
+  if (depth != nullptr) depth->startFrame();
   if (frame.panes.empty()) {
     drawView(frame, PaneRect{0, 0, width_, height_}, frameTarget, clock);
   } else {
@@ -307,6 +309,7 @@ void GlRenderer::draw(const FrameData& frame, PassClock* clock) {
                       GL_NEAREST);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, target_);
+  depthCapture_ = nullptr;
   if (clock != nullptr) clock->mark(RenderPass::Marks, [] { glFinish(); });
 }
 
@@ -349,6 +352,12 @@ void GlRenderer::drawView(const FrameData& frame, const PaneRect& pane, GLuint f
   glPolygonOffset(1.0f, 1.0f);
   drawOpaqueBodies(frame, viewProj);
   glDisable(GL_POLYGON_OFFSET_FILL);
+  // The depth image holds the surfaces: it is copied here, before axes, arrows or ghosts write
+  // depth, or at the end when none will. Here the copy makes llvmpipe finish the frame so far
+  // before it goes on, a wait that a busy machine stretches; at the end there is none.
+  const bool annotationsWriteDepth = !geometry_.axes.empty() || !geometry_.forceShafts.empty() ||
+                                     !geometry_.arrowHeads.empty() || !geometry_.ghostRanges.empty();
+  if (depthCapture_ != nullptr && annotationsWriteDepth) depthCapture_->capture(frameTarget, pane, height_);
   mark(RenderPass::Bodies);
   if (frame.options.grid) {
     drawShadows(viewProj);
@@ -369,6 +378,7 @@ void GlRenderer::drawView(const FrameData& frame, const PaneRect& pane, GLuint f
   drawOverlays(frame, viewProj);
   drawGhosts(frame, viewProj);
   debugDraw_.drawOnTop(viewProj, frame.camera.eye, debugWidth);
+  if (depthCapture_ != nullptr && !annotationsWriteDepth) depthCapture_->capture(frameTarget, pane, height_);
 }
 
 }  // namespace rbsim::render

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "debug_draw.h"
+#include "depth_capture.h"
 #include "frame_data.h"
 #include "gl_api.h"
 #include "instanced_bodies.h"
@@ -36,8 +37,9 @@ class GlRenderer {
 
   // Sets every piece of GL state it relies on at the start, so whatever ran before (the ImGui
   // overlay of the previous frame) cannot leak in. Leaves the target bound with the image.
-  // With `clock`, finishes after each pass and charges its time there (pass_clock.h).
-  void draw(const FrameData& frame, PassClock* clock = nullptr);
+  // With `clock`, finishes after each pass and charges its time there (pass_clock.h). With
+  // `depth`, copies the depth of the ground and the opaque bodies there (depth_capture.h).
+  void draw(const FrameData& frame, PassClock* clock = nullptr, DepthCapture* depth = nullptr);
 
   int samples() const { return samples_; }
 
@@ -89,6 +91,7 @@ class GlRenderer {
   GLuint meshVao_ = 0, meshVbo_ = 0;
   GLuint lineVao_ = 0, lineVbo_ = 0;
   GLuint target_ = 0;  // the context's framebuffer, which receives the image
+  DepthCapture* depthCapture_ = nullptr;  // during a draw() asked for the depth image
   Target multisampled_;  // the frame is drawn here and resolved into target_ when samples_ > 1
   Target background_;    // sky and ground as seen from backgroundCamera_
   bool backgroundDrawn_ = false;

@@ -5,9 +5,12 @@
 #include <cstdio>
 #include <cstring>
 
+#include "data_dir.h"
+#include "depth_capture.h"
 #include "gl_renderer.h"
 #include "overlay.h"
 #include "render_error.h"
+#include "segmentation_pass.h"
 
 namespace rbsim::render {
 
@@ -22,8 +25,16 @@ struct OffscreenRenderer::Impl {
   // Declaration order is construction order: the context must exist before any GL object, and
   // is destroyed last.
   std::unique_ptr<GlContext> context;
+  std::string shaderDir;
   GlRenderer scene;
   Overlay overlay;
+  // Made at the first frame that asks for them, so a renderer that never does pays nothing.
+  std::unique_ptr<DepthCapture> depthCapture;
+  std::unique_ptr<SegmentationPass> segmentationPass;
+  ExtraImages pendingExtra;             // what the pending frame asked for
+  float pendingNear = 0.0f, pendingFar = 0.0f;  // its camera's planes [m], for the depth image
+  std::vector<float> depth;             // the last frame's extra images
+  std::vector<std::int32_t> segmentation;
   // Image buffers: `current` is the last image; the pool's others may still be with the writers.
   std::vector<std::shared_ptr<std::vector<std::uint8_t>>> pool;
   std::shared_ptr<std::vector<std::uint8_t>> current;
@@ -38,6 +49,7 @@ struct OffscreenRenderer::Impl {
 
   Impl(int width, int height, const std::string& shaderDir, int samples, GlBackend backend)
       : context(makeGlContext(backend, width, height)),
+        shaderDir(shaderDir),
         scene(width, height, shaderDir, samples, context->framebuffer()),
         overlay(width, height, context->framebuffer()) {}
 
@@ -66,20 +78,29 @@ OffscreenRenderer::~OffscreenRenderer() {
   impl_->context->makeCurrent();
 }
 
-const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& frame, const UiFrame* ui) {
-  begin(frame, ui);
+const std::vector<std::uint8_t>& OffscreenRenderer::render(const FrameData& frame, const UiFrame* ui, ExtraImages extra) {
+  begin(frame, ui, extra);
   return finish();
 }
 
-void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui) {
+void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui, ExtraImages extra) {
   Impl& d = *impl_;
   if (d.pending) throw RenderError("OffscreenRenderer::begin: the previous frame was not finished");
   d.context->makeCurrent();
+  if (extra.depth && !d.depthCapture) d.depthCapture = std::make_unique<DepthCapture>(width(), height(), samples());
+  if (extra.segmentation && !d.segmentationPass) {
+    d.segmentationPass = std::make_unique<SegmentationPass>(width(), height(), d.shaderDir);
+  }
+  d.pendingExtra = extra;
+  // A comparison's panes share the scene camera's planes (paneCamera changes only the field of view).
+  const Camera& camera = frame.panes.empty() ? frame.camera : frame.panes.front().camera;
+  d.pendingNear = camera.nearPlane;
+  d.pendingFar = camera.farPlane;
   // Frames measured pass by pass stay out of the mean: their extra flushes cost time.
   PassClock* clock = d.frames % kPassSampleEvery == kPassSampleEvery - 1 ? &d.passes : nullptr;
   const auto start = std::chrono::steady_clock::now();
   if (clock != nullptr) clock->begin();
-  d.scene.draw(frame, clock);
+  d.scene.draw(frame, clock, extra.depth ? d.depthCapture.get() : nullptr);
   // Off-screen, the overlay has no animation, so its time step only has to be positive.
   // Without the overlay (--no-overlay) the plots asked for still show: they are not the panel.
   // A comparison's captions stay too: without them the panes could not be told apart.
@@ -94,6 +115,9 @@ void OffscreenRenderer::begin(const FrameData& frame, const UiFrame* ui) {
   }
   const float uiSeconds = ui != nullptr ? ui->input.deltaSeconds : 1.0f / 30.0f;
   d.uiWantsPointer = d.overlay.draw(frame.options.overlay ? frame.overlay : plotsOnly, uiSeconds, ui);
+  // After the overlay, which leaves GL state of its own: the pass sets all it relies on, and the
+  // next frame's colour pass does the same after it.
+  if (extra.segmentation) d.segmentationPass->draw(frame);
   if (clock != nullptr) {
     clock->mark(RenderPass::Overlay, [] { glFinish(); });
     clock->endFrame();
@@ -125,6 +149,10 @@ const std::vector<std::uint8_t>& OffscreenRenderer::finish() {
   const auto copyStart = std::chrono::steady_clock::now();
   d.current = d.freeBuffer();
   d.context->readTopDown(d.current->data());
+  d.depth.clear();
+  d.segmentation.clear();
+  if (d.pendingExtra.depth) d.depthCapture->readMetres(d.pendingNear, d.pendingFar, d.depth);
+  if (d.pendingExtra.segmentation) d.segmentationPass->read(d.segmentation);
   d.readbackMs.add(millisecondsSince(copyStart));
   ++d.frames;
   return *d.current;
@@ -134,6 +162,9 @@ std::shared_ptr<const std::vector<std::uint8_t>> OffscreenRenderer::finishShared
   finish();
   return impl_->current;
 }
+
+const std::vector<float>& OffscreenRenderer::depth() const { return impl_->depth; }
+const std::vector<std::int32_t>& OffscreenRenderer::segmentation() const { return impl_->segmentation; }
 
 bool OffscreenRenderer::uiWantsPointer() const { return impl_->uiWantsPointer; }
 

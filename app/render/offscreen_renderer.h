@@ -16,6 +16,17 @@
 
 namespace rbsim::render {
 
+// The images a frame makes besides the colour one (issue 57), each only when asked for: the
+// default frame costs what it did.
+struct ExtraImages {
+  // Metres along the camera axis of the ground and the opaque bodies, read from the colour pass's
+  // own depth buffer (depth_capture.h); +inf where the sky is.
+  bool depth = false;
+  // Per pixel the index in FrameData::bodies of the opaque body seen, kSegmentGround or
+  // kSegmentBackground (segmentation_pass.h): a flat integer pass of its own.
+  bool segmentation = false;
+};
+
 class OffscreenRenderer {
  public:
   // No multisampling by default: on llvmpipe 4x MSAA shades every sample and took 1280x720 from
@@ -34,16 +45,20 @@ class OffscreenRenderer {
   // Renders one frame (overlay included when frame.options.overlay; with `ui`, its control
   // windows too) and returns the image: width*height*4 bytes, RGBA, top row first. Valid until
   // the next render() call.
-  const std::vector<std::uint8_t>& render(const FrameData& frame, const UiFrame* ui = nullptr);
+  const std::vector<std::uint8_t>& render(const FrameData& frame, const UiFrame* ui = nullptr, ExtraImages extra = {});
   // render() in two halves, so the caller can work while llvmpipe's threads rasterise: begin()
   // issues the frame's GL commands and flushes them (nothing refers to `frame` afterwards);
   // finish() waits for the picture and returns it like render(). Each begin() needs its
   // finish() before the next begin(); RenderError otherwise.
-  void begin(const FrameData& frame, const UiFrame* ui = nullptr);
+  void begin(const FrameData& frame, const UiFrame* ui = nullptr, ExtraImages extra = {});
   const std::vector<std::uint8_t>& finish();
   // finish(), the image shared instead of borrowed: the writers keep it as long as they need it
   // and it is never copied; its buffer is reused once nobody holds it any more.
   std::shared_ptr<const std::vector<std::uint8_t>> finishShared();
+  // The extra images of the last finish(), width*height values, top row first; empty when that
+  // frame did not ask for them. Valid until the next finish().
+  const std::vector<float>& depth() const;
+  const std::vector<std::int32_t>& segmentation() const;
   // Whether ImGui wanted the pointer during the last render() with a UiFrame (it was over a
   // control), so the window does not also turn the drag into a camera move or a pick.
   bool uiWantsPointer() const;

@@ -56,6 +56,12 @@ void buildSceneGeometry(const FrameData& frame, SceneGeometry& out);
 void buildBodyShape(const BodyView& body, std::vector<MeshVertex>& triangles,
                     std::vector<LineVertex>& edges);
 
+// The ground square (y = 0, centred under the eye) has this half size over the camera's far
+// distance: its corners at 0.92 of the far distance are inside the far plane for any sensible eye
+// height, and the ground has faded into the horizon colour long before, so its edge never shows.
+// Shared by the colour pass and the segmentation pass, which must cover the same pixels.
+inline constexpr float kGroundHalfSizeOfFar = 0.65f;
+
 // Colours shared by the geometry and the tests (linear RGB).
 inline constexpr glm::vec3 kAxisColors[3] = {
     {0.90f, 0.10f, 0.08f}, {0.15f, 0.75f, 0.12f}, {0.10f, 0.30f, 1.00f}};

@@ -206,10 +206,14 @@ class Renderer:
     def width(self) -> int: ...
     @property
     def height(self) -> int: ...
-    # The keys of a scene's "view" block a picture uses; None: the view's default.
-    def render(self, /, world: World, selected: Optional[BodyId] = None, *, camera: Optional[Dict[str, Any]] = None,
+    # The RGBA array; with depth or segmentation a dict: "rgba", "depth" (float32 metres, inf: sky),
+    # "segmentation" (int32 body row, -1 sky, -2 ground, -3 another surface), "bodies" (BodyId per row).
+    # panel: draw the variables panel. Then the keys of a scene's "view" block; None: the view's default.
+    def render(self, /, world: World, selected: Optional[BodyId] = None, *, depth: bool = False,
+               segmentation: bool = False, panel: bool = False, camera: Optional[Dict[str, Any]] = None,
                overlay: Optional[bool] = None, wireframe: Optional[bool] = None, axes: Optional[bool] = None,
-               grid: Optional[bool] = None, caption: Optional[str] = None) -> npt.NDArray[np.uint8]: ...
+               grid: Optional[bool] = None, caption: Optional[str] = None
+               ) -> Union[npt.NDArray[np.uint8], Dict[str, Any]]: ...
 
 class VideoWriter:
     def __init__(self, /, path: PathLike, width: int, height: int, fps: int = 30) -> None: ...

@@ -13,6 +13,7 @@
 #include "rbsim/scene/scene_parts.h"
 #include "render/offscreen_renderer.h"
 #include "render/render_error.h"
+#include "render/segmentation_pass.h"
 #include "render/video_encoder.h"
 #include "run/frame_builder.h"
 #include "to_json.h"
@@ -31,6 +32,21 @@ constexpr int kMinPixels = 16;
 constexpr int kMaxPixels = 8192;
 // Frames waiting for ffmpeg: 8 frames of 1280 x 720 RGBA are 29 MB.
 constexpr std::size_t kVideoQueueFrames = 8;
+
+// Segmentation codes besides a body's row (render/segmentation_pass.h has the first two).
+constexpr std::int32_t kSegmentOther = -3;  // a cloth, soft body or 2D body: drawn, but no row of the World
+static_assert(render::kSegmentBackground == -1 && render::kSegmentGround == -2, "docs/python.md gives these codes");
+
+// Removes `name` from the keywords and returns it: a bool, or `fallback` when not given.
+bool takeBool(py::kwargs& keywords, const char* name, bool fallback) {
+  if (!keywords.contains(name)) return fallback;
+  const py::object value = keywords[name];
+  PyDict_DelItemString(keywords.ptr(), name);
+  if (!py::isinstance<py::bool_>(value)) {
+    throw InputError(kRenderCall, name, std::string("expected a bool, got ") + Py_TYPE(value.ptr())->tp_name);
+  }
+  return value.cast<bool>();
+}
 
 void checkSize(const char* call, long long width, long long height) {
   for (const auto& [name, value] : {std::pair{"width", width}, std::pair{"height", height}}) {
@@ -59,21 +75,55 @@ class PyRenderer {
 
   // The world as the program draws it, under the world's view (a scene's "view" block, or the
   // default camera) with `view`'s keys over it: a new (height, width, 4) uint8 array, top row
-  // first, alpha 255.
-  py::array_t<std::uint8_t> render(const PyWorld& world, const py::object& selected, const py::kwargs& view) {
+  // first, alpha 255. With depth or segmentation, a dict of it and the images asked for.
+  py::object render(const PyWorld& world, const py::object& selected, const py::kwargs& keywords) {
+    py::kwargs view = keywords;
+    const bool depth = takeBool(view, "depth", false);
+    const bool segmentation = takeBool(view, "segmentation", false);
+    const bool panel = takeBool(view, "panel", false);
     Scene scene = world.scene();
     parseViewBlock(toJson(view, kRenderCall, ""), kRenderCall, "", scene.view);
+    if (panel) {
+      if (view.contains("overlay") && !scene.view.overlay) {
+        throw InputError(kRenderCall, "panel", "panel=True draws the panel, but overlay=False hides it; give one of them");
+      }
+      scene.view.overlay = true;
+      if (scene.view.panel == ViewDesc::Panel::Off) scene.view.panel = ViewDesc::Panel::Compact;
+    } else {
+      scene.view.panel = ViewDesc::Panel::Off;
+    }
     if (!selected.is_none()) scene.view.selected = world.index(bodyArgument(selected, kRenderCall, "selected"), kRenderCall);
     render::FrameData frame = app::buildFrame(world.world(), scene, "");
     app::placeBesidePanel(frame, scene.view);
-    const std::vector<std::uint8_t>& rgba = renderer_->render(frame);
-    py::array_t<std::uint8_t> out({py::ssize_t{renderer_->height()}, py::ssize_t{renderer_->width()}, py::ssize_t{4}});
+    const std::vector<std::uint8_t>& rgba = renderer_->render(frame, nullptr, {depth, segmentation});
+    const py::ssize_t h = renderer_->height(), w = renderer_->width();
+    py::array_t<std::uint8_t> out({h, w, py::ssize_t{4}});
     std::uint8_t* pixels = out.mutable_data();
     std::memcpy(pixels, rgba.data(), rgba.size());
     // Opaque, as the PNG frames are (png_file.h): GL's alpha after blending is bookkeeping, and
     // antialiased outlines left at 0.8 would show as holes in imshow.
     for (std::size_t i = 3; i < rgba.size(); i += 4) pixels[i] = 255;
-    return out;
+    if (!depth && !segmentation) return std::move(out);
+    py::dict images;
+    images["rgba"] = out;
+    if (depth) {
+      py::array_t<float> metres({h, w});
+      std::memcpy(metres.mutable_data(), renderer_->depth().data(), renderer_->depth().size() * sizeof(float));
+      images["depth"] = metres;
+    }
+    if (segmentation) {
+      const auto& segments = renderer_->segmentation();
+      py::array_t<std::int32_t> rows({h, w});
+      std::int32_t* to = rows.mutable_data();
+      // The frame's bodies are the World's rows, then the drawn surfaces that are no rigid body.
+      const auto bodies = static_cast<std::int32_t>(world.world().bodies().size());
+      for (std::size_t i = 0; i < segments.size(); ++i) to[i] = segments[i] >= bodies ? kSegmentOther : segments[i];
+      images["segmentation"] = rows;
+      py::list ids;
+      for (std::int32_t row = 0; row < bodies; ++row) ids.append(world.wrap(world.world().idAt(static_cast<std::size_t>(row))));
+      images["bodies"] = ids;
+    }
+    return std::move(images);
   }
 
   int width() const { return renderer_->width(); }
@@ -156,9 +206,12 @@ void bindRendering(py::module_& m) {
              return r.render(worldArgument(world, kRenderCall), selected, givenKeywords(view));
            },
            py::arg("world"), py::arg("selected") = py::none(),
-           "render(self, /, world, selected=None, *, camera=None, overlay=None, wireframe=None, axes=None, grid=None, "
-           "caption=None)\n--\n\n-> (height, width, 4) uint8 RGBA. The keywords are those of a scene's \"view\" block "
-           "(camera={eye, target, up, fov_deg}); None: the view's default. selected: the BodyId the overlay shows")
+           "render(self, /, world, selected=None, *, depth=False, segmentation=False, panel=False, camera=None, "
+           "overlay=None, wireframe=None, axes=None, grid=None, caption=None)\n--\n\n-> (height, width, 4) uint8 RGBA; "
+           "with depth or segmentation a dict: rgba, depth (height, width) float32 metres along the camera axis (inf: "
+           "sky), segmentation (height, width) int32 body row (-1 sky, -2 ground, -3 another surface), bodies (the "
+           "BodyId of each row). panel: draw the variables panel. The other keywords are those of a scene's \"view\" "
+           "block (camera={eye, target, up, fov_deg}); None: the view's default. selected: the BodyId the panel shows")
       .def_property_readonly("width", &PyRenderer::width)
       .def_property_readonly("height", &PyRenderer::height);
 
