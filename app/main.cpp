@@ -30,6 +30,7 @@
 #include "run/reel.h"
 #include "run/runner.h"
 #include "rbsim/scene/scene.h"
+#include "rbsim/scene/scene_schema.h"
 #include "rbsim/integrate/simulation_error.h"
 
 namespace {
@@ -197,6 +198,7 @@ int main(int argc, char** argv) {
   replayFlags.attach(*replay, FlagSet::Replay);
 
   app.add_subcommand("list", "list the demos, the shipped scenes, integrators and inertia methods");
+  app.add_subcommand("schema", "print the JSON Schema of scene files (docs/scene.schema.json), for editors");
 
   try {
     app.parse(argc, argv);
@@ -208,6 +210,10 @@ int main(int argc, char** argv) {
 
   try {
     if (app.got_subcommand("list")) return finishStdout(listEverything());
+    if (app.got_subcommand("schema")) {
+      std::printf("%s\n", rbsim::sceneSchema().dump(2).c_str());
+      return finishStdout(0, "the schema");
+    }
     std::vector<rbsim::app::Phase> phases;
     std::vector<std::string> files;
     std::string title;

@@ -8,6 +8,7 @@
 #include "rbsim/io/input_error.h"
 #include "run/frame_steps.h"
 #include "rbsim/scene/json_fields.h"
+#include "rbsim/scene/world_keys.h"
 #include "rbsim/scene/strict_json.h"
 
 namespace rbsim::app {
@@ -38,7 +39,7 @@ Phase parseCompared(nlohmann::json document, const std::string& file, const std:
                     const std::vector<std::string>& overrides) {
   const nlohmann::json block = document["compare"];
   document.erase("compare");  // the engine's scene parser knows nothing of it
-  const JsonObject c(block, file, "compare", {"key", "values", "labels"});
+  const JsonObject c(block, file, "compare", kCompareKeys);
   const std::string key = c.requiredString("key");
   const std::vector<std::string> parts = splitScenePath(key);
   if (parts.empty()) c.fail("key", "expected a scene key in --set form, such as world.solver or bodies.box.mass");

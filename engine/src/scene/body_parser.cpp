@@ -45,9 +45,7 @@ constexpr int kRoundRings = kDisplayRings;        // from pole to pole [1]
 
 Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def,
                 std::optional<ImplicitShape>& implicit) {
-  const JsonObject shape = body.object("shape", {"type", "extents", "file", "scale", "radius", "major_radius",
-                                                  "minor_radius", "thickness", "stroke", "length", "function", "op",
-                                                  "a", "b", "position", "orientation", "resolution", "radii", "height"});
+  const JsonObject shape = body.object("shape", kShapeKeys);
   const std::string type = shape.requiredString("type");
   if (type == "implicit" || type == "csg") {
     implicit = parseImplicitShape(shape);
@@ -55,26 +53,26 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
   }
   try {
     if (type == "box") {
-      shape.allowOnly({"type", "extents"}, "a \"box\" shape");
+      shape.allowOnly(kBoxKeys, "a \"box\" shape");
       const Vec3 extents = shape.positiveVec3("extents");
       def.shape = Shape::box(0.5 * extents);
       return makeBox(extents);
     }
     if (type == "sphere") {
-      shape.allowOnly({"type", "radius"}, "a \"sphere\" shape");
+      shape.allowOnly(kSphereKeys, "a \"sphere\" shape");
       const double radius = shape.positiveNumber("radius", 0.5);
       def.shape = Shape::sphere(radius);
       return makeUvSphere(radius, kRoundSegments, kRoundRings);
     }
     if (type == "capsule") {
-      shape.allowOnly({"type", "radius", "length"}, "a \"capsule\" shape");
+      shape.allowOnly(kCapsuleKeys, "a \"capsule\" shape");
       const double radius = shape.positiveNumber("radius", 0.25), length = shape.number("length", 1.0);
       if (!(length >= 0.0)) shape.fail("length", "expected the distance between the caps' centres, >= 0 m");
       def.shape = Shape::capsule(radius, 0.5 * length);
       return makeCapsule(radius, length, kRoundSegments, kRoundRings);
     }
     if (type == "rounded_box") {
-      shape.allowOnly({"type", "extents", "radius"}, "a \"rounded_box\" shape");
+      shape.allowOnly(kRoundedBoxKeys, "a \"rounded_box\" shape");
       const Vec3 extents = shape.positiveVec3("extents");  // the outer box [m]
       const double radius = shape.positiveNumber("radius", kDefaultRoundingShare * extents.minCoeff());
       if (!(2.0 * radius <= extents.minCoeff())) {
@@ -85,19 +83,19 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
       return makeRoundedBox(core, radius, kDisplayBandSegments);
     }
     if (type == "torus") {
-      shape.allowOnly({"type", "major_radius", "minor_radius"}, "a \"torus\" shape");
+      shape.allowOnly(kTorusKeys, "a \"torus\" shape");
       const double major = shape.positiveNumber("major_radius", 0.5), minor = shape.positiveNumber("minor_radius", 0.15);
       if (!(minor < major)) shape.fail("minor_radius", "expected less than major_radius");
       return makeTorus(major, minor, kRoundSegments, kRoundRings);
     }
     if (type == "bowl") {
-      shape.allowOnly({"type", "radius", "thickness"}, "a \"bowl\" shape");
+      shape.allowOnly(kBowlKeys, "a \"bowl\" shape");
       const double radius = shape.positiveNumber("radius", 1.0), thickness = shape.positiveNumber("thickness", 0.1);
       if (!(thickness < radius)) shape.fail("thickness", "expected less than radius");
       return makeBowl(radius, thickness, kRoundSegments, kRoundRings / 2);
     }
     if (type == "letter_u") {
-      shape.allowOnly({"type", "extents", "stroke"}, "a \"letter_u\" shape");
+      shape.allowOnly(kLetterUKeys, "a \"letter_u\" shape");
       const Vec3 extents = shape.positiveVec3("extents");  // width, height, depth
       const double stroke = shape.positiveNumber("stroke", 0.25 * extents.x());
       if (!(2.0 * stroke < extents.x() && stroke < extents.y())) {
@@ -109,7 +107,7 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
     shape.fail("type", e.what());
   }
   if (type == "mesh") {
-    shape.allowOnly({"type", "file", "scale"}, "a \"mesh\" shape");
+    shape.allowOnly(kMeshKeys, "a \"mesh\" shape");
     const std::string file = shape.requiredString("file");
     // The name is handed to the C library, which would stop at a NUL ("a.obj\u0000x" opens a.obj)
     // and takes other control bytes literally: neither belongs in a file name written in JSON.
@@ -147,7 +145,7 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
 void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<ImplicitShape>& implicit) {
   const Mesh& mesh = *def.mesh;
   if (implicit && b.has("sdf")) {
-    const JsonObject sdf = b.object("sdf", {"resolution", "sample_spacing"});
+    const JsonObject sdf = b.object("sdf", kSdfKeys);
     if (sdf.has("resolution")) sdf.fail("resolution", "an implicit shape's grid has the shape's \"resolution\"; expected it there");
   }
   if (!b.has("sdf") && !implicit) {
@@ -161,7 +159,7 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
     const Mesh& given = def.fileFrame.mesh ? *def.fileFrame.mesh : mesh;
     if (!solid || isConvexSurface(mesh, convexityTolerance(given))) return;
   }
-  const JsonObject o = b.has("sdf") ? b.object("sdf", {"resolution", "sample_spacing"}) : b;
+  const JsonObject o = b.has("sdf") ? b.object("sdf", kSdfKeys) : b;
   SdfGridOptions options;
   options.resolution = implicit ? implicit->resolution
                       : b.has("sdf") ? o.positiveInt("resolution", options.resolution) : options.resolution;
@@ -413,7 +411,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     if (forcesIgnored) b.fail("forces", ignoredBecause);
     scene.forces.push_back(parseForce(f, index, scene.bodies[index].fileFrame.axes, scene.duration));
   }
-  for (const JsonObject& p : b.objectArray("set_pose", {"time", "position", "orientation", "velocity", "angular_velocity"})) {
+  for (const JsonObject& p : b.objectArray("set_pose", kSetPoseKeys)) {
     PoseEvent event;
     event.body = sceneBodyId(index);
     event.time = p.requiredNumber("time");
@@ -427,7 +425,7 @@ void parseScripts(const JsonObject& b, std::size_t index, Scene& scene) {
     scene.poseEvents.push_back(event);
   }
   if (b.has("motion")) parseMotion(b, index, scene);
-  for (const JsonObject& s : b.objectArray("springs", {"anchor", "point", "stiffness", "rest_length", "damping"})) {
+  for (const JsonObject& s : b.objectArray("springs", kSpringKeys)) {
     if (forcesIgnored) b.fail("springs", ignoredBecause);
     Spring spring;
     spring.body = sceneBodyId(index);

@@ -8,13 +8,9 @@
 
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
+#include "scene/spawn_keys.h"
 
 namespace rbsim::scene_detail {
-
-inline constexpr std::initializer_list<const char*> kBodyKeys = {
-    "name", "shape", "mass", "density", "inertia", "position", "orientation", "velocity",
-    "angular_velocity", "color", "static", "kinematic", "forces", "set_pose", "springs", "restitution",
-    "friction_static", "friction_kinetic", "fracture", "sdf", "shapes", "filter", "motion", "collide_as"};
 
 // The material keys of a body or a plane ("restitution", "friction_static", "friction_kinetic"),
 // each defaulting to Material's.
@@ -43,8 +39,6 @@ class ShapeCache {
 // Appends the body described by `b` to scene.bodies (and its inertia method name). With `shapes`,
 // a body whose shape keys match an earlier one's takes that body's shape instead of building it.
 void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
-inline constexpr std::initializer_list<const char*> kForceKeys = {"force", "point", "force_frame", "point_frame", "start",
-                                                                 "end"};
 // One entry of a body's "forces", on body `index` whose file axes are `fileAxes`; without "end"
 // it acts until `duration`.
 ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fileAxes, double duration);
@@ -52,8 +46,6 @@ ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fil
 void parseScripts(const JsonObject& b, std::size_t index, Scene& scene);
 // The body named by o[key]; fails naming the field if there is none.
 std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, const char* key);
-inline constexpr std::initializer_list<const char*> kPlaneKeys = {"normal", "point", "restitution", "friction_static",
-                                                                 "friction_kinetic"};
 // One plane: {"normal": [0, 1, 0], "point": [0, 0, 0], material keys}.
 std::pair<Plane, Material> parsePlane(const JsonObject& p);
 // "planes": [{...}, ...]
@@ -62,9 +54,6 @@ void parsePlanes(const JsonObject& root, Scene& scene);
 //            "angular_speed": [lo, hi]}, ...]
 // Each block's template is parsed once (through `shapes`, when given) and its bodies copy it.
 void parseSpawns(const JsonObject& root, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
-inline constexpr std::initializer_list<const char*> kSpawnKeys = {
-    "count", "seed", "name", "body", "ragdoll", "offsets", "lifetime", "region", "speed", "angular_speed",
-    "random_orientation", "period", "start", "end"};
 // One spawn block; `spawnedVertices` counts the vertices of every block so far (a budget).
 // Without "name", the block is named `defaultName`.
 void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, ShapeCache* shapes, double& spawnedVertices,

@@ -146,7 +146,7 @@ Shape partShape(const JsonObject& s, std::shared_ptr<const Mesh>& mesh) {
 }  // namespace
 
 CollisionFilter parseFilter(const JsonObject& o) {
-  const JsonObject f = o.object("filter", {"category", "mask", "group"});
+  const JsonObject f = o.object("filter", kFilterKeys);
   CollisionFilter filter;
   filter.category = bits(f, "category", filter.category);
   filter.mask = bits(f, "mask", filter.mask);
@@ -167,8 +167,7 @@ void parseCompoundShapes(const JsonObject& b, BodyDef& def) {
   if (b.has("sdf")) b.fail("sdf", "a compound body collides as its shapes; expected no grid");
   checkPartTypes(b);
   const std::vector<JsonObject> shapes =
-      b.objectArray("shapes", {"type", "extents", "radius", "length", "vertices", "triangles", "position", "orientation", "density", "restitution",
-                               "friction_static", "friction_kinetic", "filter"});
+      b.objectArray("shapes", kCompoundPartKeys);
   if (shapes.empty()) b.fail("shapes", "expected at least one shape");
   if (shapes.size() > static_cast<std::size_t>(kMaxCompoundChildren)) {
     b.fail("shapes", std::to_string(shapes.size()) + " shapes; expected at most " + std::to_string(kMaxCompoundChildren));
@@ -199,7 +198,7 @@ void parseCompoundShapes(const JsonObject& b, BodyDef& def) {
 }
 
 void parseMotion(const JsonObject& b, std::size_t index, Scene& scene) {
-  const JsonObject m = b.object("motion", {"pivot", "angular_velocity", "keyframes", "loop"});
+  const JsonObject m = b.object("motion", kMotionKeys);
   if (!scene.bodies[index].isKinematic) b.fail("motion", "only a kinematic body follows a motion; expected \"kinematic\": true");
   // The motion sets the body's velocities every step: one given beside it was silently lost
   // (issue 56).
@@ -212,7 +211,7 @@ void parseMotion(const JsonObject& b, std::size_t index, Scene& scene) {
     if (m.has("pivot") || m.has("angular_velocity")) m.fail("keyframes", "a motion turns about a pivot or follows keyframes, not both");
     motion.kind = KinematicMotion::Kind::Keyframes;
     motion.loop = m.boolean("loop", false);
-    for (const JsonObject& k : m.objectArray("keyframes", {"time", "position", "orientation"})) {
+    for (const JsonObject& k : m.objectArray("keyframes", kKeyframeKeys)) {
       Keyframe key;
       key.time = k.requiredNumber("time");
       if (key.time < 0.0) k.fail("time", "expected a time >= 0 s");

@@ -8,11 +8,12 @@
 #include "fracture/pieces.h"
 #include "rbsim/geometry/mesh.h"
 #include "rbsim/scene/json_fields.h"
+#include "scene/body_keys.h"
 
 namespace rbsim::scene_detail {
 
 std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, const BodyDef& def) {
-  const JsonObject f = body.object("fracture", {"threshold", "pieces", "seed", "planes"});
+  const JsonObject f = body.object("fracture", kFractureKeys);
   if (!f.has("threshold")) f.fail("threshold", "expected the breaking impulse in N s");
   auto pattern = std::make_shared<FracturePattern>();
   pattern->impulseThreshold = f.positiveNumber("threshold", 1.0);
@@ -23,7 +24,7 @@ std::shared_ptr<const FracturePattern> parseFracture(const JsonObject& body, con
   std::vector<Mesh> pieces;
   if (f.has("planes")) {
     if (f.has("pieces") || f.has("seed")) f.fail("planes", "give either \"planes\" or \"pieces\" (and \"seed\"), not both");
-    const std::vector<JsonObject> planeBlocks = f.objectArray("planes", {"normal", "point"});
+    const std::vector<JsonObject> planeBlocks = f.objectArray("planes", kCutPlaneKeys);
     // Every plane that cuts adds at least one piece, so more planes than pieces allowed cannot all cut.
     if (planeBlocks.size() > static_cast<std::size_t>(kMaxFracturePieces - 1)) {
       f.fail("planes", "expected at most " + std::to_string(kMaxFracturePieces - 1) + " planes (each plane that cuts adds a "

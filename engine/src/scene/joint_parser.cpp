@@ -35,7 +35,7 @@ std::size_t bodyNamed(const JsonObject& j, const char* key, const JointBodies& b
 void parseMotor(const JsonObject& j, JointDef& def) {
   const bool slider = def.type == JointDef::Type::Prismatic;
   const char* maxKey = slider ? "max_force" : "max_torque";
-  const JsonObject m = slider ? j.object("motor", {"speed", "max_force"}) : j.object("motor", {"speed", "max_torque"});
+  const JsonObject m = slider ? j.object("motor", kSliderMotorKeys) : j.object("motor", kHingeMotorKeys);
   def.motor = true;
   if (!m.has("speed")) m.fail("speed", slider ? "missing; the motor's target speed in m/s is required" : "missing; the motor's target speed in rad/s is required");
   if (!m.has(maxKey)) {
@@ -98,7 +98,7 @@ double boundedNumber(const JsonObject& j, const char* key, double fallback, doub
 }
 
 void parseSpring(const JsonObject& j, JointDef& def) {
-  const JsonObject s = j.object("spring", {"hertz", "damping_ratio"});
+  const JsonObject s = j.object("spring", kJointSpringKeys);
   if (!s.has("hertz")) s.fail("hertz", "missing; the spring's natural frequency in Hz (> 0) is required");
   def.spring = true;
   def.springHertz = boundedNumber(s, "hertz", 0.0, kMaxJointHertz, " Hz");
@@ -114,21 +114,16 @@ JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settin
   const std::string type = j.requiredString("type");
   if (type == "ball") {
     def.type = Type::Ball;
-    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "axis", "cone", "twist", "spring", "friction", "collide_connected"},
-                "a \"ball\" joint");
+    j.allowOnly(kBallJointKeys, "a \"ball\" joint");
   } else if (type == "hinge") {
     def.type = Type::Hinge;
-    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "axis", "motor", "limits", "spring", "friction", "collide_connected"},
-                "a \"hinge\" joint");
+    j.allowOnly(kHingeJointKeys, "a \"hinge\" joint");
   } else if (type == "prismatic") {
     def.type = Type::Prismatic;
-    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "axis", "motor", "limits", "spring", "friction", "collide_connected"},
-                "a \"prismatic\" joint");
+    j.allowOnly(kPrismaticJointKeys, "a \"prismatic\" joint");
   } else if (type == "weld") {
     def.type = Type::Weld;
-    j.allowOnly({"name", "type", "body_a", "body_b", "anchor", "linear_hertz", "linear_damping_ratio", "angular_hertz",
-                 "angular_damping_ratio", "collide_connected"},
-                "a \"weld\" joint");
+    j.allowOnly(kWeldJointKeys, "a \"weld\" joint");
   } else {
     j.fail("type", "expected \"ball\", \"hinge\", \"prismatic\" or \"weld\", got \"" + type + "\"");
   }

@@ -8,13 +8,9 @@
 #include "rbsim/dynamics/joint.h"
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
+#include "scene/joint_keys.h"
 
 namespace rbsim::scene_detail {
-
-inline constexpr std::initializer_list<const char*> kJointKeys = {
-    "name",   "type",     "body_a",       "body_b",       "anchor",        "axis",
-    "motor",  "limits",   "cone",         "twist",        "spring",        "friction",
-    "linear_hertz", "linear_damping_ratio", "angular_hertz", "angular_damping_ratio", "collide_connected"};
 
 // What a joint needs to know of the bodies it may name: per body its name and whether it is
 // dynamic (body_a must be).
@@ -34,19 +30,6 @@ struct JointBodies {
 // parse and enter a World in 0.39 s on our 2-core machine, so the limit is a few seconds; a 64 MB
 // scene file could hold 1.6 million of the shortest ({"type":"ball","body_a":"a","body_b":"b"}).
 inline constexpr std::size_t kMaxJoints = 1'000'000;
-
-// A motor's physical ranges: |speed| up to 1e5 rad/s (a million rpm, past any real rotor) and a
-// torque up to 1e12 N m (a hundred thousand times a ship's propeller shaft). Beyond them a motor
-// is a typo, and 1e300 N m overflowed the impulse h tau into a motor that did nothing.
-inline constexpr double kMaxMotorSpeed = 1e5;    // [rad/s]
-inline constexpr double kMaxMotorTorque = 1e12;  // [N m]
-// A slider motor's force and a joint's friction share that bound ([N], [N m]); a spring's
-// frequency stops at 1e6 Hz, beyond any substep rate a scene can ask for (it would be rigid).
-inline constexpr double kMaxMotorForce = 1e12;   // [N]
-inline constexpr double kMaxJointFriction = 1e12;  // [N m] or [N]
-inline constexpr double kMaxJointHertz = 1e6;    // [Hz]
-// A damping ratio past 1e6 is a typo: at 1 it is already critically damped.
-inline constexpr double kMaxJointDampingRatio = 1e6;  // [1]
 
 // One entry of "joints"; `solver` refuses joints under PGS, which does not solve them.
 JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settings& settings);

@@ -55,14 +55,14 @@ std::string nearestKey(const std::string& key, const std::vector<std::string>& k
   return best;
 }
 
-JsonObject::JsonObject(const nlohmann::json& value, std::string file, std::string path,
-                       std::initializer_list<const char*> allowed)
+JsonObject::JsonObject(const nlohmann::json& value, std::string file, std::string path, KeyNames allowed)
     : value_(value), file_(std::move(file)), path_(std::move(path)) {
   if (!value_.is_object()) {
     throw InputError(file_, path_.empty() ? "(top level)" : path_,
                      std::string("expected an object, got ") + typeName(value_));
   }
-  std::vector<std::string> known(allowed.begin(), allowed.end());
+  std::vector<std::string> known;
+  for (std::size_t i = 0; i < allowed.size(); ++i) known.emplace_back(allowed[i]);
   for (const auto& item : value_.items()) {
     if (std::find(known.begin(), known.end(), item.key()) != known.end()) continue;
     const std::string near = nearestKey(item.key(), known);
@@ -130,11 +130,13 @@ int JsonObject::positiveInt(const char* key, int fallback) const {
   return static_cast<int>(v.get<long long>());
 }
 
-void JsonObject::allowOnly(std::initializer_list<const char*> keys, const std::string& owner) const {
+void JsonObject::allowOnly(KeyNames keys, const std::string& owner) const {
   for (const auto& item : value_.items()) {
-    if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return item.key() == k; }) != keys.end()) continue;
+    bool known = false;
+    for (std::size_t i = 0; i < keys.size() && !known; ++i) known = item.key() == keys[i];
+    if (known) continue;
     std::string list;
-    for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+    for (std::size_t i = 0; i < keys.size(); ++i) list += (list.empty() ? "" : ", ") + std::string(keys[i]);
     fail(item.key().c_str(), "does not apply to " + owner + " (its keys: " + list + ")");
   }
 }
@@ -203,7 +205,7 @@ Vec3 JsonObject::positiveVec3(const char* key) const {
 
 std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
   if (!has(key)) return std::nullopt;
-  const JsonObject o = object(key, {"quaternion", "matrix", "axis_angle_deg", "euler_zyx_deg", "normalize"});
+  const JsonObject o = object(key, kOrientationKeys);
   // Normalising is the scene's choice ("normalize": true), never rbsim's: a quaternion or matrix
   // typed with a few digits is otherwise taken only when it is a rotation to within 1e-6.
   const bool normalize = o.boolean("normalize", false);
@@ -267,13 +269,12 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
   return quatFromAxisAngle(axis.stableNormalized() * (std::fmod(n[3], 360.0) * M_PI / 180.0));
 }
 
-JsonObject JsonObject::object(const char* key, std::initializer_list<const char*> allowed) const {
+JsonObject JsonObject::object(const char* key, KeyNames allowed) const {
   if (!has(key)) fail(key, "missing; an object is required");
   return JsonObject(value_.at(key), file_, pathOf(key), allowed);
 }
 
-std::vector<JsonObject> JsonObject::objectArray(const char* key,
-                                                std::initializer_list<const char*> allowed) const {
+std::vector<JsonObject> JsonObject::objectArray(const char* key, KeyNames allowed) const {
   std::vector<JsonObject> out;
   if (!has(key)) return out;
   const nlohmann::json& v = value_.at(key);

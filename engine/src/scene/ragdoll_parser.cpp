@@ -14,8 +14,6 @@ namespace rbsim::scene_detail {
 namespace {
 
 // A figure from a doll to a giant: 0.05 to 20 times a 1.8 m person.
-constexpr double kMinRagdollScale = 0.05;  // [1]
-constexpr double kMaxRagdollScale = 20.0;  // [1]
 
 }  // namespace
 
@@ -68,7 +66,7 @@ void parseRagdolls(const JsonObject& root, Scene& scene) {
     for (const std::string& bone : ragdollBodyNames(spawned.name)) taken.insert(bone);
   }
   const std::vector<JsonObject> blocks = root.objectArray(
-      "ragdolls", {"name", "position", "orientation", "velocity", "scale", "mass", "joint_friction", "joint_hertz", "joint_damping_ratio"});
+      "ragdolls", kRagdollKeys);
   std::set<std::string> given;
   for (const JsonObject& r : blocks) {
     if (r.has("name")) given.insert(r.string("name", ""));

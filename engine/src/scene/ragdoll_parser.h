@@ -5,7 +5,7 @@
 #include "rbsim/scene/scene.h"
 #include "rbsim/world/ragdoll.h"
 
-#include <initializer_list>
+#include "scene/spawn_keys.h"
 
 namespace rbsim::scene_detail {
 
@@ -13,10 +13,6 @@ namespace rbsim::scene_detail {
 // "joint_hertz", "joint_damping_ratio"}, ...]: each a RagdollDef in scene.ragdolls.
 void parseRagdolls(const JsonObject& root, Scene& scene);
 
-// The figure's own keys (all but name, position and velocity), as a spawn block's "ragdoll" has
-// them: orientation, scale, mass and the joints'.
-inline constexpr std::initializer_list<const char*> kRagdollFigureKeys = {"orientation", "scale", "mass", "joint_friction",
-                                                                          "joint_hertz", "joint_damping_ratio"};
 void parseRagdollFigure(const JsonObject& r, RagdollDef& def);
 
 }  // namespace rbsim::scene_detail

@@ -19,6 +19,7 @@
 #include "rbsim/scene/json_fields.h"
 #include "scene/particle_parser.h"
 #include "scene/ragdoll_parser.h"
+#include "scene/scene_file_keys.h"
 #include "scene/planar_parser.h"
 #include "rbsim/scene/scene_parts.h"
 #include "rbsim/world/made_names.h"
@@ -85,8 +86,7 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
-  const JsonObject root(document, file, "", {"title", "world", "view", "bodies", "planes", "spawn", "kill_volume", "particles",
-                                                 "soft_bodies", "planar", "joints", "ragdolls"});
+  const JsonObject root(document, file, "", scene_detail::kSceneKeys);
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
@@ -98,7 +98,7 @@ Scene parseScene(const nlohmann::json& document, const std::string& file, const 
   scene_detail::parseSpawns(root, baseDir, scene, &shapes);
   const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };
   if (root.has("kill_volume")) {
-    const JsonObject k = root.object("kill_volume", {"min", "max"});
+    const JsonObject k = root.object("kill_volume", scene_detail::kRegionKeys);
     scene.killVolume.min = k.boundedVec3("min", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     scene.killVolume.max = k.boundedVec3("max", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
     if (!(scene.killVolume.min.array() < scene.killVolume.max.array()).all()) k.fail("max", "expected every component > min's");

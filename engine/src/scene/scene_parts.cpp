@@ -16,10 +16,6 @@ namespace {
 
 // world.steps accepts at most 1e9 (json_fields' positiveInt); a duration may not ask for more.
 constexpr double kMaxSteps = 1e9;
-// Beyond this a video shows nothing a person can see, and it is most likely a typo.
-constexpr int kMaxFramesPerSecond = 240;  // [1/s]
-// A plot wider than an hour shows a minute as a few pixels; its history would be kept for nothing.
-constexpr double kMaxPlotSeconds = 3600.0;  // [s]
 
 }  // namespace
 
@@ -147,7 +143,7 @@ void parseWorldBlock(const JsonObject& w, Scene& scene) {
 
 void parseViewFields(const JsonObject& v, ViewDesc& view) {
   if (v.has("camera")) {
-    const JsonObject c = v.object("camera", {"eye", "target", "up", "fov_deg"});
+    const JsonObject c = v.object("camera", kCameraKeys);
     view.eye = c.vec3("eye", view.eye);
     view.target = c.vec3("target", view.target);
     view.up = c.vec3("up", view.up);
@@ -159,8 +155,8 @@ void parseViewFields(const JsonObject& v, ViewDesc& view) {
   if (v.has("size")) {
     const nlohmann::json& s = v.raw("size");
     if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer() ||
-        s[0].get<long long>() < 16 || s[1].get<long long>() < 16 || s[0].get<long long>() > 8192 ||
-        s[1].get<long long>() > 8192) {
+        s[0].get<long long>() < kMinFrameSide || s[1].get<long long>() < kMinFrameSide || s[0].get<long long>() > kMaxFrameSide ||
+        s[1].get<long long>() > kMaxFrameSide) {
       v.fail("size", "expected [width, height] in pixels, each an integer in [16, 8192]");
     }
     view.width = s[0].get<int>();

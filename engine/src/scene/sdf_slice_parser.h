@@ -6,8 +6,6 @@
 
 namespace rbsim {
 
-inline constexpr std::initializer_list<const char*> kSdfSliceKeys = {"body", "axis", "offset", "sweep_to"};
-
 // Checked against the body's grid: it must have one, and both offsets must lie within its extent
 // along the axis. InputError naming the file and the field.
 SdfSliceDesc parseSdfSlice(const JsonObject& o, const Scene& scene);

@@ -19,8 +19,6 @@ namespace rbsim::scene_detail {
 
 namespace {
 
-// More bodies than this in one block is almost certainly a typo for a smaller number.
-constexpr int kMaxSpawnCount = 100000;
 // Vertices of all spawned bodies together: each body keeps its world-frame vertices (24 B each)
 // and its collision shape, so this is ~0.5 GB of per-body geometry; the template's mesh is shared.
 constexpr double kMaxSpawnedVertices = 2e7;  // [vertices]
@@ -133,7 +131,7 @@ void parseSpawn(const JsonObject& s, const std::string& baseDir, Scene& scene, S
     const double aliveBursts = burstsAliveAtOnce(bursts, lifetime, period);
     const int seed = s.has("seed") ? s.positiveInt("seed", 1) : 1;
     const std::string prefix = s.string("name", defaultName);
-    const JsonObject region = s.object("region", {"min", "max"});
+    const JsonObject region = s.object("region", kRegionKeys);
     const Vec3 lo = region.boundedVec3("min", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start"),
                hi = region.boundedVec3("max", Vec3::Zero(), kMaxCoordinate, "m", "the farthest a body may start");
     if ((hi.array() < lo.array()).any()) region.fail("max", "expected every component >= min's");
@@ -222,8 +220,7 @@ void spawnRagdolls(const JsonObject& s, bool periodic, double bursts, SpawnerDef
 void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic, double bursts, SpawnerDef& spawner,
                  Scene& scene, ShapeCache* shapes, double& spawnedVertices) {
   // The template is parsed once (errors name spawn[i].body...), then copied: the mesh is shared.
-  const JsonObject body = s.object("body", {"shape", "shapes", "mass", "density", "inertia", "orientation", "color", "springs",
-                                             "restitution", "friction_static", "friction_kinetic", "fracture", "sdf", "filter"});
+  const JsonObject body = s.object("body", kSpawnBodyKeys);
   const std::size_t first = scene.bodies.size();
   const std::size_t springsBefore = scene.springs.size();
   parseBody(body, baseDir, scene, shapes);

@@ -11,17 +11,29 @@
 
 #include "rbsim/math/format_number.h"  // formatNumber, for the parsers' messages
 #include "rbsim/math/types.h"
+#include "rbsim/scene/scene_keys.h"
 
 namespace rbsim {
 
-// The largest count any integer key accepts; each key's own budget is usually lower.
-inline constexpr long long kMaxCount = 1'000'000'000;
+// The keys an object allows: a table of scene_keys.h or a list written in place.
+class KeyNames {
+ public:
+  // Held for the call it is passed to, within the full expression that made the list.
+  KeyNames(std::initializer_list<const char*> names) : names_(names), count_(names.size()) {}  // NOLINT: implicit
+  KeyNames(const KeyTable& table) : keys_(table.data), count_(table.size()) {}  // NOLINT: implicit
+  std::size_t size() const { return count_; }
+  const char* operator[](std::size_t i) const { return keys_ != nullptr ? keys_[i].name : names_.begin()[i]; }
+
+ private:
+  std::initializer_list<const char*> names_;
+  const SceneKey* keys_ = nullptr;
+  std::size_t count_ = 0;
+};
 
 class JsonObject {
  public:
   // Throws InputError if `value` is not an object or has a key outside `allowed`.
-  JsonObject(const nlohmann::json& value, std::string file, std::string path,
-             std::initializer_list<const char*> allowed);
+  JsonObject(const nlohmann::json& value, std::string file, std::string path, KeyNames allowed);
 
   bool has(const char* key) const { return value_.contains(key); }
   std::string pathOf(const char* key) const;
@@ -36,7 +48,7 @@ class JsonObject {
   int positiveInt(const char* key, int fallback) const;  // in [1, kMaxCount]
   // Keys that belong to another variant of this object (a sphere's "extents") are an error
   // naming `owner`, e.g. "a \"sphere\" shape", and listing the keys that apply.
-  void allowOnly(std::initializer_list<const char*> keys, const std::string& owner) const;
+  void allowOnly(KeyNames keys, const std::string& owner) const;
   bool boolean(const char* key, bool fallback) const;
   std::string string(const char* key, const std::string& fallback) const;
   std::string requiredString(const char* key) const;
@@ -51,8 +63,8 @@ class JsonObject {
   // only with "normalize": true is a quaternion normalised and a matrix replaced by the nearest
   // rotation (a matrix of determinant <= 0 is refused even then).
   std::optional<Quat> optionalOrientation(const char* key) const;
-  JsonObject object(const char* key, std::initializer_list<const char*> allowed) const;
-  std::vector<JsonObject> objectArray(const char* key, std::initializer_list<const char*> allowed) const;
+  JsonObject object(const char* key, KeyNames allowed) const;
+  std::vector<JsonObject> objectArray(const char* key, KeyNames allowed) const;
 
   [[noreturn]] void fail(const char* key, const std::string& problem) const;
 

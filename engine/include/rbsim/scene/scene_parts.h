@@ -10,18 +10,9 @@
 
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
+#include "rbsim/scene/world_keys.h"
 
 namespace rbsim {
-
-// The keys of a scene's "world" block.
-inline constexpr std::initializer_list<const char*> kWorldKeys = {
-    "gravity", "dt", "integrator", "drift_correction", "inertia", "duration", "steps", "sleep", "sleep_linear_speed",
-    "sleep_angular_speed", "time_to_sleep", "collisions", "ccd", "ccd_motion_fraction", "broad_phase",
-    "contact_margin", "contact_recycle_distance", "solver", "friction", "mesh_contact", "substeps", "contact_hertz",
-    "contact_damping_ratio", "contact_push_speed",
-    "velocity_iterations", "position_iterations", "restitution_threshold", "contact_slop", "position_correction",
-    "warm_starting", "warm_start_distance", "response", "log_queries", "query_log_capacity", "skip_idle_stages", "threads",
-    "particle_integrator"};
 
 // The "world" block into scene.settings, scene.duration and scene.particleIntegrator.
 void parseWorldBlock(const JsonObject& w, Scene& scene);
@@ -66,9 +57,6 @@ std::pair<Plane, Material> parsePlaneBlock(const nlohmann::json& plane, const st
 // `world`, whose settings must be the soft step's.
 JointDef parseJointBlock(const nlohmann::json& joint, const std::string& file, const std::string& path, const World& world);
 
-inline constexpr std::initializer_list<const char*> kViewKeys = {
-    "camera", "size", "fps", "overlay", "panel", "wireframe", "axes", "grid", "aabbs", "contacts", "vertices", "instancing", "selected", "follow",
-    "caption", "plots", "plot_of", "plot_seconds", "sdf_slice"};
 // The fields of a view block but "selected" (a body of the file: the caller's) into `view`.
 void parseViewFields(const JsonObject& v, ViewDesc& view);
 // What a single picture of a view block uses, over `view`: "camera", "overlay", "wireframe",
