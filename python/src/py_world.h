@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <unordered_set>
+#include <vector>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -26,6 +27,21 @@ struct PyBodyId {
   BodyId id;
   std::uint64_t world = 0;  // PyWorld::serial() of the World that gave it
 };
+
+// The contact events of every step of the last World.step(n) call, each with the World's step
+// count before it (event_arrays.cpp): World::contactEvents holds one step's.
+struct StepEvents {
+  ContactEvents events;
+  std::vector<std::uint64_t> beginStep, endStep, hitStep;
+  void clear() {
+    events.clear();
+    beginStep.clear();
+    endStep.clear();
+    hitStep.clear();
+  }
+};
+// Appends the World's last step's events (after a successful World::step).
+void gatherContactEvents(const World& world, StepEvents& out);
 
 class PyWorld {
  public:
@@ -96,12 +112,17 @@ class PyWorld {
   std::size_t index(const PyBodyId& id, const char* call) const;
   PyBodyId wrap(BodyId id) const { return {id, serial_}; }
   std::uint64_t serial() const { return serial_; }
+  const StepEvents& stepEvents() const {
+    waitIdle();
+    return stepEvents_;
+  }
 
  private:
   Scene scene_;  // settings, view, looks; inertiaMethods kept per body in the World's order
   World world_;
   std::unordered_set<std::string> names_;  // every body's, for add_body's duplicate check
   std::uint64_t serial_;                   // this World's number among those the module made
+  StepEvents stepEvents_;                  // of the last step() call's steps
   // Whether a step() runs, written with the GIL and the mutex held; a unique_ptr keeps PyWorld movable.
   struct Busy {
     std::mutex mutex;
@@ -116,6 +137,7 @@ void bindStateArrays(pybind11::class_<PyWorld>& world);
 void bindContacts(pybind11::class_<PyWorld>& world);  // contact_arrays.cpp
 void bindJoints(pybind11::class_<PyWorld>& world);     // joint_arrays.cpp
 void bindParticles(pybind11::class_<PyWorld>& world);  // particle_arrays.cpp
+void bindContactEvents(pybind11::class_<PyWorld>& world);  // event_arrays.cpp
 // World.get_state and set_state, and the settings a running World takes as properties
 // (world_state.cpp).
 void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);

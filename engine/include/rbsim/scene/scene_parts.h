@@ -19,7 +19,7 @@ inline constexpr std::initializer_list<const char*> kWorldKeys = {
     "sleep_angular_speed", "time_to_sleep", "collisions", "ccd", "ccd_motion_fraction", "broad_phase",
     "contact_margin", "contact_recycle_distance", "solver", "friction", "mesh_contact", "substeps", "contact_hertz",
     "contact_damping_ratio", "contact_push_speed",
-    "velocity_iterations", "position_iterations", "restitution_threshold", "contact_slop", "position_correction",
+    "velocity_iterations", "position_iterations", "restitution_threshold", "hit_event_speed", "contact_slop", "position_correction",
     "warm_starting", "warm_start_distance", "response", "log_queries", "query_log_capacity", "skip_idle_stages", "threads",
     "particle_integrator"};
 
