@@ -126,7 +126,8 @@ void ContactEventTracker::afterNarrowPhase(const World& world, const CollisionPi
     }
     Entry now = keys_[j++];
     if (i < touching_.size() && touching_[i].sameKey(now)) {
-      now.swapped = touching_[i++].swapped;  // named as its begin named it
+      now.swapped = touching_[i].swapped;  // named as its begin named it
+      now.hit = touching_[i++].hit;
     } else {
       const Contact& c = contacts[now.contact];
       const ContactPoint& p = c.manifold.points[deepest(c.manifold)];
@@ -137,18 +138,29 @@ void ContactEventTracker::afterNarrowPhase(const World& world, const CollisionPi
   haveNext_ = true;
 }
 
-void ContactEventTracker::afterSolve(const World& world, const std::vector<Contact>& contacts,
-                                     const ContactSolver& solver, double speed) {
+void ContactEventTracker::afterSolve(const World& world, const CollisionPipeline& collision,
+                                     const std::vector<Contact>& contacts, const ContactSolver& solver, double speed) {
   hits_.clear();
   solver.hits(speed, hits_);
+  if (hits_.empty()) return;
+  if (!haveNext_) {  // no narrow phase this step: the pairs are the last step's
+    next_ = touching_;
+    haveNext_ = true;
+  }
+  std::size_t firstNew = step_.hit.size();
   for (const ContactHit& hit : hits_) {
     const Contact& c = contacts[hit.contact];
+    const Entry key = keyOf(c, collision);
+    const auto at = std::lower_bound(next_.begin(), next_.end(), key);
+    if (at == next_.end() || !at->sameKey(key)) continue;  // not touching (cannot be: it was solved)
     const ContactHitEvent event{pairOfContact(c, world), hit.point, c.manifold.normal, hit.approachSpeed};
     // A grid pair's several manifolds are one pair of shapes: its fastest point.
-    if (!step_.hit.empty() && samePair(step_.hit.back().pair, event.pair)) {
+    if (step_.hit.size() > firstNew && samePair(step_.hit.back().pair, event.pair)) {
       if (event.approachSpeed > step_.hit.back().approachSpeed) step_.hit.back() = event;
       continue;
     }
+    if (at->hit) continue;
+    at->hit = true;
     step_.hit.push_back(event);
   }
 }

@@ -31,8 +31,12 @@ class ContactEventTracker {
   // After the narrow phase: this step's touching pairs against the last step's, into begin and
   // end events.
   void afterNarrowPhase(const World& world, const CollisionPipeline& collision);
-  // After the solver: its hits faster than `speed` (ContactSolver::hits) as events.
-  void afterSolve(const World& world, const std::vector<Contact>& contacts, const ContactSolver& solver, double speed);
+  // After the solver: its hits faster than `speed` (ContactSolver::hits) as events, the first of
+  // each pair's touching only. The soft step's speculative contact starts braking a falling body
+  // in the step before it lands, so one landing is two steps of impulses (Box3D would report
+  // both): the first is the hit, its approach speed the one the pair met with.
+  void afterSolve(const World& world, const CollisionPipeline& collision, const std::vector<Contact>& contacts,
+                  const ContactSolver& solver, double speed);
   // Body `index` breaks into pieces (World::breakBody), before its proxy is replaced: its pairs end.
   void bodyBroken(const World& world, const CollisionPipeline& collision, std::size_t index);
   // Bodies are destroyed (World::destroyBodies), before their ids go stale: `gone` per body index.
@@ -49,6 +53,7 @@ class ContactEventTracker {
     std::uint64_t hi = 0, lo = 0;  // the key: kind and first side; second side and both children
     std::uint32_t contact = 0;     // the contact it came from this step (kNoContact: kept asleep)
     bool swapped = false;          // A is the second side of the key (the begin named it so)
+    bool hit = false;              // a hit was reported since the pair began touching
     bool operator<(const Entry& o) const { return hi != o.hi ? hi < o.hi : lo < o.lo; }
     bool sameKey(const Entry& o) const { return hi == o.hi && lo == o.lo; }
   };

@@ -91,7 +91,7 @@ void World::solveContacts(bool withGravity) {
   static const std::vector<Contact> kNoContacts;
   const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_->contacts() : kNoContacts;
   solver_->solve({bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity});
-  contactEvents_->afterSolve(*this, contacts, *solver_, settings_.hitEventSpeed);
+  contactEvents_->afterSolve(*this, *collision_, contacts, *solver_, settings_.hitEventSpeed);
   checkFinite(solver_->advancedBodies());
 }
 

@@ -39,7 +39,9 @@ struct ContactEndEvent {
 
 // A point of the pair's manifold took a normal impulse this step while the two approached along
 // the normal faster than Settings::hitEventSpeed (Box3D's b3ContactHitEvent): the fastest such
-// point of the manifold.
+// point of the manifold. At most one a touching: the first step that pushes this fast after the
+// begin (a landing the soft step brakes over two steps is one hit); the pair must end and begin
+// again to be hit again.
 struct ContactHitEvent {
   ContactPair pair;
   Vec3 point = Vec3::Zero();    // world [m], midway between the surfaces
