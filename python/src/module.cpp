@@ -349,6 +349,7 @@ PYBIND11_MODULE(_rbsim, m) {
            "state_hash(self, /)\n--\n\n-> int: FNV-1a of every state's bits: equal hashes, identical runs");
   rbsim::python::bindStateArrays(world);
   rbsim::python::bindContacts(world);
+  rbsim::python::bindContactEvents(world);
   rbsim::python::bindJoints(world);
   rbsim::python::bindParticles(world);
   rbsim::python::bindWorldState(m, world);

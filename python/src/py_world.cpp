@@ -272,6 +272,7 @@ void PyWorld::step(long long steps) {
     }
   } idle{*busy_};
   std::exception_ptr failed;
+  stepEvents_.clear();  // the events of this call's steps, gathered after each
   for (long long done = 0; done < steps;) {
     const long long chunk = std::min(kStepsBetweenSignalChecks, steps - done);
     {
@@ -279,7 +280,10 @@ void PyWorld::step(long long steps) {
       // of theirs on this World waits (waitIdle).
       py::gil_scoped_release release;
       try {
-        for (long long i = 0; i < chunk; ++i) world_.step();
+        for (long long i = 0; i < chunk; ++i) {
+          world_.step();
+          gatherContactEvents(world_, stepEvents_);
+        }
       } catch (...) {
         failed = std::current_exception();  // a failed step is undone (World::step); raised below
       }

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <unordered_set>
+#include <vector>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -28,6 +29,21 @@ struct PyBodyId {
   BodyId id;
   std::uint64_t world = 0;  // PyWorld::serial() of the World that gave it
 };
+
+// The contact events of every step of the last World.step(n) call, each with the World's step
+// count before it (event_arrays.cpp): World::contactEvents holds one step's.
+struct StepEvents {
+  ContactEvents events;
+  std::vector<std::uint64_t> beginStep, endStep, hitStep;
+  void clear() {
+    events.clear();
+    beginStep.clear();
+    endStep.clear();
+    hitStep.clear();
+  }
+};
+// Appends the World's last step's events (after a successful World::step).
+void gatherContactEvents(const World& world, StepEvents& out);
 
 class PyWorld {
  public:
@@ -102,6 +118,10 @@ class PyWorld {
   PyBodyId wrap(BodyId id) const { return {id, serial_}; }
   std::uint64_t serial() const { return serial_; }
   const SceneBlocks& blocks() const { return blocks_; }  // what World.save_scene writes
+  const StepEvents& stepEvents() const {
+    waitIdle();
+    return stepEvents_;
+  }
 
  private:
   Scene scene_;  // settings, view, looks; inertiaMethods kept per body in the World's order
@@ -109,6 +129,7 @@ class PyWorld {
   std::unordered_set<std::string> names_;  // every body's, for add_body's duplicate check
   std::uint64_t serial_;                   // this World's number among those the module made
   SceneBlocks blocks_;                     // the blocks it was given, for World.save_scene
+  StepEvents stepEvents_;                  // of the last step() call's steps
   // Whether a step() runs, written with the GIL and the mutex held; a unique_ptr keeps PyWorld movable.
   struct Busy {
     std::mutex mutex;
@@ -123,6 +144,7 @@ void bindStateArrays(pybind11::class_<PyWorld>& world);
 void bindContacts(pybind11::class_<PyWorld>& world);  // contact_arrays.cpp
 void bindJoints(pybind11::class_<PyWorld>& world);     // joint_arrays.cpp
 void bindParticles(pybind11::class_<PyWorld>& world);  // particle_arrays.cpp
+void bindContactEvents(pybind11::class_<PyWorld>& world);  // event_arrays.cpp
 // World.get_state and set_state, and the settings a running World takes as properties
 // (world_state.cpp).
 void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);

@@ -6,6 +6,24 @@
 
 namespace rbsim {
 
+void ContactSolver::hits(double speed, std::vector<ContactHit>& out) const {
+  const std::vector<SolvedContactPoint>& solved = points();
+  for (std::size_t k = 0; k < solved.size();) {
+    const std::size_t contact = solved[k].contact;
+    ContactHit hit{contact, Vec3::Zero(), speed};
+    bool found = false;
+    for (; k < solved.size() && solved[k].contact == contact; ++k) {
+      const SolvedContactPoint& p = solved[k];
+      if (-p.approachVelocity > hit.approachSpeed && p.normalImpulse > 0.0) {
+        hit.approachSpeed = -p.approachVelocity;
+        hit.point = p.position;
+        found = true;
+      }
+    }
+    if (found) out.push_back(hit);
+  }
+}
+
 std::unique_ptr<ContactSolver> makeContactSolver(Settings::ContactSolverMethod method) {
   if (method == Settings::ContactSolverMethod::Pgs) return std::make_unique<PgsSolver>();
   if (method == Settings::ContactSolverMethod::Lcp) return std::make_unique<LcpSolver>();

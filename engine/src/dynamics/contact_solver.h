@@ -34,6 +34,15 @@ struct SolverInput {
   bool addGravity = true;
 };
 
+// A manifold of the last solve that was hit (Box3D's hit events, src/solver.c and
+// contact_solver.c): a point took a normal impulse while the bodies approached along the normal,
+// before the solve, faster than a speed. The speculative points that took none only came near.
+struct ContactHit {
+  std::size_t contact = 0;         // index into the contacts solved
+  Vec3 point = Vec3::Zero();       // the fastest such point [m]
+  double approachSpeed = 0.0;      // -u_rel,N there before the solve [m/s]
+};
+
 // The material of a contact: the two sides' (a compound body's touching child's), combined.
 inline Material contactMaterial(const SolverInput& input, const Contact& contact) {
   const auto of = [&](std::size_t body, std::uint16_t child) -> const Material& {
@@ -62,6 +71,10 @@ class ContactSolver {
   virtual void solve(const SolverInput& input) = 0;
   // Every contact point of the last solve with the impulse it received.
   virtual const std::vector<SolvedContactPoint>& points() const = 0;
+  // The manifolds of the last solve hit faster than Settings::hitEventSpeed, in contact order,
+  // appended to `out`. This one reads points(); a solver whose points are built only when asked
+  // keeps its hits as it solves (the soft step: soft_step_finish.cpp).
+  virtual void hits(double speed, std::vector<ContactHit>& out) const;
   // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
   virtual void forget() = 0;
   // Bodies were destroyed and others moved into their indices (World::destroyBodies,

@@ -179,13 +179,21 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies) {
     Cached cache;
     cache.key = c.key;
     cache.count = static_cast<int>(c.pointCount);
+    ContactHit hit{c.contact, Vec3::Zero(), hitSpeed_};
     for (std::size_t j = 0; j < c.pointCount; ++j) {
       const Point& p = points_[c.firstPoint + j];
+      const PointReport& r = reports_[c.firstPoint + j];
       cache.localPoints[j] = frames_[c.firstPoint + j].localB;
       cache.normalImpulses[j] = p.normalImpulse;
-      cache.sliding[j] = reports_[c.firstPoint + j].sliding;
+      cache.sliding[j] = r.sliding;
       cache.frictionImpulses[j] = p.tangentImpulse[0] * c.tangent1 + p.tangentImpulse[1] * c.tangent2;
+      // A hit (ContactSolver::hits): here, where the report is read anyway, costs no pass of its own.
+      if (-r.relativeVelocity > hit.approachSpeed && r.totalNormalImpulse > 0.0) {
+        hit.approachSpeed = -r.relativeVelocity;
+        hit.point = r.position;
+      }
     }
+    if (hit.approachSpeed > hitSpeed_) hits_.push_back(hit);
     cache.sticking = !c.slipping;
     nextCache_.push_back(cache);
   }

@@ -53,6 +53,7 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
 void SoftStepSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) {
   clearAdvanced();
   solved_.clear();
+  hits_.clear();
   reported_ = true;
   // A turned pair: the anchors were the moved body's (B); they become the partner's, and the
   // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
@@ -421,6 +422,8 @@ void SoftStepSolver::solve(const SolverInput& input) {
   frames_.clear();
   reports_.clear();
   solved_.clear();
+  hits_.clear();
+  hitSpeed_ = settings.hitEventSpeed;
   reported_ = true;
   joints_.clear();
 

@@ -50,6 +50,7 @@ class SoftStepSolver final : public ContactSolver {
     cache_.clear();
     cacheIndex_.clear();
     solved_.clear();
+    hits_.clear();
     reported_ = true;
   }
   void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
@@ -65,6 +66,12 @@ class SoftStepSolver final : public ContactSolver {
   const std::vector<SolvedContactPoint>& points() const override {
     if (!reported_) report();
     return solved_;
+  }
+  // Kept by finish(), which reads each point's report anyway, at Settings::hitEventSpeed.
+  void hits(double speed, std::vector<ContactHit>& out) const override {
+    for (const ContactHit& hit : hits_) {
+      if (hit.approachSpeed > speed) out.push_back(hit);
+    }
   }
 
  private:
@@ -265,6 +272,8 @@ class SoftStepSolver final : public ContactSolver {
   std::vector<std::size_t> advancedList_;
   mutable std::vector<SolvedContactPoint> solved_;
   mutable bool reported_ = true;  // solved_ is this step's (or there is no step to report)
+  std::vector<ContactHit> hits_;  // the last solve's, in constraint (contact) order
+  double hitSpeed_ = 0.0;         // Settings::hitEventSpeed of the last solve [m/s]
   std::vector<Cached> cache_, nextCache_;  // sorted by key
   KeyIndex cacheIndex_;  // cache_'s entries by key (cached()), rebuilt by indexCache()
   Softness softness_;  // of every contact this step

@@ -95,6 +95,7 @@ void parseWorldSettings(const JsonObject& w, Settings& s) {
   s.velocityIterations = integer("velocity_iterations", s.velocityIterations);
   s.positionIterations = integer("position_iterations", s.positionIterations);
   s.restitutionThreshold = w.number("restitution_threshold", s.restitutionThreshold);
+  s.hitEventSpeed = w.number("hit_event_speed", s.hitEventSpeed);
   s.contactSlop = w.number("contact_slop", s.contactSlop);
   s.positionCorrection = w.number("position_correction", s.positionCorrection);
   s.warmStarting = w.boolean("warm_starting", s.warmStarting);

@@ -43,6 +43,7 @@ nlohmann::json worldBlockJson(const Scene& scene) {
   w["velocity_iterations"] = s.velocityIterations;
   w["position_iterations"] = s.positionIterations;
   w["restitution_threshold"] = s.restitutionThreshold;
+  w["hit_event_speed"] = s.hitEventSpeed;
   w["contact_slop"] = s.contactSlop;
   w["position_correction"] = s.positionCorrection;
   w["warm_starting"] = s.warmStarting;

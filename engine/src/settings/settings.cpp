@@ -71,6 +71,7 @@ SettingsProblem checkSettings(const Settings& s) {
     return {"position_iterations", "expected 0 or more and " + sweeps};
   }
   if (!within(s.restitutionThreshold, 0.0, inf)) return {"restitution_threshold", "expected a finite speed >= 0 m/s"};
+  if (!within(s.hitEventSpeed, 0.0, inf)) return {"hit_event_speed", "expected a finite speed >= 0 m/s"};
   if (!within(s.contactSlop, 0.0, kMaxContactTolerance)) {
     return {"contact_slop", "expected a distance in [0, 1] m (a tolerance, not a reach)"};
   }

@@ -9,6 +9,7 @@
 #include "rbsim/world/world.h"
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
+#include "world/contact_event_tracker.h"
 #include "body/body_removal.h"
 
 #include "rbsim/fracture/fracture.h"
@@ -89,6 +90,10 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     listed[id.slot] = 1;
   }
   if (ids.empty()) return;
+  // Their touching pairs end, named while the ids are still valid.
+  std::vector<char> gone(bodies_.size(), 0);
+  for (const BodyId id : ids) gone[slots_[id.slot].index] = 1;
+  contactEvents_->bodiesRemoving(*this, *collision_, gone);
   // The ids, as destroyBody one after another: each slot's generation moves on (every copy of the
   // id is now stale) and the slot joins the free list; the last body moves into the removed
   // one's index, keeping its slot, which now points there.
@@ -109,6 +114,7 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     slotOfBody_.pop_back();
   }
   const BodyRemoval removal(bodies_.size(), std::move(steps));
+  contactEvents_->bodiesRemoved(removal);
   // Whatever rested on a removed body must notice it is gone (as Box2D's b2DestroyBody wakes its
   // contacts); the contacts follow their bodies.
   for (const std::size_t touched : collision_->removeBodies(removal)) bodies_[touched].wake();

@@ -6,6 +6,7 @@
 
 #include "rbsim/world/world.h"
 #include "world/collision_pipeline.h"
+#include "world/contact_event_tracker.h"
 
 #include "rbsim/fracture/fracture.h"
 
@@ -33,6 +34,7 @@ void World::breakBody(std::size_t body, double impulse) {
   // The pieces start from the state the solver left: the impulse that broke the body is in it.
   std::vector<BodyDef> pieces = fracturePieces(bodies_[body], *pattern, bodyMaterials_[body]);
   FractureEvent event{time(), idAt(body), {}, impulse};
+  contactEvents_->bodyBroken(*this, *collision_, body);  // a piece that touches on begins anew
   bodies_[body] = RigidBody(pieces.front());
   bodySolids_[body] = bodySolidOf(pieces.front());
   collision_->replaceBody(body, bodies_[body], bodySolids_[body]);

@@ -80,6 +80,7 @@ class CollisionPipeline {
   // Broad-phase proxy ids: the bodies' indices until a body is destroyed, bodyOfProxy after.
   const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
   std::size_t bodyOfProxy(ProxyId proxy) const { return bodyOfProxy_.at(proxy); }
+  ProxyId proxyOf(std::size_t body) const { return proxies_[body]; }  // kept while the body lives
   const std::vector<Contact>& contacts() const { return contacts_; }
   // Of this step's contacts, how many were recycled rather than collided (Box3D's profile count).
   std::size_t recycledCount() const { return recycledCount_; }

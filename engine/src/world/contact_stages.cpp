@@ -6,6 +6,7 @@
 
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
+#include "world/contact_event_tracker.h"
 #include "math/disjoint_sets.h"
 #include "rbsim/world/world.h"
 
@@ -19,7 +20,9 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
     if (settings_.detectCollisions) collision_->broadPhase(bodies_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
+    if (!settings_.detectCollisions) return;
+    collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
+    contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   const bool sweeping = settings_.continuousCollision && collides && awake;
   if (sweeping) collision_->rememberStart(bodies_);
@@ -47,7 +50,9 @@ void World::stepIntegrateFirst(bool withGravity, bool awake, bool collides) {
     if (settings_.detectCollisions) collision_->broadPhase(bodies_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
-    if (settings_.detectCollisions) collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
+    if (!settings_.detectCollisions) return;
+    collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
+    contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   runStage(Stage::SolveContacts, awake && !collision_->contacts().empty() && settings_.respondToContacts, [&] {
     if (settings_.respondToContacts) solveContacts(withGravity);
@@ -86,6 +91,7 @@ void World::solveContacts(bool withGravity) {
   static const std::vector<Contact> kNoContacts;
   const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_->contacts() : kNoContacts;
   solver_->solve({bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity});
+  contactEvents_->afterSolve(*this, *collision_, contacts, *solver_, settings_.hitEventSpeed);
   checkFinite(solver_->advancedBodies());
 }
 

@@ -15,6 +15,7 @@
 #include "math/fnv.h"
 #include "rbsim/fracture/fracture.h"
 #include "world/collision_pipeline.h"
+#include "world/contact_event_tracker.h"
 #include "math/disjoint_sets.h"
 #include "rbsim/integrate/simulation_error.h"
 
@@ -64,7 +65,8 @@ const Settings& checked(const Settings& settings) {
 World::World(const Settings& settings)
     : settings_(checked(settings)),
       collision_(std::make_unique<CollisionPipeline>(settings_)),
-      solver_(makeContactSolver(settings_.solver)) {}
+      solver_(makeContactSolver(settings_.solver)),
+      contactEvents_(std::make_unique<ContactEventTracker>()) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
@@ -101,6 +103,7 @@ World::World(const World& other)
       fractureEvents_(other.fractureEvents_),
       collision_(std::make_unique<CollisionPipeline>(*other.collision_)),
       solver_(other.solver_->clone()),
+      contactEvents_(std::make_unique<ContactEventTracker>(*other.contactEvents_)),
       islandRestingTime_(other.islandRestingTime_),
       joints_(other.joints_),
       pendingEvents_(other.pendingEvents_),
@@ -158,6 +161,7 @@ void World::setSettings(const Settings& settings) {
 const std::vector<Contact>& World::contacts() const { return collision_->contacts(); }
 std::size_t World::recycledContacts() const { return collision_->recycledCount(); }
 const std::vector<SolvedContactPoint>& World::contactPoints() const { return solver_->points(); }
+const ContactEvents& World::contactEvents() const { return contactEvents_->events(); }
 
 void World::addForce(const ScriptedForce& force) {
   if (!isValid(force.body)) throw std::invalid_argument("scripted force names no body");
@@ -230,12 +234,14 @@ void World::step() {
   }
   spawnedNow_.clear();
   removedNow_.clear();
+  contactEvents_->beginStep();
   bool saved = false;
   try {
     runStage(Stage::SpawnAndRemove, !spawners_.empty() || !killVolume_.empty(), [&] { spawnAndRemove(); });
     saveUndo();
     saved = true;
     advance();
+    contactEvents_->commit();
   } catch (...) {
     if (before) {
       restoreWhole(std::move(*before));

@@ -56,6 +56,7 @@ const std::vector<Key>& keys() {
       {"velocity_iterations", "20", [](const Settings& s) { return s.velocityIterations == 20; }, "1001"},
       {"position_iterations", "2", [](const Settings& s) { return s.positionIterations == 2; }, "-1"},
       {"restitution_threshold", "0", [](const Settings& s) { return s.restitutionThreshold == 0.0; }, "-1"},
+      {"hit_event_speed", "2.5", [](const Settings& s) { return s.hitEventSpeed == 2.5; }, "-1"},
       {"contact_slop", "0.001", [](const Settings& s) { return s.contactSlop == 0.001; }, "2"},
       {"position_correction", "0.5", [](const Settings& s) { return s.positionCorrection == 0.5; }, "1.5"},
       {"warm_starting", "false", [](const Settings& s) { return !s.warmStarting; }, ""},

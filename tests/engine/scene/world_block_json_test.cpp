@@ -34,7 +34,7 @@ TEST(WorldBlockJson, EveryKeyChangedReadsBackAsWritten) {
       {"collisions", false}, {"ccd", false}, {"ccd_motion_fraction", 0.3}, {"broad_phase", "brute-force"},
       {"contact_margin", 0.03}, {"contact_recycle_distance", 0.002}, {"solver", "pgs"}, {"friction", "seed000"}, {"mesh_contact", "triangles"},
       {"substeps", 7}, {"contact_hertz", 45.0}, {"contact_damping_ratio", 3.0}, {"contact_push_speed", 2.5},
-      {"velocity_iterations", 13}, {"position_iterations", 5}, {"restitution_threshold", 0.4}, {"contact_slop", 0.007},
+      {"velocity_iterations", 13}, {"position_iterations", 5}, {"restitution_threshold", 0.4}, {"hit_event_speed", 3.0}, {"contact_slop", 0.007},
       {"position_correction", 0.3}, {"warm_starting", false}, {"warm_start_distance", 0.04}, {"response", false},
       {"log_queries", true}, {"query_log_capacity", 123}, {"skip_idle_stages", false}, {"threads", 3},
       {"particle_integrator", "explicit-euler"}};

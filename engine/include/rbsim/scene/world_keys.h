@@ -49,6 +49,7 @@ inline constexpr SceneKey kWorldKeyTable[] = {
     key("velocity_iterations", KeyType::Integer, "PGS velocity sweeps a step").within(1.0, kMaxSolverIterations),
     key("position_iterations", KeyType::Integer, "PGS position sweeps a step").within(0.0, kMaxSolverIterations),
     key("restitution_threshold", KeyType::Number, "approaches slower than this do not bounce [m/s]").atLeast(0.0),
+    key("hit_event_speed", KeyType::Number, "slowest approach a contact hit event reports [m/s]").atLeast(0.0),
     key("contact_slop", KeyType::Number, "penetration left uncorrected [m]").within(0.0, kMaxContactTolerance),
     key("position_correction", KeyType::Number, "PGS share of the penetration corrected a step").within(0.0, 1.0),
     key("warm_starting", KeyType::Boolean, "start the solver from the last step's impulses"),

@@ -15,6 +15,7 @@
 #include "rbsim/body/material.h"
 #include "rbsim/dynamics/step_listener.h"
 #include "rbsim/body/body_id.h"
+#include "rbsim/world/contact_events.h"
 #include "rbsim/world/kinematic_motion.h"
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spawner.h"
@@ -26,6 +27,7 @@ namespace rbsim {
 struct FracturePattern;    // fracture/fracture.h: a body's pieces, kept per body
 class CollisionPipeline;   // the collision stages (engine/src/world/collision_pipeline.h)
 class ContactSolver;       // the contact solver's seam (engine/src/dynamics/contact_solver.h)
+class ContactEventTracker;  // contact events step to step (engine/src/world/contact_event_tracker.h)
 struct WorldAccess;        // the internals tests read (engine/src/world/world_access.h)
 
 // Stages of World::step, in order (as Box2D v3's b2SolverStageType): names for timing and for
@@ -184,6 +186,11 @@ class World {
   // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
   const std::vector<BodySolid>& bodySolids() const { return bodySolids_; }
   const std::vector<FractureEvent>& fractureEvents() const { return fractureEvents_; }
+  // The pairs of shapes that began and stopped touching in the last step, and those hit faster
+  // than Settings::hitEventSpeed (world/contact_events.h; Box3D's b3World_GetContactEvents).
+  // The ends of pairs whose body destroyBody removed between steps come with the next step's.
+  // A step that throws leaves the last successful step's events in place.
+  const ContactEvents& contactEvents() const;
   const Material& planeMaterial(std::size_t plane) const { return planeMaterials_[plane]; }
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
 
@@ -249,6 +256,7 @@ class World {
   std::vector<FractureEvent> fractureEvents_;
   std::unique_ptr<CollisionPipeline> collision_;
   std::unique_ptr<ContactSolver> solver_;  // Settings::solver's
+  std::unique_ptr<ContactEventTracker> contactEvents_;  // never null but in a moved-from World
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
   std::vector<Joint> joints_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed

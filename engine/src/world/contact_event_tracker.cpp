@@ -1,0 +1,224 @@
+#include "world/contact_event_tracker.h"
+
+#include <algorithm>
+
+#include "body/body_removal.h"
+#include "rbsim/world/world.h"
+#include "world/collision_pipeline.h"
+
+namespace rbsim {
+
+namespace {
+
+constexpr std::uint64_t kPlaneBit = std::uint64_t{1} << 63;  // plane pairs after body pairs, as listed
+constexpr std::uint64_t kChildMask = 0xffff;
+
+std::uint64_t secondAndChildren(std::uint64_t second, std::uint16_t childFirst, std::uint16_t childSecond) {
+  return (second << 32) | (std::uint64_t{childFirst} << 16) | std::uint64_t{childSecond};
+}
+
+// The deepest point of a manifold with points.
+int deepest(const ContactManifold& m) {
+  int k = 0;
+  for (int i = 1; i < m.count; ++i) {
+    if (m.points[i].depth > m.points[k].depth) k = i;
+  }
+  return k;
+}
+
+ContactPair pairOfContact(const Contact& c, const World& world) {
+  ContactPair pair;
+  if (c.kind == Contact::Kind::PlaneBody) {
+    pair.plane = static_cast<std::int64_t>(c.a);
+  } else {
+    pair.bodyA = world.idAt(c.a);
+  }
+  pair.bodyB = world.idAt(c.b);
+  pair.childA = c.childA;
+  pair.childB = c.childB;
+  return pair;
+}
+
+bool samePair(const ContactPair& x, const ContactPair& y) {
+  return x.bodyA == y.bodyA && x.bodyB == y.bodyB && x.plane == y.plane && x.childA == y.childA && x.childB == y.childB;
+}
+
+}  // namespace
+
+ContactEventTracker::Entry ContactEventTracker::keyOf(const Contact& c, const CollisionPipeline& collision) {
+  Entry e;
+  if (c.kind == Contact::Kind::PlaneBody) {
+    e.hi = kPlaneBit | std::uint64_t{c.a};
+    e.lo = secondAndChildren(c.b, c.childA, c.childB);
+    return e;
+  }
+  const std::uint64_t pa = collision.proxyOf(c.a), pb = collision.proxyOf(c.b);
+  e.swapped = pb < pa;
+  e.hi = e.swapped ? pb : pa;
+  e.lo = e.swapped ? secondAndChildren(pa, c.childB, c.childA) : secondAndChildren(pb, c.childA, c.childB);
+  return e;
+}
+
+ContactPair ContactEventTracker::pairOf(const Entry& e, const World& world, const CollisionPipeline& collision) const {
+  ContactPair pair;
+  const auto first = static_cast<std::uint16_t>((e.lo >> 16) & kChildMask);
+  const auto second = static_cast<std::uint16_t>(e.lo & kChildMask);
+  const std::size_t secondIndex = static_cast<std::size_t>(e.lo >> 32);
+  if ((e.hi & kPlaneBit) != 0) {
+    pair.plane = static_cast<std::int64_t>(e.hi & ~kPlaneBit);
+    pair.bodyB = world.idAt(secondIndex);
+    pair.childA = first;
+    pair.childB = second;
+    return pair;
+  }
+  const BodyId low = world.idAt(collision.bodyOfProxy(static_cast<ProxyId>(e.hi)));
+  const BodyId high = world.idAt(collision.bodyOfProxy(static_cast<ProxyId>(secondIndex)));
+  pair.bodyA = e.swapped ? high : low;
+  pair.bodyB = e.swapped ? low : high;
+  pair.childA = e.swapped ? second : first;
+  pair.childB = e.swapped ? first : second;
+  return pair;
+}
+
+bool ContactEventTracker::asleep(const Entry& e, const World& world, const CollisionPipeline& collision) const {
+  const std::vector<RigidBody>& bodies = world.bodies();
+  const std::size_t second = static_cast<std::size_t>(e.lo >> 32);
+  if ((e.hi & kPlaneBit) != 0) return !bodies[second].awake();
+  return !bodies[collision.bodyOfProxy(static_cast<ProxyId>(e.hi))].awake() &&
+         !bodies[collision.bodyOfProxy(static_cast<ProxyId>(second))].awake();
+}
+
+void ContactEventTracker::beginStep() {
+  haveNext_ = false;
+  step_.clear();
+}
+
+void ContactEventTracker::afterNarrowPhase(const World& world, const CollisionPipeline& collision) {
+  const std::vector<Contact>& contacts = collision.contacts();
+  keys_.clear();
+  bool sorted = true;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    if (contacts[i].manifold.count == 0) continue;
+    Entry e = keyOf(contacts[i], collision);
+    e.contact = static_cast<std::uint32_t>(i);
+    if (!keys_.empty() && e < keys_.back()) sorted = false;
+    keys_.push_back(e);
+  }
+  // Out of order only after destroyBody turned a compound pair round: the list order is kept
+  // among equal keys (a grid pair's several manifolds), so the first is the one reported.
+  if (!sorted) std::stable_sort(keys_.begin(), keys_.end());
+  next_.clear();
+  std::size_t i = 0, j = 0;
+  while (i < touching_.size() || j < keys_.size()) {
+    if (j < keys_.size() && j > 0 && keys_[j].sameKey(keys_[j - 1])) {
+      ++j;  // a further manifold of the same pair of shapes
+      continue;
+    }
+    if (j == keys_.size() || (i < touching_.size() && touching_[i] < keys_[j])) {
+      const Entry& was = touching_[i++];
+      if (asleep(was, world, collision)) {
+        next_.push_back(was);
+        next_.back().contact = kNoContact;
+      } else {
+        step_.end.push_back({pairOf(was, world, collision)});
+      }
+      continue;
+    }
+    Entry now = keys_[j++];
+    if (i < touching_.size() && touching_[i].sameKey(now)) {
+      now.swapped = touching_[i].swapped;  // named as its begin named it
+      now.hit = touching_[i++].hit;
+    } else {
+      const Contact& c = contacts[now.contact];
+      const ContactPoint& p = c.manifold.points[deepest(c.manifold)];
+      step_.begin.push_back({pairOfContact(c, world), p.position, c.manifold.normal, p.depth});
+    }
+    next_.push_back(now);
+  }
+  haveNext_ = true;
+}
+
+void ContactEventTracker::afterSolve(const World& world, const CollisionPipeline& collision,
+                                     const std::vector<Contact>& contacts, const ContactSolver& solver, double speed) {
+  hits_.clear();
+  solver.hits(speed, hits_);
+  if (hits_.empty()) return;
+  if (!haveNext_) {  // no narrow phase this step: the pairs are the last step's
+    next_ = touching_;
+    haveNext_ = true;
+  }
+  std::size_t firstNew = step_.hit.size();
+  for (const ContactHit& hit : hits_) {
+    const Contact& c = contacts[hit.contact];
+    const Entry key = keyOf(c, collision);
+    const auto at = std::lower_bound(next_.begin(), next_.end(), key);
+    if (at == next_.end() || !at->sameKey(key)) continue;  // not touching (cannot be: it was solved)
+    const ContactHitEvent event{pairOfContact(c, world), hit.point, c.manifold.normal, hit.approachSpeed};
+    // A grid pair's several manifolds are one pair of shapes: its fastest point.
+    if (step_.hit.size() > firstNew && samePair(step_.hit.back().pair, event.pair)) {
+      if (event.approachSpeed > step_.hit.back().approachSpeed) step_.hit.back() = event;
+      continue;
+    }
+    if (at->hit) continue;
+    at->hit = true;
+    step_.hit.push_back(event);
+  }
+}
+
+template <typename Names>
+void ContactEventTracker::endWhere(std::vector<Entry>& list, const World& world, const CollisionPipeline& collision,
+                                   Names&& names, std::vector<ContactEndEvent>& ends) {
+  std::size_t kept = 0;
+  for (const Entry& e : list) {
+    const std::size_t second = static_cast<std::size_t>(e.lo >> 32);
+    const bool plane = (e.hi & kPlaneBit) != 0;
+    const bool named = plane ? names(second)
+                             : names(collision.bodyOfProxy(static_cast<ProxyId>(e.hi))) ||
+                                   names(collision.bodyOfProxy(static_cast<ProxyId>(second)));
+    if (named) {
+      ends.push_back({pairOf(e, world, collision)});
+    } else {
+      list[kept++] = e;
+    }
+  }
+  list.resize(kept);
+}
+
+void ContactEventTracker::bodyBroken(const World& world, const CollisionPipeline& collision, std::size_t index) {
+  if (!haveNext_) {  // no narrow phase this step: the pairs are the last step's
+    next_ = touching_;
+    haveNext_ = true;
+  }
+  endWhere(next_, world, collision, [index](std::size_t body) { return body == index; }, step_.end);
+}
+
+void ContactEventTracker::bodiesRemoving(const World& world, const CollisionPipeline& collision,
+                                         const std::vector<char>& gone) {
+  endWhere(touching_, world, collision, [&gone](std::size_t body) { return gone[body] != 0; }, queuedEnds_);
+}
+
+void ContactEventTracker::bodiesRemoved(const BodyRemoval& removal) {
+  bool renumbered = false;
+  for (Entry& e : touching_) {
+    if ((e.hi & kPlaneBit) == 0) continue;  // proxies stay
+    const std::uint32_t to = removal.newIndex(static_cast<std::size_t>(e.lo >> 32));
+    if (to == (e.lo >> 32)) continue;
+    e.lo = (std::uint64_t{to} << 32) | (e.lo & 0xffffffffull);
+    renumbered = true;
+  }
+  if (renumbered) std::sort(touching_.begin(), touching_.end());
+}
+
+void ContactEventTracker::commit() {
+  if (haveNext_) touching_.swap(next_);
+  haveNext_ = false;
+  events_.begin.swap(step_.begin);
+  events_.hit.swap(step_.hit);
+  events_.end.clear();
+  events_.end.insert(events_.end.end(), queuedEnds_.begin(), queuedEnds_.end());
+  events_.end.insert(events_.end.end(), step_.end.begin(), step_.end.end());
+  queuedEnds_.clear();
+  step_.clear();
+}
+
+}  // namespace rbsim

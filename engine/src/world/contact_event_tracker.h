@@ -1,0 +1,80 @@
+#pragma once
+// World::contactEvents (world/contact_events.h): which pairs of shapes began or stopped touching,
+// found by comparing each step's touching pairs with the last step's, as Box3D flags a contact
+// that started or stopped touching in its narrow phase (physics_world.c b3UpdateContacts); and
+// the hits the solver reports (ContactSolver::hits).
+//
+// A pair is keyed by what stays put from step to step: two bodies by their broad-phase proxies
+// (which outlive the index changes of destroyBody), a plane and a body by the plane and the body's
+// index (renumbered when bodies are removed). The narrow phase lists its contacts in the broad
+// phase's pair order, then plane by plane and body by body, which is the keys' order: each step's
+// keys come sorted (a sort is the fallback), and the comparison is one merge, O(contacts), with no
+// table. A pair both of whose sides are asleep keeps touching whatever the narrow phase says (a
+// sleeping pair of grid bodies is not collided, and an island asleep is not apart).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "dynamics/contact_solver.h"
+#include "rbsim/world/contact_events.h"
+
+namespace rbsim {
+
+class World;
+class CollisionPipeline;
+class BodyRemoval;
+
+class ContactEventTracker {
+ public:
+  // Before each step: whatever a failed attempt left is forgotten.
+  void beginStep();
+  // After the narrow phase: this step's touching pairs against the last step's, into begin and
+  // end events.
+  void afterNarrowPhase(const World& world, const CollisionPipeline& collision);
+  // After the solver: its hits faster than `speed` (ContactSolver::hits) as events, the first of
+  // each pair's touching only. The soft step's speculative contact starts braking a falling body
+  // in the step before it lands, so one landing is two steps of impulses (Box3D would report
+  // both): the first is the hit, its approach speed the one the pair met with.
+  void afterSolve(const World& world, const CollisionPipeline& collision, const std::vector<Contact>& contacts,
+                  const ContactSolver& solver, double speed);
+  // Body `index` breaks into pieces (World::breakBody), before its proxy is replaced: its pairs end.
+  void bodyBroken(const World& world, const CollisionPipeline& collision, std::size_t index);
+  // Bodies are destroyed (World::destroyBodies), before their ids go stale: `gone` per body index.
+  // Their pairs end, with this step's events or, between steps, the next step's.
+  void bodiesRemoving(const World& world, const CollisionPipeline& collision, const std::vector<char>& gone);
+  // After the removal: the plane pairs follow their bodies' new indices.
+  void bodiesRemoved(const BodyRemoval& removal);
+  // The step succeeded: its events are the World's until the next one succeeds.
+  void commit();
+  const ContactEvents& events() const { return events_; }
+
+ private:
+  struct Entry {
+    std::uint64_t hi = 0, lo = 0;  // the key: kind and first side; second side and both children
+    std::uint32_t contact = 0;     // the contact it came from this step (kNoContact: kept asleep)
+    bool swapped = false;          // A is the second side of the key (the begin named it so)
+    bool hit = false;              // a hit was reported since the pair began touching
+    bool operator<(const Entry& o) const { return hi != o.hi ? hi < o.hi : lo < o.lo; }
+    bool sameKey(const Entry& o) const { return hi == o.hi && lo == o.lo; }
+  };
+  static constexpr std::uint32_t kNoContact = UINT32_MAX;
+
+  static Entry keyOf(const Contact& contact, const CollisionPipeline& collision);
+  ContactPair pairOf(const Entry& entry, const World& world, const CollisionPipeline& collision) const;
+  bool asleep(const Entry& entry, const World& world, const CollisionPipeline& collision) const;
+  // The entries of `list` naming a body for which `names` is true end (into `ends`) and go.
+  template <typename Names>
+  void endWhere(std::vector<Entry>& list, const World& world, const CollisionPipeline& collision, Names&& names,
+                std::vector<ContactEndEvent>& ends);
+
+  std::vector<Entry> touching_;  // after the last step, sorted by key
+  std::vector<Entry> keys_;      // this step's contacts' keys (scratch)
+  std::vector<Entry> next_;      // this step's touching pairs, sorted
+  std::vector<ContactHit> hits_;  // the solver's (scratch)
+  bool haveNext_ = false;        // next_ is this step's (the narrow phase ran)
+  ContactEvents step_;           // this step's events so far
+  std::vector<ContactEndEvent> queuedEnds_;  // of bodies removed since the last step began
+  ContactEvents events_;         // the last successful step's
+};
+
+}  // namespace rbsim
