@@ -42,6 +42,8 @@ QueryTree::QueryTree(std::vector<Aabb> boxes) : boxes_(std::move(boxes)) {
   }
   nodes_.reserve(2 * n / kLeafItems + 1);
   build(0, n, 0, centres);
+  itemBoxes_.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) itemBoxes_[i] = boxes_[items_[i]];
 }
 
 std::uint32_t QueryTree::build(std::uint32_t begin, std::uint32_t end, int depth, const std::vector<Vec3>& centres) {
@@ -123,7 +125,20 @@ std::shared_ptr<const QueryTree> queryTree(const World& world) {
   if (!cache.tree || cache.version != world.geometryVersion()) {
     std::vector<Aabb> boxes(world.bodies().size());
     for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = queryBounds(world.bodies()[i]);
-    cache.tree = std::make_shared<const QueryTree>(std::move(boxes));
+    auto tree = std::make_shared<QueryTree>(std::move(boxes));
+    tree->proxies.resize(tree->items().size());
+    for (std::size_t k = 0; k < tree->proxies.size(); ++k) {
+      const RigidBody& body = world.bodies()[tree->items()[k]];
+      RayProxy& proxy = tree->proxies[k];
+      const ShapeType type = body.shape().type;
+      proxy.closedForm = !body.isCompound() && type != ShapeType::ConvexHull && type != ShapeType::Mesh;
+      if (!proxy.closedForm) continue;
+      proxy.shape = body.shape();
+      proxy.rotation = body.rotation();
+      proxy.position = body.position();
+      proxy.filter = body.filter();
+    }
+    cache.tree = std::move(tree);
     cache.version = world.geometryVersion();
   }
   return cache.tree;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "rbsim/collision/shape_queries.h"
 #include "rbsim/world/world.h"
 #include "world/body_queries.h"
 #include "world/query_tree.h"
@@ -37,8 +38,24 @@ std::optional<QueryHit> castOneRay(const World& world, const QueryTree& tree, co
                                 double maxDistance, const QueryFilter& filter) {
   std::optional<QueryHit> best;
   double reach = maxDistance;  // shrinks to the nearest hit so far
-  tree.walkRay(origin, d, reach, Vec3::Zero(), [&](std::uint32_t i, double& limit) {
-    if (std::optional<QueryHit> hit = rayBody(world.bodies()[i], origin, d, limit, filter)) {
+  tree.walkRay(origin, d, reach, Vec3::Zero(), [&](std::uint32_t i, std::uint32_t slot, double& limit) {
+    const RayProxy& proxy = tree.proxies[slot];
+    std::optional<QueryHit> hit;
+    if (proxy.closedForm) {
+      if (!passes(proxy.filter, filter)) return;
+      // As rayBody does for a body of one shape, from the copy.
+      const Mat3& R = proxy.rotation;
+      const std::optional<RayHit> local =
+          rayCast(proxy.shape, R.transpose() * (origin - proxy.position), R.transpose() * d, limit);
+      if (!local) return;
+      hit = QueryHit{};
+      hit->distance = local->fraction;
+      hit->normal = R * local->normal;
+      hit->point = origin + hit->distance * d;
+    } else {
+      hit = rayBody(world.bodies()[i], origin, d, limit, filter);
+    }
+    if (hit) {
       if (best && hit->distance >= best->distance) return;
       hit->body = world.idAt(i);
       limit = hit->distance;
@@ -152,7 +169,7 @@ std::optional<QueryHit> castShape(const World& world, const QueryShape& shape, c
   const Vec3 grow = 0.5 * start.extents(), centre = start.centre();
   std::optional<QueryHit> best;
   double reach = maxDistance;
-  queryTree(world)->walkRay(centre, d, reach, grow, [&](std::uint32_t i, double& limit) {
+  queryTree(world)->walkRay(centre, d, reach, grow, [&](std::uint32_t i, std::uint32_t, double& limit) {
     std::optional<QueryHit> hit = castBody(world.bodies()[i], p.shape, p.rotation, p.position, d, limit, filter);
     if (hit && (!best || hit->distance < best->distance)) {
       hit->body = world.idAt(i);
