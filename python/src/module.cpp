@@ -307,15 +307,6 @@ PYBIND11_MODULE(_rbsim, m) {
            "reference for integrator errors")
       .def("step", [](PyWorld& w, const py::object& steps) { w.step(intArgument(steps, "World.step()", "steps")); },
            py::arg("steps") = 1, "step(self, /, steps=1)\n--\n\nadvance by steps x dt (other Python threads run meanwhile)")
-      .def("ray_cast",
-           [](const PyWorld& w, const py::object& origin, const py::object& direction, const py::object& maxDistance) {
-             return w.rayCast(origin, direction, maxDistance);
-           },
-           py::arg("origin"), py::arg("direction"), py::arg("max_distance") = py::none(),
-           "ray_cast(self, /, origin, direction, max_distance=None)\n--\n\n-> dict | None: the first "
-           "body or plane the ray meets (asleep and static ones too): {\"body\": BodyId | None, \"plane\": int | None, "
-           "\"distance\": m, \"point\": (x, y, z), \"normal\": (x, y, z)}; a start inside hits at distance 0; "
-           "max_distance None: no limit")
       .def("is_valid",
            [](const PyWorld& w, const py::object& body) {
              const PyBodyId& id = bodyArgument(body, "World.is_valid()");
@@ -352,6 +343,7 @@ PYBIND11_MODULE(_rbsim, m) {
   rbsim::python::bindContactEvents(world);
   rbsim::python::bindJoints(world);
   rbsim::python::bindParticles(world);
+  rbsim::python::bindQueries(world);
   rbsim::python::bindWorldState(m, world);
   rbsim::python::bindRendering(m);
   rbsim::python::bindDisk(m, world);

@@ -12,7 +12,6 @@
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene_parts.h"
 #include "rbsim/world/made_names.h"
-#include "rbsim/world/ray_cast.h"
 #include "to_json.h"
 
 namespace py = pybind11;
@@ -311,29 +310,6 @@ void PyWorld::runOnWorld(const std::function<void(World&)>& work) {
     }
   } names{*this};
   work(world_);
-}
-
-py::object PyWorld::rayCast(const py::object& origin, const py::object& direction, const py::object& maxDistance) const {
-  constexpr const char* kCall = "World.ray_cast()";
-  const Vec3 o(finiteNumbers(origin, 3, "origin", kCall));
-  const Vec3 d(finiteNumbers(direction, 3, "direction", kCall));
-  // stableNorm: a squared norm under- or overflows for lengths below 1e-154 or above 1e154.
-  if (!(d.stableNorm() > 0.0)) throw InputError(kCall, "direction", "expected a non-zero direction");
-  double reach = std::numeric_limits<double>::infinity();
-  if (!maxDistance.is_none()) {
-    reach = finiteNumbers(py::make_tuple(maxDistance), 1, "max_distance", kCall)[0];
-    if (!(reach >= 0.0)) throw InputError(kCall, "max_distance", "expected a distance >= 0 [m], got " + formatNumber(reach));
-  }
-  waitIdle();
-  const std::optional<WorldRayHit> hit = rbsim::rayCast(world_, o, d, reach);
-  if (!hit) return py::none();
-  py::dict out;
-  out["body"] = hit->isPlane ? py::object(py::none()) : py::cast(wrap(hit->body));
-  out["plane"] = hit->isPlane ? py::object(py::int_(hit->plane)) : py::object(py::none());
-  out["distance"] = hit->distance;
-  out["point"] = py::make_tuple(hit->point.x(), hit->point.y(), hit->point.z());
-  out["normal"] = py::make_tuple(hit->normal.x(), hit->normal.y(), hit->normal.z());
-  return std::move(out);
 }
 
 py::array_t<double> PyWorld::exactRotation(const PyBodyId& id, const py::array_t<double, py::array::c_style | py::array::forcecast>& times) const {

@@ -72,9 +72,9 @@ class PyWorld {
   // Runs `work` on the World (World.run: the program's runner steps it), with the GIL held, then
   // brings the body names up to date as step() does, however `work` ends.
   void runOnWorld(const std::function<void(World&)>& work);
-  // The first body or plane on the ray (rbsim/world/ray_cast.h), as a dict, or None.
-  pybind11::object rayCast(const pybind11::object& origin, const pybind11::object& direction,
-                           const pybind11::object& maxDistance) const;
+  // Runs `work` (which reads the World) with the GIL released, other threads' calls on this World
+  // waiting meanwhile as they wait for a step (query_bindings.cpp).
+  void whileBusy(const std::function<void()>& work);
   // The body's orientation (w, x, y, z) t [s] from now for each t of `times`, by the closed-form
   // torque-free motion (integrate/free_rigid_body.h) from its state now: the reference the
   // integrators' errors are measured against.
@@ -145,6 +145,8 @@ void bindContacts(pybind11::class_<PyWorld>& world);  // contact_arrays.cpp
 void bindJoints(pybind11::class_<PyWorld>& world);     // joint_arrays.cpp
 void bindParticles(pybind11::class_<PyWorld>& world);  // particle_arrays.cpp
 void bindContactEvents(pybind11::class_<PyWorld>& world);  // event_arrays.cpp
+// World.ray_cast, ray_cast_batch, shape_cast, overlap, closest_point, query_aabb (query_bindings.cpp).
+void bindQueries(pybind11::class_<PyWorld>& world);
 // World.get_state and set_state, and the settings a running World takes as properties
 // (world_state.cpp).
 void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);

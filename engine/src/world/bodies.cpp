@@ -40,6 +40,7 @@ BodyId World::addBody(const BodyDef& def) {
     if (!misfit.empty()) throw std::invalid_argument("body '" + def.name + "': fracture: " + misfit);
   }
   bodies_.emplace_back(def);
+  ++geometryVersion_;
   bodyMaterials_.push_back(def.material);
   bodySolids_.push_back(bodySolidOf(def));
   fracturePatterns_.push_back(def.fracture);
@@ -94,6 +95,7 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   std::vector<char> gone(bodies_.size(), 0);
   for (const BodyId id : ids) gone[slots_[id.slot].index] = 1;
   contactEvents_->bodiesRemoving(*this, *collision_, gone);
+  ++geometryVersion_;
   // The ids, as destroyBody one after another: each slot's generation moves on (every copy of the
   // id is now stale) and the slot joins the free list; the last body moves into the removed
   // one's index, keeping its slot, which now points there.
@@ -173,6 +175,7 @@ void World::restore(std::uint64_t stepCount, const std::vector<BodyState>& state
     }
   }
   stepCount_ = stepCount;
+  ++geometryVersion_;
   timeOrigin_ = 0.0;  // a recording's steps all have its one time step
   stepsAtOrigin_ = 0;
 }

@@ -61,6 +61,7 @@ void World::undoStep() {
   }
   if (u.eventsSaved) pendingEvents_ = u.events;
   stepCount_ = u.stepCount;
+  ++geometryVersion_;
 }
 
 void World::saveSpawns() {

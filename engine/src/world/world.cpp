@@ -125,6 +125,7 @@ World& World::operator=(const World& other) {
 
 void World::setSettings(const Settings& settings) {
   checked(settings);
+  ++geometryVersion_;
   if (settings.broadPhase != settings_.broadPhase) {
     throw std::invalid_argument("the broad phase method cannot change on a running World (its proxies are built for one)");
   }
@@ -219,6 +220,7 @@ void World::addPoseEvent(const PoseEvent& event) {
 
 
 void World::step() {
+  ++geometryVersion_;  // the bodies move, appear and go (world_queries.h rebuilds its tree)
   stageClock_ = std::chrono::steady_clock::now();
   // A step whose first stage removes bodies is undone from a copy of the whole World made before
   // it, which only such steps pay for; one that only spawns by removing what it made (a copy cost

@@ -10,6 +10,7 @@ namespace rbsim {
 struct WorldAccess {
   static const CollisionPipeline& collision(const World& world) { return *world.collision_; }
   static const ContactSolver& solver(const World& world) { return *world.solver_; }
+  static QueryTreeCache& queryCache(const World& world) { return world.queryCache_.cache(); }
 };
 
 }  // namespace rbsim

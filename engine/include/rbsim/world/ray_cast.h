@@ -3,7 +3,9 @@
 // or a plane, with the point, the outward normal there and the distance. Spheres, capsules,
 // boxes, rounded boxes and hulls answer exactly (collision/shape_queries.h, in the body's frame);
 // a mesh body (ShapeType::Mesh) by its triangles facing the ray (Moller and Trumbore 1997), as it
-// is drawn; a plane by its equation. Every body is tested, asleep and static ones too: O(n).
+// is drawn; a plane by its equation. Every body answers, asleep and static ones too, through the
+// World's bounding volume hierarchy (world/world_queries.h's castRay, which also filters, names a
+// compound's child and casts batches).
 #include <cstddef>
 #include <optional>
 

@@ -17,6 +17,7 @@
 #include "rbsim/body/body_id.h"
 #include "rbsim/world/contact_events.h"
 #include "rbsim/world/kinematic_motion.h"
+#include "rbsim/world/query_cache.h"
 #include "rbsim/world/scripts.h"
 #include "rbsim/world/spawner.h"
 #include "rbsim/world/spring.h"
@@ -105,7 +106,12 @@ class World {
   BodyId idAt(std::size_t index) const;  // the id of bodies()[index]; throws when out of range
   // Manual changes go through here (seed 004's "change x and R"): bodies() is read-only, since
   // adding or removing bodies behind the World's back would leave its per-body data behind.
-  RigidBody& body(BodyId id) { return bodies_[indexOf(id)]; }
+  // Handing a body out for change counts as a change of the geometry (geometryVersion): change it
+  // through a fresh body(id) after a query, not through a reference kept from before.
+  RigidBody& body(BodyId id) {
+    ++geometryVersion_;
+    return bodies_[indexOf(id)];
+  }
   const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
@@ -172,6 +178,10 @@ class World {
     return timeOrigin_ + static_cast<double>(stepCount_ - stepsAtOrigin_) * settings_.timeStep;
   }
   std::uint64_t stepCount() const { return stepCount_; }
+  // Changes whenever a body may have moved, appeared, gone or changed outside the scene queries'
+  // sight: step, addBody, destroyBodies, restore, setSettings and the non-const body(id). A new
+  // mutator of bodies_ must bump it too. The queries rebuild their tree when it changed.
+  std::uint64_t geometryVersion() const { return geometryVersion_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
   const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
   const std::vector<Spring>& springs() const { return springs_; }
@@ -265,6 +275,8 @@ class World {
   Aabb killVolume_;                    // empty: none
   std::vector<BodyId> spawnedNow_, removedNow_;  // stage SpawnAndRemove's, last step
   std::uint64_t stepCount_ = 0;
+  std::uint64_t geometryVersion_ = 0;
+  QueryCacheSlot queryCache_;          // world/world_queries.h's tree; a copy starts without
   double timeOrigin_ = 0.0;            // time() when the time step last changed [s]
   std::uint64_t stepsAtOrigin_ = 0;    // stepCount_ then
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};
