@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "rbsim/math/types.h"
+
 namespace rbsim {
 
 double hingeAngle(const Joint& joint, const Quat& base, const Quat& moving) {
@@ -10,8 +12,8 @@ double hingeAngle(const Joint& joint, const Quat& base, const Quat& moving) {
   // the swing-twist split of a quaternion, the 3D form of Box2D v3's b2RelativeAngle.
   const Quat d = base.conjugate() * moving * joint.referenceRotation.conjugate();
   double angle = 2.0 * std::atan2(d.vec().dot(joint.localAxisBase), d.w());
-  if (angle > M_PI) angle -= 2.0 * M_PI;
-  if (angle <= -M_PI) angle += 2.0 * M_PI;
+  if (angle > kPi) angle -= 2.0 * kPi;
+  if (angle <= -kPi) angle += 2.0 * kPi;
   return angle;
 }
 

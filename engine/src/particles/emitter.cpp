@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rbsim/math/types.h"
+
 namespace rbsim {
 
 namespace {
@@ -25,7 +27,7 @@ void basisAround(const Vec3& n, Vec3& a, Vec3& b) {
 Vec3 sampleCone(const Vec3& axis, double spread, UniformRandom& random) {
   const double cosTheta = 1.0 - random.next() * (1.0 - std::cos(spread));
   const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-  const double phi = random.between(0.0, 2.0 * M_PI);
+  const double phi = random.between(0.0, 2.0 * kPi);
   Vec3 a, b;
   basisAround(axis, a, b);
   return cosTheta * axis + sinTheta * (std::cos(phi) * a + std::sin(phi) * b);
@@ -68,7 +70,7 @@ void Emitter::samplePlace(UniformRandom& random, const std::vector<RigidBody>& b
     case EmitterShape::Disc: {  // uniform over the area: r = R sqrt(u)
       Vec3 a, b;
       basisAround(def_.direction, a, b);
-      const double r = def_.radius * std::sqrt(random.next()), phi = random.between(0.0, 2.0 * M_PI);
+      const double r = def_.radius * std::sqrt(random.next()), phi = random.between(0.0, 2.0 * kPi);
       position = def_.position + r * (std::cos(phi) * a + std::sin(phi) * b);
       return;
     }
@@ -105,7 +107,7 @@ void Emitter::spawn(std::size_t i, ParticleStore& store, UniformRandom& random,
                     const std::vector<RigidBody>& bodies) const {
   Vec3 position, axis, surfaceVelocity;
   samplePlace(random, bodies, position, axis, surfaceVelocity);
-  const double spread = def_.spreadDegrees * M_PI / 180.0;
+  const double spread = def_.spreadDegrees * kPi / 180.0;
   const Vec3 direction = sampleCone(axis, spread, random);
   store.position[i] = position;
   store.velocity[i] = surfaceVelocity + random.between(def_.speedMin, def_.speedMax) * direction;

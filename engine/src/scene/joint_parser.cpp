@@ -9,6 +9,7 @@
 #include <tuple>
 #include <utility>
 
+#include "rbsim/math/types.h"
 #include "rbsim/world/made_names.h"
 #include "scene/input_ranges.h"
 
@@ -72,19 +73,19 @@ void parseLimits(const JsonObject& j, JointDef& def) {
                                                     formatNumber(kMaxCoordinate) + " m");
   } else {
     std::tie(def.lowerAngle, def.upperAngle) =
-        parseRange(j, "limits", M_PI, "expected [lower, upper] angles in radians with -pi <= lower <= upper <= pi");
+        parseRange(j, "limits", kPi, "expected [lower, upper] angles in radians with -pi <= lower <= upper <= pi");
   }
 }
 
 void parseTwist(const JsonObject& j, JointDef& def) {
   def.limits = true;
   std::tie(def.lowerAngle, def.upperAngle) =
-      parseRange(j, "twist", M_PI, "expected [lower, upper] twist angles in radians with -pi <= lower <= upper <= pi");
+      parseRange(j, "twist", kPi, "expected [lower, upper] twist angles in radians with -pi <= lower <= upper <= pi");
 }
 
 void parseCone(const JsonObject& j, JointDef& def) {
   const nlohmann::json& c = j.raw("cone");
-  if (!c.is_number() || !(c.get<double>() >= 0.0 && c.get<double>() <= M_PI)) {
+  if (!c.is_number() || !(c.get<double>() >= 0.0 && c.get<double>() <= kPi)) {
     j.fail("cone", "expected the cone's half-angle in radians, from 0 to pi");
   }
   def.coneLimit = true;

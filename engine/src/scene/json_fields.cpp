@@ -6,6 +6,8 @@
 
 #include <Eigen/SVD>
 
+#include "rbsim/math/types.h"
+
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/math/rotation.h"
@@ -258,7 +260,7 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
     // Yaw about z, pitch about the new y, roll about the newest x (math/rotation.h), degrees.
     const std::vector<double> n = o.numbers("euler_zyx_deg", 3);
     Vec3 radians;
-    for (int i = 0; i < 3; ++i) radians[i] = std::fmod(n[static_cast<std::size_t>(i)], 360.0) * M_PI / 180.0;
+    for (int i = 0; i < 3; ++i) radians[i] = std::fmod(n[static_cast<std::size_t>(i)], 360.0) * kPi / 180.0;
     return quatFromEulerZyx(radians);
   }
   if (!o.has("axis_angle_deg")) fail(key, "give exactly one of quaternion, matrix, axis_angle_deg, euler_zyx_deg");
@@ -266,7 +268,7 @@ std::optional<Quat> JsonObject::optionalOrientation(const char* key) const {
   const Vec3 axis(n[0], n[1], n[2]);
   if (!(axis.stableNorm() > 0.0)) o.fail("axis_angle_deg", "the axis must be non-zero");
   // fmod is exact: the same rotation, and 1e308 degrees no longer overflows in the conversion.
-  return quatFromAxisAngle(axis.stableNormalized() * (std::fmod(n[3], 360.0) * M_PI / 180.0));
+  return quatFromAxisAngle(axis.stableNormalized() * (std::fmod(n[3], 360.0) * kPi / 180.0));
 }
 
 JsonObject JsonObject::object(const char* key, KeyNames allowed) const {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "rbsim/math/types.h"
 #include "rbsim/scene/json_fields.h"
 #include "scene/body_parser.h"
 
@@ -17,7 +18,7 @@ namespace rbsim::scene_detail {
 
 namespace {
 
-constexpr double kDegreesToRadians = M_PI / 180.0;
+constexpr double kDegreesToRadians = kPi / 180.0;
 // The exterior angles of a convex polygon wound once sum to 2 pi; rounding leaves far less than
 // this, a polygon wound twice is 2 pi away.
 constexpr double kTurningTolerance = 1e-6;  // [rad]
@@ -51,9 +52,9 @@ void checkConvex(const JsonObject& shape, const std::vector<Vec2>& corners) {
     }
     turning += std::atan2(turn, a.dot(b));  // the exterior angle, in (0, pi)
   }
-  if (std::abs(turning - 2.0 * M_PI) > kTurningTolerance) {
+  if (std::abs(turning - 2.0 * kPi) > kTurningTolerance) {
     shape.fail("corners", "expected a convex polygon wound once counter-clockwise; its turns add up to " +
-                              formatNumber(turning / (2.0 * M_PI)) + " revolutions (the edges cross each other)");
+                              formatNumber(turning / (2.0 * kPi)) + " revolutions (the edges cross each other)");
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include "rbsim/world/world.h"
 #include "dynamics/contact_solver.h"
+#include "rbsim/math/types.h"
 #include "world/collision_pipeline.h"
 
 namespace rbsim {
@@ -44,11 +45,11 @@ std::size_t World::addJoint(const JointDef& def) {
       !(std::isfinite(def.lowerTranslation) && std::isfinite(def.upperTranslation) && def.lowerTranslation <= def.upperTranslation)) {
     throw std::invalid_argument(who + ": expected finite translation limits lower <= upper");
   }
-  if (def.limits && !prismatic && !(def.lowerAngle >= -M_PI && def.lowerAngle <= def.upperAngle && def.upperAngle <= M_PI)) {
+  if (def.limits && !prismatic && !(def.lowerAngle >= -kPi && def.lowerAngle <= def.upperAngle && def.upperAngle <= kPi)) {
     throw std::invalid_argument(who + ": expected limits -pi <= lower <= upper <= pi");
   }
   if (def.coneLimit && def.type != Type::Ball) throw std::invalid_argument(who + ": only a ball joint takes a cone limit");
-  if (def.coneLimit && !(def.coneAngle >= 0.0 && def.coneAngle <= M_PI)) {
+  if (def.coneLimit && !(def.coneAngle >= 0.0 && def.coneAngle <= kPi)) {
     throw std::invalid_argument(who + ": expected a cone half-angle from 0 to pi");
   }
   if ((def.spring || def.friction != 0.0) && def.type == Type::Weld) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "body/step_prefetch.h"
 #include "dynamics/contact_solver.h"
 #include "rbsim/integrate/integrator.h"
 #include "math/fnv.h"
@@ -367,7 +368,7 @@ void World::integrateBodies(bool withGravity) {
       }
     };
     for (std::size_t i = first; i < end; ++i) {
-      if (i + kPrefetchAhead < count) bodies_[i + kPrefetchAhead].prefetchForStep();
+      if (i + kPrefetchAhead < count) StepPrefetch::fetch(bodies_[i + kPrefetchAhead]);
       RigidBody& body = bodies_[i];
       if (!body.awake() || (i < advanced.size() && advanced[i] != 0)) continue;
       if (body.isKinematic()) {

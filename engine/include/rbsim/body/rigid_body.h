@@ -125,14 +125,9 @@ class alignas(64) RigidBody {
   // What exact and exact4 keep between this body's steps (integrator.h), made when first asked for.
   FreeFlowMemo& freeFlowMemo() { return freeFlow_.get(); }
 
-  // Starts fetching the lines a step reads and writes, for a pass over many bodies to call a few
-  // bodies ahead: the hardware prefetcher alone left the step waiting on memory (bench/
-  // throughput_bench at 1e5 bodies ran 1.6x faster with it).
-  void prefetchForStep() const {
-    const char* line = reinterpret_cast<const char*>(this);
-    const char* end = reinterpret_cast<const char*>(&inputs_ + 1);
-    for (; line < end; line += kCacheLineBytes) __builtin_prefetch(line, /*for writing*/ 1);
-  }
+  // Starts fetching the lines a step reads and writes (engine/src/body/step_prefetch.h): the
+  // compiler's prefetch stays out of the public headers, and inline in World's Integrate pass.
+  friend struct StepPrefetch;
 
  private:
   static constexpr std::size_t kCacheLineBytes = 64;  // x86-64 and most ARM cores

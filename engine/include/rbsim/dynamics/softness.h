@@ -10,6 +10,8 @@
 // f = 0 is a rigid constraint that never corrects position: bias 0, massScale 1, impulseScale 0.
 #include <cmath>
 
+#include "rbsim/math/types.h"
+
 namespace rbsim {
 
 struct Softness {
@@ -20,7 +22,7 @@ struct Softness {
 
 inline Softness makeSoftness(double hertz, double dampingRatio, double h) {
   if (hertz == 0.0) return {};
-  const double omega = 2.0 * M_PI * hertz;
+  const double omega = 2.0 * kPi * hertz;
   const double a1 = 2.0 * dampingRatio + h * omega;
   const double a2 = h * omega * a1;
   const double a3 = 1.0 / (1.0 + a2);

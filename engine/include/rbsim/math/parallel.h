@@ -1,7 +1,8 @@
 #pragma once
 // Settings::threads at work: a loop over independent items shared by the threads of a persistent
-// pool (oneTBB's, engine/src/math/parallel.cpp; issue 54: OpenMP's fork-join per loop spun or woke
-// its team for every one of a substep's loops). Every item writes only its own slots, so the
+// pool (oneTBB's, engine/src/math/parallel_tbb.cpp; issue 54: OpenMP's fork-join per loop spun or
+// woke its team for every one of a substep's loops; or, built with RBSIM_WITH_TBB=OFF, one of
+// std::threads, parallel_threads.cpp, issue 57). Every item writes only its own slots, so the
 // result is the same, bit for bit, for any thread count; the split only decides who computes what.
 #include <atomic>
 #include <cstddef>

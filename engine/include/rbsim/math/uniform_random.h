@@ -17,12 +17,12 @@ class UniformRandom {
   double next() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
   double between(double lo, double hi) { return lo + (hi - lo) * next(); }
   Vec3 direction() {  // uniform on the unit sphere (Archimedes: z uniform in [-1, 1])
-    const double z = between(-1.0, 1.0), phi = between(0.0, 2.0 * M_PI);
+    const double z = between(-1.0, 1.0), phi = between(0.0, 2.0 * kPi);
     const double r = std::sqrt(1.0 - z * z);
     return {r * std::cos(phi), r * std::sin(phi), z};
   }
   Quat rotation() {  // uniform over SO(3) (Shoemake 1992, "Uniform random rotations")
-    const double u1 = next(), u2 = between(0.0, 2.0 * M_PI), u3 = between(0.0, 2.0 * M_PI);
+    const double u1 = next(), u2 = between(0.0, 2.0 * kPi), u3 = between(0.0, 2.0 * kPi);
     const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
     return Quat(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
   }

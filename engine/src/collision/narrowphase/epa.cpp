@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geometry/distance.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 
@@ -41,7 +42,7 @@ std::vector<Vec3> searchDirections(const std::vector<SupportPoint>& pts) {
     const Vec3 v = d.cross(u);
     std::vector<Vec3> dirs;
     for (int k = 0; k < 6; ++k) {
-      const double angle = k * M_PI / 3.0;
+      const double angle = k * kPi / 3.0;
       dirs.push_back(std::cos(angle) * u + std::sin(angle) * v);
     }
     return dirs;
