@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rbsim/dynamics/joint.h"
+#include "rbsim/dynamics/joint_ranges.h"
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
 
@@ -35,18 +36,19 @@ struct JointBodies {
 // scene file could hold 1.6 million of the shortest ({"type":"ball","body_a":"a","body_b":"b"}).
 inline constexpr std::size_t kMaxJoints = 1'000'000;
 
-// A motor's physical ranges: |speed| up to 1e5 rad/s (a million rpm, past any real rotor) and a
-// torque up to 1e12 N m (a hundred thousand times a ship's propeller shaft). Beyond them a motor
-// is a typo, and 1e300 N m overflowed the impulse h tau into a motor that did nothing.
-inline constexpr double kMaxMotorSpeed = 1e5;    // [rad/s]
-inline constexpr double kMaxMotorTorque = 1e12;  // [N m]
-// A slider motor's force and a joint's friction share that bound ([N], [N m]); a spring's
+// A joint's friction shares a motor's bound (dynamics/joint_ranges.h) ([N m] or [N]); a spring's
 // frequency stops at 1e6 Hz, beyond any substep rate a scene can ask for (it would be rigid).
-inline constexpr double kMaxMotorForce = 1e12;   // [N]
-inline constexpr double kMaxJointFriction = 1e12;  // [N m] or [N]
+inline constexpr double kMaxJointFriction = kMaxMotorTorque;  // [N m] or [N]
 inline constexpr double kMaxJointHertz = 1e6;    // [Hz]
 // A damping ratio past 1e6 is a typo: at 1 it is already critically damped.
 inline constexpr double kMaxJointDampingRatio = 1e6;  // [1]
+
+// A joint's "motor" ({"speed", "max_torque"} or a slider's {"speed", "max_force"}) into def, and
+// its "limits" (a ball's "twist"): each checked as World::setJointMotor and setJointLimits check
+// it (dynamics/joint_ranges.h). A motor's key left out keeps def's value when def has a motor
+// already (World.set_joint), and is missing otherwise.
+void parseMotor(const JsonObject& j, JointDef& def);
+void parseLimits(const JsonObject& j, JointDef& def);
 
 // One entry of "joints"; `solver` refuses joints under PGS, which does not solve them.
 JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settings& settings);
