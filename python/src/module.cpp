@@ -331,5 +331,6 @@ PYBIND11_MODULE(rbsim, m) {
   rbsim::python::bindJoints(world);
   rbsim::python::bindParticles(world);
   rbsim::python::bindWorldState(m, world);
+  rbsim::python::bindChanges(world);
   rbsim::python::bindRendering(m);
 }

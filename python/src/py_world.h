@@ -87,6 +87,10 @@ class PyWorld {
     waitIdle();
     return scene_;
   }
+  Scene& scene() {  // a change that the Scene records (World.set_body's inertia method)
+    waitIdle();
+    return scene_;
+  }
   // One World, one thread at a time (issue 56, item 6): step() releases the GIL, so another Python
   // thread may call this World mid-step. It waits here, the GIL released, until the step ends.
   // Called with the GIL held; returns with it held and no step running.
@@ -119,5 +123,7 @@ void bindParticles(pybind11::class_<PyWorld>& world);  // particle_arrays.cpp
 // World.get_state and set_state, and the settings a running World takes as properties
 // (world_state.cpp).
 void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);
+// World.set_body, body_properties, set_joint and remove_joint: changes while running (change_bindings.cpp).
+void bindChanges(pybind11::class_<PyWorld>& world);
 
 }  // namespace rbsim::python
