@@ -241,3 +241,15 @@ def test_the_cpp_docs_example_is_the_one_a_test_runs():
     test = (SOURCE / "tests" / "engine" / "world" / "changes_doc_example_test.cpp").read_text()
     ran = test.split("// docs/cpp-api.md begin\n", 1)[1].split("  // docs/cpp-api.md end", 1)[0]
     assert [line.strip() for line in ran.splitlines()] == [line.strip() for line in block.splitlines()]
+
+
+def test_a_compound_bodys_materials_and_filters_are_its_shapes():
+    world = rbsim.World()
+    body = world.add_body(shapes=[{"type": "box", "extents": [1, 0.1, 0.1]},
+                                  {"type": "sphere", "radius": 0.2, "position": [0.5, 0, 0]}], mass=2.0)
+    for keys, field in (({"restitution": 0.5}, "restitution"), ({"filter": {"mask": 0}}, "filter")):
+        with pytest.raises(rbsim.InputError, match="a compound body's") as error:
+            world.set_body(body, **keys)
+        assert error.value.field == field
+    world.set_body(body, mass=4.0)  # its mass is its own
+    assert set(world.body_properties(body)) == {"mass", "inertia"} and world.body_properties(body)["mass"] == 4.0

@@ -113,7 +113,7 @@ void RigidBody::setMassProperties(double mass, const Mat3& inertiaBody) {
   // b2Body_SetMassData, Jolt's SetMassProperties and Bullet keep velocities.
   state_.linearMomentum = mass_ * v;
   state_.angularMomentum = inertiaWorld() * omega;
-  freeFlow_ = FreeFlowMemoSlot();  // exact and exact4 restart their flow for the new inertia
+  // exact and exact4's kept flow restarts by itself: L (or the moments) differ from its own.
   wake();
   updateDerived();
 }

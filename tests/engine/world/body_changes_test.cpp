@@ -195,6 +195,61 @@ TEST_P(BodyChanges, FilterChangeLetsABodyPassThroughFromTheNextStep) {
   EXPECT_NEAR(world.body(id).velocity().y(), vy - kG * steps * dt(), 1e-9);
 }
 
+// A new inertia acts from the next step, exact's kept flow included (it restarts when L or the
+// moments are not its own): a tumbling box given another inertia moves on as a box built with it
+// in the same state does.
+TEST_P(BodyChanges, NewInertiaMovesOnAsABodyBuiltWithIt) {
+  for (const Integrator integrator : {Integrator::Exact, Integrator::Dlm, Integrator::Rk4}) {
+    Settings s = settings();
+    s.gravity = Vec3::Zero();
+    s.integrator = integrator;
+    World changed(s);
+    BodyDef def = boxDef(Vec3(0.4, 0.2, 0.1), 1.0);
+    def.angularVelocity = Vec3(0.3, 2.0, 0.1);  // near the middle axis: tumbling
+    const BodyId id = changed.addBody(def);
+    for (int i = 0; i < 30; ++i) changed.step();
+    // The same principal moments about other axes.
+    const Mat3 inertia = cuboidInertia(1.0, Vec3(0.1, 0.2, 0.4));
+    changed.setBodyMass(id, 1.0, inertia);
+    World built(s);
+    BodyDef same = boxDef(Vec3(0.4, 0.2, 0.1), 1.0);
+    same.inertiaBody = inertia;
+    same.position = changed.body(id).position();
+    same.orientation = changed.body(id).orientation();
+    same.velocity = changed.body(id).velocity();
+    same.angularVelocity = changed.body(id).angularVelocity();
+    const BodyId twin = built.addBody(same);
+    for (int i = 0; i < 120; ++i) {
+      changed.step();
+      built.step();
+    }
+    EXPECT_TRUE(allNear(changed.body(id).orientation().coeffs(), built.body(twin).orientation().coeffs(), 1e-12))
+        << integratorName(integrator);
+    EXPECT_TRUE(allNear(changed.body(id).angularVelocity(), built.body(twin).angularVelocity(), 1e-12)) << integratorName(integrator);
+  }
+}
+
+// A change wakes the body, and at the next step the island it sleeps in: a box asleep on another
+// on the ground wakes with it when the lower one's friction changes.
+TEST_P(BodyChanges, AChangeWakesTheBodyAndItsIsland) {
+  Settings s = settings();
+  s.allowSleep = true;
+  World world(s);
+  world.addPlane(Plane{});
+  BodyDef lower = boxDef(Vec3(0.4, 0.2, 0.4), 1.0, "lower");
+  lower.position = Vec3(0.0, 0.1, 0.0);
+  BodyDef upper = boxDef(Vec3(0.4, 0.2, 0.4), 1.0, "upper");
+  upper.position = Vec3(0.0, 0.3, 0.0);
+  const BodyId a = world.addBody(lower), b = world.addBody(upper);
+  for (int i = 0; i < static_cast<int>(3.0 / dt()); ++i) world.step();
+  ASSERT_FALSE(world.body(a).awake());
+  ASSERT_FALSE(world.body(b).awake());
+  world.setBodyMaterial(a, Material{0.0, 0.3, 0.3});
+  EXPECT_TRUE(world.body(a).awake());
+  world.step();
+  EXPECT_TRUE(world.body(b).awake());
+}
+
 // Every bad value is refused naming the call, the body, the field and the expectation, and the
 // World is as before: its state hash, the body's mass, inertia, material and filter.
 TEST_P(BodyChanges, BadValuesAreRefusedAndChangeNothing) {
