@@ -4,7 +4,9 @@
 approach speed sqrt(2 g h0) comes back times e). Below Settings::restitutionThreshold (0.5 m/s)
 an approach does not bounce. The rebound comes out a few millimetres high, (1 - e^2) d: the
 collision pass reverses an approach at the start of the step that will close its gap, d above
-the ground (d < |v| dt). Writes restitution_sweep.png.
+the ground (d < |v| dt). One World per solver and step: each drop goes back to the state saved
+before it (World.get_state, set_state) and changes the ball's restitution (World.set_body), rather
+than building the World again. Writes restitution_sweep.png.
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/restitution_sweep.py [--out DIR]
 """
@@ -22,14 +24,21 @@ RADIUS = 0.1  # [m]
 DROP = 1.0    # h0: height of the ball's bottom above the ground [m]
 
 
-def first_rebound(restitution, solver, dt):
-    """The highest the ball's bottom rises after its first contact with the ground [m]."""
+def dropped_ball(solver, dt):
+    """A World with the ball held 1 m above the ground, its state saved there, and the ball's id."""
     world = rbsim.World(dt=dt, solver=solver, integrator="dlm")
-    world.add_plane(restitution=restitution)  # the pair's restitution is the larger of the two
-    world.add_body(shape={"type": "sphere", "radius": RADIUS}, mass=1.0, position=[0, RADIUS + DROP, 0],
-                   restitution=restitution)
+    world.add_plane()  # restitution 0: the pair's restitution is the larger of the two, the ball's
+    ball = world.add_body(shape={"type": "sphere", "radius": RADIUS}, mass=1.0, position=[0, RADIUS + DROP, 0])
+    return world, world.get_state(), ball
+
+
+def first_rebound(world, start, ball, restitution):
+    """The highest the ball's bottom rises after its first contact with the ground [m], dropped from
+    the saved state `start` with its restitution changed (World.set_body): one World for the sweep."""
+    world.set_state(start)
+    world.set_body(ball, restitution=restitution)
     bounced, top = False, 0.0
-    for _ in range(int(2.5 / dt)):
+    for _ in range(int(2.5 / world.dt)):
         world.step()
         height, vy = world.x[0, 1] - RADIUS, world.v[0, 1]
         if not bounced and vy > 0:
@@ -54,7 +63,8 @@ def main():
     for solver in rbsim.solvers():
         for dt, style in ((1 / 60, "o--"), (1 / 240, "x-")):
             label = f"{solver}, dt = 1/{round(1 / dt)} s"
-            h = np.array([first_rebound(c, solver, dt) for c in e])
+            world, start, ball = dropped_ball(solver, dt)
+            h = np.array([first_rebound(world, start, ball, c) for c in e])
             miss = (h - e**2 * DROP) * 1000  # [mm]
             ax.plot(e, h, style, label=label)
             err.plot(e, miss, style, label=label)

@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 
 #include "py_world.h"
+#include "rbsim/dynamics/joint_ranges.h"  // jointTypeName
 #include "rbsim/world/joint_reading.h"
 
 namespace py = pybind11;
@@ -32,16 +33,6 @@ struct JointRow {
   char type[10];        // "ball", "hinge", "prismatic" or "weld"
   bool hinge;           // a hinge
 };
-
-const char* typeName(JointDef::Type type) {
-  switch (type) {
-    case JointDef::Type::Ball: return "ball";
-    case JointDef::Type::Hinge: return "hinge";
-    case JointDef::Type::Prismatic: return "prismatic";
-    case JointDef::Type::Weld: return "weld";
-  }
-  return "";
-}
 
 void copy3(double (&out)[3], const Vec3& v) {
   for (int i = 0; i < 3; ++i) out[i] = v[i];
@@ -71,7 +62,7 @@ void bindJoints(py::class_<PyWorld>& c) {
           row->translation_speed = r.translationSpeed;
           row->swing = r.swing;
           row->twist = r.twist;
-          std::strncpy(row->type, typeName(joint.def.type), sizeof(row->type));
+          std::strncpy(row->type, jointTypeName(joint.def.type), sizeof(row->type));
           copy3(row->axis, r.axis);
           copy3(row->anchor_a, r.anchorA);
           copy3(row->anchor_b, r.anchorB);

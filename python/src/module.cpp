@@ -345,6 +345,7 @@ PYBIND11_MODULE(_rbsim, m) {
   rbsim::python::bindParticles(world);
   rbsim::python::bindQueries(world);
   rbsim::python::bindWorldState(m, world);
+  rbsim::python::bindChanges(world);
   rbsim::python::bindRendering(m);
   rbsim::python::bindDisk(m, world);
   rbsim::python::bindRun(m, world);

@@ -108,6 +108,10 @@ class PyWorld {
     waitIdle();
     return scene_;
   }
+  Scene& scene() {  // a change that the Scene records (World.set_body's inertia method)
+    waitIdle();
+    return scene_;
+  }
   // One World, one thread at a time (issue 56, item 6): step() releases the GIL, so another Python
   // thread may call this World mid-step. It waits here, the GIL released, until the step ends.
   // Called with the GIL held; returns with it held and no step running.
@@ -155,5 +159,7 @@ void bindWorldState(pybind11::module_& m, pybind11::class_<PyWorld>& world);
 void bindDisk(pybind11::module_& m, pybind11::class_<PyWorld>& world);
 // World.run and rbsim.run (run_bindings.cpp; absent from the physics-only module: render_off.cpp).
 void bindRun(pybind11::module_& m, pybind11::class_<PyWorld>& world);
+// World.set_body, body_properties, set_joint and remove_joint: changes while running (change_bindings.cpp).
+void bindChanges(pybind11::class_<PyWorld>& world);
 
 }  // namespace rbsim::python

@@ -56,28 +56,7 @@ RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), isKinematic_
   cold->filter = def.filter;
   checkChildren(def);
   cold->children = def.children;
-  if (!(mass_ > 0.0) || !std::isfinite(mass_)) {
-    throw std::invalid_argument("body '" + name + "': mass must be a positive finite number");
-  }
-  // A physical inertia tensor is symmetric positive definite; anything else cannot be inverted
-  // meaningfully, so it is rejected here rather than producing NaN angular velocities later.
-  const Mat3& inertia = cold->inertia.inertiaBody = def.inertiaBody;
-  Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
-  if (!inertia.allFinite() || (inertia - inertia.transpose()).norm() > 1e-9 * inertia.norm() ||
-      !(eig.eigenvalues().minCoeff() > 0.0)) {
-    throw std::invalid_argument("body '" + name + "': inertia tensor must be symmetric positive definite");
-  }
-  cold->inertia.principalMoments = eig.eigenvalues();
-  Mat3& axes = cold->inertia.principalAxes = eig.eigenvectors();
-  if (axes.determinant() < 0.0) axes.col(2) *= -1.0;  // a rotation, not a reflection
-  inputs_.inverseMass = 1.0 / mass_;
-  // Inverted in the principal frame, A diag(1/lambda) A^T, not by cofactors: the determinant
-  // lambda^3 under- or overflows for moments beyond about 1e-103 or 1e103 kg m^2 (a 1 m box of
-  // 1e-102 kg), while each 1/lambda stays exact wherever it is a finite number.
-  inputs_.inverseInertiaBody = axes * eig.eigenvalues().cwiseInverse().asDiagonal() * axes.transpose();
-  if (!inputs_.inverseInertiaBody.allFinite() || !std::isfinite(inputs_.inverseMass)) {
-    throw std::invalid_argument("body '" + name + "': the inverse of its mass or inertia overflows a double");
-  }
+  setMassConstants(def.mass, def.inertiaBody, *cold);
   inputs_.inertia = &cold->inertia;  // the block is never moved: copies of the body share it
   cold_ = std::move(cold);
   worldVertices_.resize(cold_->mesh->vertices.size());
@@ -92,6 +71,59 @@ RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), isKinematic_
     awake_ = false;
   }
   updateDerived();
+}
+
+void RigidBody::setMassConstants(double mass, const Mat3& inertia, ColdConstants& cold) {
+  const std::string& name = cold.name;
+  if (!(mass > 0.0) || !std::isfinite(mass)) {
+    throw std::invalid_argument("body '" + name + "': mass must be a positive finite number");
+  }
+  // A physical inertia tensor is symmetric positive definite; anything else cannot be inverted
+  // meaningfully, so it is rejected here rather than producing NaN angular velocities later.
+  Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
+  if (!inertia.allFinite() || (inertia - inertia.transpose()).norm() > 1e-9 * inertia.norm() ||
+      !(eig.eigenvalues().minCoeff() > 0.0)) {
+    throw std::invalid_argument("body '" + name + "': inertia tensor must be symmetric positive definite");
+  }
+  Mat3 axes = eig.eigenvectors();
+  if (axes.determinant() < 0.0) axes.col(2) *= -1.0;  // a rotation, not a reflection
+  // Inverted in the principal frame, A diag(1/lambda) A^T, not by cofactors: the determinant
+  // lambda^3 under- or overflows for moments beyond about 1e-103 or 1e103 kg m^2 (a 1 m box of
+  // 1e-102 kg), while each 1/lambda stays exact wherever it is a finite number.
+  const Mat3 inverse = axes * eig.eigenvalues().cwiseInverse().asDiagonal() * axes.transpose();
+  if (!inverse.allFinite() || !std::isfinite(1.0 / mass)) {
+    throw std::invalid_argument("body '" + name + "': the inverse of its mass or inertia overflows a double");
+  }
+  cold.inertia.inertiaBody = inertia;
+  cold.inertia.principalMoments = eig.eigenvalues();
+  cold.inertia.principalAxes = axes;
+  mass_ = mass;
+  inputs_.inverseMass = 1.0 / mass;
+  inputs_.inverseInertiaBody = inverse;
+}
+
+void RigidBody::setMassProperties(double mass, const Mat3& inertiaBody) {
+  // The constants are shared with the body's copies (a saved World): this body takes its own.
+  auto cold = std::make_shared<ColdConstants>(*cold_);
+  const Vec3 v = velocity(), omega = angularVelocity();
+  setMassConstants(mass, inertiaBody, *cold);  // throws before it changes anything
+  inputs_.inertia = &cold->inertia;
+  cold_ = std::move(cold);
+  // The motion stays and the momenta follow (P = m v, L = I(t) omega), as Box2D's
+  // b2Body_SetMassData, Jolt's SetMassProperties and Bullet keep velocities.
+  state_.linearMomentum = mass_ * v;
+  state_.angularMomentum = inertiaWorld() * omega;
+  // exact and exact4's kept flow restarts by itself: L (or the moments) differ from its own.
+  wake();
+  updateDerived();
+}
+
+void RigidBody::setFilter(const CollisionFilter& filter) {
+  auto cold = std::make_shared<ColdConstants>(*cold_);
+  cold->filter = filter;
+  inputs_.inertia = &cold->inertia;
+  cold_ = std::move(cold);
+  wake();
 }
 
 void RigidBody::setState(const BodyState& state) {

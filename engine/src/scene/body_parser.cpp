@@ -249,16 +249,14 @@ void checkMassScale(const JsonObject& b, const BodyDef& def) {
   }
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(def.inertiaBody, Eigen::EigenvaluesOnly);
   const double least = eig.eigenvalues().minCoeff(), most = eig.eigenvalues().maxCoeff();
-  const auto inScale = [](double x) { return x <= kMaxMassScale && 1.0 / x <= kMaxMassScale; };
-  if (inScale(def.mass) && inScale(least) && inScale(most)) return;
+  if (withinMassScale(def.mass) && withinMassScale(least) && withinMassScale(most)) return;
   const Vec3 size = def.mesh->boundsMax() - def.mesh->boundsMin();
   // Each printed apart from the bound it is nearer, so a value just past it does not read as it.
   const auto shown = [](double x) { return formatPastLimit(x, x >= 1.0 ? kMaxMassScale : 1.0 / kMaxMassScale); };
   b.fail(b.has("density") ? "density" : "mass",
          "a mass of " + shown(def.mass) + " kg for a body of size " + formatNumber(size.x()) + " x " +
              formatNumber(size.y()) + " x " + formatNumber(size.z()) + " m gives principal moments of inertia from " +
-             shown(least) + " to " + shown(most) + " kg m^2; expected the mass, the moments and their "
-             "inverses each within 1e+-150 (the solver multiplies one by another): a mass (or density) nearer the "
+             shown(least) + " to " + shown(most) + " kg m^2; " + kMassScaleExpectation + ": a mass (or density) nearer the "
              "body's size");
 }
 
@@ -276,14 +274,19 @@ Quat toBodyOrientation(const BodyDef& def, const Quat& fileOrientation) {
   return (fileOrientation * Quat(def.fileFrame.axes)).normalized();
 }
 
-Material parseMaterial(const JsonObject& o) {
-  Material m;
+Material parseMaterial(const JsonObject& o, const Material& base) {
+  Material m = base;
+  const auto check = [&o](const char* key, const std::string& problem) {
+    if (!problem.empty()) o.fail(key, problem);
+  };
   m.restitution = o.number("restitution", m.restitution);
-  if (!(m.restitution >= 0.0 && m.restitution <= 1.0)) o.fail("restitution", "expected a coefficient in [0, 1]");
-  m.staticFriction = nonNegative(o, "friction_static", m.staticFriction, "(mu_s)");
+  check("restitution", restitutionProblem(m.restitution));
+  m.staticFriction = o.number("friction_static", m.staticFriction);
+  check("friction_static", frictionProblem(m.staticFriction, "(mu_s)"));
   // Without its own value, mu_k follows a lowered mu_s, so "friction_static": 0 means frictionless.
-  m.kineticFriction = nonNegative(o, "friction_kinetic", std::min(m.kineticFriction, m.staticFriction), "(mu_k)");
-  if (m.kineticFriction > m.staticFriction) o.fail("friction_kinetic", "expected mu_k <= friction_static (mu_s)");
+  m.kineticFriction = o.number("friction_kinetic", std::min(m.kineticFriction, m.staticFriction));
+  check("friction_kinetic", frictionProblem(m.kineticFriction, "(mu_k)"));
+  check("friction_kinetic", frictionOrderProblem(m));
   return m;
 }
 

@@ -145,9 +145,9 @@ Shape partShape(const JsonObject& s, std::shared_ptr<const Mesh>& mesh) {
 
 }  // namespace
 
-CollisionFilter parseFilter(const JsonObject& o) {
+CollisionFilter parseFilter(const JsonObject& o, const CollisionFilter& base) {
   const JsonObject f = o.object("filter", kFilterKeys);
-  CollisionFilter filter;
+  CollisionFilter filter = base;
   filter.category = bits(f, "category", filter.category);
   filter.mask = bits(f, "mask", filter.mask);
   if (f.has("group")) {

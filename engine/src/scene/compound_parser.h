@@ -9,8 +9,9 @@
 namespace rbsim::scene_detail {
 
 // "filter": {"category": bits, "mask": bits, "group": integer}, each an unsigned 64-bit integer
-// of category bits, or a signed 32-bit group (shapes/collision_filter.h); absent keys default.
-CollisionFilter parseFilter(const JsonObject& o);
+// of category bits, or a signed 32-bit group (shapes/collision_filter.h); absent keys keep base's
+// (the default filter's, or a running body's for World.set_body).
+CollisionFilter parseFilter(const JsonObject& o, const CollisionFilter& base = {});
 
 // "shapes": [{"type": "box" | "sphere" | "capsule" | "rounded_box", the type's size keys,
 // "position", "orientation", "density", material keys, "filter"}, ...] into def (mesh, mass

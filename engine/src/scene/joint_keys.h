@@ -4,20 +4,17 @@
 #include <cmath>
 #include <cstddef>
 
+#include "rbsim/dynamics/joint_ranges.h"
 #include "rbsim/scene/scene_keys.h"
 #include "scene/input_ranges.h"
 
 namespace rbsim::scene_detail {
 
-// A motor's physical ranges: |speed| up to 1e5 rad/s (a million rpm, past any real rotor) and a
-// torque up to 1e12 N m (a hundred thousand times a ship's propeller shaft). Beyond them a motor
-// is a typo, and 1e300 N m overflowed the impulse h tau into a motor that did nothing.
-inline constexpr double kMaxMotorSpeed = 1e5;    // [rad/s]
-inline constexpr double kMaxMotorTorque = 1e12;  // [N m]
+// A motor's physical ranges (kMaxMotorSpeed, kMaxMotorTorque, kMaxMotorForce) are the World's
+// own checks' (dynamics/joint_ranges.h), so a scene and World::setJointMotor refuse the same values.
 // A slider motor's force and a joint's friction share that bound ([N], [N m]); a spring's
 // frequency stops at 1e6 Hz, beyond any substep rate a scene can ask for (it would be rigid).
-inline constexpr double kMaxMotorForce = 1e12;   // [N]
-inline constexpr double kMaxJointFriction = 1e12;  // [N m] or [N]
+inline constexpr double kMaxJointFriction = kMaxMotorTorque;  // [N m] or [N]
 inline constexpr double kMaxJointHertz = 1e6;    // [Hz]
 // A damping ratio past 1e6 is a typo: at 1 it is already critically damped.
 inline constexpr double kMaxJointDampingRatio = 1e6;  // [1]

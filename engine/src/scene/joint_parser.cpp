@@ -33,54 +33,14 @@ std::size_t bodyNamed(const JsonObject& j, const char* key, const JointBodies& b
   j.fail(key, "no body is named \"" + name + "\"");
 }
 
-void parseMotor(const JsonObject& j, JointDef& def) {
-  const bool slider = def.type == JointDef::Type::Prismatic;
-  const char* maxKey = slider ? "max_force" : "max_torque";
-  const JsonObject m = slider ? j.object("motor", kSliderMotorKeys) : j.object("motor", kHingeMotorKeys);
-  def.motor = true;
-  if (!m.has("speed")) m.fail("speed", slider ? "missing; the motor's target speed in m/s is required" : "missing; the motor's target speed in rad/s is required");
-  if (!m.has(maxKey)) {
-    m.fail(maxKey, slider ? "missing; the motor's largest force in N (>= 0) is required" : "missing; the motor's largest torque in N m (>= 0) is required");
-  }
-  def.motorSpeed = m.requiredNumber("speed");
-  const double max = m.requiredNumber(maxKey);
-  const char* speedUnit = slider ? " m/s" : " rad/s";
-  if (!(std::abs(def.motorSpeed) <= kMaxMotorSpeed)) {
-    m.fail("speed", "expected a speed of at most " + formatNumber(kMaxMotorSpeed) + speedUnit + " either way, got " + formatNumber(def.motorSpeed));
-  }
-  const double bound = slider ? kMaxMotorForce : kMaxMotorTorque;
-  if (!(max >= 0.0 && max <= bound)) {
-    m.fail(maxKey, std::string(slider ? "expected a force from 0 to " : "expected a torque from 0 to ") + formatNumber(bound) +
-                       (slider ? " N, got " : " N m, got ") + formatNumber(max));
-  }
-  (slider ? def.maxMotorForce : def.maxMotorTorque) = max;
-}
-
-// [lower, upper] with lower <= upper, within +-bound when bound > 0.
-std::pair<double, double> parseRange(const JsonObject& j, const char* key, double bound, const std::string& expected) {
+// [lower, upper] of `key`, checked for the joint's type (limitsProblem).
+std::pair<double, double> parseRange(const JsonObject& j, const char* key, JointDef::Type type) {
   const nlohmann::json& r = j.raw(key);
   const bool numbers = r.is_array() && r.size() == 2 && r[0].is_number() && r[1].is_number();
-  const double lo = numbers ? r[0].get<double>() : 0.0, hi = numbers ? r[1].get<double>() : 0.0;
-  if (!numbers || !(lo >= -bound && lo <= hi && hi <= bound)) j.fail(key, expected);
+  if (!numbers) j.fail(key, limitsExpectation(type));
+  const double lo = r[0].get<double>(), hi = r[1].get<double>();
+  if (const std::string problem = limitsProblem(lo, hi, type); !problem.empty()) j.fail(key, problem);
   return {lo, hi};
-}
-
-void parseLimits(const JsonObject& j, JointDef& def) {
-  def.limits = true;
-  if (def.type == JointDef::Type::Prismatic) {
-    std::tie(def.lowerTranslation, def.upperTranslation) =
-        parseRange(j, "limits", kMaxCoordinate, "expected [lower, upper] translations in m with lower <= upper, each within " +
-                                                    formatNumber(kMaxCoordinate) + " m");
-  } else {
-    std::tie(def.lowerAngle, def.upperAngle) =
-        parseRange(j, "limits", kPi, "expected [lower, upper] angles in radians with -pi <= lower <= upper <= pi");
-  }
-}
-
-void parseTwist(const JsonObject& j, JointDef& def) {
-  def.limits = true;
-  std::tie(def.lowerAngle, def.upperAngle) =
-      parseRange(j, "twist", kPi, "expected [lower, upper] twist angles in radians with -pi <= lower <= upper <= pi");
 }
 
 void parseCone(const JsonObject& j, JointDef& def) {
@@ -108,6 +68,34 @@ void parseSpring(const JsonObject& j, JointDef& def) {
 }
 
 }  // namespace
+
+void parseMotor(const JsonObject& j, JointDef& def) {
+  const bool slider = def.type == JointDef::Type::Prismatic;
+  const char* maxKey = maxMotorKey(def.type);
+  const JsonObject m = slider ? j.object("motor", kSliderMotorKeys) : j.object("motor", kHingeMotorKeys);
+  double& max = slider ? def.maxMotorForce : def.maxMotorTorque;
+  if (!def.motor) {  // a new motor states both
+    if (!m.has("speed")) m.fail("speed", slider ? "missing; the motor's target speed in m/s is required" : "missing; the motor's target speed in rad/s is required");
+    if (!m.has(maxKey)) {
+      m.fail(maxKey, slider ? "missing; the motor's largest force in N (>= 0) is required" : "missing; the motor's largest torque in N m (>= 0) is required");
+    }
+  }
+  const double speed = m.number("speed", def.motorSpeed);
+  if (const std::string problem = motorSpeedProblem(speed, def.type); !problem.empty()) m.fail("speed", problem);
+  const double largest = m.number(maxKey, max);
+  if (const std::string problem = maxMotorProblem(largest, def.type); !problem.empty()) m.fail(maxKey, problem);
+  def.motor = true;
+  def.motorSpeed = speed;
+  max = largest;
+}
+
+void parseLimits(const JsonObject& j, JointDef& def) {
+  const char* key = limitsKey(def.type);
+  const auto [lo, hi] = parseRange(j, key, def.type);
+  def.limits = true;
+  (def.type == JointDef::Type::Prismatic ? def.lowerTranslation : def.lowerAngle) = lo;
+  (def.type == JointDef::Type::Prismatic ? def.upperTranslation : def.upperAngle) = hi;
+}
 
 JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settings& settings) {
   using Type = JointDef::Type;
@@ -157,9 +145,8 @@ JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settin
     def.axis = axis / length;
   }
   if (j.has("motor")) parseMotor(j, def);
-  if (j.has("limits")) parseLimits(j, def);
+  if (j.has(limitsKey(def.type))) parseLimits(j, def);
   if (j.has("cone")) parseCone(j, def);
-  if (j.has("twist")) parseTwist(j, def);
   if (j.has("spring")) parseSpring(j, def);
   def.friction = boundedNumber(j, "friction", 0.0, kMaxJointFriction, def.type == Type::Prismatic ? " N" : " N m");
   def.linearHertz = boundedNumber(j, "linear_hertz", 0.0, kMaxJointHertz, " Hz");

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rbsim/dynamics/joint.h"
+#include "rbsim/dynamics/joint_ranges.h"
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
 #include "scene/joint_keys.h"
@@ -30,6 +31,13 @@ struct JointBodies {
 // parse and enter a World in 0.39 s on our 2-core machine, so the limit is a few seconds; a 64 MB
 // scene file could hold 1.6 million of the shortest ({"type":"ball","body_a":"a","body_b":"b"}).
 inline constexpr std::size_t kMaxJoints = 1'000'000;
+
+// A joint's "motor" ({"speed", "max_torque"} or a slider's {"speed", "max_force"}) into def, and
+// its "limits" (a ball's "twist"): each checked as World::setJointMotor and setJointLimits check
+// it (dynamics/joint_ranges.h). A motor's key left out keeps def's value when def has a motor
+// already (World.set_joint), and is missing otherwise.
+void parseMotor(const JsonObject& j, JointDef& def);
+void parseLimits(const JsonObject& j, JointDef& def);
 
 // One entry of "joints"; `solver` refuses joints under PGS, which does not solve them.
 JointDef parseJoint(const JsonObject& j, const JointBodies& bodies, const Settings& settings);

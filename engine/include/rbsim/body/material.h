@@ -21,12 +21,27 @@ inline Material combine(const Material& a, const Material& b) {
           std::sqrt(a.kineticFriction * b.kineticFriction)};
 }
 
-// Empty when usable; otherwise what is wrong, naming the field.
+// The checks of a material's keys (a scene's "restitution", "friction_static", "friction_kinetic"),
+// one each, shared by the scene loader and World::setBodyMaterial: empty when usable, otherwise
+// what was expected.
+inline std::string restitutionProblem(double restitution) {
+  return restitution >= 0.0 && restitution <= 1.0 ? std::string() : "expected a coefficient in [0, 1]";
+}
+// `symbol` names the coefficient in the message: "(mu_s)" or "(mu_k)".
+inline std::string frictionProblem(double friction, const char* symbol) {
+  return friction >= 0.0 && std::isfinite(friction) ? std::string() : std::string("expected a finite value >= 0 ") + symbol;
+}
+// Reported against friction_kinetic.
+inline std::string frictionOrderProblem(const Material& m) {
+  return m.kineticFriction <= m.staticFriction ? std::string() : "expected mu_k <= friction_static (mu_s)";
+}
+
+// Empty when usable; otherwise what is wrong, naming the field ("restitution: expected ...").
 inline std::string checkMaterial(const Material& m) {
-  if (!(m.restitution >= 0.0 && m.restitution <= 1.0)) return "restitution: expected a value in [0, 1]";
-  if (!(m.staticFriction >= 0.0) || !std::isfinite(m.staticFriction)) return "friction_static: expected a finite value >= 0";
-  if (!(m.kineticFriction >= 0.0) || !std::isfinite(m.kineticFriction)) return "friction_kinetic: expected a finite value >= 0";
-  if (m.kineticFriction > m.staticFriction) return "friction_kinetic: expected a value <= friction_static (mu_k <= mu_s)";
+  if (std::string p = restitutionProblem(m.restitution); !p.empty()) return "restitution: " + p;
+  if (std::string p = frictionProblem(m.staticFriction, "(mu_s)"); !p.empty()) return "friction_static: " + p;
+  if (std::string p = frictionProblem(m.kineticFriction, "(mu_k)"); !p.empty()) return "friction_kinetic: " + p;
+  if (std::string p = frictionOrderProblem(m); !p.empty()) return "friction_kinetic: " + p;
   return {};
 }
 

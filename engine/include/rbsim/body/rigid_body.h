@@ -63,6 +63,12 @@ class alignas(64) RigidBody {
   void setOrientation(const Quat& q);
   void setVelocity(const Vec3& v);             // P = m v
   void setAngularVelocity(const Vec3& omega);  // L = I(t) omega
+  // A change of the constants (World::setBodyMass, setBodyFilter go through here). The velocity
+  // and angular velocity stay, P = m v and L = I(t) omega follow (as Box2D's b2Body_SetMassData
+  // and Jolt's SetMassProperties keep velocities); the inertia is about the centre of mass in the
+  // body frame. Throws std::invalid_argument, changing nothing, as the constructor would.
+  void setMassProperties(double mass, const Mat3& inertiaBody);
+  void setFilter(const CollisionFilter& filter);
 
   // Derived quantities.
   const Vec3& position() const { return state_.position; }
@@ -132,8 +138,8 @@ class alignas(64) RigidBody {
  private:
   static constexpr std::size_t kCacheLineBytes = 64;  // x86-64 and most ARM cores
 
-  // Constants no step of the forward-Euler family reads; they never change, so copies of a body
-  // share them.
+  // Constants no step of the forward-Euler family reads; copies of a body share them, so a change
+  // (setMassProperties, setFilter) gives the body a block of its own.
   struct ColdConstants {
     std::string name;
     std::shared_ptr<const Mesh> mesh;
@@ -145,6 +151,8 @@ class alignas(64) RigidBody {
     BodyInertia inertia;  // what implicit-gyro and dlm read besides StepInputs' own fields
   };
 
+  // Checks m and I_body and sets mass_, the inverses and cold's inertia; throws before it changes anything.
+  void setMassConstants(double mass, const Mat3& inertiaBody, ColdConstants& cold);
   void updateDerived();              // R, v, omega from the state; marks the world vertices stale
   void updateWorldVertices() const;  // p' = R p + x for every vertex
 

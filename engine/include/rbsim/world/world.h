@@ -149,6 +149,32 @@ class World {
   std::size_t addJoint(const JointDef& def);
   const std::vector<Joint>& joints() const { return joints_; }
 
+  // Changes while running (PyBullet's changeDynamics, setJointMotorControl2, removeConstraint;
+  // world/body_changes.cpp, joint_changes.cpp), from the next step on. Each is checked with the
+  // scene loader's ranges and words (body/material.h, body/mass_ranges.h,
+  // dynamics/joint_ranges.h) and throws std::invalid_argument naming the call, the body or joint,
+  // the field and what was expected, the World unchanged. Each wakes the body (a joint's bodies),
+  // and so at the next step its island, as a manual change does.
+  // The mass [kg] and the inertia about the centre of mass, body frame [kg m^2]: the velocity and
+  // angular velocity stay, P = m v and L = I(t) omega follow (RigidBody::setMassProperties).
+  void setBodyMass(BodyId id, double mass, const Mat3& inertiaBody);
+  // Restitution and friction, read by the next step's contacts (nothing keeps the old ones). A
+  // compound body's materials are its shapes': refused for one, as the scene refuses them.
+  void setBodyMaterial(BodyId id, const Material& material);
+  // What the body collides with (shapes/collision_filter.h), from the next broad phase; refused
+  // for a compound body, whose filters are its shapes'.
+  void setBodyFilter(BodyId id, const CollisionFilter& filter);
+  // A hinge's or slider's motor, on with a target speed [rad/s; m/s] and a largest torque [N m]
+  // (a slider's force [N]), or off (speed and max are then not read). A lower cap clamps the
+  // impulse kept for the warm start to it.
+  void setJointMotor(std::size_t joint, bool on, double speed, double maxTorque);
+  // A hinge's angle limits, a ball's twist limits, a slider's translation limits, or none (off);
+  // the limits' warm starts are forgotten, as Box2D v3's b2RevoluteJoint_SetLimits does.
+  void setJointLimits(std::size_t joint, bool on, double lower, double upper);
+  // Removes the joint; later joints move down one index (as removeSpring). Its bodies wake and
+  // collide with each other again unless their filters or another joint say otherwise.
+  void removeJoint(std::size_t joint);
+
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite,
   // and StepLimitError (a SimulationError) when the bodies overlap in more pairs or contacts than
   // a step holds (kMaxBroadPhasePairs), before they are listed. A step that throws is undone
