@@ -124,6 +124,7 @@ class alignas(64) RigidBody {
   const StepInputs& stepInputs() const { return inputs_; }
   // What exact and exact4 keep between this body's steps (integrator.h), made when first asked for.
   FreeFlowMemo& freeFlowMemo() { return freeFlow_.get(); }
+  const FreeFlowMemo* freeFlowMemoIfMade() const { return freeFlow_.find(); }  // null: none yet
 
   // Starts fetching the lines a step reads and writes, for a pass over many bodies to call a few
   // bodies ahead: the hardware prefetcher alone left the step waiting on memory (bench/
