@@ -229,7 +229,8 @@ std::vector<std::uint8_t> saveWorldSnapshot(const World& world) {
   return std::move(bytes);
 }
 
-World loadWorldSnapshot(const std::uint8_t* data, std::size_t size, const World& base, const std::string& what) {
+// The payload's size, after checking the header and the checksum.
+static std::size_t checkedPayload(const std::uint8_t* data, std::size_t size, const std::string& what) {
   ByteReader header(data, size, what);
   for (char c : kMagic) {
     if (header.u8() != static_cast<std::uint8_t>(c)) header.fail("not a World snapshot (expected the magic RBSIMWSN)");
@@ -240,14 +241,21 @@ World loadWorldSnapshot(const std::uint8_t* data, std::size_t size, const World&
                 std::to_string(kWorldSnapshotVersion) + ")");
   }
   const std::uint64_t payload = header.u64();
-  if (payload != header.remaining() - std::min(header.remaining(), kChecksumBytes) || header.remaining() < kChecksumBytes) {
+  if (header.remaining() < kChecksumBytes || payload != header.remaining() - kChecksumBytes) {
     header.fail("truncated or extended: a payload of " + std::to_string(payload) + " bytes where " +
                 std::to_string(size) + " bytes hold " + std::to_string(size - std::min(size, kHeaderBytes + kChecksumBytes)));
   }
   ByteReader sum(data + kHeaderBytes + payload, kChecksumBytes, what);
-  if (sum.u64() != checksum(data + kHeaderBytes, payload)) {
-    header.fail("corrupted: the checksum does not match the contents");
-  }
+  if (sum.u64() != checksum(data + kHeaderBytes, payload)) header.fail("corrupted: the checksum does not match the contents");
+  return static_cast<std::size_t>(payload);
+}
+
+void checkWorldSnapshot(const std::uint8_t* data, std::size_t size, const std::string& what) {
+  static_cast<void>(checkedPayload(data, size, what));
+}
+
+World loadWorldSnapshot(const std::uint8_t* data, std::size_t size, const World& base, const std::string& what) {
+  const std::size_t payload = checkedPayload(data, size, what);
   ByteReader in(data + kHeaderBytes, payload, what);
   World world = WorldSnapshotAccess::load(in, base);
   if (in.remaining() != 0) in.fail(std::to_string(in.remaining()) + " bytes left over after the World");

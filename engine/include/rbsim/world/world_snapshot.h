@@ -48,6 +48,10 @@ inline World loadWorldSnapshot(const std::vector<std::uint8_t>& bytes, const Wor
   return loadWorldSnapshot(bytes.data(), bytes.size(), base, what);
 }
 
+// Checks what can be checked without a base World: the magic, version, size and checksum.
+// Throws std::invalid_argument naming `what`.
+void checkWorldSnapshot(const std::uint8_t* data, std::size_t size, const std::string& what);
+
 // A hash of what a body has from its definition and keeps for life (mesh, shape, compound
 // children, mass, inertia, file frame, kinds of grid): two bodies with equal fingerprints share
 // their constant parts (up to a 64-bit hash collision).
