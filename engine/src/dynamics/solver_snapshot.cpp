@@ -58,11 +58,18 @@ int loadPointCount(ByteReader& in) {
   return static_cast<int>(count);
 }
 
-// The caches are looked up by key (binary search, a hash index): strictly ascending keys.
+// The caches are looked up by key (binary search, a hash index): strictly ascending keys, whose
+// body indices (contact_key.h pairKey: a plane's index or body A's, then body B's) name bodies,
+// since renumberCache looks them up when bodies are removed.
 template <typename Cached>
-void checkSorted(ByteReader& in, const std::vector<Cached>& cache) {
-  for (std::size_t i = 1; i < cache.size(); ++i) {
-    if (!(cache[i - 1].key < cache[i].key)) in.fail("warm-start cache keys not strictly ascending");
+void checkKeys(ByteReader& in, const std::vector<Cached>& cache, std::size_t bodies) {
+  constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << 24) - 1;
+  for (std::size_t i = 0; i < cache.size(); ++i) {
+    if (i > 0 && !(cache[i - 1].key < cache[i].key)) in.fail("warm-start cache keys not strictly ascending");
+    const bool plane = (cache[i].key >> 63) != 0;
+    if ((cache[i].key & kIndexMask) >= bodies || (!plane && ((cache[i].key >> 24) & kIndexMask) >= bodies)) {
+      in.fail("a warm-start cache key naming a body past the " + std::to_string(bodies));
+    }
   }
 }
 
@@ -108,7 +115,7 @@ void SoftStepSolver::load(ByteReader& in, std::size_t bodies) {
     }
     c.sticking = in.boolean();
   }
-  checkSorted(in, cache);
+  checkKeys(in, cache, bodies);
   std::vector<std::size_t> advanced(in.count(8, "advanced bodies"));
   std::vector<char> flags(bodies, 0);
   for (std::size_t& body : advanced) {
@@ -143,7 +150,7 @@ void PgsSolver::save(ByteWriter& out) const {
   savePoints(out, solved_);
 }
 
-void PgsSolver::load(ByteReader& in, std::size_t) {
+void PgsSolver::load(ByteReader& in, std::size_t bodies) {
   constexpr std::size_t kCachedBytes = 8 + 4 + 4 * 8 + 1;  // the least save writes for one: no points
   std::vector<Cached> cache(in.count(kCachedBytes, "cached manifolds"));
   for (Cached& c : cache) {
@@ -159,7 +166,7 @@ void PgsSolver::load(ByteReader& in, std::size_t) {
     c.twistFriction = in.f64();
     c.sticking = in.boolean();
   }
-  checkSorted(in, cache);
+  checkKeys(in, cache, bodies);
   std::vector<SolvedContactPoint> points = loadPoints(in);
   forget();
   cache_ = std::move(cache);

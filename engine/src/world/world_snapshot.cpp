@@ -206,6 +206,10 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
   w.updateJointFilter();
   w.collision_->load(in, w.bodies_, w.planes_.size());
   w.solver_->load(in, n);
+  // Each contact point names its contact (World::contactPoints, read by index).
+  for (const SolvedContactPoint& point : w.solver_->points()) {
+    if (point.contact >= w.collision_->contacts().size()) in.fail("a contact point of a contact past the last");
+  }
   return w;
 }
 
