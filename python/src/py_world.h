@@ -84,16 +84,28 @@ class PyWorld {
   // (World::setSettings): read and checked as in a scene file, InputError naming the key.
   void setSetting(const char* key, const pybind11::handle& value);
 
-  // A saved state (World.get_state): the whole World copied, with the Scene and names beside it.
+  // A saved state (World.get_state): the whole World copied, with the Scene and names beside it;
+  // or, read from bytes (a pickle, rbsim.load_state), the World's snapshot (world/world_snapshot.h)
+  // with the scene file and the bodies' inertia methods (python/src/state_file.cpp).
   struct Saved {
     Scene scene;
-    World world;
+    std::optional<World> world;            // taken here; empty for a state read from bytes
+    std::vector<std::uint8_t> snapshot;    // read from bytes: the World's snapshot
+    std::vector<std::string> inertiaMethods;  // read from bytes: per body, in World order
     std::unordered_set<std::string> names;
-    std::uint64_t serial;  // the World it was taken from
+    std::uint64_t serial;  // the World it was taken from (in the process that took it)
+    double time = 0.0;            // [s]
+    std::uint64_t stepCount = 0;
+    std::size_t bodyCount = 0;
+    std::string source = "State";  // read from bytes: the file (or the pickle) it came from, for messages
   };
   std::shared_ptr<Saved> save() const;
-  // Back to `saved`, bit for bit (World.set_state); InputError for a state of another World.
+  // Back to `saved`, bit for bit (World.set_state); InputError for a state of another World. A
+  // state read from bytes goes into any World built as its World was (the same scene, the same
+  // bodies added): the snapshot takes the bodies' shapes from it.
   void restore(const Saved& saved);
+  // World.from_state: a World built from the state's scene file, then restored.
+  static PyWorld fromState(const Saved& saved);
 
   // Every reader and writer of the World goes through these, or calls waitIdle() first.
   World& world() {

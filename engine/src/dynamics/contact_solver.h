@@ -23,6 +23,8 @@ namespace rbsim {
 // `planeMaterials` one per plane; `addGravity`: the forces accumulated in the bodies lack m g
 // (World::step adds gravity in its Integrate pass unless other forces act).
 class BodyRemoval;  // body/body_removal.h
+class ByteWriter;   // math/byte_stream.h
+class ByteReader;
 
 struct SolverInput {
   std::vector<RigidBody>& bodies;
@@ -83,6 +85,12 @@ class ContactSolver {
   virtual void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) = 0;
   // A deep copy, warm starts included (World's copy, a saved state).
   virtual std::unique_ptr<ContactSolver> clone() const = 0;
+  // A World snapshot (world/world_snapshot.h; Jolt's ContactConstraintManager::SaveState): what
+  // the next solve reads of the last one (the warm starts, the bodies it advanced, its contact
+  // points), for a World of `bodies` bodies. The default refuses, naming the solver: a solver
+  // whose state has no saved form (dynamics/solver_snapshot.cpp).
+  virtual void save(ByteWriter& out) const;
+  virtual void load(ByteReader& in, std::size_t bodies);
 
   // Order::CollideFirst: the World bodies the last solve advanced, which the integrator must
   // leave alone, as a list and as flags per body. Empty for a solver that advances none.

@@ -28,6 +28,8 @@ class PgsSolver final : public ContactSolver {
   bool solvesJoints() const override { return false; }
   // Changes P and L of the bodies in contact (and x, q where they penetrate beyond the slop).
   void solve(const SolverInput& input) override;
+  void save(ByteWriter& out) const override;  // dynamics/solver_snapshot.cpp
+  void load(ByteReader& in, std::size_t bodies) override;
   std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<PgsSolver>(*this); }
   const std::vector<SolvedContactPoint>& points() const override { return solved_; }
   void forget() override {

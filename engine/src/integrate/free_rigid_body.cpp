@@ -82,7 +82,7 @@ double completeThirdKind(double n, double kc2) {
 
 FreeRigidBodyFlow::FreeRigidBodyFlow(const Quat& principalToWorld, const Vec3& angularMomentum,
                                      const Vec3& principalMoments)
-    : epoch_(principalToWorld.normalized()), angularMomentum_(angularMomentum), moments_(principalMoments) {
+    : given_(principalToWorld), epoch_(principalToWorld.normalized()), angularMomentum_(angularMomentum), moments_(principalMoments) {
   momentumMagnitude_ = angularMomentum.stableNorm();  // |L| from 1e-160 to 1e158 without under- or overflow
   if (momentumMagnitude_ == 0.0) return;  // Regime::Rest
   const Vec3& I = moments_;

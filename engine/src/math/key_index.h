@@ -7,7 +7,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
+
+#include "math/byte_stream.h"
 
 namespace rbsim {
 
@@ -24,6 +28,13 @@ class KeyIndex {
     slots_.assign(capacity, Slot{});
   }
   void clear() { slots_.clear(); }
+  // The largest index held (0 when none), for checking a loaded table against what it indexes.
+  std::uint32_t maxIndex() const {
+    std::uint32_t m = 0;
+    for (const Slot& s : slots_) m = s.key != 0 && s.index > m ? s.index : m;
+    return m;
+  }
+  bool empty() const { return slots_.empty(); }
   // Maps `key` (nonzero; 0 marks an empty slot) to `index`; a key given twice keeps the first.
   // At most the `count` of the last reset: the table is then half full, and a probe ends.
   void insert(std::uint64_t key, std::uint32_t index) {
@@ -41,6 +52,35 @@ class KeyIndex {
       if (slots_[s].key == key) return slots_[s].index;
       if (slots_[s].key == 0) return std::nullopt;
     }
+  }
+  // A World snapshot (world/world_snapshot.h): the table as it is, probe order and all, since
+  // insert keeps the first of equal keys and a rebuild would need the order they came in.
+  void save(ByteWriter& out) const {
+    out.u32(static_cast<std::uint32_t>(shift_));
+    out.count(slots_.size());
+    for (const Slot& s : slots_) {
+      out.u64(s.key);
+      out.u32(s.index);
+    }
+  }
+  void load(ByteReader& in) {
+    const std::uint32_t shift = in.u32();
+    const std::size_t count = in.count(12, "key index slots");
+    // Empty, or a power of two >= 16 matching the shift (reset's table).
+    const bool empty = count == 0;
+    const bool power = count >= 16 && (count & (count - 1)) == 0 && shift < 64 && (std::size_t{1} << (64 - shift)) == count;
+    if (!empty && !power) in.fail("a key index of " + std::to_string(count) + " slots with shift " + std::to_string(shift));
+    std::vector<Slot> slots(count);
+    for (Slot& s : slots) {
+      s.key = in.u64();
+      s.index = in.u32();
+    }
+    // A probe stops at an empty slot: a full table would loop forever.
+    bool hasEmpty = empty;
+    for (const Slot& s : slots) hasEmpty = hasEmpty || s.key == 0;
+    if (!hasEmpty) in.fail("a key index without an empty slot");
+    slots_ = std::move(slots);
+    shift_ = static_cast<int>(shift);
   }
 
  private:

@@ -27,6 +27,8 @@ namespace rbsim {
 Aabb bodyBounds(const RigidBody& body);
 
 class BodyRemoval;  // body/body_removal.h
+class ByteWriter;   // math/byte_stream.h
+class ByteReader;
 
 class CollisionPipeline {
  public:
@@ -48,6 +50,15 @@ class CollisionPipeline {
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
   void replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid);
+
+  // A World snapshot (world/world_snapshot.h; collision_pipeline_snapshot.cpp): what the next
+  // step reads of the last one, that the bodies alone do not give: the proxies' ids and boxes,
+  // the reach and start of each body, this step's contacts, the recycling frames and their index.
+  // load() reads into a pipeline holding the same bodies, added in order (their measures), and
+  // rebuilds the broad phase with the same ids: its pairs are those of the boxes, whatever path
+  // its updates took (broad_phase.h).
+  void save(ByteWriter& out) const;
+  void load(ByteReader& in, const std::vector<RigidBody>& bodies, std::size_t planes);
 
   // Pairs of bodies that never collide (jointed bodies without collide_connected): body indices,
   // either order. The narrow phase skips them.

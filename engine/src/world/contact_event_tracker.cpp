@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "body/body_removal.h"
+#include "math/byte_stream.h"
 #include "rbsim/world/world.h"
 #include "world/collision_pipeline.h"
 
@@ -219,6 +220,32 @@ void ContactEventTracker::commit() {
   events_.end.insert(events_.end.end(), step_.end.begin(), step_.end.end());
   queuedEnds_.clear();
   step_.clear();
+}
+
+void ContactEventTracker::save(ByteWriter& out) const {
+  out.count(touching_.size());
+  for (const Entry& e : touching_) {
+    out.u64(e.hi);
+    out.u64(e.lo);
+    out.u32(e.contact);
+    out.boolean(e.swapped);
+    out.boolean(e.hit);
+  }
+}
+
+void ContactEventTracker::load(ByteReader& in) {
+  touching_.resize(in.count(8 + 8 + 4 + 1 + 1, "touching pairs"));
+  for (Entry& e : touching_) {
+    e.hi = in.u64();
+    e.lo = in.u64();
+    e.contact = in.u32();
+    e.swapped = in.boolean();
+    e.hit = in.boolean();
+  }
+  // afterNarrowPhase merges against them in key order.
+  if (!std::is_sorted(touching_.begin(), touching_.end())) in.fail("the touching pairs are not in key order");
+  events_ = {};
+  queuedEnds_.clear();
 }
 
 }  // namespace rbsim

@@ -23,6 +23,8 @@ namespace rbsim {
 class World;
 class CollisionPipeline;
 class BodyRemoval;
+class ByteWriter;  // math/byte_stream.h
+class ByteReader;
 
 class ContactEventTracker {
  public:
@@ -47,6 +49,11 @@ class ContactEventTracker {
   // The step succeeded: its events are the World's until the next one succeeds.
   void commit();
   const ContactEvents& events() const { return events_; }
+  // The pairs touching after the last step, in a World snapshot (world/world_snapshot.cpp), so
+  // that a World read back reports the same events from its next step on. The last step's events
+  // and the ends queued by removals between steps are not saved: a World read back has none.
+  void save(ByteWriter& out) const;
+  void load(ByteReader& in);
 
  private:
   struct Entry {

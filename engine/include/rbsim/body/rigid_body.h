@@ -130,6 +130,7 @@ class alignas(64) RigidBody {
   const StepInputs& stepInputs() const { return inputs_; }
   // What exact and exact4 keep between this body's steps (integrator.h), made when first asked for.
   FreeFlowMemo& freeFlowMemo() { return freeFlow_.get(); }
+  const FreeFlowMemo* freeFlowMemoIfMade() const { return freeFlow_.find(); }  // null: none yet
 
   // Starts fetching the lines a step reads and writes (engine/src/body/step_prefetch.h): the
   // compiler's prefetch stays out of the public headers, and inline in World's Integrate pass.

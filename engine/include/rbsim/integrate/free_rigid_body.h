@@ -27,6 +27,9 @@ class FreeRigidBodyFlow {
   Vec3 principalMomentum(double t) const;
 
   const Quat& epochOrientation() const { return epoch_; }
+  // principalToWorld as given to the constructor (epoch_ is it normalised): a World snapshot
+  // (world/world_snapshot.h) builds the same flow again from it, bit for bit.
+  const Quat& givenOrientation() const { return given_; }
   const Vec3& angularMomentum() const { return angularMomentum_; }
   const Vec3& principalMoments() const { return moments_; }
   // The elliptic modulus k in [0, 1] (1 on the separatrix) and the period of the body-frame
@@ -43,6 +46,7 @@ class FreeRigidBodyFlow {
   Phase phaseAt(double u) const;
   double rotationAboutMomentum(const Phase& phase, double t) const;  // phi(t) - phi(0) [rad]
 
+  Quat given_;
   Quat epoch_;              // principal -> world at t = 0
   Vec3 angularMomentum_;    // L, world [kg m^2/s]
   Vec3 moments_;            // as given

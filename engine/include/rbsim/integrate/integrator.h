@@ -97,6 +97,7 @@ class FreeFlowMemoSlot {
     if (!memo_) memo_ = std::make_unique<FreeFlowMemo>();
     return *memo_;
   }
+  const FreeFlowMemo* find() const { return memo_.get(); }  // null until first used
 
  private:
   std::unique_ptr<FreeFlowMemo> memo_;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <sstream>
+#include <string>
 
 #include "rbsim/math/types.h"
 
@@ -25,6 +27,23 @@ class UniformRandom {
     const double u1 = next(), u2 = between(0.0, 2.0 * kPi), u3 = between(0.0, 2.0 * kPi);
     const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
     return Quat(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
+  }
+
+ // The generator's whole state as the standard's text form (std::mersenne_twister_engine's
+  // operator<<), for a World snapshot; setState returns false, changing nothing, on text that is
+  // not one.
+  std::string state() const {
+    std::ostringstream out;
+    out << engine_;
+    return out.str();
+  }
+  bool setState(const std::string& text) {
+    std::istringstream in(text);
+    std::mt19937_64 engine;
+    in >> engine;
+    if (in.fail()) return false;
+    engine_ = engine;
+    return true;
   }
 
  private:

@@ -72,6 +72,7 @@ struct StageStats {
 
 class World {
   friend struct WorldAccess;
+  friend struct WorldSnapshotAccess;  // world/world_snapshot.cpp: writes and reads every member
 
  public:
   explicit World(const Settings& settings);  // throws std::invalid_argument (checkSettings)

@@ -1,0 +1,272 @@
+// A World snapshot (world/world_snapshot.h): the header, the checksum, and the World's members in
+// one fixed order; the bodies are world_snapshot_bodies.cpp's, the collision stages' and the
+// solver's their own (collision_pipeline_snapshot.cpp, dynamics/solver_snapshot.cpp).
+#include "rbsim/world/world_snapshot.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dynamics/contact_solver.h"
+#include "world/collision_pipeline.h"
+#include "world/contact_event_tracker.h"
+#include "world/snapshot_parts.h"
+#include "world/world_snapshot_access.h"
+
+namespace rbsim {
+
+namespace {
+
+constexpr char kMagic[8] = {'R', 'B', 'S', 'I', 'M', 'W', 'S', 'N'};
+constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+constexpr std::size_t kChecksumBytes = 8;
+constexpr std::size_t kIdBytes = 8;
+
+// FNV-1a 64 over bytes (the hash World::stateHash uses), to tell a corrupted payload.
+std::uint64_t checksum(const std::uint8_t* data, std::size_t size) {
+  constexpr std::uint64_t kOffsetBasis = 14695981039346656037ull, kPrime = 1099511628211ull;
+  std::uint64_t h = kOffsetBasis;
+  for (std::size_t i = 0; i < size; ++i) {
+    h ^= data[i];
+    h *= kPrime;
+  }
+  return h;
+}
+
+void writeIds(ByteWriter& out, const std::vector<BodyId>& ids) {
+  out.count(ids.size());
+  for (const BodyId& id : ids) snapshot::write(out, id);
+}
+
+std::vector<BodyId> readIds(ByteReader& in) {
+  std::vector<BodyId> ids(in.count(kIdBytes, "body ids"));
+  for (BodyId& id : ids) id = snapshot::readId(in);
+  return ids;
+}
+
+template <typename T, typename Write>
+void writeAll(ByteWriter& out, const std::vector<T>& items, Write write) {
+  out.count(items.size());
+  for (const T& item : items) write(out, item);
+}
+
+// Items whose `body` must name one of the World's bodies.
+template <typename T, typename Read>
+std::vector<T> readNaming(ByteReader& in, const World& world, std::size_t minBytes, const char* what, Read read) {
+  std::vector<T> items(in.count(minBytes, what));
+  for (T& item : items) {
+    item = read(in);
+    if (!world.isValid(item.body)) in.fail(std::string(what) + ": a body id that names no body");
+  }
+  return items;
+}
+
+}  // namespace
+
+void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
+  snapshot::write(out, w.settings_);
+  saveBodies(w, out);
+  out.count(w.slots_.size());
+  for (const World::Slot& s : w.slots_) {
+    out.u32(s.index);
+    out.u32(s.generation);
+  }
+  for (std::uint32_t slot : w.slotOfBody_) out.u32(slot);
+  out.u32(w.freeSlot_);
+  out.count(w.planes_.size());
+  for (std::size_t p = 0; p < w.planes_.size(); ++p) {
+    out.vec3(w.planes_[p].normal);
+    out.f64(w.planes_[p].offset);
+    snapshot::write(out, w.planeMaterials_[p]);
+  }
+  writeAll(out, w.forces_, [](ByteWriter& o, const ScriptedForce& f) { snapshot::write(o, f); });
+  writeAll(out, w.springs_, [](ByteWriter& o, const Spring& s) { snapshot::write(o, s); });
+  writeAll(out, w.joints_, [](ByteWriter& o, const Joint& j) { snapshot::write(o, j); });
+  writeAll(out, w.pendingEvents_, [](ByteWriter& o, const PoseEvent& e) { snapshot::write(o, e); });
+  writeAll(out, w.motions_, [](ByteWriter& o, const KinematicMotion& m) { snapshot::write(o, m); });
+  out.count(w.spawners_.size());
+  for (const Spawner& s : w.spawners_) {
+    out.text(s.def.name);
+    out.text(s.random.state());
+    out.u64(s.bursts);
+    out.u64(s.spawned);
+    out.count(s.alive.size());
+    for (const Spawner::Burst& burst : s.alive) {
+      out.f64(burst.time);
+      writeIds(out, burst.bodies);
+    }
+  }
+  snapshot::write(out, w.killVolume_);
+  writeIds(out, w.spawnedNow_);
+  writeIds(out, w.removedNow_);
+  out.count(w.fractureEvents_.size());
+  for (const FractureEvent& e : w.fractureEvents_) {
+    out.f64(e.time);
+    snapshot::write(out, e.body);
+    writeIds(out, e.added);
+    out.f64(e.impulse);
+  }
+  out.u64(w.stepCount_);
+  out.f64(w.timeOrigin_);
+  out.u64(w.stepsAtOrigin_);
+  w.collision_->save(out);
+  w.solver_->save(out);
+  w.contactEvents_->save(out);
+}
+
+World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
+  World w(snapshot::readSettings(in));
+  loadBodies(in, base, w);
+  const std::size_t n = w.bodies_.size();
+  // The ids' table (bodies.cpp): every body's slot points back at it, and the free list runs
+  // through the other slots exactly once.
+  std::vector<World::Slot> slots(in.count(8, "id slots"));
+  for (World::Slot& s : slots) {
+    s.index = in.u32();
+    s.generation = in.u32();
+  }
+  std::vector<std::uint32_t> slotOfBody(n);
+  std::vector<char> used(slots.size(), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    slotOfBody[i] = in.u32();
+    if (slotOfBody[i] >= slots.size() || used[slotOfBody[i]] || slots[slotOfBody[i]].index != i) {
+      in.fail("body " + std::to_string(i) + "'s id slot " + std::to_string(slotOfBody[i]) + " does not name it");
+    }
+    used[slotOfBody[i]] = 1;
+  }
+  const std::uint32_t freeSlot = in.u32();
+  std::size_t freeCount = 0;
+  for (std::uint32_t s = freeSlot; s != UINT32_MAX; s = slots[s].index) {
+    if (s >= slots.size() || used[s]) in.fail("the free list of id slots reaches slot " + std::to_string(s));
+    used[s] = 1;
+    ++freeCount;
+  }
+  if (n + freeCount != slots.size()) in.fail("id slots neither a body's nor free");
+  w.slots_ = std::move(slots);
+  w.slotOfBody_ = std::move(slotOfBody);
+  w.freeSlot_ = freeSlot;
+
+  const std::size_t planes = in.count(7 * 8, "planes");
+  for (std::size_t p = 0; p < planes; ++p) {
+    Plane plane;
+    plane.normal = in.vec3();
+    plane.offset = in.f64();
+    const Material material = snapshot::readMaterial(in);
+    try {
+      w.addPlane(plane, material);
+    } catch (const std::invalid_argument& e) {
+      in.fail(std::string("plane ") + std::to_string(p) + ": " + e.what());
+    }
+  }
+  w.forces_ = readNaming<ScriptedForce>(in, w, 8 + 8 * 8 + 8, "scripted forces", snapshot::readForce);
+  w.springs_ = readNaming<Spring>(in, w, 8 + 9 * 8, "springs", snapshot::readSpring);
+  std::vector<Joint> joints(in.count(8, "joints"));
+  for (Joint& j : joints) {
+    j = snapshot::readJoint(in);
+    if (j.a >= n || (j.b != kWorldIndex && j.b >= n) || j.a == j.b) in.fail("joint '" + j.def.name + "': bodies out of range");
+  }
+  w.joints_ = std::move(joints);
+  if (!w.joints_.empty() && !w.solver_->solvesJoints()) in.fail("joints under a solver that solves none");
+  w.pendingEvents_ = readNaming<PoseEvent>(in, w, 8 + 8 + 4, "pose events", snapshot::readPoseEvent);
+  w.motions_ = readNaming<KinematicMotion>(in, w, 8 + 4 + 6 * 8 + 8 + 1, "kinematic motions", snapshot::readMotion);
+  const std::size_t spawners = in.count(8, "spawners");
+  if (spawners != base.spawners_.size()) {
+    in.fail(std::to_string(spawners) + " spawners where the World read into has " + std::to_string(base.spawners_.size()));
+  }
+  for (std::size_t k = 0; k < spawners; ++k) {
+    Spawner s = base.spawners_[k];
+    const std::string name = in.text();
+    if (name != s.def.name) in.fail("spawner '" + name + "' where the World read into has '" + s.def.name + "'");
+    if (!s.random.setState(in.text())) in.fail("spawner '" + name + "': a random generator state that is none");
+    s.bursts = in.u64();
+    s.spawned = in.u64();
+    s.alive.clear();
+    const std::size_t bursts = in.count(16, "living bursts");
+    for (std::size_t b = 0; b < bursts; ++b) {
+      const double time = in.f64();
+      s.alive.push_back({time, readIds(in)});
+    }
+    w.spawners_.push_back(std::move(s));
+  }
+  w.killVolume_ = snapshot::readAabb(in);
+  if (w.killVolume_.min.hasNaN() || w.killVolume_.max.hasNaN()) in.fail("a kill volume with a NaN");
+  w.spawnedNow_ = readIds(in);
+  w.removedNow_ = readIds(in);
+  w.fractureEvents_.resize(in.count(8 + 8 + 8 + 8, "fracture events"));
+  for (FractureEvent& e : w.fractureEvents_) {
+    e.time = in.f64();
+    e.body = snapshot::readId(in);
+    e.added = readIds(in);
+    e.impulse = in.f64();
+  }
+  w.stepCount_ = in.u64();
+  w.timeOrigin_ = in.f64();
+  w.stepsAtOrigin_ = in.u64();
+  if (w.stepsAtOrigin_ > w.stepCount_) in.fail("the time step changed after the step count");
+  w.updateJointFilter();
+  w.collision_->load(in, w.bodies_, w.planes_.size());
+  w.solver_->load(in, n);
+  w.contactEvents_->load(in);
+  // Each contact point names its contact (World::contactPoints, read by index).
+  for (const SolvedContactPoint& point : w.solver_->points()) {
+    if (point.contact >= w.collision_->contacts().size()) in.fail("a contact point of a contact past the last");
+  }
+  return w;
+}
+
+std::vector<std::uint8_t> saveWorldSnapshot(const World& world) {
+  if (!world.stepListeners().empty()) {
+    throw std::invalid_argument("World snapshot: the World has " + std::to_string(world.stepListeners().size()) +
+                                " step listeners (particles, soft bodies or a 2D world), whose state cannot be saved");
+  }
+  if (world.settings().solver == Settings::ContactSolverMethod::Lcp) {
+    throw std::invalid_argument("World snapshot: the lcp solver's state cannot be saved (world.solver: soft_step or pgs)");
+  }
+  ByteWriter out;
+  for (char c : kMagic) out.u8(static_cast<std::uint8_t>(c));
+  out.u32(kWorldSnapshotVersion);
+  out.u64(0);  // the payload's size, written below
+  WorldSnapshotAccess::save(world, out);
+  std::vector<std::uint8_t>& bytes = out.bytes();
+  const std::uint64_t payload = bytes.size() - kHeaderBytes;
+  for (int k = 0; k < 8; ++k) bytes[12 + k] = static_cast<std::uint8_t>(payload >> (8 * k));
+  out.u64(checksum(bytes.data() + kHeaderBytes, payload));
+  return std::move(bytes);
+}
+
+// The payload's size, after checking the header and the checksum.
+static std::size_t checkedPayload(const std::uint8_t* data, std::size_t size, const std::string& what) {
+  ByteReader header(data, size, what);
+  for (char c : kMagic) {
+    if (header.u8() != static_cast<std::uint8_t>(c)) header.fail("not a World snapshot (expected the magic RBSIMWSN)");
+  }
+  const std::uint32_t version = header.u32();
+  if (version != kWorldSnapshotVersion) {
+    header.fail("World snapshot version " + std::to_string(version) + " (this build reads version " +
+                std::to_string(kWorldSnapshotVersion) + ")");
+  }
+  const std::uint64_t payload = header.u64();
+  if (header.remaining() < kChecksumBytes || payload != header.remaining() - kChecksumBytes) {
+    header.fail("truncated or extended: a payload of " + std::to_string(payload) + " bytes where " +
+                std::to_string(size) + " bytes hold " + std::to_string(size - std::min(size, kHeaderBytes + kChecksumBytes)));
+  }
+  ByteReader sum(data + kHeaderBytes + payload, kChecksumBytes, what);
+  if (sum.u64() != checksum(data + kHeaderBytes, payload)) header.fail("corrupted: the checksum does not match the contents");
+  return static_cast<std::size_t>(payload);
+}
+
+void checkWorldSnapshot(const std::uint8_t* data, std::size_t size, const std::string& what) {
+  static_cast<void>(checkedPayload(data, size, what));
+}
+
+World loadWorldSnapshot(const std::uint8_t* data, std::size_t size, const World& base, const std::string& what) {
+  const std::size_t payload = checkedPayload(data, size, what);
+  ByteReader in(data + kHeaderBytes, payload, what);
+  World world = WorldSnapshotAccess::load(in, base);
+  if (in.remaining() != 0) in.fail(std::to_string(in.remaining()) + " bytes left over after the World");
+  return world;
+}
+
+}  // namespace rbsim
