@@ -4,6 +4,7 @@
 
 #include "rbsim/math/format_number.h"
 #include "rbsim/math/physical_ranges.h"
+#include "rbsim/math/types.h"
 
 namespace rbsim {
 
@@ -47,7 +48,7 @@ std::string limitsExpectation(JointDef::Type type) {
 }
 
 std::string limitsProblem(double lower, double upper, JointDef::Type type) {
-  const double bound = slider(type) ? kMaxCoordinate : M_PI;
+  const double bound = slider(type) ? kMaxCoordinate : kPi;
   return lower >= -bound && lower <= upper && upper <= bound ? std::string() : limitsExpectation(type);
 }
 

@@ -5,6 +5,7 @@
 #include <cstddef>
 
 #include "rbsim/dynamics/joint_ranges.h"
+#include "rbsim/math/types.h"
 #include "rbsim/scene/scene_keys.h"
 #include "scene/input_ranges.h"
 
@@ -55,22 +56,22 @@ inline constexpr SceneKey kJointKeyTable[] = {
     RBSIM_JOINT_COMMON_KEYS, RBSIM_JOINT_AXIS_KEY,
     key("motor", KeyType::Object, "a motor (hinge, prismatic)"),
     key("limits", KeyType::NumberArray, "[lower, upper] angles [rad] or translations [m] (hinge, prismatic)").sized(2),
-    key("cone", KeyType::Number, "a ball joint's cone half-angle [rad]").within(0.0, M_PI),
-    key("twist", KeyType::NumberArray, "a ball joint's [lower, upper] twist [rad]").sized(2).magnitude(M_PI),
+    key("cone", KeyType::Number, "a ball joint's cone half-angle [rad]").within(0.0, kPi),
+    key("twist", KeyType::NumberArray, "a ball joint's [lower, upper] twist [rad]").sized(2).magnitude(kPi),
     RBSIM_JOINT_SPRING_KEY, RBSIM_JOINT_FRICTION_KEY, RBSIM_WELD_KEYS, RBSIM_JOINT_COLLIDE_KEY,
 };
 inline constexpr KeyTable kJointKeys{kJointKeyTable, "a joint between two bodies, its keys by \"type\""};
 
 inline constexpr SceneKey kBallJointKeyTable[] = {
     RBSIM_JOINT_COMMON_KEYS, RBSIM_JOINT_AXIS_KEY,
-    key("cone", KeyType::Number, "the cone's half-angle about the axis [rad]").within(0.0, M_PI),
-    key("twist", KeyType::NumberArray, "[lower, upper] twist about the axis [rad]").sized(2).magnitude(M_PI),
+    key("cone", KeyType::Number, "the cone's half-angle about the axis [rad]").within(0.0, kPi),
+    key("twist", KeyType::NumberArray, "[lower, upper] twist about the axis [rad]").sized(2).magnitude(kPi),
     RBSIM_JOINT_SPRING_KEY, RBSIM_JOINT_FRICTION_KEY, RBSIM_JOINT_COLLIDE_KEY,
 };
 inline constexpr SceneKey kHingeJointKeyTable[] = {
     RBSIM_JOINT_COMMON_KEYS, RBSIM_JOINT_AXIS_KEY.needed(),
     key("motor", KeyType::Object, "a motor").of(kHingeMotorKeys),
-    key("limits", KeyType::NumberArray, "[lower, upper] angles [rad], lower <= upper").sized(2).magnitude(M_PI),
+    key("limits", KeyType::NumberArray, "[lower, upper] angles [rad], lower <= upper").sized(2).magnitude(kPi),
     RBSIM_JOINT_SPRING_KEY, RBSIM_JOINT_FRICTION_KEY, RBSIM_JOINT_COLLIDE_KEY,
 };
 inline constexpr SceneKey kPrismaticJointKeyTable[] = {
