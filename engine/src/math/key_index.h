@@ -28,10 +28,11 @@ class KeyIndex {
     slots_.assign(capacity, Slot{});
   }
   void clear() { slots_.clear(); }
-  // The largest index held (0 when none), for checking a loaded table against what it indexes.
-  std::uint32_t maxIndex() const {
-    std::uint32_t m = 0;
-    for (const Slot& s : slots_) m = s.key != 0 && s.index > m ? s.index : m;
+  // The largest index a key maps to, or -1 when no key is held (a table reset for a step that
+  // kept nothing has slots and no key), for checking a loaded table against what it indexes.
+  std::int64_t maxIndex() const {
+    std::int64_t m = -1;
+    for (const Slot& s : slots_) m = s.key != 0 && static_cast<std::int64_t>(s.index) > m ? s.index : m;
     return m;
   }
   bool empty() const { return slots_.empty(); }

@@ -212,7 +212,7 @@ void CollisionPipeline::load(ByteReader& in, const std::vector<RigidBody>& bodie
   std::vector<RecycleFrame> planeFrames = loadFrames(in);
   KeyIndex recycle;
   recycle.load(in);
-  if (!recycle.empty() && recycle.maxIndex() >= pairFrames.size() + planeFrames.size()) {
+  if (recycle.maxIndex() >= static_cast<std::int64_t>(pairFrames.size() + planeFrames.size())) {
     in.fail("the recycling index names a frame past the " + std::to_string(pairFrames.size() + planeFrames.size()) + " kept");
   }
   const std::uint64_t recycledCount = in.u64();

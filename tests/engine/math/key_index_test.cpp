@@ -49,5 +49,21 @@ TEST(KeyIndex, ResetAndClearForgetEveryKey) {
   EXPECT_FALSE(index.find(5).has_value());
 }
 
+// What a World snapshot's reader checks a loaded table against (collision_pipeline_snapshot.cpp):
+// a table reset for a step that kept no frame holds slots and no key, and names no index, so a
+// valid snapshot of it must not be refused as naming frame 0 of none (seen under clang's -O1).
+TEST(KeyIndex, MaxIndexIsMinusOneWithoutAKeyAndTheLargestWithKeys) {
+  KeyIndex index;
+  EXPECT_EQ(index.maxIndex(), -1);  // no slots
+  index.reset(4);
+  EXPECT_FALSE(index.empty());
+  EXPECT_EQ(index.maxIndex(), -1);  // slots, no key
+  index.insert(7, 0);
+  EXPECT_EQ(index.maxIndex(), 0);
+  index.insert(9, 3);
+  index.insert(11, 2);
+  EXPECT_EQ(index.maxIndex(), 3);
+}
+
 }  // namespace
 }  // namespace rbsim
