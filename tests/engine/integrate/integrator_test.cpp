@@ -140,7 +140,7 @@ TEST_P(EachIntegrator, StepAppliesForceAndTorqueAsForwardEuler) {
   y.angularMomentum = Vec3(-1.0, 0.5, 0.25);
   const BodyInertia inertia{Mat3::Identity(), Vec3::Ones(), Mat3::Identity()};
   const StepInputs in{Vec3(2.0, -1.0, 0.5), Vec3::Zero(), y.orientation.toRotationMatrix(),
-                      Vec3(8.0, 0.0, -4.0), Vec3(0.0, 16.0, 2.0), 0.5, Mat3::Identity(), &inertia};
+                      Vec3(8.0, 0.0, -4.0), Vec3(0.0, 16.0, 2.0), 0.5, Mat3::Identity(), &inertia, Vec3::Zero()};
   const double dt = 0.25;
   const BodyState next = integrate(GetParam(), y, in, dt);
   EXPECT_TRUE(allNear(next.position, y.position + dt * in.velocity, 0.0));

@@ -300,7 +300,7 @@ TEST_F(SceneFiles, NaNIsAJsonSyntaxError) {
 // writing the shape's cache key threw nlohmann's type_error 316 past every handler (the set
 // fuzzer's crash, tests/fuzz/corpus/set): refused as bad input now, naming --set.
 TEST(ParseScene, AnOverrideThatIsNotUtf8IsRefused) {
-  for (const std::string assignment : {std::string("bodies[0]shape.t\x87\x87=[1,2,3]"), std::string("bodies.box.name=\xff"),
+  for (const std::string& assignment : {std::string("bodies[0]shape.t\x87\x87=[1,2,3]"), std::string("bodies.box.name=\xff"),
                                        std::string("title=caf\xc3")}) {
     try {
       parseSceneText(minimalScene().dump(), "test.json", RBSIM_TEST_DATA_DIR, {assignment});

@@ -29,7 +29,7 @@ ImplicitShape cup(int resolution) {
   // The inner cylinder is as tall as the outer and starts at the floor: it pokes out of the rim.
   const ImplicitFunction inner = ImplicitFunction::primitive(CylinderSurface{kr, 0.5 * kH}, Vec3(0.0, kFloor, 0.0));
   return {std::make_shared<const ImplicitFunction>(ImplicitFunction::combine(CsgOp::Difference, outer, inner)),
-          resolution};
+          resolution, nullptr};
 }
 
 double cupVolume() { return M_PI * (kR * kR * kH - kr * kr * kh); }
@@ -90,7 +90,7 @@ TEST(ImplicitShape, APlainTorusMeshesWithoutSelfCrossingWhereItUsedTo) {
   const std::vector<int> resolutions = test::kSanitizedBuild ? std::vector<int>{54, 65}
                                                              : std::vector<int>{54, 65, 75, 78, 81, 91, 100, 104};
   for (const int resolution : resolutions) {
-    const ImplicitMeshing m = meshImplicitShape(ImplicitShape{torus, resolution});
+    const ImplicitMeshing m = meshImplicitShape(ImplicitShape{torus, resolution, nullptr});
     EXPECT_FALSE(TriangleBvh(m.mesh).selfCrossing(1e9).found) << "resolution " << resolution;
     const double pappus = 2.0 * M_PI * M_PI * 0.5 * 0.15 * 0.15;
     EXPECT_NEAR(polyhedralMassProperties(m.mesh, 1.0).volume, pappus, 0.01 * pappus) << "resolution " << resolution;
@@ -127,7 +127,7 @@ TEST(ImplicitShape, RandomTreesMeshClosedWithoutZeroAreaTriangles) {
     ImplicitFunction f = primitive();
     const int operations = static_cast<int>(3.0 * u(rng));
     for (int k = 0; k < operations; ++k) f = ImplicitFunction::combine(static_cast<CsgOp>(static_cast<int>(3.0 * u(rng))), f, primitive());
-    const ImplicitShape shape{std::make_shared<const ImplicitFunction>(f), 8 + static_cast<int>(40.0 * u(rng))};
+    const ImplicitShape shape{std::make_shared<const ImplicitFunction>(f), 8 + static_cast<int>(40.0 * u(rng)), nullptr};
     ImplicitMeshing m;
     try {
       m = meshImplicitShape(shape);
@@ -151,17 +151,17 @@ TEST(ImplicitShape, EmptySolidsAndOverBudgetGridsAreRefused) {
   const ImplicitFunction small = ImplicitFunction::primitive(SphereSurface{0.3});
   const ImplicitFunction big = ImplicitFunction::primitive(SphereSurface{0.5});
   const ImplicitShape nothing{std::make_shared<const ImplicitFunction>(
-                                  ImplicitFunction::combine(CsgOp::Difference, small, big)), 32};
+                                  ImplicitFunction::combine(CsgOp::Difference, small, big)), 32, nullptr};
   try {
     meshImplicitShape(nothing);
     ADD_FAILURE() << "an empty difference was meshed";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("no volume"), std::string::npos) << e.what();
   }
-  const ImplicitShape huge{std::make_shared<const ImplicitFunction>(small), 1024};
+  const ImplicitShape huge{std::make_shared<const ImplicitFunction>(small), 1024, nullptr};
   EXPECT_NE(implicitBudgetProblem(huge).find("the limit is"), std::string::npos);
   EXPECT_THROW(meshImplicitShape(huge), std::invalid_argument);
-  EXPECT_TRUE(implicitBudgetProblem(ImplicitShape{huge.function, 64}).empty());
+  EXPECT_TRUE(implicitBudgetProblem(ImplicitShape{huge.function, 64, nullptr}).empty());
 }
 
 // Issue 37: the budget bounded one grid's evaluations only, and a tree within it took 158 s to
@@ -169,7 +169,7 @@ TEST(ImplicitShape, EmptySolidsAndOverBudgetGridsAreRefused) {
 // before they are sampled, the mesh's checks by its triangles, the crossings and corners as they
 // go, and the first charge past it throws, naming the stage.
 TEST(ImplicitShape, OneBudgetBoundsEveryStageOfLoading) {
-  const ImplicitShape torus{std::make_shared<const ImplicitFunction>(ImplicitFunction::primitive(TorusSurface{0.5, 0.15})), 32};
+  const ImplicitShape torus{std::make_shared<const ImplicitFunction>(ImplicitFunction::primitive(TorusSurface{0.5, 0.15})), 32, nullptr};
   const GridLattice grid = implicitGridLattice(torus);
   const double gridPoints = grid.dims.cast<double>().prod();
   // Unbounded: what each stage costs.
@@ -223,7 +223,7 @@ TEST(ImplicitShape, ASolidThinnerThanACellIsSaidToBeNotEmpty) {
     return ImplicitShape{std::make_shared<const ImplicitFunction>(ImplicitFunction::combine(
                              CsgOp::Intersection, ImplicitFunction::primitive(SphereSurface{0.5}),
                              ImplicitFunction::primitive(SphereSurface{0.5}, Vec3(apart, 0.0, 0.0)))),
-                         16};
+                         16, nullptr};
   };
   const auto problem = [](const ImplicitShape& shape) {
     try {
@@ -241,7 +241,7 @@ TEST(ImplicitShape, ASolidThinnerThanACellIsSaidToBeNotEmpty) {
                                 CsgOp::Intersection, ImplicitFunction::primitive(BoxSurface{Vec3::Constant(1.0)}),
                                 ImplicitFunction::combine(CsgOp::Difference, ImplicitFunction::primitive(BoxSurface{Vec3::Constant(1.0)}),
                                                           ImplicitFunction::primitive(BoxSurface{Vec3::Constant(1.5)})))),
-                            16};
+                            16, nullptr};
   EXPECT_NE(problem(apart).find("the solid is empty"), std::string::npos) << problem(apart);
 }
 

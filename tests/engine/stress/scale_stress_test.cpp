@@ -68,7 +68,8 @@ bool finiteAndUnit(const RigidBody& b) {
 
 // Each integrator's position after n steps of constant g is x0 + v0 t + g t^2/2 + c g t dt/2:
 // forward Euler (x += dt v_n) lags by g t dt/2 (c = -1); symplectic Euler and implicit-gyro
-// (x += dt v_{n+1}) lead by it (c = +1); rk4, dlm and newmark are exact for a constant force (c = 0).
+// (x += dt v_{n+1}) lead by it (c = +1); rk4, dlm, newmark, exact and exact4 (a constant force's
+// half kicks around an exact drift) are exact for it (c = 0).
 double parabolaOffset(Integrator integrator) {
   switch (integrator) {
     case Integrator::EulerMatrix:
@@ -78,7 +79,9 @@ double parabolaOffset(Integrator integrator) {
     case Integrator::ImplicitGyro: return 1.0;
     case Integrator::Rk4:
     case Integrator::Dlm:
-    case Integrator::Newmark: return 0.0;
+    case Integrator::Newmark:
+    case Integrator::Exact:
+    case Integrator::Exact4: return 0.0;
   }
   return 0.0;
 }

@@ -134,7 +134,8 @@ TEST(ContactEventsCompound, TheTouchingChildrenAreNamed) {
   World w(s);
   w.addPlane(Plane{});
   // A static table of two boxes (children 0 at x = -2, 1 at x = +2), a ball dropped on child 1.
-  CompoundPart left{Shape::box(Vec3(0.5, 0.5, 0.5))}, right{Shape::box(Vec3(0.5, 0.5, 0.5))};
+  CompoundPart left, right;
+  left.shape = right.shape = Shape::box(Vec3(0.5, 0.5, 0.5));
   left.position = Vec3(-2, 0.5, 0);
   right.position = Vec3(2, 0.5, 0);
   BodyDef table = compoundBodyDef({left, right}, "table");
@@ -144,7 +145,8 @@ TEST(ContactEventsCompound, TheTouchingChildrenAreNamed) {
   ball.position = Vec3(2, 1.5, 0);
   const BodyId b = w.addBody(ball);
   // A dumbbell of two balls, child 1 lower, dropped on the ground beside it.
-  CompoundPart high{Shape::sphere(0.2)}, low{Shape::sphere(0.2)};
+  CompoundPart high, low;
+  high.shape = low.shape = Shape::sphere(0.2);
   high.position = Vec3(-0.5, 0.3, 0);
   low.position = Vec3(0.5, 0.0, 0);
   const BodyId d = w.addBody([&] {

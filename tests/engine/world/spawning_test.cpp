@@ -109,7 +109,9 @@ TEST_P(Spawning, TheKillVolumeRemovesWhatFallsOutAndItsIdsStayStale) {
     }
     for (const BodyId id : w.removedBodies()) removed.push_back(id);
     for (const RigidBody& b : w.bodies()) {
-      if (!b.isStatic()) EXPECT_GE(b.position().y(), -1.0) << "removed once out";
+      if (!b.isStatic()) {
+        EXPECT_GE(b.position().y(), -1.0) << "removed once out";
+      }
     }
     most = std::max(most, w.bodies().size());
   }

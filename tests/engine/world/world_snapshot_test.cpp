@@ -144,7 +144,9 @@ TEST(WorldSnapshotCases, TheStacksSleepTheSpawnerHasSpawnedAndRemovedTheWallBrok
   stepN(stacks, scaled(400));
   std::size_t asleep = 0;
   for (const RigidBody& b : stacks.bodies()) asleep += !b.isStatic() && !b.awake();
-  if (!kSanitizedBuild) EXPECT_GT(asleep, 0u);
+  if (!kSanitizedBuild) {
+    EXPECT_GT(asleep, 0u);
+  }
 
   World spawns = sceneWorld({"", "machinery_table.json",
                              {R"(spawn=[{"name": "rock", "count": 2, "period": 0.5, "region": {"min": [-1, 3, -1], "max": [1, 4, 1]},
@@ -159,7 +161,9 @@ TEST(WorldSnapshotCases, TheStacksSleepTheSpawnerHasSpawnedAndRemovedTheWallBrok
   World wall = sceneWorld({"", "fracture_wall.json", {}, 0, 0});
   const std::size_t bricks = wall.bodies().size();
   stepN(wall, scaled(60));
-  if (!kSanitizedBuild) EXPECT_GT(wall.bodies().size(), bricks) << "nothing broke before the snapshot";
+  if (!kSanitizedBuild) {
+    EXPECT_GT(wall.bodies().size(), bricks) << "nothing broke before the snapshot";
+  }
 }
 
 // A small World: a box resting on a plane and a ball falling on it.
