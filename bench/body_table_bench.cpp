@@ -3,7 +3,8 @@
 //    against one with 1,000 sleeping and the same 10 awake (goal: at most 1.5x);
 //  - removal costs what it touches: World::destroyBody of one box from a resting pile of 10,000,
 //    against one from a pile of 1,000 (goal: at most 2x).
-// Run: build/bench/body_table_bench [repeats]   (median of `repeats` timings, 9 by default)
+// Run: build/bench/body_table_bench [repeats] [--removal | --step]   (median of `repeats` timings,
+// 9 by default; --removal or --step runs only that half)
 // The sleepers rest on the ground 1 m apart (each touches only the ground); the pile's boxes are
 // 5 mm apart, within the contact margin, so each has contacts with its neighbours as well
 // (bench/removal_scenes.py's layout). The removed box is the pile's middle one, on a fresh copy of
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "rbsim/mass/mass_properties.h"
@@ -118,11 +120,25 @@ double removalTime(int count, int repeats) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 9;
-  const double small = stepTime(1000, repeats), large = stepTime(100000, repeats);
-  std::printf("step, 10 awake beside 1,000 sleeping:   %9.1f us\n", 1e6 * small);
-  std::printf("step, 10 awake beside 100,000 sleeping: %9.1f us\n", 1e6 * large);
-  std::printf("no scan of every body: %.2fx (goal: at most 1.5x)\n", large / small);
+  int repeats = 9;
+  bool step = true, removal = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--removal") {
+      step = false;
+    } else if (arg == "--step") {
+      removal = false;
+    } else {
+      repeats = std::max(1, std::atoi(argv[i]));
+    }
+  }
+  if (step) {
+    const double small = stepTime(1000, repeats), large = stepTime(100000, repeats);
+    std::printf("step, 10 awake beside 1,000 sleeping:   %9.1f us\n", 1e6 * small);
+    std::printf("step, 10 awake beside 100,000 sleeping: %9.1f us\n", 1e6 * large);
+    std::printf("no scan of every body: %.2fx (goal: at most 1.5x)\n", large / small);
+  }
+  if (!removal) return 0;
   const double one = removalTime(1000, repeats), ten = removalTime(10000, repeats);
   std::printf("destroyBody, pile of 1,000:  %9.1f us\n", 1e6 * one);
   std::printf("destroyBody, pile of 10,000: %9.1f us\n", 1e6 * ten);

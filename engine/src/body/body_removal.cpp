@@ -1,15 +1,19 @@
 #include "body/body_removal.h"
 
 #include <algorithm>
-#include <numeric>
+#include <unordered_map>
 
 namespace rbsim {
 
 BodyRemoval::BodyRemoval(std::size_t before, std::vector<Step> steps) : before_(before), steps_(std::move(steps)) {
-  // Per index now, the index before the batch of the body there: only indices a removal reached
-  // ever differ from their own.
-  std::vector<std::uint32_t> origin(before_);
-  std::iota(origin.begin(), origin.end(), std::uint32_t{0});
+  // Per index now, the index before the batch of the body there, for the indices a removal
+  // reached (every other index holds its own body): O(k) for k steps, whatever the World's size.
+  std::unordered_map<std::uint32_t, std::uint32_t> origin;
+  origin.reserve(2 * steps_.size());
+  const auto originOf = [&origin](std::uint32_t index) {
+    const auto at = origin.find(index);
+    return at == origin.end() ? index : at->second;
+  };
   struct Raw {
     std::uint32_t body;
     Event event;
@@ -18,23 +22,21 @@ BodyRemoval::BodyRemoval(std::size_t before, std::vector<Step> steps) : before_(
   raw.reserve(2 * steps_.size());
   for (std::uint32_t t = 0; t < steps_.size(); ++t) {
     const Step& s = steps_[t];
-    raw.push_back({origin[s.removed], {t, kGone}});
-    removed_.push_back(origin[s.removed]);
+    const std::uint32_t removedBody = originOf(s.removed);
+    raw.push_back({removedBody, {t, kGone}});
+    removed_.push_back(removedBody);
     if (s.removed == s.last) continue;
-    raw.push_back({origin[s.last], {t, s.removed}});
-    origin[s.removed] = origin[s.last];
+    const std::uint32_t lastBody = originOf(s.last);
+    raw.push_back({lastBody, {t, s.removed}});
+    origin[s.removed] = lastBody;
   }
-  // Events by body, each body's in step order (raw is in step order; the fill is stable).
-  eventStart_.assign(before_ + 1, 0);
-  for (const Raw& r : raw) ++eventStart_[r.body + 1];
-  std::partial_sum(eventStart_.begin(), eventStart_.end(), eventStart_.begin());
-  events_.resize(raw.size());
-  std::vector<std::uint32_t> next(eventStart_.begin(), eventStart_.end() - 1);
-  newIndex_.resize(before_);
-  std::iota(newIndex_.begin(), newIndex_.end(), std::uint32_t{0});
+  // Events by body, each body's in step order (raw is in step order; the sort is stable).
+  std::stable_sort(raw.begin(), raw.end(), [](const Raw& x, const Raw& y) { return x.body < y.body; });
+  events_.reserve(raw.size());
   for (const Raw& r : raw) {
-    events_[next[r.body]++] = r.event;
-    newIndex_[r.body] = r.event.to;  // a body's last event is where it ends, or kGone
+    if (involved_.empty() || involved_.back().body != r.body) involved_.push_back({r.body, static_cast<std::uint32_t>(events_.size()), r.body});
+    events_.push_back(r.event);
+    involved_.back().newIndex = r.event.to;  // a body's last event is where it ends, or kGone
   }
   std::vector<std::uint32_t> reached;
   for (const Step& s : steps_) {
@@ -43,8 +45,27 @@ BodyRemoval::BodyRemoval(std::size_t before, std::vector<Step> steps) : before_(
   std::sort(reached.begin(), reached.end());
   reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   for (const std::uint32_t i : reached) {
-    if (origin[i] != i) moves_.emplace_back(i, origin[i]);
+    const std::uint32_t from = originOf(i);
+    if (from != i) moves_.emplace_back(i, from);
   }
+}
+
+const BodyRemoval::Involved* BodyRemoval::find(std::size_t index) const {
+  const auto at = std::lower_bound(involved_.begin(), involved_.end(), index,
+                                   [](const Involved& x, std::size_t i) { return x.body < i; });
+  return at != involved_.end() && at->body == index ? &*at : nullptr;
+}
+
+const BodyRemoval::Event* BodyRemoval::eventsBegin(std::size_t index) const {
+  const Involved* at = find(index);
+  return at ? events_.data() + at->firstEvent : nullptr;
+}
+
+const BodyRemoval::Event* BodyRemoval::eventsEnd(std::size_t index) const {
+  const Involved* at = find(index);
+  if (!at) return nullptr;
+  const std::size_t next = static_cast<std::size_t>(at - involved_.data()) + 1;
+  return events_.data() + (next < involved_.size() ? involved_[next].firstEvent : events_.size());
 }
 
 }  // namespace rbsim

@@ -4,7 +4,9 @@
 // removed one's index. A batch is that sequence of swap-removals, recorded once (O(k) for k
 // bodies) as events per body; each array indexed by body is then gathered once, and each item
 // naming bodies (a contact, a warm start) replays only the events of its own bodies. Removing 1e5
-// resting boxes one at a time walked every contact and warm start for each (about 150 s).
+// resting boxes one at a time walked every contact and warm start for each (about 150 s). The
+// record holds only the bodies the batch reached (sorted, looked up by binary search), so
+// building it costs O(k log k) whatever the World's size (issue 58: removal costs what it touches).
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -33,17 +35,24 @@ class BodyRemoval {
   std::size_t after() const { return before_ - steps_.size(); }
   const std::vector<Step>& steps() const { return steps_; }
   // By index before the batch: the index after it, or kGone.
-  std::uint32_t newIndex(std::size_t index) const { return newIndex_[index]; }
+  std::uint32_t newIndex(std::size_t index) const {
+    const Involved* at = find(index);
+    return at ? at->newIndex : static_cast<std::uint32_t>(index);
+  }
   // The removed bodies' indices before the batch, in the order removed.
   const std::vector<std::uint32_t>& removed() const { return removed_; }
   // By index before the batch: the body moved or went at some step.
-  bool involves(std::size_t index) const { return eventStart_[index] != eventStart_[index + 1]; }
+  bool involves(std::size_t index) const { return find(index) != nullptr; }
+  // The bodies the batch reached (removed or moved), by index before the batch, in order.
+  std::size_t involvedCount() const { return involved_.size(); }
+  std::uint32_t involvedBody(std::size_t k) const { return involved_[k].body; }
   // Per index after the batch that holds another body than before: (new index, old index). Only
   // such indices change; the old ones are all past after(), so gathering cannot overwrite a source.
   const std::vector<std::pair<std::uint32_t, std::uint32_t>>& moves() const { return moves_; }
   // Per index before the batch: what happened to the body, in step order.
-  const Event* eventsBegin(std::size_t index) const { return events_.data() + eventStart_[index]; }
-  const Event* eventsEnd(std::size_t index) const { return events_.data() + eventStart_[index + 1]; }
+  // Both null for a body the batch did not reach.
+  const Event* eventsBegin(std::size_t index) const;
+  const Event* eventsEnd(std::size_t index) const;
 
   // An array indexed by body, brought to the bodies after the batch.
   template <typename T>
@@ -85,12 +94,18 @@ class BodyRemoval {
   }
 
  private:
+  struct Involved {
+    std::uint32_t body = 0;        // index before the batch
+    std::uint32_t firstEvent = 0;  // into events_; its events run to the next body's first
+    std::uint32_t newIndex = 0;    // index after the batch, or kGone
+  };
+  const Involved* find(std::size_t index) const;  // null: the batch did not reach the body
+
   std::size_t before_;
   std::vector<Step> steps_;
-  std::vector<std::uint32_t> newIndex_;
   std::vector<std::uint32_t> removed_;
-  std::vector<std::uint32_t> eventStart_;  // per index before, and one past the last: into events_
-  std::vector<Event> events_;
+  std::vector<Involved> involved_;  // sorted by body
+  std::vector<Event> events_;       // grouped by body, as involved_, each body's in step order
   std::vector<std::pair<std::uint32_t, std::uint32_t>> moves_;
 };
 

@@ -45,7 +45,8 @@ void renumberCache(std::vector<Entry>& cache, const BodyRemoval& removal, Turn&&
     const bool plane = (entry.key >> 63) != 0;  // a is a plane's index, not a body's
     std::size_t a = (entry.key >> 24) & kIndexMask, b = entry.key & kIndexMask;
     if (!removal.involves(b) && (plane || !removal.involves(a))) {
-      cache[kept++] = std::move(entry);
+      if (&cache[kept] != &entry) cache[kept] = std::move(entry);  // those before the first change stay put
+      ++kept;
       continue;
     }
     // Only a pair of single shapes turns (part 0): a compound's or a mesh ground's part names

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 
 #include "rbsim/world/world.h"
 #include "dynamics/contact_solver.h"
@@ -81,19 +82,22 @@ void World::destroyBody(BodyId id) { destroyBodies({id}); }
 
 void World::destroyBodies(const std::vector<BodyId>& ids) {
   // Every id is checked before anything changes: a stale or repeated one leaves the World as it was.
-  std::vector<char> listed(slots_.size(), 0);
+  // A set of the listed slots, not a flag per slot: the check costs the batch, not the World.
+  std::unordered_set<std::uint32_t> listed;
+  listed.reserve(ids.size());
   for (const BodyId id : ids) {
     static_cast<void>(indexOf(id));  // throws on a stale id
-    if (listed[id.slot]) {
+    if (!listed.insert(id.slot).second) {
       throw std::invalid_argument("destroyBodies: body '" + body(id).name() + "' (slot " + std::to_string(id.slot) +
                                   ") is listed twice");
     }
-    listed[id.slot] = 1;
   }
   if (ids.empty()) return;
   // Their touching pairs end, named while the ids are still valid.
-  std::vector<char> gone(bodies_.size(), 0);
-  for (const BodyId id : ids) gone[slots_[id.slot].index] = 1;
+  std::vector<std::uint32_t> gone;
+  gone.reserve(ids.size());
+  for (const BodyId id : ids) gone.push_back(slots_[id.slot].index);
+  std::sort(gone.begin(), gone.end());
   contactEvents_->bodiesRemoving(*this, *collision_, gone);
   ++geometryVersion_;
   // The ids, as destroyBody one after another: each slot's generation moves on (every copy of the

@@ -98,7 +98,8 @@ std::vector<std::size_t> CollisionPipeline::removeBodies(const BodyRemoval& remo
       };
       if (!removal.replay(pair, c.a, c.b, turn, [&](std::size_t partner) { touched.push_back(partner); })) continue;
     }
-    contacts_[kept++] = c;
+    if (&contacts_[kept] != &c) contacts_[kept] = c;  // those before the first change stay put
+    ++kept;
   }
   contacts_.resize(kept);
   impacts_.clear();

@@ -194,20 +194,39 @@ void ContactEventTracker::bodyBroken(const World& world, const CollisionPipeline
 }
 
 void ContactEventTracker::bodiesRemoving(const World& world, const CollisionPipeline& collision,
-                                         const std::vector<char>& gone) {
-  endWhere(touching_, world, collision, [&gone](std::size_t body) { return gone[body] != 0; }, queuedEnds_);
+                                         const std::vector<std::uint32_t>& gone) {
+  endWhere(touching_, world, collision,
+           [&gone](std::size_t body) { return std::binary_search(gone.begin(), gone.end(), body); }, queuedEnds_);
 }
 
 void ContactEventTracker::bodiesRemoved(const BodyRemoval& removal) {
-  bool renumbered = false;
-  for (Entry& e : touching_) {
-    if ((e.hi & kPlaneBit) == 0) continue;  // proxies stay
-    const std::uint32_t to = removal.newIndex(static_cast<std::size_t>(e.lo >> 32));
-    if (to == (e.lo >> 32)) continue;
-    e.lo = (std::uint64_t{to} << 32) | (e.lo & 0xffffffffull);
-    renumbered = true;
+  // Only the plane pairs of moved bodies change key (proxies stay). Each plane's pairs are sorted
+  // by body index, so a moved body's are found by binary search, taken out, renamed and merged
+  // back, as contact_key.h renumberCache does: no pass over every pair, no sort of them all. The
+  // keys are unique, so this is the order a sort of the renamed list gave.
+  std::vector<Entry> renamed;
+  for (std::size_t k = 0; k < removal.involvedCount(); ++k) {
+    const std::uint32_t body = removal.involvedBody(k);
+    const std::uint32_t to = removal.newIndex(body);
+    if (to == BodyRemoval::kGone || to == body) continue;
+    auto plane = std::lower_bound(touching_.begin(), touching_.end(), Entry{kPlaneBit, 0});
+    while (plane != touching_.end()) {
+      const std::uint64_t hi = plane->hi;
+      const auto first = std::lower_bound(plane, touching_.end(), Entry{hi, std::uint64_t{body} << 32});
+      auto last = first;
+      while (last != touching_.end() && last->hi == hi && (last->lo >> 32) == body) {
+        renamed.push_back(*last++);
+        renamed.back().lo = (std::uint64_t{to} << 32) | (renamed.back().lo & 0xffffffffull);
+      }
+      const auto after = touching_.erase(first, last);  // before end() is read: erase moves it
+      plane = std::upper_bound(after, touching_.end(), Entry{hi, ~std::uint64_t{0}});
+    }
   }
-  if (renumbered) std::sort(touching_.begin(), touching_.end());
+  if (renamed.empty()) return;
+  std::sort(renamed.begin(), renamed.end());
+  const std::size_t kept = touching_.size();
+  touching_.insert(touching_.end(), renamed.begin(), renamed.end());
+  std::inplace_merge(touching_.begin(), touching_.begin() + static_cast<std::ptrdiff_t>(kept), touching_.end());
 }
 
 void ContactEventTracker::commit() {

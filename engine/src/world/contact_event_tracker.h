@@ -41,9 +41,9 @@ class ContactEventTracker {
                   const ContactSolver& solver, double speed);
   // Body `index` breaks into pieces (World::breakBody), before its proxy is replaced: its pairs end.
   void bodyBroken(const World& world, const CollisionPipeline& collision, std::size_t index);
-  // Bodies are destroyed (World::destroyBodies), before their ids go stale: `gone` per body index.
-  // Their pairs end, with this step's events or, between steps, the next step's.
-  void bodiesRemoving(const World& world, const CollisionPipeline& collision, const std::vector<char>& gone);
+  // Bodies are destroyed (World::destroyBodies), before their ids go stale: `gone`, their
+  // indices, sorted. Their pairs end, with this step's events or, between steps, the next step's.
+  void bodiesRemoving(const World& world, const CollisionPipeline& collision, const std::vector<std::uint32_t>& gone);
   // After the removal: the plane pairs follow their bodies' new indices.
   void bodiesRemoved(const BodyRemoval& removal);
   // The step succeeded: its events are the World's until the next one succeeds.
