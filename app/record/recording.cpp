@@ -9,6 +9,7 @@
 #include <libdeflate.h>
 #include <nlohmann/json.hpp>
 
+#include "rbsim/world/systems.h"
 #include "rbsim/world/world_snapshot.h"
 #include "record/entry_codec.h"
 #include "rbsim/io/input_error.h"
@@ -128,7 +129,8 @@ void RecordWriter::write(std::size_t world, const World& state) {
   }
   appendEntry(raw_, world, state, changed ? &bodySet : nullptr);
   ++entries_;
-  bodySteps_ += state.bodies().size();
+  const PlanarWorld* planar = planarWorld(state);
+  bodySteps_ += state.bodies().size() + (planar ? planar->bodies().size() : 0);
   if (raw_.size() >= kBlockBytes) flush();
 }
 

@@ -74,7 +74,7 @@ class RecordWriter {
   void close();  // the last block and the end; InputError when a write fails
 
   std::uint64_t entries() const { return entries_; }
-  std::uint64_t bodySteps() const { return bodySteps_; }
+  std::uint64_t bodySteps() const { return bodySteps_; }  // rigid and 2D bodies x steps
   std::uint64_t fileBytes() const { return fileBytes_; }
   std::uint64_t snapshots() const { return snapshots_; }  // entries with a World snapshot
 

@@ -172,9 +172,13 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
   for (std::size_t i = 0; i < base.bodies_.size(); ++i) {
     catalogue(shapes, defOf(base.bodies_[i], base.bodySolids_[i], base.fracturePatterns_[i], base.bodyMaterials_[i]));
   }
+  // A spawner's copies share its prototype's mesh object, and so do those it makes after the read.
+  std::unordered_map<std::uint64_t, std::shared_ptr<const Mesh>> prototypeMeshes;
   for (const Spawner& spawner : base.spawners_) {
     if (!spawner.def.ragdoll) {
       catalogue(shapes, spawner.def.prototype);
+      const BodyDef& prototype = spawner.def.prototype;
+      prototypeMeshes.emplace(shapeFingerprint(RigidBody(prototype), bodySolidOf(prototype)), prototype.mesh);
       continue;
     }
     // A figure's bones, as a burst makes them: the drawn pose moves them, their shapes stay.
@@ -207,12 +211,15 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
               ", which is not an earlier body with its mesh");
     }
     // The first of a group keeps the mesh object its body has in the base World (read into the
-    // World it was saved from, nothing is uploaded to the renderer again) or has a copy of its
-    // own; the later ones of the group share it.
+    // World it was saved from, nothing is uploaded to the renderer again), or takes its spawner's
+    // prototype's, or has a copy of its own; the later ones of the group share it.
+    const auto prototype = prototypeMeshes.find(fingerprint);
     if (group < i) {
       def.mesh = world.bodies_[group].sharedMesh();
     } else if (base.isValid(id) && sameMesh(base.body(id).mesh(), *def.mesh)) {
       def.mesh = base.body(id).sharedMesh();
+    } else if (prototype != prototypeMeshes.end() && sameMesh(*prototype->second, *def.mesh)) {
+      def.mesh = prototype->second;
     } else {
       def.mesh = std::make_shared<const Mesh>(*def.mesh);
     }
