@@ -122,6 +122,9 @@ class RecordReader {
   // or shape, a state is not finite or not a unit quaternion, or entries of other worlds run more
   // than kMaxPendingBytes ahead.
   void restoreNext(std::size_t index, std::size_t worldCount, World& world);
+  // Whether world `index`'s set of bodies has changed since its phase began (an entry with a
+  // World snapshot was restored): its bodies are no longer the scene's.
+  bool bodiesChanged(std::size_t index) const { return index < bodySets_.size() && bodySets_[index] != nullptr; }
   // InputError unless the recording ends here, with as many entries as were read.
   void expectEnd();
   // The entry restoreNext restored last, to keep (the replay window keeps one per frame to scrub
