@@ -1,5 +1,6 @@
 #include "record/recording.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -9,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "rbsim/world/systems.h"
+#include "rbsim/world/world_snapshot.h"
+#include "record/entry_codec.h"
 #include "rbsim/io/input_error.h"
 
 namespace rbsim::app {
@@ -37,22 +40,6 @@ constexpr std::uint32_t kMaxBlockBytes = std::uint32_t{1} << 30;  // [bytes]
 // in (RFC 1951; zlib's tech notes), plus a stream's own few bytes.
 constexpr std::uint64_t kMaxDeflateRatio = 1032;       // [1]
 constexpr std::uint64_t kDeflateSlackBytes = 64;       // [bytes]
-
-// Bytes of one body, particle and soft-body node in an entry (recording.h): x, q, P, L and the
-// awake byte; x, v, 1/m, age, lifetime, colour (3 floats) and size; x and v.
-constexpr std::size_t kBodyEntryBytes = 13 * sizeof(double) + 1;
-constexpr std::size_t kParticleEntryBytes = 9 * sizeof(double) + 4 * sizeof(float);
-constexpr std::size_t kSoftNodeEntryBytes = 6 * sizeof(double);
-
-template <typename T>
-void append(std::vector<std::uint8_t>& out, const T& value) {
-  const auto* bytes = reinterpret_cast<const std::uint8_t*>(&value);
-  out.insert(out.end(), bytes, bytes + sizeof(T));
-}
-
-void appendVec(std::vector<std::uint8_t>& out, const Vec3& v) {
-  for (int i = 0; i < 3; ++i) append(out, v[i]);
-}
 
 }  // namespace
 
@@ -123,39 +110,27 @@ void RecordWriter::put(const void* data, std::size_t bytes) {
 }
 
 void RecordWriter::write(std::size_t world, const World& state) {
-  append(raw_, static_cast<std::uint16_t>(world));
-  append(raw_, state.stepCount());
-  append(raw_, static_cast<std::uint32_t>(state.bodies().size()));
-  for (const RigidBody& b : state.bodies()) {
-    const BodyState& s = b.state();
-    appendVec(raw_, s.position);
-    for (const double c : {s.orientation.w(), s.orientation.x(), s.orientation.y(), s.orientation.z()}) append(raw_, c);
-    appendVec(raw_, s.linearMomentum);
-    appendVec(raw_, s.angularMomentum);
-    append(raw_, static_cast<std::uint8_t>(b.awake() ? 1 : 0));
-  }
-  append(raw_, static_cast<std::uint32_t>(particleSystems(state).size()));
-  for (const ParticleSystem& system : particleSystems(state)) {
-    const ParticleStore& p = system.particles();
-    append(raw_, static_cast<std::uint32_t>(p.count()));
-    for (std::size_t i = 0; i < p.count(); ++i) {
-      appendVec(raw_, p.position[i]);
-      appendVec(raw_, p.velocity[i]);
-      append(raw_, p.inverseMass[i]);
-      append(raw_, p.age[i]);
-      append(raw_, p.lifetime[i]);
-      for (int c = 0; c < 3; ++c) append(raw_, p.color[i][c]);
-      append(raw_, p.size[i]);
+  // The set of bodies changed in this step: the spawn stage's lists are the step's, the fracture
+  // events accumulate over the run (a world's first step starts its count again: a new phase).
+  if (world >= fractures_.size()) fractures_.resize(world + 1, 0);
+  if (state.stepCount() == 1) fractures_[world] = 0;
+  const bool changed = !state.spawnedBodies().empty() || !state.removedBodies().empty() ||
+                       state.fractureEvents().size() != fractures_[world];
+  fractures_[world] = state.fractureEvents().size();
+  std::vector<std::uint8_t> bodySet;
+  if (changed) {
+    try {
+      bodySet = saveWorldSnapshot(state);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path_, "--record", std::string("the bodies changed at step ") + std::to_string(state.stepCount()) +
+                                              ", and a recording keeps them as a World snapshot: " + e.what());
     }
+    ++snapshots_;
   }
-  append(raw_, static_cast<std::uint32_t>(softBodies(state).size()));
-  for (const SoftBody& soft : softBodies(state)) {
-    append(raw_, static_cast<std::uint32_t>(soft.positions().size()));
-    for (const Vec3& x : soft.positions()) appendVec(raw_, x);
-    for (const Vec3& v : soft.velocities()) appendVec(raw_, v);
-  }
+  appendEntry(raw_, world, state, changed ? &bodySet : nullptr);
   ++entries_;
-  bodySteps_ += state.bodies().size();
+  const PlanarWorld* planar = planarWorld(state);
+  bodySteps_ += state.bodies().size() + (planar ? planar->bodies().size() : 0);
   if (raw_.size() >= kBlockBytes) flush();
 }
 
@@ -305,31 +280,6 @@ bool RecordReader::loadBlock() {
   return true;
 }
 
-void RecordReader::take(void* out, std::size_t bytes) {
-  if (bytes > entry_.size() - entryOffset_) fail("an entry runs past its end: the file is damaged");
-  std::memcpy(out, entry_.data() + entryOffset_, bytes);
-  entryOffset_ += bytes;
-}
-
-std::size_t RecordReader::entryLength() const {
-  std::size_t at = offset_;
-  const auto skip = [&](std::size_t bytes) {
-    if (bytes > block_.size() - at) fail("an entry runs past its block: the file is damaged");
-    at += bytes;
-  };
-  const auto count = [&] {
-    std::uint32_t n = 0;
-    skip(sizeof n);
-    std::memcpy(&n, block_.data() + at - sizeof n, sizeof n);
-    return static_cast<std::size_t>(n);
-  };
-  skip(sizeof(std::uint16_t) + sizeof(std::uint64_t));  // world, step
-  skip(count() * kBodyEntryBytes);
-  for (std::size_t systems = count(), i = 0; i < systems; ++i) skip(count() * kParticleEntryBytes);
-  for (std::size_t softBodies = count(), i = 0; i < softBodies; ++i) skip(count() * kSoftNodeEntryBytes);
-  return at - offset_;
-}
-
 void RecordReader::checkFiles(std::size_t phase) const {
   for (const RecordedFile& recorded : header_.phases.at(phase).files) {
     RecordedFile now;
@@ -346,6 +296,14 @@ void RecordReader::checkFiles(std::size_t phase) const {
 }
 
 void RecordReader::restoreNext(std::size_t index, std::size_t worldCount, World& world) {
+  if (index >= bases_.size()) {
+    bases_.resize(index + 1);
+    bodySets_.resize(index + 1);
+  }
+  if (world.stepCount() == 0) {  // a phase's World as its scene built it: a new phase
+    bases_[index].reset();
+    bodySets_[index].reset();
+  }
   // Entries come in the order the recording run stepped its worlds. A replay at another frame
   // rate steps a compared phase's worlds in another order, so entries of the others wait.
   if (index >= pending_.size()) pending_.resize(index + 1);
@@ -354,8 +312,9 @@ void RecordReader::restoreNext(std::size_t index, std::size_t worldCount, World&
       fail("ends after " + std::to_string(entries_) + " steps, before the scene does");
     }
     std::uint16_t owner = 0;
-    const std::size_t length = entryLength();
+    const std::size_t length = entryLength(block_.data() + offset_, block_.size() - offset_, [this](const std::string& p) { fail(p); });
     std::memcpy(&owner, block_.data() + offset_, sizeof owner);
+    owner = static_cast<std::uint16_t>(owner & ~kBodySetFlag);
     if (owner >= worldCount) {
       fail("an entry names world " + std::to_string(owner) + ", and the scene has " + std::to_string(worldCount) +
            (worldCount == 1 ? " world" : " worlds") + ": the recording does not belong to it, or is damaged");
@@ -377,92 +336,72 @@ void RecordReader::restoreNext(std::size_t index, std::size_t worldCount, World&
   ++entries_;
 }
 
-void RecordReader::restore(const std::vector<std::uint8_t>& entry, std::size_t index, World& world) {
-  entry_ = entry;
+KeptEntry RecordReader::lastEntry() const {
+  KeptEntry kept;
+  if (entry_.empty()) return kept;
+  std::uint16_t world = 0;
+  std::memcpy(&world, entry_.data(), sizeof world);
+  world = static_cast<std::uint16_t>(world & ~kBodySetFlag);
+  kept.state.resize(sizeof world + (entry_.size() - entryState_));
+  std::memcpy(kept.state.data(), &world, sizeof world);
+  std::copy(entry_.begin() + static_cast<std::ptrdiff_t>(entryState_), entry_.end(), kept.state.begin() + sizeof world);
+  if (world < bodySets_.size() && bodySets_[world]) {
+    kept.bodySet = bodySets_[world];
+    kept.base = bases_[world];
+  }
+  return kept;
+}
+
+void RecordReader::restore(const KeptEntry& entry, std::size_t index, World& world) {
+  if (entry.bodySet) {
+    try {
+      world = loadWorldSnapshot(*entry.bodySet, *entry.base, path_);
+    } catch (const std::invalid_argument& e) {
+      fail(std::string("a kept step's bodies cannot be made again (") + e.what() + ")");
+    }
+  }
+  entry_ = entry.state;
   restoreEntry(index, world, /*nextStep=*/false);
 }
 
 void RecordReader::restoreEntry(std::size_t index, World& world, bool nextStep) {
-  entryOffset_ = 0;
-  const auto get = [&](auto& value) { take(&value, sizeof value); };
-  const auto getVec = [&](Vec3& v) {
-    for (int i = 0; i < 3; ++i) get(v[i]);
-  };
-  std::uint16_t worldIndex = 0;
-  std::uint64_t step = 0;
-  std::uint32_t bodies = 0;
-  get(worldIndex);
-  get(step);
-  get(bodies);
-  if (worldIndex != index || (nextStep && step != world.stepCount() + 1) || bodies != world.bodies().size()) {
-    fail("entry " + std::to_string(entries_) + " is step " + std::to_string(step) + " of world " + std::to_string(worldIndex) +
-         " with " + std::to_string(bodies) + " bodies; the scene expects step " + std::to_string(world.stepCount() + 1) +
-         " of world " + std::to_string(index) + " with " + std::to_string(world.bodies().size()) +
-         ": the recording does not belong to these scenes");
+  const EntryFail failHere = [this](const std::string& problem) { fail(problem); };
+  const EntryParts parts = entryParts(entry_, failHere);
+  if (parts.world != index) {
+    fail("entry " + std::to_string(entries_) + " is of world " + std::to_string(parts.world) + "; the scene expects world " +
+         std::to_string(index) + ": the recording does not belong to these scenes");
   }
-  states_.resize(bodies);
-  awake_.resize(bodies);
-  for (std::uint32_t i = 0; i < bodies; ++i) {
-    BodyState& s = states_[i];
-    getVec(s.position);
-    double q[4];
-    for (double& c : q) get(c);
-    s.orientation = Quat(q[0], q[1], q[2], q[3]);
-    getVec(s.linearMomentum);
-    getVec(s.angularMomentum);
-    std::uint8_t awake = 0;
-    get(awake);
-    awake_[i] = static_cast<char>(awake);
-    // Validated as a scene's values are: a damaged or forged entry must not reach the World.
-    if (!s.position.allFinite() || !s.linearMomentum.allFinite() || !s.angularMomentum.allFinite() ||
-        !s.orientation.coeffs().allFinite()) {
-      fail("entry " + std::to_string(entries_) + ": body " + std::to_string(i) + "'s state is not finite");
-    }
-    if (std::abs(s.orientation.norm() - 1.0) > kRotationTolerance) {
-      fail("entry " + std::to_string(entries_) + ": body " + std::to_string(i) + "'s orientation is not a unit quaternion (|q| = " +
-           std::to_string(s.orientation.norm()) + ")");
-    }
-    if (awake > 1) fail("entry " + std::to_string(entries_) + ": body " + std::to_string(i) + "'s awake flag is " + std::to_string(awake));
-  }
-  world.restore(step, states_, awake_);
-  std::uint32_t systems = 0;
-  get(systems);
-  if (systems != particleSystems(world).size()) fail("an entry's particle systems do not match the scene's");
-  for (ParticleSystem& system : particleSystems(world)) {
-    ParticleStore& p = system.particles();
-    std::uint32_t count = 0;
-    get(count);
-    if (count > p.capacity()) fail("an entry holds more particles than the scene's system can");
-    p.setCount(count);
-    for (std::size_t i = 0; i < count; ++i) {
-      getVec(p.position[i]);
-      getVec(p.velocity[i]);
-      get(p.inverseMass[i]);
-      get(p.age[i]);
-      get(p.lifetime[i]);
-      for (int c = 0; c < 3; ++c) get(p.color[i][c]);
-      get(p.size[i]);
-      if (!p.position[i].allFinite() || !p.velocity[i].allFinite() || !std::isfinite(p.inverseMass[i]) ||
-          !std::isfinite(p.age[i]) || !std::isfinite(p.lifetime[i]) || !std::isfinite(p.size[i])) {
-        fail("entry " + std::to_string(entries_) + ": particle " + std::to_string(i) + " is not finite");
+  entryState_ = parts.stateOffset;
+  if (parts.snapshot != nullptr) {
+    // The bodies changed in this step: the World the snapshot gives, read against the World of
+    // the step before, whose bodies, spawners and fracture patterns have every shape the step
+    // can have made, and whose mesh objects the bodies that stay keep (the renderer uploads a
+    // mesh once, when it first sees it). The scene's World, copied at the phase's first change,
+    // is what a kept entry's snapshot is read against (lastEntry).
+    if (!bases_[index]) bases_[index] = std::make_shared<const World>(world);
+    World changed = [&] {
+      try {
+        return loadWorldSnapshot(parts.snapshot, parts.snapshotBytes, world,
+                                 "entry " + std::to_string(entries_) + "'s bodies");
+      } catch (const std::invalid_argument& e) {
+        fail(std::string(e.what()) + ": the recording is damaged or does not belong to these scenes");
       }
+    }();
+    if (nextStep && changed.stepCount() != world.stepCount() + 1) {
+      fail("entry " + std::to_string(entries_) + "'s bodies are of step " + std::to_string(changed.stepCount()) +
+           "; the scene expects step " + std::to_string(world.stepCount() + 1) + ": the recording is damaged");
     }
-  }
-  std::uint32_t softCount = 0;
-  get(softCount);
-  if (softCount != softBodies(world).size()) fail("an entry's soft bodies do not match the scene's");
-  for (SoftBody& soft : softBodies(world)) {
-    std::uint32_t nodes = 0;
-    get(nodes);
-    if (nodes != soft.positions().size()) fail("an entry's soft body nodes do not match the scene's");
-    for (Vec3& x : soft.positions()) getVec(x);
-    for (Vec3& v : soft.velocities()) getVec(v);
-    for (std::size_t n = 0; n < nodes; ++n) {
-      if (!soft.positions()[n].allFinite() || !soft.velocities()[n].allFinite()) {
-        fail("entry " + std::to_string(entries_) + ": soft body node " + std::to_string(n) + " is not finite");
-      }
+    const std::uint64_t step = changed.stepCount();
+    world = std::move(changed);
+    bodySets_[index] = std::make_shared<const std::vector<std::uint8_t>>(parts.snapshot, parts.snapshot + parts.snapshotBytes);
+    restoreState(entry_, parts, entries_, /*nextStep=*/false, world, failHere);
+    if (world.stepCount() != step) {
+      fail("entry " + std::to_string(entries_) + " is step " + std::to_string(world.stepCount()) + ", its bodies step " +
+           std::to_string(step) + ": the recording is damaged");
     }
+    return;
   }
+  restoreState(entry_, parts, entries_, nextStep, world, failHere);
 }
 
 void RecordReader::expectEnd() {

@@ -10,9 +10,9 @@
 //   blocks of entries: u32 raw size, u32 deflated size, u32 CRC-32 of the deflated bytes, the bytes
 //   deflated by libdeflate; the last block is empty (raw size 0) and its CRC field is the number
 //   of entries, so a file cut short anywhere is known to be.
-// An entry is one world after one step: u16 world, u64 step, u32 bodies and per body x, q (w x y
-// z), P, L as doubles and an awake byte; u32 particle systems and per system its live particles'
-// attributes; u32 soft bodies and per body its nodes' x and v.
+// An entry is one world after one step (record/entry_codec.h): its bodies', particles', soft
+// bodies' and 2D bodies' states, and at a step that changed the set of bodies (spawned, removed,
+// broken) a World snapshot from which a replay makes the same bodies.
 #include <cstdint>
 #include <cstdio>
 #include <deque>
@@ -25,7 +25,8 @@
 namespace rbsim::app {
 
 // 2: the header's checksum, absolute folders and the files' checksums (issue 37).
-inline constexpr std::uint32_t kRecordingVersion = 2;
+// 3: entries carry a World snapshot where the set of bodies changed, and the 2D bodies (issue 58).
+inline constexpr std::uint32_t kRecordingVersion = 3;
 // Entries read ahead of the world that is waiting for its own, at most (a compared phase
 // replayed at another frame rate reads a frame's steps of the others ahead; a damaged or forged
 // file could ask for the whole file).
@@ -60,19 +61,22 @@ struct RecordingHeader {
 
 class RecordWriter {
  public:
-  // Throws InputError (field --record) when the file cannot be created or written, or a phase
-  // holds what recordings do not keep yet (a 2D world).
+  // Throws InputError (field --record) when the file cannot be created or written.
   RecordWriter(const std::string& path, const RecordingHeader& header);
   ~RecordWriter();
   RecordWriter(const RecordWriter&) = delete;
   RecordWriter& operator=(const RecordWriter&) = delete;
 
-  void write(std::size_t world, const World& state);  // after each step of world `world`
+  // After each step of world `world`. Throws InputError when the step changed the set of bodies
+  // of a World that cannot be saved as a snapshot (world_snapshot.h: step listeners, lcp), which
+  // the runner refuses before the run (runner.cpp recordingHeader).
+  void write(std::size_t world, const World& state);
   void close();  // the last block and the end; InputError when a write fails
 
   std::uint64_t entries() const { return entries_; }
-  std::uint64_t bodySteps() const { return bodySteps_; }
+  std::uint64_t bodySteps() const { return bodySteps_; }  // rigid and 2D bodies x steps
   std::uint64_t fileBytes() const { return fileBytes_; }
+  std::uint64_t snapshots() const { return snapshots_; }  // entries with a World snapshot
 
  private:
   void flush();
@@ -84,7 +88,18 @@ class RecordWriter {
   std::vector<std::uint8_t> raw_;
   std::vector<std::uint8_t> deflated_;
   void* compressor_ = nullptr;
-  std::uint64_t entries_ = 0, bodySteps_ = 0, fileBytes_ = 0;
+  std::uint64_t entries_ = 0, bodySteps_ = 0, fileBytes_ = 0, snapshots_ = 0;
+  std::vector<std::size_t> fractures_;  // per world: World::fractureEvents() at its last entry
+};
+
+// An entry kept to show again (the replay window's timeline): its state, and the World snapshot
+// of the last change of bodies before it with the scene's World to read it against (shared by
+// the frames between two changes; none while the bodies are the scene's own).
+struct KeptEntry {
+  std::vector<std::uint8_t> state;  // an entry without its snapshot
+  std::shared_ptr<const std::vector<std::uint8_t>> bodySet;
+  std::shared_ptr<const World> base;
+  bool empty() const { return state.empty(); }
 };
 
 class RecordReader {
@@ -107,18 +122,21 @@ class RecordReader {
   // or shape, a state is not finite or not a unit quaternion, or entries of other worlds run more
   // than kMaxPendingBytes ahead.
   void restoreNext(std::size_t index, std::size_t worldCount, World& world);
+  // Whether world `index`'s set of bodies has changed since its phase began (an entry with a
+  // World snapshot was restored): its bodies are no longer the scene's.
+  bool bodiesChanged(std::size_t index) const { return index < bodySets_.size() && bodySets_[index] != nullptr; }
   // InputError unless the recording ends here, with as many entries as were read.
   void expectEnd();
   // The entry restoreNext restored last, to keep (the replay window keeps one per frame to scrub
-  // back and forth), and puts such a kept entry of world `index` into `world` again.
-  const std::vector<std::uint8_t>& lastEntry() const { return entry_; }
-  void restore(const std::vector<std::uint8_t>& entry, std::size_t index, World& world);
+  // back and forth), and puts such a kept entry of world `index` into `world` again (a World of
+  // the same scene, at any step).
+  KeptEntry lastEntry() const;
+  void restore(const KeptEntry& entry, std::size_t index, World& world);
 
  private:
   bool loadBlock();  // false at the end marker
-  std::size_t entryLength() const;  // of the entry at offset_ in block_
-  void take(void* out, std::size_t bytes);  // from entry_
-  // entry_ into `world`; with nextStep, it must be the step after the world's.
+  // entry_ into `world`; with nextStep, it must be the step after the world's. An entry with a
+  // World snapshot replaces `world` by the snapshot read against the scene's World (bases_).
   void restoreEntry(std::size_t index, World& world, bool nextStep);
   [[noreturn]] void fail(const std::string& problem) const;
   std::uint64_t remainingBytes() const;  // in the file after the read position
@@ -134,13 +152,15 @@ class RecordReader {
   std::vector<std::deque<std::vector<std::uint8_t>>> pending_;  // per world: entries read ahead
   std::size_t pendingBytes_ = 0;
   std::vector<std::uint8_t> entry_;  // the one being restored
-  std::size_t entryOffset_ = 0;
+  std::size_t entryState_ = 0;       // where its state begins (after its snapshot)
+  // Per world of the phase being read: the World as the scene built it, copied at its first
+  // change of bodies (what every snapshot of the phase is read against), and the last snapshot.
+  std::vector<std::shared_ptr<const World>> bases_;
+  std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> bodySets_;
   bool ended_ = false;
   std::uint64_t endCount_ = 0;
   std::uint64_t entries_ = 0;
   void* decompressor_ = nullptr;
-  std::vector<BodyState> states_;  // restoreNext's scratch
-  std::vector<char> awake_;
 };
 
 }  // namespace rbsim::app

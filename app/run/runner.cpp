@@ -80,8 +80,10 @@ void checkRunBudgets(const std::vector<Phase>& phases, const Phase& longest, con
 }
 
 // What a recording keeps of the run to rebuild its phases (record/recording.h): each phase's
-// scene file as read now, and the overrides. A 2D world, breakable bodies and spawning are not
-// recorded yet.
+// scene file as read now, and the overrides. A scene whose bodies change as it runs (spawned,
+// removed, broken) is recorded with a World snapshot at each change, which cannot hold the state
+// of step systems (particles, soft bodies, a 2D world) or of the lcp solver: such a scene is
+// refused here, before the run, rather than at its first change.
 RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptions& options, const std::string& title) {
   RecordingHeader header;
   header.rbsimVersion = RBSIM_VERSION;
@@ -89,15 +91,19 @@ RecordingHeader recordingHeader(const std::vector<Phase>& phases, const RunOptio
   header.overrides = options.overrides;
   for (const Phase& phase : phases) {
     for (const PhaseWorld& w : phase.worlds) {
-      if (w.scene.planar) throw InputError(phase.file, "--record", "a scene with a 2D world (planar) cannot be recorded yet");
-      if (!w.scene.spawners.empty() || !w.scene.killVolume.empty()) {
-        throw InputError(phase.file, "--record", "a scene that spawns or removes bodies as it runs (a \"spawn\" block with a period, a "
-                                                 "\"kill_volume\") cannot be recorded yet: a replay rebuilds its bodies from the scene");
-      }
-      for (const BodyDef& body : w.scene.bodies) {
-        if (body.fracture) {
-          throw InputError(phase.file, "--record", "body \"" + body.name + "\" can break, and a recording cannot add its pieces yet");
-        }
+      const Scene& scene = w.scene;
+      const bool breakable = std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const BodyDef& b) { return b.fracture != nullptr; });
+      if (scene.spawners.empty() && scene.killVolume.empty() && !breakable) continue;
+      const char* what = scene.planar                          ? "a 2D world (planar)"
+                         : !scene.particleSystems.empty()       ? "particles"
+                         : !scene.softBodies.empty()            ? "soft bodies"
+                         : scene.settings.solver == Settings::ContactSolverMethod::Lcp ? "the lcp solver (world.solver)"
+                                                                                      : nullptr;
+      if (what != nullptr) {
+        throw InputError(phase.file, "--record", std::string("a scene whose bodies change as it runs (\"spawn\" with a period, "
+                                                 "\"kill_volume\", \"fracture\") and which has ") + what +
+                                                 " cannot be recorded: its changes are kept as World snapshots, which hold "
+                                                 "neither; record it without one or the other");
       }
     }
     RecordedPhase recorded{phase.file, std::filesystem::absolute(phase.file).parent_path().lexically_normal().string(),
@@ -347,6 +353,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
     recorder->close();
     summary.recordBytes = recorder->fileBytes();
     summary.recordBodySteps = recorder->bodySteps();
+    summary.recordSnapshots = recorder->snapshots();
   }
   if (sink) {
     const auto start = Clock::now();
@@ -372,9 +379,10 @@ void printSummary(const RunSummary& s, const RunOptions& options) {
               static_cast<unsigned long long>(s.frames), s.wallSeconds);
   std::printf("simulate: %.4f ms per step\n", s.steps ? 1e3 * s.simulateSeconds / s.steps : 0.0);
   if (s.recordBodySteps > 0) {
-    std::printf("recording: %s, %llu bytes, %.1f bytes per body-step\n", options.recordPath.c_str(),
-                static_cast<unsigned long long>(s.recordBytes),
-                static_cast<double>(s.recordBytes) / static_cast<double>(s.recordBodySteps));
+    std::printf("recording: %s, %llu bytes, %.1f bytes per body-step, %llu steps changed the bodies\n",
+                options.recordPath.c_str(), static_cast<unsigned long long>(s.recordBytes),
+                static_cast<double>(s.recordBytes) / static_cast<double>(s.recordBodySteps),
+                static_cast<unsigned long long>(s.recordSnapshots));
   }
   if (s.frames > 0) {
     const double perFrame = 1e3 / static_cast<double>(s.frames);

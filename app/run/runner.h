@@ -32,6 +32,7 @@ struct RunSummary {
   double wallSeconds = 0.0;
   std::uint64_t recordBytes = 0;      // the recording's size (--record) [bytes]
   std::uint64_t recordBodySteps = 0;  // bodies x steps it holds
+  std::uint64_t recordSnapshots = 0;  // steps whose entry carries a World snapshot (bodies changed)
   std::size_t gltfBodies = 0;         // the --gltf file's nodes: bodies, and pieces broken off
   std::uint64_t gltfFrames = 0;       // its keys per node
 };

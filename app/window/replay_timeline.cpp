@@ -19,7 +19,7 @@ ReplayTimeline::ReplayTimeline(const std::vector<Phase>& phases, RecordReader& r
       freeFlight.emplace_back(selectedBodyId(worlds[k], phase.worlds[k].scene.view.selected));
       freeFlight.back().observe(worlds[k]);
     }
-    std::vector<std::vector<std::uint8_t>> latest(worlds.size());
+    std::vector<KeptEntry> latest(worlds.size());
     plots_.push_back(std::make_unique<TimePlots>(phase));
     plots_.back()->keepHistory();
     const double fps = phase.scene().view.fps;
@@ -35,7 +35,10 @@ ReplayTimeline::ReplayTimeline(const std::vector<Phase>& phases, RecordReader& r
           freeFlight[k].observe(worlds[k]);
           latest[k] = reader_.lastEntry();
         }
-        bytes += latest[k].size();
+        // A snapshot of changed bodies counts once, at the first frame that keeps it.
+        const bool newBodySet = latest[k].bodySet && (frames_.empty() || frames_.back().phase != p ||
+                                                       frames_.back().entries[k].bodySet != latest[k].bodySet);
+        bytes += latest[k].state.size() + (newBodySet ? latest[k].bodySet->size() : 0);
         if (bytes > kMaxTimelineBytes) {
           throw InputError(recording, "--window",
                            "the window keeps every frame's state to scrub, and this recording needs more than " +
@@ -63,15 +66,27 @@ void ReplayTimeline::show(std::size_t frame) {
   const Phase& phase = phases_[kept.phase];
   if (!built_ || shownPhase_ != kept.phase) {
     worlds_.clear();
+    shownBodySets_.clear();
     for (const PhaseWorld& w : phase.worlds) worlds_.push_back(buildWorld(w.scene));
     shownPhase_ = kept.phase;
     built_ = true;
   }
+  shownBodySets_.resize(worlds_.size());
   for (std::size_t k = 0; k < worlds_.size(); ++k) {
-    if (kept.entries[k].empty()) {
+    const KeptEntry& entry = kept.entries[k];
+    // The bodies the frame shows: the scene's own, or those of the snapshot of their last change.
+    const bool sameBodies = entry.bodySet == shownBodySets_[k];
+    if (entry.empty() || (!sameBodies && !entry.bodySet)) {
       worlds_[k] = buildWorld(phase.worlds[k].scene);  // step 0: the scene's own start
+    }
+    shownBodySets_[k] = entry.bodySet;
+    if (entry.empty()) continue;
+    if (sameBodies && entry.bodySet) {
+      KeptEntry state;  // the World holds these bodies already: the states alone
+      state.state = entry.state;
+      reader_.restore(state, k, worlds_[k]);
     } else {
-      reader_.restore(kept.entries[k], k, worlds_[k]);
+      reader_.restore(entry, k, worlds_[k]);
     }
   }
   current_ = frame;

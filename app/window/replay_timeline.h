@@ -43,7 +43,7 @@ class ReplayTimeline {
   struct KeptFrame {
     std::size_t phase = 0;
     double time = 0.0;
-    std::vector<std::vector<std::uint8_t>> entries;  // per world; empty at step 0 (the scene's start)
+    std::vector<KeptEntry> entries;  // per world; empty at step 0 (the scene's start)
     std::vector<FreeFlightError> freeFlight;         // per world, as the run had it at this frame
   };
 
@@ -52,6 +52,7 @@ class ReplayTimeline {
   std::vector<KeptFrame> frames_;
   std::vector<std::unique_ptr<TimePlots>> plots_;  // per phase, every sample kept
   std::vector<World> worlds_;
+  std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> shownBodySets_;  // per world: whose bodies it holds
   std::size_t shownPhase_ = 0, current_ = 0;
   bool built_ = false;
 };

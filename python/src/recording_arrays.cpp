@@ -91,6 +91,12 @@ py::dict readRecording(const std::string& path, long long world) {
         for (std::size_t k = 0; k < worlds.size(); ++k) {
           if (s > phase.worlds[k].scene.stepCount()) continue;
           reader.restoreNext(k, worlds.size(), worlds[k]);
+          // The arrays hold one set of bodies, the scene's (N fixed).
+          if (here && k == chosen && reader.bodiesChanged(k)) {
+            throw InputError(path, "world", "world " + std::to_string(world) + "'s bodies change at step " + std::to_string(s) +
+                                                " (spawned, removed or broken), and the arrays hold one set of bodies for "
+                                                "every step: read it with `rbsim replay FILE --trace T.csv` instead");
+          }
           if (here && k == chosen) rows.add(worlds[k]);
         }
       }

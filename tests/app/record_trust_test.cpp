@@ -206,6 +206,51 @@ TEST(RecordTrust, ForgedStatesAndForeignWorldsAreRefused) {
   const std::string world = replayError(forged(good.bytes, [](std::vector<std::uint8_t>& raw) { raw[0] = 3; }), good.phases,
                                         dir / "world.rbrec");
   EXPECT_NE(world.find("names world 3, and the scene has 1 world"), std::string::npos) << world;
+  // A body's flags byte with a bit no writer sets; the world field's snapshot bit on an entry
+  // without one (the step's bytes read as a snapshot's size).
+  const std::string flags = replayError(forged(good.bytes, [&](std::vector<std::uint8_t>& raw) {
+    raw[kFirstBody + 13 * sizeof(double)] = 4;
+  }), good.phases, dir / "flags.rbrec");
+  EXPECT_NE(flags.find("body 0's flags are 4"), std::string::npos) << flags;
+  const std::string snapshot = replayError(forged(good.bytes, [](std::vector<std::uint8_t>& raw) { raw[1] |= 0x80; }),
+                                           good.phases, dir / "snapshot.rbrec");
+  EXPECT_NE(snapshot.find("damaged"), std::string::npos) << snapshot;
+  fs::remove_all(dir);
+}
+
+// A recording of bodies spawned and removed (a kill volume): its entries' World snapshots are
+// checked as the engine checks a snapshot (world_snapshot.h), after the block's checksum.
+TEST(RecordTrust, AForgedWorldSnapshotIsRefused) {
+  const fs::path dir = trustTempDir("snapshot");
+  const std::vector<std::string> overrides = {"world.steps=5"};
+  std::vector<Phase> phases = {loadPhase(assetDir() + "/scenes/machinery_rain.json", overrides)};
+  RunOptions options;
+  options.quiet = true;
+  options.render = false;
+  options.recordPath = (dir / "rain.rbrec").string();
+  options.overrides = overrides;
+  runPhases(phases, options, "trust test");
+  const std::string bytes = readAll(dir / "rain.rbrec");
+  EXPECT_EQ(replayError(bytes, phases, dir / "same.rbrec"), "accepted");
+  // The first entry is step 1, the first burst: u16 world with bit 15, u64 size, the snapshot.
+  constexpr std::size_t kSnapshot = 2 + 8;
+  const std::string magic = replayError(forged(bytes, [](std::vector<std::uint8_t>& raw) {
+    ASSERT_EQ(raw[1] & 0x80, 0x80);
+    raw[kSnapshot] = 'X';  // its magic, RBSIMWSN
+  }), phases, dir / "magic.rbrec");
+  EXPECT_NE(magic.find("entry 0's bodies"), std::string::npos) << magic;
+  EXPECT_NE(magic.find("not a World snapshot"), std::string::npos) << magic;
+  const std::string body = replayError(forged(bytes, [](std::vector<std::uint8_t>& raw) {
+    std::uint64_t size = 0;
+    std::memcpy(&size, raw.data() + 2, sizeof size);
+    raw[kSnapshot + size / 2] ^= 0x10;  // inside: its own checksum sees it
+  }), phases, dir / "inside.rbrec");
+  EXPECT_NE(body.find("checksum"), std::string::npos) << body;
+  // Against another scene (a ragdoll of another mass): no body of that scene has the shapes.
+  const std::vector<Phase> heavier = {loadPhase(assetDir() + "/scenes/machinery_rain.json",
+                                                {"world.steps=5", "spawn[0].ragdoll.mass=90"})};
+  const std::string foreign = replayError(bytes, heavier, dir / "foreign.rbrec");
+  EXPECT_NE(foreign.find("does not belong"), std::string::npos) << foreign;
   fs::remove_all(dir);
 }
 

@@ -1,6 +1,7 @@
 // The replay window's timeline (app/window/replay_timeline.h): any frame of a recording, shown in
 // any order, holds exactly the worlds a run stepped to that frame holds, and the plots the run
-// drew then; a recording larger than the timeline may keep is refused before the window opens.
+// drew then, bodies spawned since the scene's start included; a recording larger than the
+// timeline may keep is refused before the window opens.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -86,6 +87,40 @@ TEST(ReplayTimeline, AnyFrameInAnyOrderIsTheRunAtThatFrame) {
       EXPECT_EQ(shown[i].tMax, expected[i].tMax);
       EXPECT_EQ(shown[i].times, expected[i].times) << shown[i].title << " at frame " << f;
       EXPECT_EQ(shown[i].values, expected[i].values) << shown[i].title << " at frame " << f;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// Ragdolls spawned at steps 1 and 61 (machinery_rain, dt 1/60 s, a burst a second): a frame
+// before the first burst, between the bursts and after the second, shown in scrambled order,
+// holds the bodies the run had then, with their names and meshes.
+TEST(ReplayTimeline, FramesOfASceneWhoseBodiesChangeHoldTheRunsBodies) {
+  const fs::path dir = fs::temp_directory_path() / ("rbsim_timeline_spawn_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string file = (dir / "run.rbrec").string();
+  const std::vector<std::string> overrides = {"world.steps=80", "view.size=[160,90]", "view.fps=30"};
+  const std::vector<Phase> phases = {loadPhase(assetDir() + "/scenes/machinery_rain.json", overrides)};
+  RunOptions options;
+  options.quiet = true;
+  options.render = false;
+  options.overrides = overrides;
+  options.recordPath = file;
+  runPhases(phases, options, "timeline test");
+
+  RecordReader reader(file);
+  ReplayTimeline timeline(phases, reader, file);
+  const Scene& scene = phases[0].scene();
+  for (const std::size_t f : {std::size_t{35}, std::size_t{0}, std::size_t{20}, std::size_t{1}, std::size_t{39}, std::size_t{10}}) {
+    timeline.show(f);
+    World run = buildWorld(scene);
+    const std::uint64_t target = std::min(stepOfFrame(f, scene.view.fps, scene.settings.timeStep), scene.stepCount());
+    while (run.stepCount() < target) run.step();
+    const World& shown = timeline.worlds()[0];
+    expectSameWorld(shown, run, "frame " + std::to_string(f));
+    for (std::size_t i = 0; i < run.bodies().size() && i < shown.bodies().size(); ++i) {
+      EXPECT_EQ(shown.bodies()[i].name(), run.bodies()[i].name()) << "frame " << f;
+      EXPECT_EQ(shown.bodies()[i].mesh().vertices, run.bodies()[i].mesh().vertices) << "frame " << f << " body " << i;
     }
   }
   fs::remove_all(dir);

@@ -215,6 +215,15 @@ def test_a_bad_recording_is_an_input_error_naming_the_file(tmp_path):
         rbsim.read_recording(rec, world=1)
 
 
+def test_a_recording_whose_bodies_change_is_refused_naming_the_step(tmp_path):
+    # machinery_rain's first ragdolls are spawned in step 1 (a burst a second from t = 0).
+    rec = tmp_path / "rain.rbrec"
+    rbsim.run(SCENES / "machinery_rain.json", ["world.steps=3"], record=rec)
+    with pytest.raises(rbsim.InputError, match=r"rain.rbrec: world: world 0's bodies change at step 1") as e:
+        rbsim.read_recording(rec)
+    assert e.value.file == str(rec)
+
+
 def test_run_refuses_what_it_cannot_write(tmp_path):
     world = every_kind_of_world(1 / 60, spawner=False)
     with pytest.raises(rbsim.InputError, match=r"World.run\(\): steps"):

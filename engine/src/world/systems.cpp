@@ -151,4 +151,9 @@ const PlanarWorld* planarWorld(const World& world) {
   return system ? &system->world : nullptr;
 }
 
+PlanarWorld* planarWorld(World& world) {
+  PlanarSystem* system = find<PlanarSystem>(world);
+  return system ? &system->world : nullptr;
+}
+
 }  // namespace rbsim

@@ -10,6 +10,7 @@
 #include "math/fnv.h"
 #include "rbsim/fracture/fracture.h"
 #include "rbsim/integrate/free_rigid_body.h"
+#include "rbsim/world/ragdoll.h"
 #include "rbsim/world/world_snapshot.h"
 #include "world/snapshot_parts.h"
 #include "world/world_snapshot_access.h"
@@ -64,6 +65,8 @@ BodyDef defOf(const RigidBody& body, const BodySolid& solid, const std::shared_p
 }
 
 using Catalogue = std::unordered_map<std::uint64_t, BodyDef>;
+
+bool sameMesh(const Mesh& a, const Mesh& b) { return a.vertices == b.vertices && a.triangles == b.triangles; }
 
 // A definition, and the pieces it breaks into, by fingerprint (the first of equal ones).
 void catalogue(Catalogue& out, const BodyDef& def) {
@@ -130,9 +133,18 @@ std::uint64_t shapeFingerprint(const RigidBody& body, const BodySolid& solid) {
 
 void WorldSnapshotAccess::saveBodies(const World& world, ByteWriter& out) {
   out.count(world.bodies_.size());
+  // Which bodies share one mesh object (a spawned figure's bones share their figure's, a scene's
+  // copies their block's): the renderer draws the bodies of one mesh as instances of it, in
+  // batches of first appearance, so a World read back draws the same batches only when its
+  // bodies share as these did (a replay of a recording is drawn bit for bit).
+  std::unordered_map<const Mesh*, std::size_t> firstWithMesh;
   for (std::size_t i = 0; i < world.bodies_.size(); ++i) {
     const RigidBody& b = world.bodies_[i];
     out.u64(shapeFingerprint(b, world.bodySolids_[i]));
+    out.u64(firstWithMesh.emplace(b.sharedMesh().get(), i).first->second);
+    const BodyId id = world.idAt(i);
+    out.u32(id.slot);
+    out.u32(id.generation);
     out.text(b.name());
     out.vec3(b.color());
     snapshot::write(out, world.bodyMaterials_[i]);
@@ -160,22 +172,57 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
   for (std::size_t i = 0; i < base.bodies_.size(); ++i) {
     catalogue(shapes, defOf(base.bodies_[i], base.bodySolids_[i], base.fracturePatterns_[i], base.bodyMaterials_[i]));
   }
+  // A spawner's copies share its prototype's mesh object, and so do those it makes after the read.
+  std::unordered_map<std::uint64_t, std::shared_ptr<const Mesh>> prototypeMeshes;
   for (const Spawner& spawner : base.spawners_) {
-    if (!spawner.def.ragdoll) catalogue(shapes, spawner.def.prototype);
+    if (!spawner.def.ragdoll) {
+      catalogue(shapes, spawner.def.prototype);
+      const BodyDef& prototype = spawner.def.prototype;
+      prototypeMeshes.emplace(shapeFingerprint(RigidBody(prototype), bodySolidOf(prototype)), prototype.mesh);
+      continue;
+    }
+    // A figure's bones, as a burst makes them: the drawn pose moves them, their shapes stay.
+    World figure(base.settings_);
+    static_cast<void>(addRagdoll(figure, *spawner.def.ragdoll));
+    for (std::size_t i = 0; i < figure.bodies_.size(); ++i) {
+      catalogue(shapes, defOf(figure.bodies_[i], figure.bodySolids_[i], nullptr, figure.bodyMaterials_[i]));
+    }
   }
-  // The fewest bytes a body record takes: fingerprint, an empty name, 35 doubles, 6 flags.
-  constexpr std::size_t kBodyBytes = 8 + 8 + 35 * 8 + 6;
+  // The fewest bytes a body record takes: fingerprint, mesh group, id, an empty name, 35 doubles,
+  // 6 flags.
+  constexpr std::size_t kBodyBytes = 8 + 8 + 8 + 8 + 35 * 8 + 6;
   const std::size_t count = in.count(kBodyBytes, "bodies");
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint64_t fingerprint = in.u64();
+    const std::uint64_t group = in.u64();
+    BodyId id;
+    id.slot = in.u32();
+    id.generation = in.u32();
     const std::string name = in.text();
     const auto found = shapes.find(fingerprint);
     if (found == shapes.end()) {
       in.fail("body " + std::to_string(i) + " '" + name +
-              "': no body, spawner prototype or fracture piece of the World read into has its shape (a World built "
-              "from another scene, or a ragdoll spawner's body)");
+              "': no body, spawner prototype, spawned figure's bone or fracture piece of the World read into has its "
+              "shape (a World built from another scene)");
     }
     BodyDef def = found->second;
+    if (group > i || (group < i && !sameMesh(*world.bodies_[group].sharedMesh(), *def.mesh))) {
+      in.fail("body " + std::to_string(i) + " '" + name + "': shares the mesh of body " + std::to_string(group) +
+              ", which is not an earlier body with its mesh");
+    }
+    // The first of a group keeps the mesh object its body has in the base World (read into the
+    // World it was saved from, nothing is uploaded to the renderer again), or takes its spawner's
+    // prototype's, or has a copy of its own; the later ones of the group share it.
+    const auto prototype = prototypeMeshes.find(fingerprint);
+    if (group < i) {
+      def.mesh = world.bodies_[group].sharedMesh();
+    } else if (base.isValid(id) && sameMesh(base.body(id).mesh(), *def.mesh)) {
+      def.mesh = base.body(id).sharedMesh();
+    } else if (prototype != prototypeMeshes.end() && sameMesh(*prototype->second, *def.mesh)) {
+      def.mesh = prototype->second;
+    } else {
+      def.mesh = std::make_shared<const Mesh>(*def.mesh);
+    }
     def.name = name;
     def.color = in.vec3();
     def.material = snapshot::readMaterial(in);

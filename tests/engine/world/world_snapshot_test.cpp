@@ -237,11 +237,12 @@ TEST(WorldSnapshotInput, AFlippedByteIsCaughtByTheChecksumAndAForgedOneNeverCras
 TEST(WorldSnapshotInput, AHugeCountIsRefusedBeforeAnyAllocation) {
   World world = smallWorld();
   std::vector<std::uint8_t> bytes = saveWorldSnapshot(world);
-  // The body count precedes the first body's record: its fingerprint, its name's length, "box".
+  // The body count precedes the first body's record: its fingerprint, mesh group, id (slot and
+  // generation), its name's length, "box".
   const std::string name = "box";
   const auto found = std::search(bytes.begin(), bytes.end(), name.begin(), name.end());
   ASSERT_NE(found, bytes.end());
-  const std::size_t at = static_cast<std::size_t>(found - bytes.begin()) - 3 * 8;
+  const std::size_t at = static_cast<std::size_t>(found - bytes.begin()) - 5 * 8;
   ASSERT_EQ(bytes[at], 2u);
   for (int k = 0; k < 8; ++k) bytes[at + k] = 0xFF;
   reseal(bytes);

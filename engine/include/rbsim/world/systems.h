@@ -26,5 +26,6 @@ std::vector<SoftBody>& softBodies(World& world);  // adds an empty, idle system 
 // one there was.
 void setPlanarWorld(World& world, const PlanarWorld& planar);
 const PlanarWorld* planarWorld(const World& world);  // null when none
+PlanarWorld* planarWorld(World& world);  // the same, to set its bodies' states (a replay)
 
 }  // namespace rbsim

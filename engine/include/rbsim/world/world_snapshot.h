@@ -3,7 +3,9 @@
 // from it, in this process or another, steps bit for bit as the saved one would (Jolt's
 // PhysicsSystem::SaveState / RestoreState with StateRecorder, MuJoCo's mj_copyData).
 //
-// Saved: every body's state, its rotation matrix apart from q, awake flag, resting time,
+// Saved: every body's state, its rotation matrix apart from q, awake flag, resting time, which
+// earlier body's mesh object it shares (the renderer's instancing groups them by it, and uploads
+// a mesh object once: a body read back keeps the base World's object of its id when equal),
 // accumulated forces and the exact integrator's free-flow memo; the ids (slots, generations, the
 // free list); materials, planes, scripted forces, springs, joints with their warm starts, pose
 // events, kinematic motions, spawners (their random streams and living bursts), the kill volume,
@@ -32,7 +34,9 @@
 
 namespace rbsim {
 
-inline constexpr std::uint32_t kWorldSnapshotVersion = 1;
+// 2: which bodies share one mesh object (issue 58: a World read back is drawn in the same
+// instanced batches).
+inline constexpr std::uint32_t kWorldSnapshotVersion = 2;
 
 // Throws std::invalid_argument for a World with a step listener or the LCP solver.
 std::vector<std::uint8_t> saveWorldSnapshot(const World& world);
