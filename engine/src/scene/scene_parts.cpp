@@ -220,6 +220,7 @@ BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, co
   scene.duration = std::numeric_limits<double>::infinity();
   scene_detail::parseBody(b, baseDir, scene);
   scene_detail::parseScripts(b, 0, scene);
+  cookScene(scene);
   BodyBlock block{scene.bodies.front(), scene.inertiaMethods.front(), std::move(scene.forces), std::move(scene.poseEvents), std::move(scene.springs),
                    std::move(scene.motions)};
   for (ScriptedForce& f : block.forces) f.body = sceneBodyId(index);
@@ -239,6 +240,7 @@ SpawnerDef parseSpawnerBlock(const nlohmann::json& block, const std::string& fil
   scene.duration = std::numeric_limits<double>::infinity();
   double vertices = 0.0;
   scene_detail::parseSpawn(s, baseDir, scene, nullptr, vertices);
+  cookScene(scene);
   return scene.spawners.at(0);
 }
 
