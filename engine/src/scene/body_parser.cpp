@@ -285,7 +285,7 @@ std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, co
   o.fail(key, "no body is named \"" + name + "\"");
 }
 
-void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
+std::optional<Vec3> parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
   BodyDef def;
   def.name = b.string("name", "body" + std::to_string(scene.bodies.size()));
   InertiaMethod method = scene.settings.inertia;
@@ -349,8 +349,11 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
     b.fail("angular_velocity", "its surface moves at |omega| r = " + formatNumber(def.angularVelocity.stableNorm()) +
                                    " rad/s x " + formatNumber(radius) + " m, faster than light; expected a smaller spin");
   }
-  def.color = b.vec3("color", def.color);
-  if (def.color.minCoeff() < 0.0 || def.color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
+  std::optional<Vec3> color;
+  if (b.has("color")) {
+    color = b.vec3("color", kDefaultBodyColor);
+    if (color->minCoeff() < 0.0 || color->maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
+  }
   def.isStatic = b.boolean("static", false);
   def.isKinematic = b.boolean("kinematic", false);
   if (def.isStatic && def.isKinematic) b.fail("kinematic", "a body is static or kinematic, not both");
@@ -371,6 +374,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
   if (b.has("fracture")) def.fracture = parseFracture(b, def);
   scene.bodies.push_back(def);
   scene.inertiaMethods.emplace_back(inertiaMethodName(method));
+  return color;
 }
 
 ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fileAxes, double duration) {

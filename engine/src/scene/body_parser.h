@@ -53,7 +53,9 @@ class ShapeCache {
 // Appends the body described by `b` to scene.bodies (and its inertia method name), and to
 // scene.cooking what its shape needs cooked. With `shapes`, a body whose shape keys match an
 // earlier one's takes that body's shape instead of building it.
-void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
+// Returns the body's "color", when it has one (a presentation key: the caller files it under the
+// body's or the spawner's name in Scene::colors).
+std::optional<Vec3> parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
 // One entry of a body's "forces", on body `index` whose file axes are `fileAxes`; without "end"
 // it acts until `duration`.
 ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fileAxes, double duration);

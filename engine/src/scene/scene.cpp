@@ -104,7 +104,11 @@ Scene describeScene(const nlohmann::json& document, const std::string& file, con
   scene_detail::ShapeCache ownShapes;  // bodies of one shape share it (issue 34)
   scene_detail::ShapeCache& shapes = cache != nullptr ? cache->impl().shapes : ownShapes;
   shapes.beginScene();
-  for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene, &shapes);
+  for (const JsonObject& b : bodies) {
+    if (const std::optional<Vec3> color = scene_detail::parseBody(b, baseDir, scene, &shapes)) {
+      scene.colors.byBody[scene.bodies.back().name] = *color;
+    }
+  }
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
   scene_detail::parseSpawns(root, baseDir, scene, &shapes);
   const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };

@@ -48,7 +48,6 @@ BodyDef defOf(const RigidBody& body, const BodySolid& solid, const std::shared_p
   def.inertiaBody = body.inertiaBody();
   def.position = body.position();
   def.orientation = body.orientation();
-  def.color = body.color();
   def.material = material;
   def.isStatic = body.isStatic();
   def.isKinematic = body.isKinematic();
@@ -134,7 +133,6 @@ void WorldSnapshotAccess::saveBodies(const World& world, ByteWriter& out) {
     const RigidBody& b = world.bodies_[i];
     out.u64(shapeFingerprint(b, world.bodySolids_[i]));
     out.text(b.name());
-    out.vec3(b.color());
     snapshot::write(out, world.bodyMaterials_[i]);
     snapshot::write(out, b.filter());
     out.boolean(b.isStatic());
@@ -163,8 +161,8 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
   for (const Spawner& spawner : base.spawners_) {
     if (!spawner.def.ragdoll) catalogue(shapes, spawner.def.prototype);
   }
-  // The fewest bytes a body record takes: fingerprint, an empty name, 35 doubles, 6 flags.
-  constexpr std::size_t kBodyBytes = 8 + 8 + 35 * 8 + 6;
+  // The fewest bytes a body record takes: fingerprint, an empty name, 32 doubles, 6 flags.
+  constexpr std::size_t kBodyBytes = 8 + 8 + 32 * 8 + 6;
   const std::size_t count = in.count(kBodyBytes, "bodies");
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint64_t fingerprint = in.u64();
@@ -177,7 +175,6 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
     }
     BodyDef def = found->second;
     def.name = name;
-    def.color = in.vec3();
     def.material = snapshot::readMaterial(in);
     def.filter = snapshot::readFilter(in);
     def.isStatic = in.boolean();

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rbsim/body/body_def.h"
-#include "rbsim/collision/contact.h"
+#include "rbsim/shapes/plane.h"
 #include "rbsim/dynamics/joint.h"
 #include "rbsim/particles/particle_def.h"
 #include "rbsim/planar/planar_world.h"
@@ -59,6 +59,7 @@ struct Scene {
   std::vector<Vec3> planarColors;           // per 2D body, linear RGB
   double planarDepth = 0.4;                 // [m] the 2D bodies are drawn as prisms this thick
   ViewDesc view;
+  BodyColors colors;  // how the bodies are drawn: the World never sees it
   // What the shapes of the bodies and spawner prototypes still need built for collision, one
   // request per distinct shape (cook.h); cookScene empties it. buildWorld takes a cooked scene.
   std::vector<CookRequest> cooking;

@@ -32,7 +32,8 @@
 
 namespace rbsim {
 
-inline constexpr std::uint32_t kWorldSnapshotVersion = 1;
+// 2: a body record has no colour (issue 58: colours are the app's, rbsim/scene/view_desc.h).
+inline constexpr std::uint32_t kWorldSnapshotVersion = 2;
 
 // Throws std::invalid_argument for a World with a step listener or the LCP solver.
 std::vector<std::uint8_t> saveWorldSnapshot(const World& world);
