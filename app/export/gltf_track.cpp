@@ -1,6 +1,7 @@
 #include "export/gltf_track.h"
 
 #include "rbsim/io/input_error.h"
+#include "render/body_colors.h"
 
 namespace rbsim::app {
 
@@ -42,7 +43,7 @@ void GltfTrack::sample(const World& world, std::uint64_t frames) {
       BodyTrack track;
       track.name = body.name().empty() ? "body " + std::to_string(i) : body.name();
       track.mesh = body.sharedMesh();
-      track.color = body.color();
+      track.color = bodyColor(colors_, body.name());
       track.firstFrame = frames_;
       tracks_.push_back(std::move(track));
     }

@@ -39,6 +39,8 @@ struct BodyTrack {
 
 class GltfTrack {
  public:
+  // The bodies are drawn in `colors` (the scene's, render/body_colors.h).
+  explicit GltfTrack(BodyColors colors = {}) : colors_(std::move(colors)) {}
   // Appends the world's bodies as the next `frames` frames (a run without images steps from one
   // frame at which a body moves on to the next: the frames between show this same state).
   void sample(const World& world, std::uint64_t frames = 1);
@@ -47,6 +49,7 @@ class GltfTrack {
   const std::vector<BodyTrack>& bodies() const { return tracks_; }
 
  private:
+  BodyColors colors_;
   using Key = std::tuple<std::uint32_t, std::uint32_t, const Mesh*>;  // id's slot, generation; mesh
   std::vector<BodyTrack> tracks_;
   std::map<Key, std::size_t> open_;  // the tracks of the bodies of the last sample

@@ -8,6 +8,7 @@
 #include "render/debug_shapes.h"
 #include "run/format.h"
 #include "run/to_glm.h"
+#include "render/body_colors.h"
 
 namespace rbsim::app {
 
@@ -146,7 +147,7 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
     ghost.triangles = &body.mesh().triangles;
     ghost.position = toGlm(impact.unstoppedPosition);
     for (int c = 0; c < 3; ++c) ghost.rotation[c] = toGlm(R.col(c));
-    ghost.color = toGlm(body.color());
+    ghost.color = toGlm(bodyColor(scene.colors, body.name()));
     ghost.opacity = kGhostOpacity;
     frame.bodies.push_back(std::move(ghost));
     frame.overlay.rows.push_back({"stopped at impact", body.name() + format(" at s = %.3f of the step", impact.fraction), render::RowLevel::Essential});

@@ -13,6 +13,7 @@
 #include "run/sdf_slice_view.h"
 #include "run/soft_view.h"
 #include "run/to_glm.h"
+#include "render/body_colors.h"
 
 namespace rbsim::app {
 
@@ -163,7 +164,7 @@ render::FrameData buildFrame(const World& world
     bv.position = toGlm(body.position());
     const Mat3& R = body.rotation();
     for (int c = 0; c < 3; ++c) bv.rotation[c] = toGlm(R.col(c));
-    bv.color = toGlm(body.color());
+    bv.color = toGlm(bodyColor(scene.colors, body.name()));
     const Vec3 extents = body.mesh().boundsMax() - body.mesh().boundsMin();
     bv.axisLength = static_cast<float>(0.75 * extents.maxCoeff());
     bv.selected = i == view.selected;

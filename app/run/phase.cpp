@@ -9,7 +9,6 @@
 #include "run/frame_steps.h"
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/world_keys.h"
-#include "rbsim/scene/strict_json.h"
 
 namespace rbsim::app {
 
@@ -35,6 +34,9 @@ void refuseOverridesOfTheKey(const std::vector<std::string>& overrides, const st
   }
 }
 
+// Every world's scene is described from the one document with its value applied; the shapes the
+// values leave alone are described once, and each distinct grid or hierarchy is cooked once for
+// all of them (rbsim/scene/cook.h).
 Phase parseCompared(nlohmann::json document, const std::string& file, const std::string& baseDir,
                     const std::vector<std::string>& overrides) {
   const nlohmann::json block = document["compare"];
@@ -76,6 +78,7 @@ Phase parseCompared(nlohmann::json document, const std::string& file, const std:
   Phase phase;
   phase.file = file;
   phase.compareKey = key;
+  SceneCache cache;
   for (std::size_t k = 0; k < values.size(); ++k) {
     const std::string field = "compare.values[" + std::to_string(k) + "]";
     nlohmann::json variant = document;
@@ -86,9 +89,11 @@ Phase parseCompared(nlohmann::json document, const std::string& file, const std:
     }
     PhaseWorld world;
     try {
-      world.scene = parseScene(variant, file, baseDir);
+      world.scene = describeScene(variant, file, baseDir, &cache);
+      cookScene(world.scene, &cache);
     } catch (const InputError& e) {
-      parseScene(document, file, baseDir);  // a fault of the scene itself is reported as such
+      Scene plain = describeScene(document, file, baseDir, &cache);  // a fault of the scene itself is reported as such
+      cookScene(plain, &cache);
       // A misspelt key is the key's fault, not the value's.
       if (e.field() == key && e.problem().rfind("unknown key", 0) == 0) throw InputError(file, "compare.key", "\"" + key + "\": " + e.problem());
       throw InputError(file, field, key + " = " + values[k].dump() + " gives a bad scene: " + e.field() + ": " + e.problem());
@@ -113,14 +118,7 @@ Phase singleWorldPhase(Scene scene) {
 
 Phase parsePhaseText(const std::string& text, const std::string& file, const std::string& baseDir,
                      const std::vector<std::string>& overrides) {
-  nlohmann::json document = parseStrictJson(text, file);  // syntax, duplicate keys, depth
-  for (const std::string& assignment : overrides) {
-    try {
-      applyOverride(document, assignment);
-    } catch (const InputError& e) {
-      throw InputError(file, "--set " + assignment, e.problem());  // as parseSceneText words it
-    }
-  }
+  nlohmann::json document = readSceneDocument(text, file, overrides);
   if (!document.is_object() || !document.contains("compare")) {
     return singleWorldPhase(parseScene(document, file, baseDir));
   }

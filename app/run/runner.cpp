@@ -200,7 +200,7 @@ RunSummary runPhases(const std::vector<Phase>& phases, const RunOptions& options
   if (!options.recordPath.empty()) recorder.emplace(options.recordPath, recordingHeader(phases, options, title));
   std::optional<GltfFile> gltfFile;
   if (!options.gltfPath.empty()) gltfFile.emplace(options.gltfPath);
-  GltfTrack gltfTrack;  // the poses at every frame, for --gltf
+  GltfTrack gltfTrack(phases.front().scene().colors);  // the poses at every frame, for --gltf
   std::unique_ptr<render::OffscreenRenderer> renderer;
   std::unique_ptr<render::FrameSink> sink;
   if (wantImages) {

@@ -107,6 +107,12 @@ PyBodyId PyWorld::addBody(const py::kwargs& body) {
   names_.insert(block.def.name);
   blocks_.addBody(id, keys, world_.body(id));
   scene_.inertiaMethods.push_back(block.inertiaMethod);
+  // Filed by name, as a scene file's are (Scene::colors); a name used before loses its old colour.
+  if (block.color) {
+    scene_.colors.byBody[block.def.name] = *block.color;
+  } else {
+    scene_.colors.byBody.erase(block.def.name);
+  }
   // The block names its body as a scene's body `index` would be named; in this World, where
   // bodies may have been removed, the body has the id addBody gave it.
   for (ScriptedForce f : block.forces) {
@@ -144,7 +150,8 @@ std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
     return std::any_of(world_.spawners().begin(), world_.spawners().end(), [&](const Spawner& s) { return s.def.name == name; });
   };
   if (keys.is_object() && !keys.contains("name")) keys["name"] = freeSpawnerName(spawnerNamed);
-  const SpawnerDef def = parseSpawnerBlock(keys, kSpawnerCall, "", "", world_.settings());
+  std::optional<Vec3> color;
+  const SpawnerDef def = parseSpawnerBlock(keys, kSpawnerCall, "", "", world_.settings(), &color);
   // Its bodies' names must be its own (issue 56, item 4).
   if (spawnerNamed(def.name)) {
     throw InputError(kSpawnerCall, "name", "another spawner is named \"" + def.name + "\"; expected a name of its own");
@@ -161,6 +168,7 @@ std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
   } catch (const std::invalid_argument& e) {
     throw InputError(kSpawnerCall, "", e.what());  // the engine's checks (World::addSpawner)
   }
+  if (color) scene_.colors.bySpawner[def.name] = *color;
   blocks_.addSpawner(std::move(keys));
   return world_.spawners().size() - 1;
 }

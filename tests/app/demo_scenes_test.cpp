@@ -217,6 +217,29 @@ TEST(ComparedPhase, AnyKeyWorksAndWorldsOfDifferentStepsKeepTheSameTime) {
 }
 
 
+// The worlds of a comparison are described from one document and cooked through one cache
+// (rbsim/scene/cook.h): a shape no compared value touches is read and built once for all.
+TEST(ComparedPhase, EachDistinctShapeIsDescribedAndCookedOnceForEveryWorld) {
+  const std::string text = R"({"world": {"dt": 0.01, "duration": 0.1},
+    "compare": {"key": "world.integrator", "values": ["euler-quat", "dlm", "rk4", "symplectic-euler"]},
+    "bodies": [{"name": "ring", "shape": {"type": "torus", "major_radius": 0.3, "minor_radius": 0.1}, "density": 100},
+               {"name": "ring2", "shape": {"type": "torus", "major_radius": 0.3, "minor_radius": 0.1}, "density": 100,
+                "position": [1, 0, 0]}]})";
+  const Phase phase = parsePhaseText(text, "inline.json", ".");
+  ASSERT_EQ(phase.worlds.size(), 4u);
+  const BodyDef& first = phase.worlds[0].scene.bodies[0];
+  ASSERT_NE(first.sdf, nullptr) << "a torus is closed and non-convex: it collides through a grid";
+  for (const PhaseWorld& world : phase.worlds) {
+    EXPECT_TRUE(world.scene.cooking.empty()) << world.label;
+    for (const BodyDef& def : world.scene.bodies) {
+      EXPECT_EQ(def.mesh.get(), first.mesh.get()) << world.label << ": " << def.name;
+      EXPECT_EQ(def.sdf.get(), first.sdf.get()) << world.label << ": " << def.name;
+      EXPECT_EQ(def.triangles.get(), first.triangles.get()) << world.label << ": " << def.name;
+    }
+  }
+  EXPECT_NE(phase.worlds[1].scene.settings.integrator, phase.worlds[0].scene.settings.integrator);
+}
+
 // A world whose frames are drawn steps on one thread (the rasteriser and the encoder have the
 // cores), unless the scene gives world.threads, in its file or by --set: then it keeps that.
 TEST(FramedWorld, StepsOnOneThreadUnlessTheSceneGivesThreads) {

@@ -49,7 +49,6 @@ RigidBody::RigidBody(const BodyDef& def) : isStatic_(def.isStatic), isKinematic_
   if (def.fileFrame.mesh && def.fileFrame.mesh->vertices.size() != def.mesh->vertices.size()) {
     throw std::invalid_argument("body '" + def.name + "': its file mesh and its mesh differ in vertex count");
   }
-  cold->color = def.color;
   const std::string& name = cold->name;
   if (!cold->mesh) throw std::invalid_argument("body '" + name + "': no mesh");
   cold->shape = def.shape ? *def.shape : shapeOfMesh(*cold->mesh, def.sdf != nullptr);

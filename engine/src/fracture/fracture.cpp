@@ -71,7 +71,6 @@ std::vector<BodyDef> fracturePieces(const RigidBody& body, const FracturePattern
     def.orientation = body.orientation();
     def.velocity = v + omega.cross(r);  // seed 000 "Fracture": v_i = v + omega x r_i
     def.angularVelocity = omega;        // omega_i = omega
-    def.color = body.color();
     def.material = material;
     defs.push_back(std::move(def));
   }

@@ -14,9 +14,7 @@
 #include "fracture/pieces.h"
 #include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/geometry/signed_distance_grid.h"
-#include "geometry/feature_points.h"
 #include "geometry/surface_samples.h"
-#include "geometry/triangle_bvh.h"
 #include "rbsim/mass/mass_model.h"
 #include "scene/compound_parser.h"
 #include "scene/fracture_parser.h"
@@ -44,12 +42,13 @@ constexpr double kDefaultRoundingShare = 0.1;  // [1]
 constexpr int kRoundRings = kDisplayRings;        // from pole to pole [1]
 
 Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def,
-                std::optional<ImplicitShape>& implicit) {
+                std::shared_ptr<const ImplicitShape>& implicit) {
   const JsonObject shape = body.object("shape", kShapeKeys);
   const std::string type = shape.requiredString("type");
   if (type == "implicit" || type == "csg") {
-    implicit = parseImplicitShape(shape);
-    return meshImplicitShapeOrFail(shape, *implicit).mesh;
+    auto parsed = std::make_shared<const ImplicitShape>(parseImplicitShape(shape));
+    implicit = parsed;
+    return meshImplicitShapeOrFail(shape, *parsed).mesh;
   }
   try {
     if (type == "box") {
@@ -132,17 +131,13 @@ Mesh parseShape(const JsonObject& body, const std::string& baseDir, BodyDef& def
                     "\"implicit\" or \"csg\", got \"" + type + "\"");
 }
 
-// An implicit shape's loading that ran out of evaluations (shapes/implicit_shape.h): the shape's
-// resolution and its tree's size set the cost.
-[[noreturn]] void implicitBudgetFailed(const JsonObject& b, const ImplicitBudgetExceeded& e) {
-  b.fail("shape.resolution", std::string(e.what()) + "; use a lower resolution or fewer primitives");
-}
-
 // A body of any shape gets a signed distance grid (seed 000 "Constructing Signed Distance
 // Functions") and surface samples: asked for with "sdf": {"resolution", "sample_spacing"}, and
 // always for a closed non-convex mesh, which the convex narrow phase would treat as its hull. An
-// implicit shape's grid holds its exact function's values, at the shape's own resolution.
-void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<ImplicitShape>& implicit) {
+// implicit shape's grid holds its exact function's values, at the shape's own resolution. Here the
+// request is checked against the budgets and returned; cookScene (scene/cook.cpp) builds it.
+std::optional<CookRequest> parseCollisionShape(const JsonObject& b, const BodyDef& def,
+                                               const std::shared_ptr<const ImplicitShape>& implicit) {
   const Mesh& mesh = *def.mesh;
   if (implicit && b.has("sdf")) {
     const JsonObject sdf = b.object("sdf", kSdfKeys);
@@ -150,14 +145,14 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
   }
   if (!b.has("sdf") && !implicit) {
     // Spheres, capsules and boxes are convex by construction: no grid, and no mesh to check.
-    if (def.shape && (def.shape->isRound() || def.shape->type == ShapeType::Box)) return;
+    if (def.shape && (def.shape->isRound() || def.shape->type == ShapeType::Box)) return std::nullopt;
     // An open mesh (accepted with the cube inertia) has no inside to grid: it stays convex.
     const MeshCheck check = checkMesh(mesh);
     const bool solid = check.closed && check.consistentlyOriented && check.degenerateTriangles == 0;
     // Judged with the tolerance of the coordinates as the file gave them (geometry/mesh.h): their
     // float rounding grows with their distance from the file's origin, not the centre of mass.
     const Mesh& given = def.fileFrame.mesh ? *def.fileFrame.mesh : mesh;
-    if (!solid || isConvexSurface(mesh, convexityTolerance(given))) return;
+    if (!solid || isConvexSurface(mesh, convexityTolerance(given))) return std::nullopt;
   }
   const JsonObject o = b.has("sdf") ? b.object("sdf", kSdfKeys) : b;
   SdfGridOptions options;
@@ -177,43 +172,35 @@ void parseCollisionShape(const JsonObject& b, BodyDef& def, const std::optional<
   if (!gridTooBig.empty()) overBudget("resolution", gridTooBig + "; use a lower resolution");
   const double spacingGiven = b.has("sdf") && o.has("sample_spacing") ? o.number("sample_spacing", 0.0) : 0.0;
   if (spacingGiven < 0.0) o.fail("sample_spacing", "expected a spacing >= 0 m (0: the vertices only)");
-  try {
-    def.sdf = std::make_shared<const SignedDistanceGrid>(
-        implicit ? implicitBodyGrid(*implicit, mesh, def.fileFrame.axes, def.fileFrame.centre)
-                 : SignedDistanceGrid::build(mesh, options));
-  } catch (const ImplicitBudgetExceeded& e) {
-    implicitBudgetFailed(b, e);
-  } catch (const std::invalid_argument& e) {
-    b.fail("shape", std::string("no signed distance grid for this shape: ") + e.what());
-  }
-  // By default the samples are as dense as the grid: finer would test points the grid cannot
-  // tell apart, coarser would let an edge sink between samples.
-  const double spacing = b.has("sdf") && o.has("sample_spacing") ? spacingGiven : def.sdf->cellSize();
+  // By default the samples are as dense as the grid (its cell, as build() lays it): finer would
+  // test points the grid cannot tell apart, coarser would let an edge sink between samples.
+  const double cellSize = sdfGridLattice(mesh, options).cellSize;
+  const double spacing = b.has("sdf") && o.has("sample_spacing") ? spacingGiven : cellSize;
   const std::string samplesTooMany = surfaceSampleBudgetProblem(mesh, spacing);
   if (!samplesTooMany.empty()) {
     overBudget(o.has("sample_spacing") ? "sample_spacing" : "resolution", samplesTooMany + "; use a larger sample_spacing");
   }
+  CookRequest request;
+  request.mesh = def.mesh;
+  request.resolution = options.resolution;
+  request.file = b.file();
+  request.shapeField = b.pathOf("shape");
+  request.resolutionField = b.pathOf("shape.resolution");
   if (!implicit) {
-    def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(surfaceSamples(mesh, spacing));
-    def.triangles = std::make_shared<const TriangleBvh>(mesh);
-    return;
+    request.kind = CookRequest::Kind::Grid;
+    request.sampleSpacing = spacing;
+    return request;
   }
   // An implicit body collides through its exact function: one sharp sample per surface cell of
   // its grid, and, when the scene asks for a finer spacing, the mesh's samples moved onto the
   // exact surface.
-  auto solid = std::make_shared<const ImplicitSolid>(implicitSolidOf(*implicit, def.fileFrame.axes, def.fileFrame.centre));
-  std::vector<Vec3> samples;
-  try {
-    samples = implicitSurfaceSamples(*solid, *def.sdf, implicit->budget.get());
-    if (spacingGiven > 0.0) {
-      const ExactField field = implicitField(*solid, implicit->budget.get());
-      for (const Vec3& p : surfaceSamples(mesh, spacing)) samples.push_back(projectOntoSurface(p, field, kCrossingTolerance * def.sdf->cellSize()));
-    }
-  } catch (const ImplicitBudgetExceeded& e) {
-    implicitBudgetFailed(b, e);
-  }
-  def.surfaceSamples = std::make_shared<const std::vector<Vec3>>(std::move(samples));
-  def.implicit = std::move(solid);
+  request.kind = CookRequest::Kind::Implicit;
+  request.sampleSpacing = spacingGiven > 0.0 ? spacing : 0.0;
+  request.implicit = implicit;
+  request.axes = def.fileFrame.axes;
+  request.centre = def.fileFrame.centre;
+  request.shapeJson = b.raw("shape").dump();
+  return request;
 }
 
 // The keys a body's shape is built from, as one string (ShapeCache): the "shape" object with a
@@ -262,12 +249,12 @@ void checkMassScale(const JsonObject& b, const BodyDef& def) {
 
 }  // namespace
 
-const BodyDef* ShapeCache::find(const std::string& key) const {
+ShapeCache::Entry* ShapeCache::find(const std::string& key) {
   const auto it = built_.find(key);
   return it == built_.end() ? nullptr : &it->second;
 }
 
-void ShapeCache::add(const std::string& key, const BodyDef& built) { built_.emplace(key, built); }
+void ShapeCache::add(const std::string& key, Entry entry) { built_.emplace(key, std::move(entry)); }
 
 Quat toBodyOrientation(const BodyDef& def, const Quat& fileOrientation) {
   if (def.fileFrame.axes == Mat3::Identity()) return fileOrientation;  // exactly as typed
@@ -298,7 +285,7 @@ std::size_t findBody(const std::vector<BodyDef>& bodies, const JsonObject& o, co
   o.fail(key, "no body is named \"" + name + "\"");
 }
 
-void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
+std::optional<Vec3> parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes) {
   BodyDef def;
   def.name = b.string("name", "body" + std::to_string(scene.bodies.size()));
   InertiaMethod method = scene.settings.inertia;
@@ -316,19 +303,21 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
   if (b.has("shapes")) {
     parseCompoundShapes(b, def);
     checkMassScale(b, def);
-  } else if (const BodyDef* built = key.empty() ? nullptr : shapes->find(key)) {
-    // The same keys were built and checked before: share what they made (pointers, not copies).
+  } else if (ShapeCache::Entry* entry = key.empty() ? nullptr : shapes->find(key)) {
+    // The same keys were built and checked before: share what they made (pointers, not copies),
+    // and list the shape's request once in this scene.
+    if (entry->request && entry->listedIn != shapes->scene()) {
+      scene.cooking.push_back(*entry->request);
+      entry->listedIn = shapes->scene();
+    }
+    const BodyDef* built = &entry->built;
     def.mesh = built->mesh;
     def.fileFrame = built->fileFrame;
     def.mass = built->mass;
     def.inertiaBody = built->inertiaBody;
     def.shape = built->shape;
-    def.sdf = built->sdf;
-    def.surfaceSamples = built->surfaceSamples;
-    def.implicit = built->implicit;
-    def.triangles = built->triangles;
   } else {
-    std::optional<ImplicitShape> implicit;
+    std::shared_ptr<const ImplicitShape> implicit;
     Mesh mesh = parseShape(b, baseDir, def, implicit);
     if (b.has("mass")) b.positiveNumber("mass", 1.0);  // type and sign errors name the field
     if (b.has("density")) b.positiveNumber("density", 1.0);
@@ -343,15 +332,12 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
       throw InputError(b.file(), b.pathOf(e.field().c_str()), e.problem());
     }
     checkMassScale(b, def);
-    if (collidesAsTriangles(b)) {
-      makeTriangleGround(def);
-    } else {
-      parseCollisionShape(b, def, implicit);
-    }
+    const std::optional<CookRequest> request = collidesAsTriangles(b) ? triangleGround(b, def) : parseCollisionShape(b, def, implicit);
     // The collision shape RigidBody would derive from the mesh (shapeOfMesh), made here once so
     // that every body of this shape holds the same hull rather than building its own.
-    if (!def.shape) def.shape = shapeOfMesh(*def.mesh, def.sdf != nullptr);
-    if (!key.empty()) shapes->add(key, def);
+    if (!def.shape) def.shape = shapeOfMesh(*def.mesh, request.has_value());
+    if (request) scene.cooking.push_back(*request);
+    if (!key.empty()) shapes->add(key, {def, request, shapes->scene()});
   }
   def.position = b.boundedVec3("position", Vec3::Zero(), kMaxCoordinate, "m", kFarFromOrigin);
   // The file gives the orientation of the file's axes; the body's are its principal axes.
@@ -363,8 +349,11 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
     b.fail("angular_velocity", "its surface moves at |omega| r = " + formatNumber(def.angularVelocity.stableNorm()) +
                                    " rad/s x " + formatNumber(radius) + " m, faster than light; expected a smaller spin");
   }
-  def.color = b.vec3("color", def.color);
-  if (def.color.minCoeff() < 0.0 || def.color.maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
+  std::optional<Vec3> color;
+  if (b.has("color")) {
+    color = b.vec3("color", kDefaultBodyColor);
+    if (color->minCoeff() < 0.0 || color->maxCoeff() > 1.0) b.fail("color", "components must lie in [0, 1]");
+  }
   def.isStatic = b.boolean("static", false);
   def.isKinematic = b.boolean("kinematic", false);
   if (def.isStatic && def.isKinematic) b.fail("kinematic", "a body is static or kinematic, not both");
@@ -385,6 +374,7 @@ void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, Sh
   if (b.has("fracture")) def.fracture = parseFracture(b, def);
   scene.bodies.push_back(def);
   scene.inertiaMethods.emplace_back(inertiaMethodName(method));
+  return color;
 }
 
 ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fileAxes, double duration) {

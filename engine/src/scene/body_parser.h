@@ -2,10 +2,13 @@
 // Scene-file parsing of bodies and what hangs on them (scripted forces, pose events, springs),
 // of planes, and of spawn blocks that create many bodies from one template. Internal to scene/.
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
 
+#include "rbsim/scene/cook.h"
 #include "rbsim/scene/json_fields.h"
 #include "rbsim/scene/scene.h"
 #include "scene/spawn_keys.h"
@@ -20,26 +23,39 @@ Material parseMaterial(const JsonObject& o, const Material& base = {});
 // The body's orientation for an orientation of the file's axes: q_file E (mass/mass_model.h).
 Quat toBodyOrientation(const BodyDef& def, const Quat& fileOrientation);
 
-// The shapes built so far in one scene load (issue 34), so that bodies of the same shape share one
-// of each thing a shape costs: the mesh (and the file's), the collision shape with its hull, the
-// signed distance grid and its surface samples, and one mass-property computation. Two bodies
-// share when their "shape" (a mesh file by its resolved path), "mass", "density", inertia method
-// and "sdf" are the same JSON; everything else (pose, material, fracture, scripts) stays per body.
-// One cache lives for one load (parseScene's), so a file edited between loads is read again.
+// The shapes described so far (issue 34), so that bodies of the same shape share one of each thing
+// a shape costs: the mesh (and the file's), the collision shape with its hull, one mass-property
+// computation, and one request to cook its grid or triangle hierarchy (rbsim/scene/cook.h). Two
+// bodies share when their "shape" (a mesh file by its resolved path), "mass", "density", inertia
+// method, "sdf" and "collide_as" are the same JSON; everything else (pose, material, fracture,
+// scripts) stays per body. One cache lives for one load, or for the loads of one document that a
+// compared phase makes (SceneCache), so a file edited between loads is read again.
 class ShapeCache {
  public:
-  // The body an earlier parseBody built from the same shape keys, or null.
-  const BodyDef* find(const std::string& key) const;
-  void add(const std::string& key, const BodyDef& built);
+  struct Entry {
+    BodyDef built;
+    std::optional<CookRequest> request;  // what the shape needs cooked; none: nothing
+    std::uint64_t listedIn = 0;          // the last scene whose Scene::cooking lists the request
+  };
+  // The entry an earlier parseBody built from the same shape keys, or null.
+  Entry* find(const std::string& key);
+  void add(const std::string& key, Entry entry);
   std::size_t size() const { return built_.size(); }
+  // A new scene's description begins: each request is listed in its Scene::cooking once more.
+  void beginScene() { ++scene_; }
+  std::uint64_t scene() const { return scene_; }
 
  private:
-  std::unordered_map<std::string, BodyDef> built_;
+  std::unordered_map<std::string, Entry> built_;
+  std::uint64_t scene_ = 1;
 };
 
-// Appends the body described by `b` to scene.bodies (and its inertia method name). With `shapes`,
-// a body whose shape keys match an earlier one's takes that body's shape instead of building it.
-void parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
+// Appends the body described by `b` to scene.bodies (and its inertia method name), and to
+// scene.cooking what its shape needs cooked. With `shapes`, a body whose shape keys match an
+// earlier one's takes that body's shape instead of building it.
+// Returns the body's "color", when it has one (a presentation key: the caller files it under the
+// body's or the spawner's name in Scene::colors).
+std::optional<Vec3> parseBody(const JsonObject& b, const std::string& baseDir, Scene& scene, ShapeCache* shapes = nullptr);
 // One entry of a body's "forces", on body `index` whose file axes are `fileAxes`; without "end"
 // it acts until `duration`.
 ScriptedForce parseForce(const JsonObject& f, std::size_t index, const Mat3& fileAxes, double duration);

@@ -1,9 +1,5 @@
 #include "scene/mesh_ground_parser.h"
 
-#include <memory>
-
-#include "geometry/triangle_bvh.h"
-
 namespace rbsim::scene_detail {
 
 bool collidesAsTriangles(const JsonObject& b) {
@@ -16,11 +12,15 @@ bool collidesAsTriangles(const JsonObject& b) {
   return true;
 }
 
-void makeTriangleGround(BodyDef& def) {
+CookRequest triangleGround(const JsonObject& b, BodyDef& def) {
   def.shape = Shape::mesh(*def.mesh);
-  def.sdf = nullptr;
-  def.surfaceSamples = nullptr;
-  def.triangles = std::make_shared<const TriangleBvh>(*def.mesh);
+  CookRequest request;
+  request.kind = CookRequest::Kind::Triangles;
+  request.mesh = def.mesh;
+  request.file = b.file();
+  request.shapeField = b.pathOf("shape");
+  request.resolutionField = request.shapeField;
+  return request;
 }
 
 void checkTriangleGroundIsStatic(const JsonObject& b, const BodyDef& def) {

@@ -14,6 +14,7 @@
 #include "io/read_file.h"
 #include "rbsim/mass/mass_model.h"
 #include "scene/body_parser.h"
+#include "scene/scene_cache.h"
 #include "scene/input_ranges.h"
 #include "scene/joint_parser.h"
 #include "rbsim/scene/json_fields.h"
@@ -86,14 +87,28 @@ std::uint64_t Scene::stepCount() const {
 }
 
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir) {
+  SceneCache cache;
+  Scene scene = describeScene(document, file, baseDir, &cache);
+  cookScene(scene, &cache);
+  return scene;
+}
+
+Scene describeScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir,
+                    SceneCache* cache) {
   const JsonObject root(document, file, "", scene_detail::kSceneKeys);
   Scene scene;
   scene.file = file;
   scene.title = root.string("title", std::filesystem::path(file).stem().string());
   if (root.has("world")) parseWorldBlock(root.object("world", kWorldKeys), scene);
   const std::vector<JsonObject> bodies = root.objectArray("bodies", scene_detail::kBodyKeys);
-  scene_detail::ShapeCache shapes;  // bodies of one shape share it (issue 34)
-  for (const JsonObject& b : bodies) scene_detail::parseBody(b, baseDir, scene, &shapes);
+  scene_detail::ShapeCache ownShapes;  // bodies of one shape share it (issue 34)
+  scene_detail::ShapeCache& shapes = cache != nullptr ? cache->impl().shapes : ownShapes;
+  shapes.beginScene();
+  for (const JsonObject& b : bodies) {
+    if (const std::optional<Vec3> color = scene_detail::parseBody(b, baseDir, scene, &shapes)) {
+      scene.colors.byBody[scene.bodies.back().name] = *color;
+    }
+  }
   for (std::size_t i = 0; i < bodies.size(); ++i) scene_detail::parseScripts(bodies[i], i, scene);
   scene_detail::parseSpawns(root, baseDir, scene, &shapes);
   const auto nonEmpty = [&](const char* key) { return root.has(key) && root.raw(key).is_array() && !root.raw(key).empty(); };
@@ -134,9 +149,9 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
   return parseSceneText(readSceneFile(path), path, std::filesystem::path(path).parent_path().string(), overrides);
 }
 
-Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,
-                     const std::vector<std::string>& overrides) {
-  nlohmann::json document = parseStrictJson(text, file);
+nlohmann::json readSceneDocument(const std::string& text, const std::string& file,
+                                 const std::vector<std::string>& overrides) {
+  nlohmann::json document = parseStrictJson(text, file);  // syntax, duplicate keys, depth
   for (const std::string& assignment : overrides) {
     try {
       applyOverride(document, assignment);
@@ -144,10 +159,16 @@ Scene parseSceneText(const std::string& text, const std::string& file, const std
       throw InputError(file, "--set " + assignment, e.problem());
     }
   }
-  return parseScene(document, file, baseDir);
+  return document;
+}
+
+Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,
+                     const std::vector<std::string>& overrides) {
+  return parseScene(readSceneDocument(text, file, overrides), file, baseDir);
 }
 
 World buildWorld(const Scene& scene) {
+  if (!scene.cooking.empty()) throw std::logic_error("buildWorld: the scene is not cooked; call cookScene first");
   World world(scene.settings);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     if (world.addBody(scene.bodies[i]) != sceneBodyId(i)) throw std::logic_error("buildWorld: a fresh World numbered its bodies out of order");

@@ -218,10 +218,11 @@ BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, co
   scene.file = file;
   scene.settings = settings;
   scene.duration = std::numeric_limits<double>::infinity();
-  scene_detail::parseBody(b, baseDir, scene);
+  const std::optional<Vec3> color = scene_detail::parseBody(b, baseDir, scene);
   scene_detail::parseScripts(b, 0, scene);
+  cookScene(scene);
   BodyBlock block{scene.bodies.front(), scene.inertiaMethods.front(), std::move(scene.forces), std::move(scene.poseEvents), std::move(scene.springs),
-                   std::move(scene.motions)};
+                   std::move(scene.motions), color};
   for (ScriptedForce& f : block.forces) f.body = sceneBodyId(index);
   for (PoseEvent& e : block.poseEvents) e.body = sceneBodyId(index);
   for (Spring& s : block.springs) s.body = sceneBodyId(index);
@@ -230,7 +231,7 @@ BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, co
 }
 
 SpawnerDef parseSpawnerBlock(const nlohmann::json& block, const std::string& file, const std::string& path,
-                             const std::string& baseDir, const Settings& settings) {
+                             const std::string& baseDir, const Settings& settings, std::optional<Vec3>* color) {
   const JsonObject s(block, file, path, scene_detail::kSpawnKeys);
   if (!s.has("period")) s.fail("period", "expected the time between bursts [s] (a spawner adds bodies while the World steps)");
   Scene scene;
@@ -239,6 +240,11 @@ SpawnerDef parseSpawnerBlock(const nlohmann::json& block, const std::string& fil
   scene.duration = std::numeric_limits<double>::infinity();
   double vertices = 0.0;
   scene_detail::parseSpawn(s, baseDir, scene, nullptr, vertices);
+  cookScene(scene);
+  if (color != nullptr) {
+    const auto given = scene.colors.bySpawner.find(scene.spawners.at(0).name);
+    *color = given == scene.colors.bySpawner.end() ? std::nullopt : std::optional<Vec3>(given->second);
+  }
   return scene.spawners.at(0);
 }
 

@@ -223,7 +223,8 @@ void spawnBodies(const JsonObject& s, const std::string& baseDir, bool periodic,
   const JsonObject body = s.object("body", kSpawnBodyKeys);
   const std::size_t first = scene.bodies.size();
   const std::size_t springsBefore = scene.springs.size();
-  parseBody(body, baseDir, scene, shapes);
+  const std::optional<Vec3> color = parseBody(body, baseDir, scene, shapes);
+  if (color) scene.colors.bySpawner[spawner.name] = *color;
   parseScripts(body, first, scene);
   const BodyDef prototype = scene.bodies[first];
   const double copies = static_cast<double>(spawner.count) * static_cast<double>(spawner.offsets.size()) * bursts;

@@ -49,7 +49,6 @@ BodyDef defOf(const RigidBody& body, const BodySolid& solid, const std::shared_p
   def.inertiaBody = body.inertiaBody();
   def.position = body.position();
   def.orientation = body.orientation();
-  def.color = body.color();
   def.material = material;
   def.isStatic = body.isStatic();
   def.isKinematic = body.isKinematic();
@@ -146,7 +145,6 @@ void WorldSnapshotAccess::saveBodies(const World& world, ByteWriter& out) {
     out.u32(id.slot);
     out.u32(id.generation);
     out.text(b.name());
-    out.vec3(b.color());
     snapshot::write(out, world.bodyMaterials_[i]);
     snapshot::write(out, b.filter());
     out.boolean(b.isStatic());
@@ -188,9 +186,9 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
       catalogue(shapes, defOf(figure.bodies_[i], figure.bodySolids_[i], nullptr, figure.bodyMaterials_[i]));
     }
   }
-  // The fewest bytes a body record takes: fingerprint, mesh group, id, an empty name, 35 doubles,
+  // The fewest bytes a body record takes: fingerprint, mesh group, id, an empty name, 32 doubles,
   // 6 flags.
-  constexpr std::size_t kBodyBytes = 8 + 8 + 8 + 8 + 35 * 8 + 6;
+  constexpr std::size_t kBodyBytes = 8 + 8 + 8 + 8 + 32 * 8 + 6;
   const std::size_t count = in.count(kBodyBytes, "bodies");
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint64_t fingerprint = in.u64();
@@ -224,7 +222,6 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
       def.mesh = std::make_shared<const Mesh>(*def.mesh);
     }
     def.name = name;
-    def.color = in.vec3();
     def.material = snapshot::readMaterial(in);
     def.filter = snapshot::readFilter(in);
     def.isStatic = in.boolean();

@@ -38,7 +38,6 @@ struct BodyDef {
   Quat orientation = Quat::Identity();     // q: body-to-world rotation (unit)
   Vec3 velocity = Vec3::Zero();            // v of the centre of mass [m/s]
   Vec3 angularVelocity = Vec3::Zero();     // omega, world frame [rad/s]
-  Vec3 color = Vec3(0.85, 0.45, 0.2);      // display only, linear RGB in [0, 1]
   Material material;                       // restitution and friction (body/material.h)
   // A static body never moves: it is not integrated, forces do not act on it, and it behaves as
   // if its mass were infinite. Its mass and inertia are kept for display only.

@@ -38,7 +38,6 @@ class alignas(64) RigidBody {
   double mass() const { return mass_; }
   const Mat3& inertiaBody() const { return cold_->inertia.inertiaBody; }
   const Mat3& inverseInertiaBody() const { return inputs_.inverseInertiaBody; }
-  const Vec3& color() const { return cold_->color; }
   bool isStatic() const { return isStatic_; }  // never moves, never awake (BodyDef::isStatic)
   bool isKinematic() const { return isKinematic_; }  // moves as prescribed (BodyDef::isKinematic)
   bool isDynamic() const { return !isStatic_ && !isKinematic_; }  // moved by forces and contacts
@@ -144,7 +143,6 @@ class alignas(64) RigidBody {
   struct ColdConstants {
     std::string name;
     std::shared_ptr<const Mesh> mesh;
-    Vec3 color = Vec3::Ones();
     Shape shape;
     CollisionFilter filter;
     std::vector<ChildShape> children;

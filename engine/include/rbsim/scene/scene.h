@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rbsim/body/body_def.h"
-#include "rbsim/collision/contact.h"
+#include "rbsim/shapes/plane.h"
 #include "rbsim/dynamics/joint.h"
 #include "rbsim/particles/particle_def.h"
 #include "rbsim/planar/planar_world.h"
@@ -18,6 +18,7 @@
 #include "rbsim/settings/settings.h"
 #include "rbsim/world/ragdoll.h"
 #include "rbsim/world/world.h"
+#include "rbsim/scene/cook.h"
 #include "rbsim/scene/view_desc.h"
 
 namespace rbsim {
@@ -58,6 +59,10 @@ struct Scene {
   std::vector<Vec3> planarColors;           // per 2D body, linear RGB
   double planarDepth = 0.4;                 // [m] the 2D bodies are drawn as prisms this thick
   ViewDesc view;
+  BodyColors colors;  // how the bodies are drawn: the World never sees it
+  // What the shapes of the bodies and spawner prototypes still need built for collision, one
+  // request per distinct shape (cook.h); cookScene empties it. buildWorld takes a cooked scene.
+  std::vector<CookRequest> cooking;
 
   std::uint64_t stepCount() const;  // steps covering `duration` at settings.timeStep
   // The most bodies the scene's World holds at once over `duration`: the listed ones, every
@@ -75,8 +80,19 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
 Scene parseSceneText(const std::string& text, const std::string& file, const std::string& baseDir,
                      const std::vector<std::string>& overrides = {});
 
-// Parses an in-memory document; mesh paths are relative to `baseDir`.
+// Parses an in-memory document and cooks it (cook.h); mesh paths are relative to `baseDir`.
 Scene parseScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir);
+
+// The parser alone: the document as a plain description, every key checked, meshes read and mass
+// properties computed, but no grid or triangle hierarchy built (Scene::cooking lists them for
+// cookScene). With `cache`, shapes described by an earlier call through it are reused.
+Scene describeScene(const nlohmann::json& document, const std::string& file, const std::string& baseDir,
+                    SceneCache* cache = nullptr);
+
+// The text of a scene file as a JSON document (strict: no duplicate keys, bounded depth) with the
+// "path=value" `overrides` applied; an error names the file and the --set assignment.
+nlohmann::json readSceneDocument(const std::string& text, const std::string& file,
+                                 const std::vector<std::string>& overrides = {});
 
 // "bodies[1].shape.extents" and "bodies.1.shape.extents" both give {bodies, 1, shape, extents}:
 // the parts of a --set path.
@@ -89,7 +105,8 @@ std::string readSceneFile(const std::string& path);
 // as JSON, otherwise a string. Bodies may be named: "bodies.box.mass=2".
 void applyOverride(nlohmann::json& document, const std::string& assignment);
 
-// A World holding the scene's bodies, forces, pose events, planes and particle systems.
+// A World holding the scene's bodies, forces, pose events, planes and particle systems. The scene
+// must be cooked (Scene::cooking empty): std::logic_error otherwise.
 World buildWorld(const Scene& scene);
 
 }  // namespace rbsim

@@ -2,6 +2,7 @@
 // One block of a scene file read on its own, with the keys, checks and messages of a whole file:
 // for programs that build a World piece by piece instead of loading a file (the Python module,
 // python/). Every function throws InputError naming `file`, the block's path and the key.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,7 @@ struct BodyBlock {
   std::vector<PoseEvent> poseEvents;
   std::vector<Spring> springs;
   std::vector<KinematicMotion> motions;  // at most one
+  std::optional<Vec3> color;             // its "color" (Scene::colors), when given
 };
 BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, const std::string& path,
                          const std::string& baseDir, const Settings& settings, std::size_t index);
@@ -42,8 +44,9 @@ BodyBlock parseBodyBlock(const nlohmann::json& body, const std::string& file, co
 // A spawn block (the keys of one entry of "spawn") with a "period": the spawner it describes, for a
 // World whose settings are `settings` (its default inertia method). Without "period" it is an
 // InputError: a World adds bodies now with addBody.
+// `color`, when not null, receives the copies' "color" (Scene::colors), when given.
 SpawnerDef parseSpawnerBlock(const nlohmann::json& block, const std::string& file, const std::string& path,
-                             const std::string& baseDir, const Settings& settings);
+                             const std::string& baseDir, const Settings& settings, std::optional<Vec3>* color = nullptr);
 
 // A force block (the keys of one entry of a body's "forces") on body `index`, whose file axes
 // are `fileAxes` (FileFrame::axes); without "end" it acts for ever.

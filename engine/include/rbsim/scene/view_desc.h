@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "rbsim/math/types.h"
@@ -59,6 +60,17 @@ struct ViewDesc {
   bool plotSelected = false;
   double plotSeconds = 0.0;  // [s]
   std::optional<SdfSliceDesc> sdfSlice;  // none: no slice shown
+};
+
+// A body drawn without a colour of its own [linear RGB].
+inline const Vec3 kDefaultBodyColor(0.85, 0.45, 0.2);
+
+// The colours of a scene's bodies (each key "color", linear RGB in [0, 1]), which the engine never
+// keeps: by name for the listed bodies (and those added by a program), by spawner name for the
+// copies NAME_k a spawner makes. The app finds a body's by its name (app/render/body_colors.h).
+struct BodyColors {
+  std::unordered_map<std::string, Vec3> byBody;
+  std::unordered_map<std::string, Vec3> bySpawner;
 };
 
 // The quantities view.plots may name.

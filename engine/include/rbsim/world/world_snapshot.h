@@ -35,8 +35,9 @@
 namespace rbsim {
 
 // 2: which bodies share one mesh object (issue 58: a World read back is drawn in the same
-// instanced batches).
-inline constexpr std::uint32_t kWorldSnapshotVersion = 2;
+// instanced batches). 3: a body record has no colour (issue 58: colours are the app's,
+// rbsim/scene/view_desc.h).
+inline constexpr std::uint32_t kWorldSnapshotVersion = 3;
 
 // Throws std::invalid_argument for a World with a step listener or the LCP solver.
 std::vector<std::uint8_t> saveWorldSnapshot(const World& world);
