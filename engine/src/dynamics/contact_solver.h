@@ -98,6 +98,12 @@ class ContactSolver {
   virtual const std::vector<char>& advancedFlags() const { return kNoFlags; }
   // A step that does not run the solver advances no body.
   virtual void clearAdvanced() {}
+  // Sleeping islands (world/sleeping_contacts.h; Box2D's sleeping solver sets keep their
+  // contacts' impulses): these contacts of the last solve now sleep, kept apart and not given to
+  // solve(); the solver keeps their warm starts aside. contactsWoke: they are awake again, and
+  // their warm starts serve the next solve. The default keeps none (a sleeping pair starts cold).
+  virtual void contactsSlept(const std::vector<Contact>& /*contacts*/) {}
+  virtual void contactsWoke(const std::vector<Contact>& /*contacts*/) {}
 
  private:
   static inline const std::vector<std::size_t> kNone{};

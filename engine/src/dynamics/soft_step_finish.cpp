@@ -218,4 +218,42 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies) {
   }
 }
 
+void SoftStepSolver::contactsSlept(const std::vector<Contact>& contacts) {
+  for (const Contact& c : contacts) {
+    const std::uint64_t key = pairKey(c);
+    if (const Cached* old = cached(key)) asleepCache_[key] = *old;
+  }
+}
+
+void SoftStepSolver::contactsWoke(const std::vector<Contact>& contacts) {
+  bool added = false;
+  for (const Contact& c : contacts) {
+    const auto at = asleepCache_.find(pairKey(c));
+    if (at == asleepCache_.end()) continue;
+    if (!cached(at->first)) {
+      cache_.push_back(at->second);
+      added = true;
+    }
+    asleepCache_.erase(at);
+  }
+  if (!added) return;
+  std::sort(cache_.begin(), cache_.end(), [](const Cached& a, const Cached& b) { return a.key < b.key; });
+  indexCache();
+}
+
+void SoftStepSolver::mergeAsleep(std::vector<Cached>& into) const {
+  if (asleepCache_.empty()) return;
+  // Both in key order: one merge, a key in both taken once (from `into`).
+  std::vector<Cached> merged;
+  merged.reserve(into.size() + asleepCache_.size());
+  auto a = into.begin();
+  for (const auto& [key, entry] : asleepCache_) {
+    while (a != into.end() && a->key < key) merged.push_back(*a++);
+    if (a != into.end() && a->key == key) continue;
+    merged.push_back(entry);
+  }
+  merged.insert(merged.end(), a, into.end());
+  into.swap(merged);
+}
+
 }  // namespace rbsim

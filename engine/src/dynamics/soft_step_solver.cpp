@@ -55,6 +55,10 @@ void SoftStepSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector
   solved_.clear();
   hits_.clear();
   reported_ = true;
+  // The sleeping contacts' warm starts rejoin the others to be renumbered with them (as the
+  // collision pipeline's contacts do; contactsSlept keeps them apart again).
+  mergeAsleep(cache_);
+  asleepCache_.clear();
   // A turned pair: the anchors were the moved body's (B); they become the partner's, and the
   // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
   // inside the surface, so its points may miss their match and start cold.

@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <map>
 #include <vector>
 
 #include "dynamics/contact_key.h"
@@ -49,11 +50,14 @@ class SoftStepSolver final : public ContactSolver {
     clearAdvanced();
     cache_.clear();
     cacheIndex_.clear();
+    asleepCache_.clear();
     solved_.clear();
     hits_.clear();
     reported_ = true;
   }
   void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
+  void contactsSlept(const std::vector<Contact>& contacts) override;  // soft_step_finish.cpp
+  void contactsWoke(const std::vector<Contact>& contacts) override;
   void clearAdvanced() override {
     for (std::size_t body : advancedList_) advanced_[body] = 0;
     advancedList_.clear();
@@ -278,6 +282,9 @@ class SoftStepSolver final : public ContactSolver {
   double hitSpeed_ = 0.0;         // Settings::hitEventSpeed of the last solve [m/s]
   std::vector<Cached> cache_, nextCache_;  // sorted by key
   KeyIndex cacheIndex_;  // cache_'s entries by key (cached()), rebuilt by indexCache()
+  // The warm starts of sleeping contacts (contactsSlept), by key, until they wake.
+  std::map<std::uint64_t, Cached> asleepCache_;  // ordered: merged into cache_ without a sort
+  void mergeAsleep(std::vector<Cached>& into) const;  // into a list sorted by key, keys not in it
   Softness softness_;  // of every contact this step
   std::vector<JointConstraint> joints_;
   Softness jointSoftness_;  // of every joint this step

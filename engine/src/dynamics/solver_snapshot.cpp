@@ -84,8 +84,12 @@ void ContactSolver::load(ByteReader& in, std::size_t) { in.fail("this contact so
 // A cached manifold's points past its count are never read, and the solvers leave them
 // uninitialised: only the first `count` are written, so equal states give equal bytes.
 void SoftStepSolver::save(ByteWriter& out) const {
-  out.count(cache_.size());
-  for (const Cached& c : cache_) {
+  // The sleeping contacts' warm starts with the others, in one list sorted by key: read back into
+  // cache_, contactsSlept keeps them apart again.
+  std::vector<Cached> all = cache_;
+  mergeAsleep(all);
+  out.count(all.size());
+  for (const Cached& c : all) {
     out.u64(c.key);
     out.u32(static_cast<std::uint32_t>(c.count));
     for (int k = 0; k < c.count; ++k) {

@@ -120,6 +120,7 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     slotOfBody_.pop_back();
   }
   const BodyRemoval removal(bodies_.size(), std::move(steps));
+  awakeStale_ = true;  // indices move, and the bodies woken below are not listed
   contactEvents_->bodiesRemoved(removal);
   // Whatever rested on a removed body must notice it is gone (as Box2D's b2DestroyBody wakes its
   // contacts); the contacts follow their bodies.
@@ -180,6 +181,7 @@ void World::restore(std::uint64_t stepCount, const std::vector<BodyState>& state
   }
   stepCount_ = stepCount;
   ++geometryVersion_;
+  awakeStale_ = true;  // flags set here, not through wakeBody
   timeOrigin_ = 0.0;  // a recording's steps all have its one time step
   stepsAtOrigin_ = 0;
 }

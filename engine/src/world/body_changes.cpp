@@ -39,7 +39,7 @@ void World::setBodyMaterial(BodyId id, const Material& material) {
   // The solvers combine the pair's materials afresh for every contact of every step
   // (contactMaterial in dynamics/contact_solver.h), so no contact keeps the old values.
   bodyMaterials_[i] = material;
-  b.wake();
+  wakeBody(i);
 }
 
 void World::setBodyFilter(BodyId id, const CollisionFilter& filter) {

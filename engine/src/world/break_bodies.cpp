@@ -38,6 +38,7 @@ void World::breakBody(std::size_t body, double impulse) {
   bodies_[body] = RigidBody(pieces.front());
   bodySolids_[body] = bodySolidOf(pieces.front());
   collision_->replaceBody(body, bodies_[body], bodySolids_[body]);
+  awakeStale_ = true;  // its pieces are added awake
   for (std::size_t k = 1; k < pieces.size(); ++k) event.added.push_back(addBody(pieces[k]));
   // The pieces are new bodies with their own centres of mass: the broken body's joints let go.
   joints_.erase(std::remove_if(joints_.begin(), joints_.end(),

@@ -5,8 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "collision/broadphase/brute_force.h"
-#include "collision/broadphase/sweep_and_prune.h"
 #include "collision/narrowphase/box_box.h"
 #include "collision/narrowphase/convex_convex.h"
 #include "collision/narrowphase/convex_plane.h"
@@ -28,11 +26,6 @@ namespace {
 // |omega| r dt + |g| dt^2) of the deepest, plus this [m]: above a resting face's rounding and
 // solver noise (0.1 mm), below a grid bevel's rise (half a cell, centimetres).
 constexpr double kPlaneSupportSlack = 1e-3;
-
-std::unique_ptr<BroadPhase> makeBroadPhase(Settings::BroadPhaseMethod method) {
-  if (method == Settings::BroadPhaseMethod::BruteForce) return std::make_unique<BruteForce>();
-  return std::make_unique<SweepAndPrune>();
-}
 
 // The lowest point of a box along -n is its support point: the box is below the plane's
 // margin band exactly when that point is.
@@ -84,11 +77,11 @@ SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) 
 }  // namespace
 
 CollisionPipeline::CollisionPipeline(const Settings& settings)
-    : settings_(settings), broad_(makeBroadPhase(settings.broadPhase)), log_(settings.queryLogCapacity) {}
+    : settings_(settings), broad_(std::make_unique<SplitBroadPhase>(settings.broadPhase)), log_(settings.queryLogCapacity) {}
 
 CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
     : settings_(other.settings_),
-      broad_(other.broad_->clone()),
+      broad_(std::make_unique<SplitBroadPhase>(*other.broad_)),
       proxies_(other.proxies_),
       bodyOfProxy_(other.bodyOfProxy_),
       radius_(other.radius_),
@@ -96,6 +89,7 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       reach_(other.reach_),
       start_(other.start_),
       fast_(other.fast_),
+      fastList_(other.fastList_),
       hasGrid_(other.hasGrid_),
       meshGround_(other.meshGround_),
       gap_(other.gap_),
@@ -104,8 +98,8 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       ignored_(other.ignored_),
       ignoredSorted_(other.ignoredSorted_),
       contacts_(other.contacts_),
-      previous_(other.previous_),
-      asleep_(other.asleep_),
+      sleeping_(other.sleeping_),
+      sleptNow_(other.sleptNow_),
       pairSlots_(other.pairSlots_),
       planeSlots_(other.planeSlots_),
       pairFrames_(other.pairFrames_),
@@ -122,24 +116,27 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
       impacts_(other.impacts_),
       log_(other.log_) {}
 
-bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const {
+bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
+                                        const std::vector<Plane>& planes) const {
   if (bodies.size() < 2 && planes.empty()) return false;
-  return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.awake(); });
+  return !awake.empty();
 }
 
-void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) start_[i] = bodies[i].state();
+void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake) {
+  // A sleeping body does not move in the step: its start is where it is (continuous reads it so).
+  for (const std::uint32_t i : awake) start_[i] = bodies[i].state();
   haveStart_ = true;
 }
 
 bool CollisionPipeline::isFast(std::size_t body) const { return fast_[body] != 0; }
 
-void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes,
-                                   const std::vector<char>* solved) {
+void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
+                                   const std::vector<Plane>& planes, const std::vector<char>* solved) {
   impacts_.clear();
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
+  for (const std::size_t i : fastList_) fast_[i] = 0;
+  fastList_.clear();
+  for (const std::size_t i : awake) {
     const RigidBody& body = bodies[i];
-    fast_[i] = 0;
     // A kinematic body goes where it is told, through anything: it is never stopped. A body with a
     // grid is swept too, as its convex hull, which holds it: it may stop a little early (at its
     // hull's touch, where the grid's contacts take over), never late. Its partners with grids
@@ -149,21 +146,25 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     // it at the surfaces it can reach this step (and hold it still, again, every step after).
     if (solved != nullptr && i < solved->size() && (*solved)[i] != 0) continue;
     const double motion = motionBound(sweptOf(body, start_[i], radius_[i]));
-    fast_[i] = motion > settings_.ccdMotionFraction * thickness_[i] ? 1 : 0;
+    if (motion > settings_.ccdMotionFraction * thickness_[i]) {
+      fast_[i] = 1;
+      fastList_.push_back(i);
+    }
   }
-  if (std::none_of(fast_.begin(), fast_.end(), [](char f) { return f != 0; })) {
+  if (fastList_.empty()) {
     haveStart_ = false;
     return;
   }
   // Each body's box over its whole step (last step's box, which covers the start pose, grown by
-  // the end pose), computed once: a contact during the step lies inside both bodies' boxes.
-  std::vector<Aabb> stepBoxes(bodies.size());
-  for (std::size_t j = 0; j < bodies.size(); ++j) {
-    stepBoxes[j] = boxes_[j];
-    if (bodies[j].awake()) stepBoxes[j].grow(bodyBounds(bodies[j]));
+  // the end pose), computed once, before any body is moved back: a contact during the step lies
+  // inside both bodies' boxes. A sleeping or static body's is its box.
+  stepBoxes_.resize(bodies.size());
+  for (const std::size_t j : awake) {
+    stepBoxes_[j] = boxes_[j];
+    stepBoxes_[j].grow(bodyBounds(bodies[j]));
   }
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (!isFast(i)) continue;
+  const auto stepBox = [&](std::size_t j) -> const Aabb& { return bodies[j].awake() ? stepBoxes_[j] : boxes_[j]; };
+  for (const std::size_t i : fastList_) {
     const SweptBody swept = sweptOf(bodies[i], start_[i], radius_[i]);
     double first = 1.0;
     for (const Plane& plane : planes) {
@@ -171,9 +172,10 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     }
     Aabb sweep = boundsAt(swept, 0.0);
     sweep.grow(boundsAt(swept, 1.0));
-    for (std::size_t j = 0; j < bodies.size(); ++j) {
-      if (j == i || hasGrid_[j] || !sweep.overlaps(stepBoxes[j])) continue;
-      const SweptBody partner = sweptOf(bodies[j], start_[j], radius_[j]);
+    nearSweep(sweep, bodies, awake, near_);
+    for (const std::size_t j : near_) {
+      if (j == i || hasGrid_[j] || !sweep.overlaps(stepBox(j))) continue;
+      const SweptBody partner = sweptOf(bodies[j], bodies[j].awake() ? start_[j] : bodies[j].state(), radius_[j]);
       if (const auto s = timeOfImpact(swept, partner)) first = std::min(first, *s);
     }
     if (first < 1.0) {
@@ -184,10 +186,10 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   haveStart_ = false;
 }
 
-void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
+void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake) {
   // Each awake body's box on any thread, then into the broad phase in body order.
-  parallelFor(bodies.size(), settings_.threads, [&](std::size_t i) {
-    if (!bodies[i].awake()) return;
+  parallelFor(awake.size(), settings_.threads, [&](std::size_t k) {
+    const std::size_t i = awake[k];
     Aabb box = bodyBounds(bodies[i]);
     if (isFast(i)) box.grow(boundsAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0));
     const double dt = settings_.timeStep;
@@ -195,8 +197,7 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
                       dt * settings_.gravity.norm());
     boxes_[i] = box.inflated(settings_.contactMargin + gap_[i] + reach_[i]);
   });
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (!bodies[i].awake()) continue;
+  for (const std::size_t i : awake) {
     // A finite state can still have a box that is not (a vertex R p + x or a reach dt |v|
     // overflows): that is the body diverging, reported as such rather than as a broad-phase fault.
     if (!boxes_[i].min.allFinite() || !boxes_[i].max.allFinite()) {
@@ -207,7 +208,9 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies) {
     }
     broad_->move(proxies_[i], boxes_[i]);
   }
-  broad_->update();
+  awakeProxies_.clear();
+  for (const std::size_t i : awake) awakeProxies_.push_back(proxies_[i]);
+  broad_->update(awakeProxies_);
 }
 
 void CollisionPipeline::setIgnoredPairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
@@ -244,16 +247,9 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
   const bool compound = a.isCompound() || b.isCompound();
   const bool ground = meshGround_[pair.a] || meshGround_[pair.b];
   if (!compound && !ground && !shouldCollide(a.filter(), b.filter())) return Later::Nothing;
-  if (!a.awake() && !b.awake()) {
-    // Both asleep: the contact they fell asleep with (Box2D keeps a sleeping set's contacts,
-    // solver_set.c), so that an island woken this step has its inner contacts in place; without
-    // them each body it woke fell a step unsupported, and sleep cost a 4000-box pile time.
-    const bool grid = shapes[pair.a].sdf || shapes[pair.b].sdf;  // several manifolds: left out, as before
-    if (ground) return Later::MeshGround;
-    if (compound) return Later::Compound;
-    if (!grid) kept(Contact::Kind::BodyBody, pair.a, pair.b, out);
-    return Later::Nothing;
-  }
+  // Both asleep (a pair the broad phase listed before they slept): their contact is kept apart
+  // with their island's (keepSleeping).
+  if (!a.awake() && !b.awake()) return Later::Nothing;
   // Static and kinematic bodies pass through each other: both have infinite mass (seed 000's
   // K = 0), so no impulse could separate them.
   if (!a.isDynamic() && !b.isDynamic()) return Later::Nothing;
@@ -299,22 +295,12 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
   return Later::Nothing;
 }
 
-void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
-                                    const std::vector<Plane>& planes, double time) {
-  previous_.swap(contacts_);
+void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
+                                    const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes, double time) {
+  keepSleeping(bodies);
   contacts_.clear();
-  asleep_.clear();
+  reportedStale_ = true;
   recycleTolerance_ = recycleDistance(settings_);
-  for (std::size_t i = 0; i < previous_.size(); ++i) {
-    const Contact& c = previous_[i];
-    const bool plane = c.kind == Contact::Kind::PlaneBody;
-    // A pair with a compound or a mesh ground keeps all its contacts, one per part.
-    const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
-    if ((c.part == 0 || several) && !bodies[c.b].awake() && (plane || !bodies[c.a].awake())) {
-      asleep_.emplace_back(keptKey(c.kind, c.a, c.b), static_cast<std::uint32_t>(i));
-    }
-  }
-  std::sort(asleep_.begin(), asleep_.end());
   if (!ignoredSorted_) {
     std::sort(ignored_.begin(), ignored_.end());
     ignoredSorted_ = true;
@@ -323,10 +309,15 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   const int threads = settings_.logQueries ? 1 : settings_.threads;
   // RigidBody::worldVertices() fills its body's cache on first use: filled here, one body per
   // item, so that the pairs below, which share bodies across threads, only read it.
-  parallelFor(bodies.size(), threads, [&](std::size_t i) {
+  const auto fill = [&](std::size_t i) {
     if (!bodies[i].shape().isRound() && !bodies[i].isCompound()) bodies[i].worldVertices();
-  });
+  };
+  parallelFor(awake.size(), threads, [&](std::size_t k) { fill(awake[k]); });
   const std::vector<ProxyPair>& pairs = broad_->pairs();
+  for (const ProxyPair& p : pairs) {  // and the sleeping or static partners, on this thread
+    fill(bodyOfProxy_[p.a]);
+    fill(bodyOfProxy_[p.b]);
+  }
   pairSlots_.resize(pairs.size());
   pairFrames_.resize(pairs.size());
   later_.assign(pairs.size(), Later::Nothing);
@@ -371,27 +362,20 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       contacts_.push_back({Contact::Kind::BodyBody, pair.a, pair.b, static_cast<std::uint8_t>(m), manifolds[m]});
     }
   }
-  const std::size_t n = bodies.size();
+  // Planes against the awake bodies (a sleeping body keeps its plane contacts with its island's).
+  const std::size_t n = awake.size();
   planeSlots_.resize(planes.size() * n);
   planeFrames_.resize(planes.size() * n);
   const CollisionFilter planeFilter;  // planes are in the default category and accept every one
   compoundPlaneSlots_.resize(planes.size() * n);
   parallelFor(planes.size() * n, threads, [&](std::size_t k) {
-    const std::size_t p = k / n, i = k % n;
+    const std::size_t p = k / n, i = awake[k % n];
     Contact& out = planeSlots_[k];
     out.manifold.count = 0;
     planeFrames_[k].count = 0;
     if (!bodies[i].isDynamic()) return;
     const bool compound = bodies[i].isCompound();
     if (compound) compoundPlaneSlots_[k].clear();
-    if (!bodies[i].awake()) {  // the contact it fell asleep with, as for two sleeping bodies
-      if (compound) {
-        keptAll(Contact::Kind::PlaneBody, p, i, compoundPlaneSlots_[k]);
-      } else {
-        kept(Contact::Kind::PlaneBody, p, i, out);
-      }
-      return;
-    }
     if (!aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
     const double margin = settings_.contactMargin + reach_[i];
     if (compound) {
@@ -422,9 +406,10 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     if (recyclable && m.count > 0) planeFrames_[k] = recycleFrame(keptKey(Contact::Kind::PlaneBody, p, i), m, planePose, bodyPose);
   });
   for (std::size_t k = 0; k < planeSlots_.size(); ++k) {
-    admit(1 + (bodies[k % n].isCompound() ? compoundPlaneSlots_[k].size() : 0));
+    const RigidBody& body = bodies[awake[k % n]];
+    admit(1 + (body.isCompound() ? compoundPlaneSlots_[k].size() : 0));
     if (planeSlots_[k].manifold.count > 0) contacts_.push_back(planeSlots_[k]);
-    if (bodies[k % n].isCompound()) {
+    if (body.isCompound()) {
       contacts_.insert(contacts_.end(), compoundPlaneSlots_[k].begin(), compoundPlaneSlots_[k].end());
     }
   }

@@ -18,6 +18,8 @@
 #include "rbsim/settings/settings.h"
 #include "math/key_index.h"
 #include "world/contact_recycling.h"
+#include "world/sleeping_contacts.h"
+#include "world/split_broad_phase.h"
 
 namespace rbsim {
 
@@ -67,32 +69,53 @@ class CollisionPipeline {
   // so adding n joints costs n log n, not n^2 (a 100 x 100 joint grid loaded in 5 s).
   void ignorePair(std::size_t a, std::size_t b);
 
-  // The state of every body before Integrate, kept for the continuous stage.
-  void rememberStart(const std::vector<RigidBody>& bodies);
+  // The passes below visit the `awake` bodies (World's awakeList_: indices in order) and the
+  // sleeping or static bodies their boxes meet, never every body (issue 58).
+  // The state of every awake body before Integrate, kept for the continuous stage.
+  void rememberStart(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake);
   // Stage ContinuousCollision: fast bodies that would pass through a plane or a body this step
   // are moved back to their time of impact. Returns the impacts of this step.
   // `solved`: per body, nonzero when a contact solver already moved it through speculative
   // contacts this step (soft step); those are left alone. Null: none was.
-  void continuous(std::vector<RigidBody>& bodies, const std::vector<Plane>& planes,
+  void continuous(std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes,
                   const std::vector<char>* solved = nullptr);
   // Stage BroadPhase: every moved body's AABB (inflated by the contact margin; swept for fast
   // bodies) into the broad phase, then the candidate pairs.
-  void broadPhase(const std::vector<RigidBody>& bodies);
-  // Stage NarrowPhase: contacts of candidate pairs and of bodies against planes. Sleeping bodies
-  // are not collided with each other or with planes: they keep the contacts they had (nothing
-  // of theirs has moved since).
+  void broadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake);
+  // Stage NarrowPhase: contacts of candidate pairs and of awake bodies against planes. Sleeping
+  // bodies are not collided with each other or with planes: the last step's contacts whose bodies
+  // all sleep now are kept apart (sleeping_; listed in sleptNow()), as they were (nothing of
+  // theirs has moved since), until their island wakes (takeIslands).
   // `shapes` are per body (World::bodySolids): pairs with a signed distance grid use them.
-  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
-                   const std::vector<Plane>& planes, double time);
+  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
+                   const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes, double time);
+  const std::vector<Contact>& sleptNow() const { return sleptNow_; }  // the last narrow phase's
+  // Whether body `index` has kept contacts (it sleeps, or woke since and its island has not).
+  bool keepsContactsOf(std::size_t index) const { return sleeping_.holds(index); }
+  // The islands of `seeds` (SleepingContacts::takeIslands): their bodies, to be woken, and their
+  // kept contacts, which leave.
+  void takeIslands(const std::vector<std::size_t>& seeds, const std::vector<RigidBody>& bodies,
+                   std::vector<std::size_t>& islandBodies, std::vector<Contact>& contacts);
+  // Contacts of an island woken after the narrow phase, solved with this step's.
+  void appendContacts(const std::vector<Contact>& more) {
+    contacts_.insert(contacts_.end(), more.begin(), more.end());
+    reportedStale_ = true;
+  }
 
   // Something awake and something to meet: two bodies, or a body and a plane. The stage also
   // refreshes boxes(), which the plane tests of the narrow phase read.
-  bool needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<Plane>& planes) const;
+  bool needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
+                       const std::vector<Plane>& planes) const;
   // Broad-phase proxy ids: the bodies' indices until a body is destroyed, bodyOfProxy after.
   const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
   std::size_t bodyOfProxy(ProxyId proxy) const { return bodyOfProxy_.at(proxy); }
   ProxyId proxyOf(std::size_t body) const { return proxies_[body]; }  // kept while the body lives
+  // This step's contacts: those of the awake bodies, the solver's (then those of islands woken
+  // after the narrow phase).
   const std::vector<Contact>& contacts() const { return contacts_; }
+  // World::contacts(): this step's, then the kept contacts of sleeping islands in key order
+  // (keptBefore), gathered when asked after a change, never by a step.
+  const std::vector<Contact>& reported() const;
   // Of this step's contacts, how many were recycled rather than collided (Box3D's profile count).
   std::size_t recycledCount() const { return recycledCount_; }
   const std::vector<Impact>& impacts() const { return impacts_; }
@@ -101,6 +124,10 @@ class CollisionPipeline {
 
  private:
   bool isFast(std::size_t body) const;
+  // Into `out`, in index order: the bodies whose box may meet `box` (every awake body, and the
+  // sleeping and static ones whose box does).
+  void nearSweep(const Aabb& box, const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
+                 std::vector<std::size_t>& out) const;
   // What collidePair left for later: nothing, a pair with a grid (collided on the calling
   // thread: it gives several manifolds), a pair with a compound body or a body on a mesh ground
   // (both into compoundSlots_, several contacts a pair).
@@ -114,12 +141,9 @@ class CollisionPipeline {
   void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
                         const std::vector<BodySolid>& shapes, int threads);
   void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // radius_, thickness_, boxes_ of a body
-  // The last step's contact of a sleeping pair (body and body, or plane and body) into `out`, if
-  // it had one; asleep_ is keyed by keptKey.
   static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
-  void kept(Contact::Kind kind, std::size_t a, std::size_t b, Contact& out) const;
-  // All of them, for a pair with a compound body (one contact per pair of children).
-  void keptAll(Contact::Kind kind, std::size_t a, std::size_t b, std::vector<Contact>& out) const;
+  // The last step's contacts whose bodies all sleep now go to sleeping_ (and sleptNow_).
+  void keepSleeping(const std::vector<RigidBody>& bodies);
   // Contact recycling (world/contact_recycling.h): the manifold of the pair (kind, a, b) rebuilt
   // from the frame it was computed in, if it had one and has moved little enough since; `frame`
   // gets the frame the contact now carries.
@@ -130,7 +154,8 @@ class CollisionPipeline {
   void keepFrames();
 
   Settings settings_;
-  std::unique_ptr<BroadPhase> broad_;
+  std::unique_ptr<SplitBroadPhase> broad_;  // the awake proxies' pairs, with the resting ones
+  std::vector<ProxyId> awakeProxies_;       // broadPhase's scratch
   std::vector<ProxyId> proxies_;        // per body
   std::vector<std::size_t> bodyOfProxy_;  // per broad-phase proxy id: its body's index
   std::vector<double> radius_;          // per body: farthest vertex from the centre of mass [m]
@@ -145,6 +170,10 @@ class CollisionPipeline {
   std::vector<double> reach_;
   std::vector<BodyState> start_;        // per body, before Integrate
   std::vector<char> fast_;              // per body: swept this step
+  std::vector<std::size_t> fastList_;   // the bodies fast_ marks, in order
+  std::vector<Aabb> stepBoxes_;         // continuous's scratch, per awake body: its box over the step
+  std::vector<std::size_t> near_;       // continuous's scratch: the bodies near a sweep, in order
+  mutable std::vector<ProxyId> restingNear_;  // nearSweep's scratch
   // Per body: shaped by a grid, or compound. Continuous collision sweeps convex hulls, so it leaves
   // such bodies and their partners alone (a hull would stop a body at a bowl's rim, above its
   // cavity, or at a table's hull, under its top).
@@ -160,10 +189,11 @@ class CollisionPipeline {
   std::vector<std::uint64_t> ignored_;  // sorted keys (lower index << 32 | higher index)
   bool ignoredSorted_ = true;           // false after ignorePair until the next narrow phase
   std::vector<Contact> contacts_;
-  // The last step's contacts, and the (keptKey, index) of those whose bodies are asleep, sorted:
-  // a sleeping pair keeps its contact instead of being collided again.
-  std::vector<Contact> previous_;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> asleep_;
+  // The contacts of sleeping islands, and those that went there in the last narrow phase.
+  SleepingContacts sleeping_;
+  std::vector<Contact> sleptNow_;
+  mutable std::vector<Contact> reported_;  // reported(), when sleeping_ holds some
+  mutable bool reportedStale_ = true;
   // Per candidate pair and per (plane, body): this step's contact, computed on any thread into its
   // own slot and gathered in order (manifold.count 0: none). later_ marks the pairs collided
   // after them.

@@ -46,7 +46,7 @@ void CollisionPipeline::addBody(const RigidBody& body, const BodySolid& solid) {
   reach_.push_back(0.0);
   boxes_.emplace_back();
   measure(index, body, solid);
-  proxies_.push_back(broad_->add(boxes_[index], body.isStatic()));
+  proxies_.push_back(broad_->add(boxes_[index]));
   if (bodyOfProxy_.size() <= proxies_.back()) bodyOfProxy_.resize(proxies_.back() + 1);
   bodyOfProxy_[proxies_.back()] = index;
   start_.push_back(body.state());
@@ -59,7 +59,7 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, co
   // Removed and added again, since the piece may be dynamic where the body was static; the pool
   // hands back the smallest free id, which is this one.
   broad_->remove(proxies_[index]);
-  proxies_[index] = broad_->add(boxes_[index], body.isStatic());
+  proxies_[index] = broad_->add(boxes_[index]);
   if (bodyOfProxy_.size() <= proxies_[index]) bodyOfProxy_.resize(proxies_[index] + 1);
   bodyOfProxy_[proxies_[index]] = index;
   start_[index] = body.state();
@@ -87,6 +87,15 @@ std::vector<std::size_t> CollisionPipeline::removeBodies(const BodyRemoval& remo
   // a compound's or mesh ground's manifolds, whose part names their shapes in order, goes.
   std::vector<std::size_t> touched;
   std::size_t kept = 0;
+  // The sleeping islands' contacts rejoin the step's to be renumbered with them (the next narrow
+  // phase keeps them apart again).
+  const std::vector<Contact> sleeping = sleeping_.takeAll();
+  contacts_.insert(contacts_.end(), sleeping.begin(), sleeping.end());
+  reportedStale_ = true;
+  fastList_.clear();
+  for (std::size_t i = 0; i < fast_.size(); ++i) {
+    if (fast_[i] != 0) fastList_.push_back(i);
+  }
   for (Contact& c : contacts_) {
     const bool pair = c.kind == Contact::Kind::BodyBody;
     if (removal.involves(c.b) || (pair && removal.involves(c.a))) {

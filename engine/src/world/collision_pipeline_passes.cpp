@@ -1,6 +1,6 @@
-// The collision pipeline's passes beside the pair loop (world/collision_pipeline.h): the contacts
-// a sleeping pair keeps from the step it fell asleep in, and the pass over pairs with a compound
-// body or a mesh ground, which give several contacts a pair.
+// The collision pipeline's passes beside the pair loop (world/collision_pipeline.h): contact
+// recycling's frames, and the pass over pairs with a compound body or a mesh ground, which give
+// several contacts a pair.
 #include <algorithm>
 
 #include "rbsim/math/parallel.h"
@@ -14,12 +14,6 @@ std::uint64_t CollisionPipeline::keptKey(Contact::Kind kind, std::size_t a, std:
   // Either order for two bodies: a body renumbered by removeBody may now come first.
   if (kind == Contact::Kind::BodyBody && a > b) std::swap(a, b);
   return (std::uint64_t{kind == Contact::Kind::PlaneBody} << 63) | (std::uint64_t{a} << 32) | std::uint64_t{b};
-}
-
-void CollisionPipeline::kept(Contact::Kind kind, std::size_t a, std::size_t b, Contact& out) const {
-  const std::uint64_t key = keptKey(kind, a, b);
-  const auto it = std::lower_bound(asleep_.begin(), asleep_.end(), std::make_pair(key, std::uint32_t{0}));
-  if (it != asleep_.end() && it->first == key) out = previous_[it->second];
 }
 
 std::optional<ContactManifold> CollisionPipeline::recycled(Contact::Kind kind, std::size_t a, std::size_t b,
@@ -65,14 +59,6 @@ void CollisionPipeline::keepFrames() {
   keptPlaneFrames_.swap(planeFrames_);
 }
 
-void CollisionPipeline::keptAll(Contact::Kind kind, std::size_t a, std::size_t b, std::vector<Contact>& out) const {
-  const std::uint64_t key = keptKey(kind, a, b);
-  for (auto it = std::lower_bound(asleep_.begin(), asleep_.end(), std::make_pair(key, std::uint32_t{0}));
-       it != asleep_.end() && it->first == key; ++it) {
-    out.push_back(previous_[it->second]);
-  }
-}
-
 void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
                                          const std::vector<BodySolid>& shapes, int threads) {
   compoundWork_.clear();
@@ -89,10 +75,7 @@ void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, co
     if (pair.a > pair.b) std::swap(pair.a, pair.b);
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
-    if (!a.awake() && !b.awake()) {
-      keptAll(Contact::Kind::BodyBody, pair.a, pair.b, out);
-      return;
-    }
+    if (!a.awake() && !b.awake()) return;  // kept apart with their island's (keepSleeping)
     const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
     if (later_[k] == Later::MeshGround) {
       const bool groundIsA = meshGround_[pair.a] != 0;

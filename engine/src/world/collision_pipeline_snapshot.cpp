@@ -6,8 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include "collision/broadphase/brute_force.h"
-#include "collision/broadphase/sweep_and_prune.h"
 #include "math/byte_stream.h"
 #include "world/collision_pipeline.h"
 
@@ -164,8 +162,11 @@ void CollisionPipeline::save(ByteWriter& out) const {
   }
   out.count(bodyOfProxy_.size());  // one past the largest proxy id the broad phase handed out
   out.boolean(haveStart_);
-  out.count(contacts_.size());
-  for (const Contact& c : contacts_) saveContact(out, c);
+  // This step's contacts, then the sleeping islands' (reported()): read back into contacts_, the
+  // next narrow phase keeps the sleeping ones apart again (keepSleeping).
+  const std::vector<Contact>& contacts = reported();
+  out.count(contacts.size());
+  for (const Contact& c : contacts) saveContact(out, c);
   saveFrames(out, keptPairFrames_);
   saveFrames(out, keptPlaneFrames_);
   recycle_.save(out);
@@ -226,21 +227,20 @@ void CollisionPipeline::load(ByteReader& in, const std::vector<RigidBody>& bodie
 
   // The broad phase afresh with the same ids: a fresh pool hands out 0, 1, ... in order, and one
   // released frees its id for the next add, smallest first, as the saved pool's would.
-  std::unique_ptr<BroadPhase> broad;
-  if (settings_.broadPhase == Settings::BroadPhaseMethod::BruteForce) {
-    broad = std::make_unique<BruteForce>();
-  } else {
-    broad = std::make_unique<SweepAndPrune>();
-  }
+  auto broad = std::make_unique<SplitBroadPhase>(settings_.broadPhase);
   const Aabb unused{Vec3::Zero(), Vec3::Zero()};
   for (std::size_t id = 0; id < capacity; ++id) {
     const std::size_t body = bodyOfProxy[id];
-    broad->add(body == kNoBody ? unused : boxes[body], body == kNoBody || bodies[body].isStatic());
+    broad->add(body == kNoBody ? unused : boxes[body]);
   }
   for (std::size_t id = 0; id < capacity; ++id) {
     if (bodyOfProxy[id] == kNoBody) broad->remove(static_cast<ProxyId>(id));
   }
-  broad->update();
+  std::vector<ProxyId> awake;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (bodies[i].awake()) awake.push_back(proxies[i]);
+  }
+  broad->update(awake);
   for (std::size_t& body : bodyOfProxy) body = body == kNoBody ? 0 : body;
 
   broad_ = std::move(broad);
@@ -252,8 +252,10 @@ void CollisionPipeline::load(ByteReader& in, const std::vector<RigidBody>& bodie
   fast_.assign(n, 0);
   haveStart_ = haveStart;
   contacts_ = std::move(contacts);
-  previous_.clear();
-  asleep_.clear();
+  sleeping_ = SleepingContacts();
+  sleptNow_.clear();
+  fastList_.clear();
+  reportedStale_ = true;
   keptPairFrames_ = std::move(pairFrames);
   keptPlaneFrames_ = std::move(planeFrames);
   recycle_ = std::move(recycle);

@@ -118,17 +118,23 @@ void ContactEventTracker::afterNarrowPhase(const World& world, const CollisionPi
     if (j == keys_.size() || (i < touching_.size() && touching_[i] < keys_[j])) {
       const Entry& was = touching_[i++];
       if (asleep(was, world, collision)) {
-        next_.push_back(was);
-        next_.back().contact = kNoContact;
+        Entry kept = was;
+        kept.contact = kNoContact;
+        asleep_[{kept.hi, kept.lo}] = kept;
       } else {
         step_.end.push_back({pairOf(was, world, collision)});
       }
       continue;
     }
     Entry now = keys_[j++];
+    const auto kept = asleep_.empty() ? asleep_.end() : asleep_.find({now.hi, now.lo});
     if (i < touching_.size() && touching_[i].sameKey(now)) {
       now.swapped = touching_[i].swapped;  // named as its begin named it
       now.hit = touching_[i++].hit;
+    } else if (kept != asleep_.end()) {  // woken without contactsWoke (a removal's renumbering)
+      now.swapped = kept->second.swapped;
+      now.hit = kept->second.hit;
+      asleep_.erase(kept);
     } else {
       const Contact& c = contacts[now.contact];
       const ContactPoint& p = c.manifold.points[deepest(c.manifold)];
@@ -195,6 +201,7 @@ void ContactEventTracker::bodyBroken(const World& world, const CollisionPipeline
 
 void ContactEventTracker::bodiesRemoving(const World& world, const CollisionPipeline& collision,
                                          const std::vector<std::uint32_t>& gone) {
+  restoreAsleep(touching_);  // renumbered with the others; afterNarrowPhase keeps them aside again
   endWhere(touching_, world, collision,
            [&gone](std::size_t body) { return std::binary_search(gone.begin(), gone.end(), body); }, queuedEnds_);
 }
@@ -241,9 +248,37 @@ void ContactEventTracker::commit() {
   step_.clear();
 }
 
+void ContactEventTracker::restoreAsleep(std::vector<Entry>& into) {
+  if (asleep_.empty()) return;
+  const std::size_t first = into.size();
+  for (const auto& [key, entry] : asleep_) into.push_back(entry);  // in key order
+  std::inplace_merge(into.begin(), into.begin() + static_cast<std::ptrdiff_t>(first), into.end());
+  asleep_.clear();
+}
+
+void ContactEventTracker::contactsWoke(const std::vector<Contact>& contacts, const CollisionPipeline& collision) {
+  if (asleep_.empty()) return;
+  std::vector<Entry>& list = haveNext_ ? next_ : touching_;
+  const std::size_t first = list.size();
+  for (const Contact& c : contacts) {
+    const Entry key = keyOf(c, collision);
+    const auto at = asleep_.find({key.hi, key.lo});
+    if (at == asleep_.end()) continue;
+    list.push_back(at->second);
+    asleep_.erase(at);
+  }
+  std::sort(list.begin() + static_cast<std::ptrdiff_t>(first), list.end());
+  std::inplace_merge(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(first), list.end());
+}
+
+// The asleep pairs with the others, in one list sorted by key: read back into touching_, the
+// next afterNarrowPhase keeps them aside again.
 void ContactEventTracker::save(ByteWriter& out) const {
-  out.count(touching_.size());
-  for (const Entry& e : touching_) {
+  std::vector<Entry> all = touching_;
+  for (const auto& [key, entry] : asleep_) all.push_back(entry);
+  std::sort(all.begin(), all.end());
+  out.count(all.size());
+  for (const Entry& e : all) {
     out.u64(e.hi);
     out.u64(e.lo);
     out.u32(e.contact);
@@ -265,6 +300,7 @@ void ContactEventTracker::load(ByteReader& in) {
   if (!std::is_sorted(touching_.begin(), touching_.end())) in.fail("the touching pairs are not in key order");
   events_ = {};
   queuedEnds_.clear();
+  asleep_.clear();
 }
 
 }  // namespace rbsim

@@ -13,6 +13,8 @@
 // sleeping pair of grid bodies is not collided, and an island asleep is not apart).
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "dynamics/contact_solver.h"
@@ -46,6 +48,9 @@ class ContactEventTracker {
   void bodiesRemoving(const World& world, const CollisionPipeline& collision, const std::vector<std::uint32_t>& gone);
   // After the removal: the plane pairs follow their bodies' new indices.
   void bodiesRemoved(const BodyRemoval& removal);
+  // These contacts' island woke (World::wakeIslandsOf): their pairs, kept aside while asleep,
+  // touch on among this step's (or, before its narrow phase, the last step's).
+  void contactsWoke(const std::vector<Contact>& contacts, const CollisionPipeline& collision);
   // The step succeeded: its events are the World's until the next one succeeds.
   void commit();
   const ContactEvents& events() const { return events_; }
@@ -74,7 +79,11 @@ class ContactEventTracker {
   void endWhere(std::vector<Entry>& list, const World& world, const CollisionPipeline& collision, Names&& names,
                 std::vector<ContactEndEvent>& ends);
 
-  std::vector<Entry> touching_;  // after the last step, sorted by key
+  std::vector<Entry> touching_;  // after the last step, sorted by key, but for asleep_
+  // The touching pairs both of whose sides sleep (issue 58: a step visits awake pairs alone), by
+  // key, until their island wakes.
+  std::map<std::pair<std::uint64_t, std::uint64_t>, Entry> asleep_;
+  void restoreAsleep(std::vector<Entry>& into);  // asleep_'s entries into a sorted list, which stays so
   std::vector<Entry> keys_;      // this step's contacts' keys (scratch)
   std::vector<Entry> next_;      // this step's touching pairs, sorted
   std::vector<ContactHit> hits_;  // the solver's (scratch)

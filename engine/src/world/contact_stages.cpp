@@ -7,7 +7,6 @@
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
 #include "world/contact_event_tracker.h"
-#include "math/disjoint_sets.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {
@@ -16,16 +15,17 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
   // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
   // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
   // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
-  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, planes_), [&] {
-    if (settings_.detectCollisions) collision_->broadPhase(bodies_);
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, awakeList_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(bodies_, awakeList_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
+    collision_->narrowPhase(bodies_, awakeList_, bodySolids_, planes_, time());
+    if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   const bool sweeping = settings_.continuousCollision && collides && awake;
-  if (sweeping) collision_->rememberStart(bodies_);
+  if (sweeping) collision_->rememberStart(bodies_, awakeList_);
   solver_->clearAdvanced();
   // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
   // are contacts between sleeping bodies, which receive nothing.
@@ -35,23 +35,24 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
     if (contactsToSolve || !joints_.empty()) solveContacts(withGravity);
   });
   runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, planes_, &solver_->advancedFlags()); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, awakeList_, planes_, &solver_->advancedFlags()); });
 }
 
 void World::stepIntegrateFirst(bool withGravity, bool awake, bool collides) {
   // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
   const bool sweeping = settings_.continuousCollision && collides && awake;
   runStage(Stage::Integrate, awake, [&] {
-    if (sweeping) collision_->rememberStart(bodies_);
+    if (sweeping) collision_->rememberStart(bodies_, awakeList_);
     integrateBodies(withGravity);
   });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, planes_); });
-  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, planes_), [&] {
-    if (settings_.detectCollisions) collision_->broadPhase(bodies_);
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, awakeList_, planes_); });
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, awakeList_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(bodies_, awakeList_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(bodies_, bodySolids_, planes_, time());
+    collision_->narrowPhase(bodies_, awakeList_, bodySolids_, planes_, time());
+    if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   runStage(Stage::SolveContacts, awake && !collision_->contacts().empty() && settings_.respondToContacts, [&] {
@@ -59,35 +60,9 @@ void World::stepIntegrateFirst(bool withGravity, bool awake, bool collides) {
   });
 }
 
-void World::wakeTouchedIslands() {
-  // A sleeping island touched by an awake body wakes whole, in the step of the touch (Box2D's
-  // b2WakeSolverSet). Its bodies kept their contacts while asleep (CollisionPipeline::narrowPhase),
-  // so it wakes standing on them. Woken one layer a step, each newly woken body fell a step with
-  // nothing under it, and woke the next.
-  const auto dynamicPair = [&](const Contact& c) {
-    return c.kind == Contact::Kind::BodyBody && !bodies_[c.a].isStatic() && !bodies_[c.b].isStatic();
-  };
-  const std::vector<Contact>& contacts = collision_->contacts();
-  const bool touched = std::any_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
-    return dynamicPair(c) && bodies_[c.a].awake() != bodies_[c.b].awake();
-  });
-  if (!touched) return;
-  DisjointSets islands(bodies_.size());
-  for (const Contact& c : contacts) {
-    if (dynamicPair(c)) islands.link(c.a, c.b);
-  }
-  std::vector<char> woken(bodies_.size(), 0);  // per island root
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (bodies_[i].awake()) woken[islands.find(i)] = 1;
-  }
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (!bodies_[i].awake() && woken[islands.find(i)]) bodies_[i].wake();
-  }
-}
-
 void World::solveContacts(bool withGravity) {
   wakeTouchedIslands();
-  if (solver_->solvesJoints()) wakeJointed();
+  if (solver_->solvesJoints()) wakeJointed();  // and the islands of the bodies it wakes
   static const std::vector<Contact> kNoContacts;
   const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_->contacts() : kNoContacts;
   solver_->solve({bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity});

@@ -47,8 +47,8 @@ void World::setJointMotor(std::size_t joint, bool on, double speed, double maxTo
     j.motorImpulse = std::clamp(j.motorImpulse, -cap, cap);
   }
   j.def.motor = on;  // off: the solver forgets its impulse (soft_step_joints.cpp)
-  bodies_[j.a].wake();
-  if (j.b != kWorldIndex) bodies_[j.b].wake();
+  wakeBody(j.a);
+  if (j.b != kWorldIndex) wakeBody(j.b);
 }
 
 void World::setJointLimits(std::size_t joint, bool on, double lower, double upper) {
@@ -63,8 +63,8 @@ void World::setJointLimits(std::size_t joint, bool on, double lower, double uppe
   }
   j.def.limits = on;
   j.lowerImpulse = j.upperImpulse = 0.0;
-  bodies_[j.a].wake();
-  if (j.b != kWorldIndex) bodies_[j.b].wake();
+  wakeBody(j.a);
+  if (j.b != kWorldIndex) wakeBody(j.b);
 }
 
 void World::removeJoint(std::size_t joint) {
@@ -72,8 +72,8 @@ void World::removeJoint(std::size_t joint) {
   const Joint removed = joints_[joint];
   joints_.erase(joints_.begin() + static_cast<std::ptrdiff_t>(joint));
   updateJointFilter();  // the pair may collide again, unless another joint holds it apart
-  bodies_[removed.a].wake();
-  if (removed.b != kWorldIndex) bodies_[removed.b].wake();
+  wakeBody(removed.a);
+  if (removed.b != kWorldIndex) wakeBody(removed.b);
 }
 
 }  // namespace rbsim

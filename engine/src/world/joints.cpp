@@ -77,22 +77,27 @@ std::size_t World::addJoint(const JointDef& def) {
   joint.localAxisMoving = a.orientation().conjugate() * joint.def.axis;
   joint.referenceRotation = baseOrientation.conjugate() * a.orientation();
   joints_.push_back(joint);
-  bodies_[ia].wake();
-  if (!world) bodies_[ib].wake();
+  wakeBody(ia);
+  if (!world) wakeBody(ib);
   if (!world && !def.collideConnected) collision_->ignorePair(ia, ib);
   return joints_.size() - 1;
 }
 
 void World::wakeJointed() {
-  for (const Joint& joint : joints_) {
-    if (joint.b == kWorldIndex) continue;
-    RigidBody& a = bodies_[joint.a];
-    RigidBody& b = bodies_[joint.b];
-    if (b.isStatic()) continue;
-    if (a.awake() != b.awake()) {
-      a.wake();
-      b.wake();
+  // A body a joint wakes wakes its island, whose kept contacts are solved this step; that island
+  // may hold the sleeping side of another joint, hence the rounds.
+  for (bool woke = true; woke;) {
+    woke = false;
+    std::vector<std::size_t> seeds;
+    for (const Joint& joint : joints_) {
+      if (joint.b == kWorldIndex) continue;
+      if (bodies_[joint.b].isStatic() || bodies_[joint.a].awake() == bodies_[joint.b].awake()) continue;
+      seeds.push_back(bodies_[joint.a].awake() ? joint.b : joint.a);
+      wakeBody(joint.a);
+      wakeBody(joint.b);
+      woke = true;
     }
+    if (woke) wakeIslandsOf(seeds, /*solveNow=*/true);
   }
 }
 

@@ -17,7 +17,6 @@
 #include "rbsim/fracture/fracture.h"
 #include "world/collision_pipeline.h"
 #include "world/contact_event_tracker.h"
-#include "math/disjoint_sets.h"
 #include "rbsim/integrate/simulation_error.h"
 
 namespace rbsim {
@@ -106,6 +105,11 @@ World::World(const World& other)
       solver_(other.solver_->clone()),
       contactEvents_(std::make_unique<ContactEventTracker>(*other.contactEvents_)),
       islandRestingTime_(other.islandRestingTime_),
+      awakeList_(other.awakeList_),
+      listed_(other.listed_),
+      awakeSorted_(other.awakeSorted_),
+      awakeStale_(other.awakeStale_),
+      awakeScanned_(other.awakeScanned_),
       joints_(other.joints_),
       pendingEvents_(other.pendingEvents_),
       motions_(other.motions_),
@@ -160,7 +164,7 @@ void World::setSettings(const Settings& settings) {
   if (solver) solver_ = std::move(solver);
 }
 
-const std::vector<Contact>& World::contacts() const { return collision_->contacts(); }
+const std::vector<Contact>& World::contacts() const { return collision_->reported(); }
 std::size_t World::recycledContacts() const { return collision_->recycledCount(); }
 const std::vector<SolvedContactPoint>& World::contactPoints() const { return solver_->points(); }
 const ContactEvents& World::contactEvents() const { return contactEvents_->events(); }
@@ -244,8 +248,10 @@ void World::step() {
     saveUndo();
     saved = true;
     advance();
+    undoOpen_ = false;
     contactEvents_->commit();
   } catch (...) {
+    undoOpen_ = false;
     if (before) {
       restoreWhole(std::move(*before));
     } else {
@@ -258,7 +264,8 @@ void World::step() {
 
 void World::advance() {
   const double t = time();
-  const bool anyAwake = std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); });
+  refreshAwake();
+  const bool anyAwake = !awakeList_.empty();
   const std::uint64_t solveRunsBefore = stats_[static_cast<int>(Stage::SolveContacts)].runs;
   const bool anyForce = std::any_of(forces_.begin(), forces_.end(), [t](const ScriptedForce& f) { return isActive(f, t); });
   const bool posed = runStage(Stage::ApplyPoseEvents,
@@ -272,8 +279,9 @@ void World::advance() {
   const bool otherForces = anyForce || (anyAwake && !springs_.empty());
   const bool pushed = runStage(Stage::AccumulateForces, otherForces, [&] { accumulateForces(otherForces); });
   // Pose events and forces may have woken bodies; only then is a second pass over them needed.
-  const bool anyAwakeNow =
-      anyAwake || ((posed || pushed) && std::any_of(bodies_.begin(), bodies_.end(), [](const RigidBody& b) { return b.awake(); }));
+  if (posed || pushed) refreshAwake();
+  const bool anyAwakeNow = !awakeList_.empty();
+  wakeListedIslands();
   const bool collides = settings_.detectCollisions && (!planes_.empty() || bodies_.size() >= 2);
   try {
     if (solver_->order() == ContactSolver::Order::IntegrateFirst) {
@@ -295,6 +303,7 @@ void World::advance() {
   runStage(Stage::StepSystems, systemsBusy, [&] {
     const StepContext context{t, stepCount_, settings_, bodies_, bodySolids_, bodyMaterials_, planes_, planeMaterials_};
     for (const std::unique_ptr<StepListener>& listener : listeners_) listener->step(context);
+    awakeStale_ = true;  // a listener may wake bodies (soft contacts do), unseen by listAwake
   });
   ++stepCount_;
 }
@@ -319,8 +328,10 @@ void World::accumulateForces(bool withGravity) {
     if (isActive(f, t)) body(f.body).wake();
   }
   if (withGravity) {
-    for (RigidBody& body : bodies_) {
-      if (body.awake() && body.isDynamic()) body.applyForce(body.mass() * settings_.gravity);
+    refreshAwake();  // the forces above may have woken bodies
+    for (const std::uint32_t i : awakeList_) {
+      RigidBody& body = bodies_[i];
+      if (body.isDynamic()) body.applyForce(body.mass() * settings_.gravity);
     }
   }
   for (const ScriptedForce& f : forces_) {
@@ -348,7 +359,7 @@ void World::integrateBodies(bool withGravity) {
   const Vec3 gravity = settings_.gravity;
   const bool addGravity = withGravity && gravity != Vec3::Zero();
   const std::vector<char>& advanced = solver_->advancedFlags();  // bodies the solver moved
-  const std::size_t count = bodies_.size();
+  const std::size_t count = awakeList_.size();  // the awake bodies alone (refreshAwake)
   std::array<BodyState, kIntegrateBatch> next;
   std::array<RigidBody*, kIntegrateBatch> stepped;
   // euler-matrix without drift correction keeps each dynamic body's raw R (RigidBody::setState).
@@ -367,8 +378,9 @@ void World::integrateBodies(bool withGravity) {
         stepped[k]->clearAccumulators();
       }
     };
-    for (std::size_t i = first; i < end; ++i) {
-      if (i + kPrefetchAhead < count) StepPrefetch::fetch(bodies_[i + kPrefetchAhead]);
+    for (std::size_t k = first; k < end; ++k) {
+      if (k + kPrefetchAhead < count) StepPrefetch::fetch(bodies_[awakeList_[k + kPrefetchAhead]]);
+      const std::size_t i = awakeList_[k];
       RigidBody& body = bodies_[i];
       if (!body.awake() || (i < advanced.size() && advanced[i] != 0)) continue;
       if (body.isKinematic()) {
@@ -386,41 +398,6 @@ void World::integrateBodies(bool withGravity) {
       stepped[n++] = &body;
     }
     commit(n);
-  }
-}
-
-void World::updateSleep() {
-  // Run with skipIdleStages = false, the stage must still not put anything to sleep.
-  if (!settings_.allowSleep) return;
-  const double dt = settings_.timeStep;
-  for (RigidBody& body : bodies_) {
-    if (!body.awake()) continue;
-    // A kinematic body that moves at all is never at rest: sleeping would stop it.
-    const bool still = !body.isKinematic() || (body.velocity().isZero(0.0) && body.angularVelocity().isZero(0.0));
-    const bool slow = still && body.velocity().norm() < settings_.sleepLinearSpeed &&
-                      body.angularVelocity().norm() < settings_.sleepAngularSpeed;
-    body.setRestingTime(slow ? body.restingTime() + dt : 0.0);
-  }
-  // An island sleeps when its least rested body has rested long enough.
-  DisjointSets islands(bodies_.size());
-  for (const Contact& contact : collision_->contacts()) {
-    if (contact.kind == Contact::Kind::BodyBody && !bodies_[contact.a].isStatic() && !bodies_[contact.b].isStatic()) {
-      islands.link(contact.a, contact.b);
-    }
-  }
-  for (const Joint& joint : joints_) {  // jointed bodies sleep together (Box2D's b2LinkJoint)
-    if (joint.b != kWorldIndex && !bodies_[joint.b].isStatic()) islands.link(joint.a, joint.b);
-  }
-  std::vector<double>& rested = islandRestingTime_;
-  rested.assign(bodies_.size(), std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (bodies_[i].awake()) {
-      double& least = rested[islands.find(i)];
-      least = std::min(least, bodies_[i].restingTime());
-    }
-  }
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (bodies_[i].awake() && rested[islands.find(i)] >= settings_.timeToSleep) bodies_[i].sleep();
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include "test_util.h"
 #include "rbsim/world/world.h"
+#include "world/collision_pipeline.h"
 #include "world/world_access.h"
 
 namespace rbsim {
@@ -152,6 +153,43 @@ TEST_P(SleepingIslands, KeepTheirContactsWhenAnotherBodyIsDestroyed) {
   EXPECT_TRUE(stackAsleep(world));
   EXPECT_EQ(WorldAccess::collision(world).queryLog().total(), queriesBefore) << "the sleeping stack is still not collided";
   EXPECT_EQ(stackContacts(world), static_cast<std::size_t>(kStackHeight)) << "and still has its contacts";
+}
+
+// Issue 58: the step's contacts, which the solver and the event tracker go through, and the broad
+// phase's pairs hold nothing of a sleeping island; contacts() still reports its contacts, the ones
+// it fell asleep with, and a body woken by hand wakes the island whole at the next step.
+TEST_P(SleepingIslands, AreKeptApartFromTheStepAndComeBackWhenTouchedByHand) {
+  World world(sleepySettings(GetParam()));
+  addStack(world);
+  BodyDef mover = boxDef(Vec3::Ones(), kBoxMass);
+  mover.shape = Shape::box(Vec3::Constant(0.5));
+  mover.isKinematic = true;
+  mover.position = Vec3(50.0, 3.0, 0.0);
+  mover.velocity = Vec3(0.0, 0.0, 1.0);
+  world.addBody(mover);
+  settle(world);
+  const std::vector<Contact> asleep(world.contacts().begin(), world.contacts().end());
+  ASSERT_EQ(stackContacts(world), static_cast<std::size_t>(kStackHeight));
+  for (int s = 0; s < 10; ++s) world.step();
+  const CollisionPipeline& collision = WorldAccess::collision(world);
+  for (const Contact& c : collision.contacts()) EXPECT_GE(c.b, static_cast<std::size_t>(kStackHeight)) << "a sleeping contact in the step's";
+  for (const ProxyPair& p : collision.candidatePairs()) {
+    EXPECT_TRUE(world.bodies()[collision.bodyOfProxy(p.a)].awake() || world.bodies()[collision.bodyOfProxy(p.b)].awake());
+  }
+  ASSERT_EQ(world.contacts().size(), asleep.size());
+  for (std::size_t k = 0; k < asleep.size(); ++k) {
+    const Contact& now = world.contacts()[k];
+    EXPECT_TRUE(now.a == asleep[k].a && now.b == asleep[k].b && now.manifold.count == asleep[k].manifold.count &&
+                std::memcmp(now.manifold.points.data(), asleep[k].manifold.points.data(), sizeof(now.manifold.points)) == 0)
+        << "contact " << k << " is the one it fell asleep with";
+  }
+  world.body(world.idAt(kStackHeight - 1)).wake();  // the top box, by hand
+  world.step();
+  for (int i = 0; i < kStackHeight; ++i) {
+    EXPECT_TRUE(world.bodies()[i].awake()) << "box " << i << " wakes with its island";
+    EXPECT_LT(world.bodies()[i].velocity().norm(), 0.02) << "and stands on its contacts";
+  }
+  EXPECT_EQ(stackContacts(world), static_cast<std::size_t>(kStackHeight));
 }
 
 INSTANTIATE_TEST_SUITE_P(TimeSteps, SleepingIslands, ::testing::Values(1.0 / 60.0, 1.0 / 240.0),

@@ -111,7 +111,9 @@ class World {
   // through a fresh body(id) after a query, not through a reference kept from before.
   RigidBody& body(BodyId id) {
     ++geometryVersion_;
-    return bodies_[indexOf(id)];
+    const std::size_t index = indexOf(id);
+    listAwake(index);  // it may be woken through the reference: the next step looks at it
+    return bodies_[index];
   }
   const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
   void addForce(const ScriptedForce& force);
@@ -214,7 +216,10 @@ class World {
   const std::vector<Spring>& springs() const { return springs_; }
   const std::vector<Plane>& planes() const { return planes_; }
   // The contact manifolds of the last narrow phase, and every contact point of the last step
-  // with the impulse the solver gave it.
+  // with the impulse the solver gave it. contacts() lists the step's (those of awake bodies, then
+  // those of islands the step woke), then the contacts sleeping islands keep from the step they
+  // fell asleep in, ordered by (kind, a, b, part, children); the sleeping ones are gathered when
+  // asked, not by the step (issue 58). contactPoints() index the first part.
   const std::vector<Contact>& contacts() const;
   // How many of contacts() the last narrow phase recycled (Settings::contactRecycleDistance).
   std::size_t recycledContacts() const;
@@ -255,7 +260,23 @@ class World {
   void removeStale(std::vector<T>& items) const;  // the entries whose `body` id is no longer valid
   void updateJointFilter();   // the pairs that must not collide, after joints or indices changed
   void checkFinite(const std::vector<std::size_t>& bodies) const;  // after a solver advanced them
-  void updateSleep();
+  void updateSleep();                  // world/awake_bodies.cpp, with the five below
+  void refreshAwake();                 // awakeList_ is the awake bodies, in index order
+  void rebuildAwake();                 // ... from a scan of every body (after removals, loads, undo)
+  void wakeBody(std::size_t index);    // wakes and lists it
+  // Sleeping islands with a body awake now wake whole (Box2D's b2WakeSolverSet): their kept
+  // contacts go back to the solver and the event tracker; `solveNow`: appended to this step's
+  // contacts (the narrow phase has run), else dropped (it collides them afresh).
+  void wakeIslandsOf(const std::vector<std::size_t>& seeds, bool solveNow);
+  void wakeListedIslands();            // before the collision stages: islands of bodies woken since
+  void listAwake(std::size_t index) {  // body(id)'s and every wake's: the next pass visits it
+    if (index >= listed_.size()) listed_.resize(bodies_.size(), 0);
+    if (listed_[index] != 0) return;
+    if (undoOpen_) saveUndoOf(index);  // before the step changes it
+    listed_[index] = 1;
+    if (!awakeList_.empty() && awakeList_.back() > index) awakeSorted_ = false;
+    awakeList_.push_back(static_cast<std::uint32_t>(index));
+  }
   void breakBodies();  // world/break_bodies.cpp
   void breakBody(std::size_t body, double impulse);
   [[noreturn]] void reportDivergence(const RigidBody& body, const BodyState& next) const;
@@ -264,6 +285,7 @@ class World {
   bool runStage(Stage stage, bool needed, Fn&& fn);  // true when it ran
   void advance();     // step()'s stages after SpawnAndRemove
   void saveUndo();    // what a failed step puts back (world/step_undo.cpp)
+  void saveUndoOf(std::size_t index);  // one body's part of it
   void undoStep();    // puts it back; never throws
   void restoreWhole(World&& before) noexcept;  // a copy from before a step that removed bodies
   void saveSpawns();  // before a step that only spawns: what undoSpawns puts back
@@ -295,6 +317,17 @@ class World {
   std::unique_ptr<ContactSolver> solver_;  // Settings::solver's
   std::unique_ptr<ContactEventTracker> contactEvents_;  // never null but in a moved-from World
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
+  // The awake bodies (issue 58, "no scan of every body"; Box2D's awake solver set): every awake
+  // body's index, plus those body(id) handed out or a stage woke since the last refreshAwake();
+  // every per-step pass visits these alone. listed_ per body: in awakeList_. awakeStale_: the
+  // indices changed (removal, a load, an undo): rebuilt from a scan before the next step.
+  std::vector<std::uint32_t> awakeList_;
+  std::vector<char> listed_;
+  bool awakeSorted_ = true;
+  bool awakeStale_ = true;
+  std::size_t awakeScanned_ = 0;  // bodies refreshAwake has looked at; those past it are new
+  std::vector<std::uint32_t> localIndex_;  // UpdateSleep's scratch, per body: its place in awakeList_
+  bool undoOpen_ = false;  // in a step, after saveUndo: a body listed now is saved first
   std::vector<Joint> joints_;
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::vector<KinematicMotion> motions_;  // at most one per body
@@ -309,6 +342,10 @@ class World {
   std::array<StageStats, static_cast<int>(Stage::Count)> stats_{};
   // A step's undo record, kept between steps so that it allocates only as the World grows.
   struct StepUndo {
+    // Per saved body (the awake ones, and those the step wakes; every body when a step listener
+    // runs, which may wake any): its index, then what it was.
+    bool all = false;
+    std::vector<std::uint32_t> index;
     std::vector<BodyState> states;
     std::vector<Mat3> rotations;  // euler-matrix without drift correction keeps R apart from q
     std::vector<char> awake;

@@ -1,0 +1,57 @@
+// The collision pipeline's side of sleeping islands (world/collision_pipeline.h, issue 58): the
+// contacts kept apart while their island sleeps, and what the continuous stage looks at near a
+// sweep.
+#include <algorithm>
+
+#include "world/collision_pipeline.h"
+
+namespace rbsim {
+
+void CollisionPipeline::keepSleeping(const std::vector<RigidBody>& bodies) {
+  sleptNow_.clear();
+  for (const Contact& c : contacts_) {
+    const bool plane = c.kind == Contact::Kind::PlaneBody;
+    if (bodies[c.b].awake() || (!plane && bodies[c.a].awake())) continue;
+    // A pair with a compound or a mesh ground keeps all its contacts, one per part; a pair with a
+    // grid, whose several manifolds are found afresh, none (both as before issue 58).
+    const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
+    if (c.part != 0 && !several) continue;
+    if (!plane && !several && (hasGrid_[c.a] || hasGrid_[c.b])) continue;
+    sleeping_.add(c, bodies);
+    sleptNow_.push_back(c);
+  }
+}
+
+void CollisionPipeline::takeIslands(const std::vector<std::size_t>& seeds, const std::vector<RigidBody>& bodies,
+                                    std::vector<std::size_t>& islandBodies, std::vector<Contact>& contacts) {
+  const std::size_t first = islandBodies.size();
+  sleeping_.takeIslands(seeds, bodies, islandBodies, contacts);
+  // A body woken now has not moved in this step: its start is where it is (rememberStart may
+  // have run before it woke).
+  for (std::size_t k = first; k < islandBodies.size(); ++k) start_[islandBodies[k]] = bodies[islandBodies[k]].state();
+  reportedStale_ = true;
+}
+
+const std::vector<Contact>& CollisionPipeline::reported() const {
+  if (sleeping_.empty()) return contacts_;
+  if (reportedStale_) {
+    reported_ = contacts_;
+    sleeping_.all(reported_);
+    reportedStale_ = false;
+  }
+  return reported_;
+}
+
+void CollisionPipeline::nearSweep(const Aabb& box, const std::vector<RigidBody>& bodies,
+                                  const std::vector<std::uint32_t>& awake, std::vector<std::size_t>& out) const {
+  (void)bodies;
+  out.assign(awake.begin(), awake.end());
+  for (const ProxyId p : broad_->awakeAtUpdate()) out.push_back(bodyOfProxy_[p]);
+  restingNear_.clear();
+  broad_->resting(box, restingNear_);
+  for (const ProxyId p : restingNear_) out.push_back(bodyOfProxy_[p]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+}  // namespace rbsim

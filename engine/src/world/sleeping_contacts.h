@@ -1,0 +1,44 @@
+#pragma once
+// The contacts of sleeping islands, kept apart from the step's (Box2D v3's sleeping solver sets,
+// src/solver_set.c: b2TrySleepIsland moves an island's contacts into its set, b2WakeSolverSet
+// moves them back). No stage visits them: a step costs its awake bodies and their contacts alone.
+// Each contact is filed under its bodies that are neither static nor a plane, so that an island
+// is found from any of its bodies by following its contacts (takeIsland).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "rbsim/body/rigid_body.h"
+#include "rbsim/collision/contact.h"
+
+namespace rbsim {
+
+class SleepingContacts {
+ public:
+  void add(const Contact& contact, const std::vector<RigidBody>& bodies);
+  bool holds(std::size_t body) const { return body < of_.size() && !of_[body].empty(); }
+  bool empty() const { return live_ == 0; }
+  std::size_t size() const { return live_; }
+  // The island of each seed, through the kept contacts between bodies that are not static: its
+  // bodies (each once, the seeds included) and its contacts, which leave, in key order.
+  void takeIslands(const std::vector<std::size_t>& seeds, const std::vector<RigidBody>& bodies,
+                   std::vector<std::size_t>& islandBodies, std::vector<Contact>& contacts);
+  // Every kept contact, in key order (kind, lower body or plane, higher body, part), appended.
+  void all(std::vector<Contact>& out) const;
+  // Every kept contact leaves, in key order (a removal renumbers them with the step's): the same
+  // order however they were filed, so that a World read back from a snapshot removes alike.
+  std::vector<Contact> takeAll();
+
+ private:
+  std::vector<Contact> slots_;
+  std::vector<char> used_;                    // per slot
+  std::vector<std::uint32_t> free_;           // unused slots
+  std::vector<std::vector<std::uint32_t>> of_;  // per body: the slots filed under it
+  std::vector<char> seen_;                    // takeIslands' scratch, per body
+  std::size_t live_ = 0;
+};
+
+// The order contacts() reports kept contacts in, the same however they were filed.
+bool keptBefore(const Contact& x, const Contact& y);
+
+}  // namespace rbsim
