@@ -81,7 +81,7 @@ class CollisionPipeline {
   // Stage NarrowPhase: contacts of candidate pairs and of bodies against planes. Sleeping bodies
   // are not collided with each other or with planes: they keep the contacts they had (nothing
   // of theirs has moved since).
-  // `shapes` are per body (World::bodySolids): pairs with a signed distance grid use them.
+  // `shapes` are per body (bodySolids in world/queries.h): pairs with a signed distance grid use them.
   void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
                    const std::vector<Plane>& planes, double time);
 

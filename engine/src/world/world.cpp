@@ -161,39 +161,11 @@ void World::setSettings(const Settings& settings) {
 }
 
 const std::vector<Contact>& World::contacts() const { return collision_->contacts(); }
-std::size_t World::recycledContacts() const { return collision_->recycledCount(); }
 const std::vector<SolvedContactPoint>& World::contactPoints() const { return solver_->points(); }
-const ContactEvents& World::contactEvents() const { return contactEvents_->events(); }
 
 void World::addForce(const ScriptedForce& force) {
   if (!isValid(force.body)) throw std::invalid_argument("scripted force names no body");
   forces_.push_back(force);
-}
-
-std::size_t World::addSpring(const Spring& spring) {
-  if (!isValid(spring.body)) throw std::invalid_argument("spring names no body");
-  if (!body(spring.body).isDynamic()) {
-    throw std::invalid_argument("spring on the static or kinematic body '" + body(spring.body).name() + "'");
-  }
-  if (!spring.anchor.allFinite() || !spring.point.allFinite() || !(spring.stiffness >= 0.0) || !(spring.restLength >= 0.0) ||
-      !(spring.damping >= 0.0) || !std::isfinite(spring.stiffness) || !std::isfinite(spring.restLength) ||
-      !std::isfinite(spring.damping)) {
-    throw std::invalid_argument("spring on body '" + body(spring.body).name() + "': expected finite anchor and point, k, rest length and damping >= 0");
-  }
-  springs_.push_back(spring);
-  return springs_.size() - 1;
-}
-
-void World::moveSpringAnchor(std::size_t spring, const Vec3& anchor) {
-  if (spring >= springs_.size()) throw std::invalid_argument("moveSpringAnchor: no such spring");
-  if (!anchor.allFinite()) throw std::invalid_argument("moveSpringAnchor: expected a finite anchor");
-  springs_[spring].anchor = anchor;
-  body(springs_[spring].body).wake();
-}
-
-void World::removeSpring(std::size_t spring) {
-  if (spring >= springs_.size()) throw std::invalid_argument("removeSpring: no such spring");
-  springs_.erase(springs_.begin() + static_cast<std::ptrdiff_t>(spring));
 }
 
 void World::addPlane(const Plane& plane, const Material& material) {
