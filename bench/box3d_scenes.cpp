@@ -25,6 +25,7 @@
 
 #include "box3d_cases.h"
 #include "rbsim/scene/scene.h"
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 
 using namespace rbsim;
@@ -103,7 +104,7 @@ void run(const SceneCase& scene, int steps, double seconds, const std::vector<st
               sorted[sorted.size() / 2], 1e3 * cpu / steps, world.settings().threads);
   std::printf("%-14s end: fastest %.4f m/s  top drift %.4f m  top sink %.4f m  deepest %.4f m  awake %zu  contacts %zu"
               " (recycled %zu)\n",
-              scene.name.c_str(), fastest, drift, sink, deepest, awake, world.contacts().size(), world.recycledContacts());
+              scene.name.c_str(), fastest, drift, sink, deepest, awake, world.contacts().size(), recycledContacts(world));
   std::printf("%-14s deepest over steps %d-%d: mean %.4f m  worst %.4f m\n", scene.name.c_str(), steps - halfCount,
               steps - 1, halfSum / std::max(halfCount, 1), halfMax);
   double total = 0.0;

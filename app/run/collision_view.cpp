@@ -88,7 +88,7 @@ void addCollisionView(const World& world, const Scene& scene, render::FrameData&
   for (const Contact& c : world.contacts()) {
     // Normals that came from a signed distance grid (grad phi, seed 000) are drawn in their own
     // colour, so a demo shows which contacts the grid found.
-    const bool fromGrid = c.kind == Contact::Kind::BodyBody && (world.bodySolids()[c.a].sdf || world.bodySolids()[c.b].sdf);
+    const bool fromGrid = c.kind == Contact::Kind::BodyBody && (bodySolids(world)[c.a].sdf || bodySolids(world)[c.b].sdf);
     fromGrids += fromGrid ? 1 : 0;
     for (int k = 0; k < c.manifold.count; ++k) {
       const ContactPoint& p = c.manifold.points[k];

@@ -101,7 +101,7 @@ void addJointLines(const World& world, render::FrameData& frame) {
 
 std::string restitutionThresholdRow(const World& world) {
   bool bouncy = false;
-  for (std::size_t i = 0; i < world.bodies().size(); ++i) bouncy = bouncy || world.bodyMaterial(world.idAt(i)).restitution > 0.0;
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) bouncy = bouncy || bodyMaterial(world, world.idAt(i)).restitution > 0.0;
   if (!bouncy) return {};
   const double threshold = world.settings().restitutionThreshold;
   if (threshold == 0.0) return "off: every approach bounces (seed 000's law)";

@@ -206,13 +206,13 @@ class Session {
     lastY_ = input.mouseY;
     if (input.pressed[0] && !overPanel && input.mouseX >= 0) grab(input.mouseX, input.mouseY);
     if (!input.down[0]) {
-      if (drag_) world_->removeSpring(drag_->spring);
+      if (drag_) removeSpring(*world_, drag_->spring);
       drag_.reset();
       orbitingWithLeft_ = false;
     }
     if (drag_) {
       const Ray ray = sceneRay(input.mouseX, input.mouseY);
-      if (const auto anchor = rayPlane(ray, drag_->planePoint, drag_->planeNormal)) world_->moveSpringAnchor(drag_->spring, *anchor);
+      if (const auto anchor = rayPlane(ray, drag_->planePoint, drag_->planeNormal)) moveSpringAnchor(*world_, drag_->spring, *anchor);
     }
     if (input.mouseX < 0 || (overPanel && !orbitingWithLeft_ && !input.down[1] && !input.down[2])) return;
     if ((orbitingWithLeft_ || input.down[1]) && (dx != 0 || dy != 0) && !input.pressed[0] && !input.pressed[1]) orbit().orbit(dx, dy);
@@ -240,8 +240,8 @@ class Session {
     spring.point = body.rotation().transpose() * (pick->point - body.position());
     spring.stiffness = kDragStiffnessPerKg * body.mass();
     spring.damping = kDragDampingRatio * 2.0 * std::sqrt(spring.stiffness * body.mass());
-    drag_ = Drag{world_->addSpring(spring), pick->point, -ray.direction};
-    world_->moveSpringAnchor(drag_->spring, pick->point);  // wakes the body
+    drag_ = Drag{addSpring(*world_, spring), pick->point, -ray.direction};
+    moveSpringAnchor(*world_, drag_->spring, pick->point);  // wakes the body
   }
 
   render::FrameData frame() {
@@ -253,13 +253,13 @@ class Session {
     }
     if (orbit_) f.camera = orbit_->camera();
     if (drag_) {
-      const Spring& spring = world_->springs()[drag_->spring];
+      const Spring& spring = springs(*world_)[drag_->spring];
       const RigidBody& body = world_->body(spring.body);
       const auto [point, force] = forceOfSpring(spring, body);
       const double gravity = world_->settings().gravity.norm() > 0.0 ? world_->settings().gravity.norm() : kStandardGravity;
       const double weight = body.mass() * gravity;  // [N]
       const Vec3 torque = (point - body.position()).cross(force);
-      const Vec3 anchor = world_->springs()[drag_->spring].anchor;
+      const Vec3 anchor = springs(*world_)[drag_->spring].anchor;
       f.lines.push_back({toGlm(point), toGlm(anchor), kDragForceColor, true});
       render::appendArrowLines(f.lines, toGlm(point), toGlm(Vec3(point + force / weight)), kDragForceColor);
       render::appendArrowLines(f.lines, toGlm(body.position()), toGlm(Vec3(body.position() + torque / weight)),

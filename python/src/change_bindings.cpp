@@ -2,7 +2,7 @@
 // PyBullet's changeDynamics, getDynamicsInfo, setJointMotorControl2 and removeConstraint. The
 // keywords are keys of the scene format read by the scene loader's own readers over the values
 // the body or joint has now (rbsim/scene/changes.h), then handed to the World's change calls
-// (World::setBodyMass, setBodyMaterial, setBodyFilter, setJointMotor, setJointLimits,
+// (setBodyMass, setBodyMaterial, setBodyFilter, setJointMotor, setJointLimits,
 // removeJoint), so a refused call changes nothing and says what a scene file would.
 #include <pybind11/pybind11.h>
 
@@ -13,6 +13,9 @@
 #include "py_world.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/changes.h"
+#include "rbsim/world/body_changes.h"
+#include "rbsim/world/joint_changes.h"
+#include "rbsim/world/queries.h"
 #include "to_json.h"
 
 namespace py = pybind11;
@@ -43,11 +46,11 @@ void setBody(PyWorld& w, const PyBodyId& id, const py::kwargs& keys) {
   const nlohmann::json change = toJson(givenKeywords(keys), kSetBodyCall, "");
   const std::size_t i = w.index(id, kSetBodyCall);  // waits for a step
   World& world = w.world();
-  const BodyChange c = parseBodyChange(change, kSetBodyCall, world.bodies()[i], world.bodyMaterial(id.id));
+  const BodyChange c = parseBodyChange(change, kSetBodyCall, world.bodies()[i], rbsim::bodyMaterial(world, id.id));
   try {  // parseBodyChange ran the World's checks: these calls take what it gives
-    if (c.mass) world.setBodyMass(id.id, *c.mass, *c.inertia);
-    if (c.material) world.setBodyMaterial(id.id, *c.material);
-    if (c.filter) world.setBodyFilter(id.id, *c.filter);
+    if (c.mass) rbsim::setBodyMass(world, id.id, *c.mass, *c.inertia);
+    if (c.material) rbsim::setBodyMaterial(world, id.id, *c.material);
+    if (c.filter) rbsim::setBodyFilter(world, id.id, *c.filter);
   } catch (const std::invalid_argument& e) {
     throw InputError(kSetBodyCall, "", e.what());
   }
@@ -65,7 +68,7 @@ py::dict bodyProperties(const PyWorld& w, const PyBodyId& id) {
   d["inertia"] = py::make_tuple(py::make_tuple(I(0, 0), I(0, 1), I(0, 2)), py::make_tuple(I(1, 0), I(1, 1), I(1, 2)),
                                 py::make_tuple(I(2, 0), I(2, 1), I(2, 2)));
   if (!body.isCompound()) {  // a compound's materials and filters are its shapes'
-    const Material& m = w.world().bodyMaterial(id.id);
+    const Material& m = rbsim::bodyMaterial(w.world(), id.id);
     d["restitution"] = m.restitution;
     d["friction_static"] = m.staticFriction;
     d["friction_kinetic"] = m.kineticFriction;
@@ -86,10 +89,10 @@ void setJoint(PyWorld& w, const py::handle& jointIndex, const py::kwargs& keys) 
   const JointDef& d = c.def;
   try {
     const double max = d.type == JointDef::Type::Prismatic ? d.maxMotorForce : d.maxMotorTorque;
-    if (c.motor) world.setJointMotor(j, d.motor, d.motorSpeed, max);
+    if (c.motor) rbsim::setJointMotor(world, j, d.motor, d.motorSpeed, max);
     if (c.limits) {
       const bool slider = d.type == JointDef::Type::Prismatic;
-      world.setJointLimits(j, d.limits, slider ? d.lowerTranslation : d.lowerAngle, slider ? d.upperTranslation : d.upperAngle);
+      rbsim::setJointLimits(world, j, d.limits, slider ? d.lowerTranslation : d.lowerAngle, slider ? d.upperTranslation : d.upperAngle);
     }
   } catch (const std::invalid_argument& e) {
     throw InputError(kSetJointCall, "", e.what());
@@ -126,7 +129,7 @@ void bindChanges(py::class_<PyWorld>& world) {
       .def("remove_joint",
            [](PyWorld& w, const py::object& joint) {
              const std::size_t j = jointArgument(w, joint, kRemoveJointCall);
-             w.world().removeJoint(j);
+             rbsim::removeJoint(w.world(), j);
            },
            py::arg("joint"),
            "remove_joint(self, /, joint)\n--\n\n-> None: removes the joint (PyBullet's removeConstraint); later "

@@ -1,4 +1,4 @@
-// World.contact_events() (issue 57; Box3D's b3World_GetContactEvents, World::contactEvents):
+// World.contact_events() (issue 57; Box3D's b3World_GetContactEvents, contactEvents(world)):
 // the pairs of shapes that began and stopped touching, and the hits faster than hit_event_speed,
 // over every step of the last step(n) call (a PyBullet user polls once per call), as a dict of
 // NumPy arrays, one row per event. Bodies are named by their row in the state arrays now (-1 for
@@ -17,7 +17,7 @@ namespace py = pybind11;
 namespace rbsim::python {
 
 void gatherContactEvents(const World& world, StepEvents& out) {
-  const ContactEvents& e = world.contactEvents();
+  const ContactEvents& e = rbsim::contactEvents(world);
   if (e.begin.empty() && e.end.empty() && e.hit.empty()) return;
   const std::uint64_t step = world.stepCount() - 1;  // the step that made them
   out.events.begin.insert(out.events.begin.end(), e.begin.begin(), e.begin.end());

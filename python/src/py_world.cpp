@@ -100,7 +100,7 @@ PyBodyId PyWorld::addBody(const py::kwargs& body) {
     throw InputError(kBodyCall, "name", "duplicate body name \"" + block.def.name + "\"");
   }
   // Nor one a spawner will give (issue 56, item 4).
-  for (const Spawner& spawner : world_.spawners()) {
+  for (const Spawner& spawner : rbsim::spawners(world_)) {
     if (spawnerMakesName(spawner.def, block.def.name)) throw InputError(kBodyCall, "name", madeNameProblem(spawner.def, block.def.name));
   }
   const BodyId id = world_.addBody(block.def);
@@ -125,11 +125,11 @@ PyBodyId PyWorld::addBody(const py::kwargs& body) {
   }
   for (Spring s : block.springs) {
     s.body = id;
-    world_.addSpring(s);
+    rbsim::addSpring(world_, s);
   }
   for (KinematicMotion m : block.motions) {
     m.body = id;
-    world_.setKinematicMotion(m);
+    rbsim::setKinematicMotion(world_, m);
   }
   return wrap(id);
 }
@@ -147,7 +147,7 @@ std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
   nlohmann::json keys = toJson(spawn, kSpawnerCall, "");
   waitIdle();
   const auto spawnerNamed = [this](const std::string& name) {
-    return std::any_of(world_.spawners().begin(), world_.spawners().end(), [&](const Spawner& s) { return s.def.name == name; });
+    return std::any_of(rbsim::spawners(world_).begin(), rbsim::spawners(world_).end(), [&](const Spawner& s) { return s.def.name == name; });
   };
   if (keys.is_object() && !keys.contains("name")) keys["name"] = freeSpawnerName(spawnerNamed);
   std::optional<Vec3> color;
@@ -164,13 +164,13 @@ std::size_t PyWorld::addSpawner(const py::kwargs& spawn) {
     }
   }
   try {
-    world_.addSpawner(def);
+    rbsim::addSpawner(world_, def);
   } catch (const std::invalid_argument& e) {
-    throw InputError(kSpawnerCall, "", e.what());  // the engine's checks (World::addSpawner)
+    throw InputError(kSpawnerCall, "", e.what());  // the engine's checks (addSpawner, world/spawner.h)
   }
   if (color) scene_.colors.bySpawner[def.name] = *color;
   blocks_.addSpawner(std::move(keys));
-  return world_.spawners().size() - 1;
+  return rbsim::spawners(world_).size() - 1;
 }
 
 void PyWorld::setKillVolume(const py::object& volume) {
@@ -185,12 +185,12 @@ void PyWorld::setKillVolume(const py::object& volume) {
     }
   }
   waitIdle();
-  world_.setKillVolume(box);
+  rbsim::setKillVolume(world_, box);
 }
 
 py::object PyWorld::killVolume() const {
   waitIdle();
-  const Aabb& box = world_.killVolume();
+  const Aabb& box = rbsim::killVolume(world_);
   if (box.empty()) return py::none();
   return py::make_tuple(box.min.x(), box.min.y(), box.min.z(), box.max.x(), box.max.y(), box.max.z());
 }
@@ -298,7 +298,7 @@ void PyWorld::step(long long steps) {
     done += chunk;
     // Spawners and the kill volume add and remove bodies as the World steps, the steps before a
     // failed one included: the names follow.
-    if (!world_.spawners().empty() || !world_.killVolume().empty()) {
+    if (!rbsim::spawners(world_).empty() || !rbsim::killVolume(world_).empty()) {
       names_.clear();
       for (const RigidBody& body : world_.bodies()) names_.insert(body.name());
     }

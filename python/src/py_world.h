@@ -31,7 +31,7 @@ struct PyBodyId {
 };
 
 // The contact events of every step of the last World.step(n) call, each with the World's step
-// count before it (event_arrays.cpp): World::contactEvents holds one step's.
+// count before it (event_arrays.cpp): contactEvents(world) holds one step's.
 struct StepEvents {
   ContactEvents events;
   std::vector<std::uint64_t> beginStep, endStep, hitStep;

@@ -131,12 +131,12 @@ nlohmann::json SceneBlocks::document(const World& world, const Scene& scene, con
       doc["joints"].push_back(joints_[k].block);
     }
   }
-  if (!world.spawners().empty()) {
+  if (!rbsim::spawners(world).empty()) {
     if (timeRan) timed("spawners");
     doc["spawn"] = spawners_;
   }
-  if (!world.killVolume().empty()) {
-    doc["kill_volume"] = {{"min", vec3(world.killVolume().min)}, {"max", vec3(world.killVolume().max)}};
+  if (!rbsim::killVolume(world).empty()) {
+    doc["kill_volume"] = {{"min", vec3(rbsim::killVolume(world).min)}, {"max", vec3(rbsim::killVolume(world).max)}};
   }
   return doc;
 }

@@ -26,6 +26,7 @@
 #include "shell_command.h"
 
 #include "rbsim/scene/scene.h"
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 #include "run/phase.h"
 #include "run/run_options.h"
@@ -235,8 +236,8 @@ TEST(Gltf, PiecesBrokenOffShowExactlyWhileTheyExist) {
   // Each break hides one node (the body, now its first piece, another mesh) and shows 1 + the
   // pieces added.
   std::size_t expected = 0;
-  for (const FractureEvent& event : world.fractureEvents()) expected += 2 + event.added.size();
-  EXPECT_GT(world.fractureEvents().size(), 0u) << "the wall must break for this test to test anything";
+  for (const FractureEvent& event : fractureEvents(world)) expected += 2 + event.added.size();
+  EXPECT_GT(fractureEvents(world).size(), 0u) << "the wall must break for this test to test anything";
   EXPECT_EQ(switches, expected);
   fs::remove_all(dir);
 }

@@ -101,6 +101,9 @@ class SoftStepSolver final : public ContactSolver {
     Vec3 torque = Vec3::Zero();              // tau about x [N m]
     bool kinematic = false;                  // moves as prescribed, infinite mass (zero inverses)
   };
+  // 168 bytes, 2.6 cache lines: the index and 1/m (16), I^-1 now (72), x0, a and tau (72), the
+  // flag. Read at a substep's velocity and position integration, not by the sweeps.
+  static_assert(sizeof(BodySim) == 168, "BodySim's size: see the comment above");
   // One manifold point, in three arrays indexed alike, so that each pass streams only what it
   // reads (Box2D v3 keeps its solver points apart from the manifold the same way): the sweeps of
   // every substep read and write Point; the relax, once a substep, reads PointFrame too; the
@@ -134,6 +137,8 @@ class SoftStepSolver final : public ContactSolver {
     double baseSeparation = 0.0;     // s0 - n . (r_B - r_A) [m]
     bool split = false;  // recycled: each body pushes at its own copy (ContactPoint::offset)
   };
+  // 112 bytes like Point (1.75 cache lines): four vectors (96), the base separation, the flag.
+  static_assert(sizeof(PointFrame) == 112, "PointFrame's size: see the comment above");
   struct PointReport {
     Vec3 position = Vec3::Zero();    // the manifold's point, world [m]
     double depth = 0.0;              // the manifold's depth [m]
@@ -149,6 +154,8 @@ class SoftStepSolver final : public ContactSolver {
     double bounceImpulse = 0.0;  // [N s]
     Eigen::Vector2d bounceFriction = Eigen::Vector2d::Zero();  // along t1, t2 [N s]
   };
+  // 112 bytes (1.75 cache lines), bounceFriction aligned to 16: read at the step's start and end.
+  static_assert(sizeof(PointReport) == 112, "PointReport's size: see the comment above");
   struct Constraint {  // one manifold
     int a = 0, b = 0;  // body slots; 0 is the ground
     Vec3 normal = Vec3::UnitY(), tangent1 = Vec3::UnitX(), tangent2 = Vec3::UnitZ();
@@ -163,6 +170,10 @@ class SoftStepSolver final : public ContactSolver {
     std::size_t contact = 0;   // index into the contacts
     std::uint64_t key = 0;     // pairKey
   };
+  // 176 bytes, 2.75 cache lines: the slots (8), three unit vectors (72), the materials and the
+  // normal acceleration (32), the softness (24), the flags, the point range, the contact and the
+  // key (40). Each sweep reads its manifold's once for all its points.
+  static_assert(sizeof(Constraint) == 176, "Constraint's size: see the comment above");
   struct Cached {  // one manifold of the last step
     std::uint64_t key = 0;
     int count = 0;
@@ -172,6 +183,9 @@ class SoftStepSolver final : public ContactSolver {
     std::array<bool, kMaxManifoldPoints> sliding{};  // seed000: per point
     bool sticking = true;
   };
+  // 248 bytes, under 4 cache lines: the key and count (16), four points and four frictions (192),
+  // four impulses (32), the flags. Read once a step per manifold, to warm start it.
+  static_assert(sizeof(Cached) == 248, "Cached's size: see the comment above");
 
   struct JointConstraint {  // one joint this step
     std::size_t joint = 0;  // index into the joints
@@ -189,6 +203,10 @@ class SoftStepSolver final : public ContactSolver {
     // the Joint (19701 of them on Box3D's joint grid).
     JointDef::Type type = JointDef::Type::Ball;
   };
+  // 160 bytes, 2.5 cache lines: the indices (16), four vectors (96), the base's orientation
+  // aligned to 16 (32), the pointer, the extra's index and the type. The sweeps read it every
+  // substep; a plain ball joint reads nothing else but its Joint's impulses.
+  static_assert(sizeof(JointConstraint) == 160, "JointConstraint's size: see the comment above");
 
   int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
   void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,

@@ -17,7 +17,7 @@ namespace rbsim::scene_detail {
 
 // The material keys of a body or a plane ("restitution", "friction_static", "friction_kinetic"),
 // each defaulting to base's (Material's, or a running body's for World.set_body), each checked
-// as World::setBodyMaterial checks it (body/material.h).
+// as setBodyMaterial checks it (body/material.h).
 Material parseMaterial(const JsonObject& o, const Material& base = {});
 
 // The body's orientation for an orientation of the file's axes: q_file E (mass/mass_model.h).

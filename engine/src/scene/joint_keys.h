@@ -12,7 +12,7 @@
 namespace rbsim::scene_detail {
 
 // A motor's physical ranges (kMaxMotorSpeed, kMaxMotorTorque, kMaxMotorForce) are the World's
-// own checks' (dynamics/joint_ranges.h), so a scene and World::setJointMotor refuse the same values.
+// own checks' (dynamics/joint_ranges.h), so a scene and setJointMotor refuse the same values.
 // A slider motor's force and a joint's friction share that bound ([N], [N m]); a spring's
 // frequency stops at 1e6 Hz, beyond any substep rate a scene can ask for (it would be rigid).
 inline constexpr double kMaxJointFriction = kMaxMotorTorque;  // [N m] or [N]

@@ -33,7 +33,7 @@ struct JointBodies {
 inline constexpr std::size_t kMaxJoints = 1'000'000;
 
 // A joint's "motor" ({"speed", "max_torque"} or a slider's {"speed", "max_force"}) into def, and
-// its "limits" (a ball's "twist"): each checked as World::setJointMotor and setJointLimits check
+// its "limits" (a ball's "twist"): each checked as setJointMotor and setJointLimits check
 // it (dynamics/joint_ranges.h). A motor's key left out keeps def's value when def has a motor
 // already (World.set_joint), and is missing otherwise.
 void parseMotor(const JsonObject& j, JointDef& def);

@@ -175,10 +175,10 @@ World buildWorld(const Scene& scene) {
   }
   for (const ScriptedForce& f : scene.forces) world.addForce(f);
   for (const PoseEvent& e : scene.poseEvents) world.addPoseEvent(e);
-  for (const KinematicMotion& m : scene.motions) world.setKinematicMotion(m);
-  for (const SpawnerDef& s : scene.spawners) world.addSpawner(s);
-  if (!scene.killVolume.empty()) world.setKillVolume(scene.killVolume);
-  for (const Spring& s : scene.springs) world.addSpring(s);
+  for (const KinematicMotion& m : scene.motions) setKinematicMotion(world, m);
+  for (const SpawnerDef& s : scene.spawners) addSpawner(world, s);
+  if (!scene.killVolume.empty()) setKillVolume(world, scene.killVolume);
+  for (const Spring& s : scene.springs) addSpring(world, s);
   for (const JointDef& j : scene.joints) world.addJoint(j);
   for (const RagdollDef& r : scene.ragdolls) addRagdoll(world, r);
   for (std::size_t p = 0; p < scene.planes.size(); ++p) world.addPlane(scene.planes[p], scene.planeMaterials[p]);

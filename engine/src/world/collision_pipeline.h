@@ -86,7 +86,7 @@ class CollisionPipeline {
   // bodies are not collided with each other or with planes: the last step's contacts whose bodies
   // all sleep now are kept apart (sleeping_; listed in sleptNow()), as they were (nothing of
   // theirs has moved since), until their island wakes (takeIslands).
-  // `shapes` are per body (World::bodySolids): pairs with a signed distance grid use them.
+  // `shapes` are per body (bodySolids in world/queries.h): pairs with a signed distance grid use them.
   void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
                    const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes, double time);
   const std::vector<Contact>& sleptNow() const { return sleptNow_; }  // the last narrow phase's

@@ -1,5 +1,5 @@
 #pragma once
-// World::contactEvents (world/contact_events.h): which pairs of shapes began or stopped touching,
+// contactEvents(world) (world/contact_events.h): which pairs of shapes began or stopped touching,
 // found by comparing each step's touching pairs with the last step's, as Box3D flags a contact
 // that started or stopped touching in its narrow phase (physics_world.c b3UpdateContacts); and
 // the hits the solver reports (ContactSolver::hits).

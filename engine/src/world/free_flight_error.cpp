@@ -18,7 +18,7 @@ bool torqued(const World& world, BodyId id) {
   for (const Contact& c : world.contacts()) {
     if (c.b == i || (c.kind == Contact::Kind::BodyBody && c.a == i)) return true;
   }
-  for (const Spring& s : world.springs()) {
+  for (const Spring& s : springs(world)) {
     if (s.body == id) return true;
   }
   for (const Joint& j : world.joints()) {

@@ -1,4 +1,4 @@
-// Changes of a running World's joints (World::setJointMotor, setJointLimits, removeJoint;
+// Changes of a running World's joints (world/joint_changes.h: setJointMotor, setJointLimits, removeJoint;
 // PyBullet's setJointMotorControl2 and removeConstraint, Box2D v3's b2RevoluteJoint_SetMotorSpeed,
 // b2RevoluteJoint_SetLimits and b2DestroyJoint). Each checks before it changes anything, with the
 // scene loader's checks (dynamics/joint_ranges.h), and wakes the joint's bodies.
@@ -7,13 +7,15 @@
 #include <string>
 
 #include "rbsim/dynamics/joint_ranges.h"
-#include "rbsim/world/world.h"
+#include "rbsim/world/joint_changes.h"
+
+#include "world/world_access.h"
 
 namespace rbsim {
 
 namespace {
 
-// "World::setJointMotor: joint 2 ('elbow')", the joint checked to exist.
+// "setJointMotor: joint 2 ('elbow')", the joint checked to exist.
 std::string who(const char* call, const std::vector<Joint>& joints, std::size_t joint) {
   const std::string named = std::string(call) + ": joint " + std::to_string(joint);
   if (joint >= joints.size()) {
@@ -27,11 +29,17 @@ void refuse(const std::string& who, const std::string& field, const std::string&
   if (!problem.empty()) throw std::invalid_argument(who + ": " + field + ": " + problem);
 }
 
+void wakeBodies(World& world, const Joint& j) {
+  WorldAccess::wakeBody(world, j.a);  // listed awake too (world/awake_bodies.cpp)
+  if (j.b != kWorldIndex) WorldAccess::wakeBody(world, j.b);
+}
+
 }  // namespace
 
-void World::setJointMotor(std::size_t joint, bool on, double speed, double maxTorque) {
-  const std::string name = who("World::setJointMotor", joints_, joint);
-  Joint& j = joints_[joint];
+void setJointMotor(World& world, std::size_t joint, bool on, double speed, double maxTorque) {
+  std::vector<Joint>& joints = WorldAccess::joints(world);
+  const std::string name = who("setJointMotor", joints, joint);
+  Joint& j = joints[joint];
   const JointDef::Type type = j.def.type;
   if (type != JointDef::Type::Hinge && type != JointDef::Type::Prismatic) {
     refuse(name, "motor", std::string("a ") + jointTypeName(type) + " joint takes no motor; expected a hinge or a prismatic joint");
@@ -43,17 +51,17 @@ void World::setJointMotor(std::size_t joint, bool on, double speed, double maxTo
     (type == JointDef::Type::Prismatic ? j.def.maxMotorForce : j.def.maxMotorTorque) = maxTorque;
     // The kept impulse is of a substep, |lambda| <= h max (soft_step_joints.cpp): a lower cap
     // holds it too, or the warm start would push with the old torque.
-    const double cap = settings_.timeStep / settings_.substeps * maxTorque;
+    const double cap = world.settings().timeStep / world.settings().substeps * maxTorque;
     j.motorImpulse = std::clamp(j.motorImpulse, -cap, cap);
   }
   j.def.motor = on;  // off: the solver forgets its impulse (soft_step_joints.cpp)
-  wakeBody(j.a);
-  if (j.b != kWorldIndex) wakeBody(j.b);
+  wakeBodies(world, j);
 }
 
-void World::setJointLimits(std::size_t joint, bool on, double lower, double upper) {
-  const std::string name = who("World::setJointLimits", joints_, joint);
-  Joint& j = joints_[joint];
+void setJointLimits(World& world, std::size_t joint, bool on, double lower, double upper) {
+  std::vector<Joint>& joints = WorldAccess::joints(world);
+  const std::string name = who("setJointLimits", joints, joint);
+  Joint& j = joints[joint];
   const JointDef::Type type = j.def.type;
   if (type == JointDef::Type::Weld) refuse(name, "limits", "a weld joint takes no limits");
   if (on) {
@@ -63,17 +71,16 @@ void World::setJointLimits(std::size_t joint, bool on, double lower, double uppe
   }
   j.def.limits = on;
   j.lowerImpulse = j.upperImpulse = 0.0;
-  wakeBody(j.a);
-  if (j.b != kWorldIndex) wakeBody(j.b);
+  wakeBodies(world, j);
 }
 
-void World::removeJoint(std::size_t joint) {
-  who("World::removeJoint", joints_, joint);
-  const Joint removed = joints_[joint];
-  joints_.erase(joints_.begin() + static_cast<std::ptrdiff_t>(joint));
-  updateJointFilter();  // the pair may collide again, unless another joint holds it apart
-  wakeBody(removed.a);
-  if (removed.b != kWorldIndex) wakeBody(removed.b);
+void removeJoint(World& world, std::size_t joint) {
+  std::vector<Joint>& joints = WorldAccess::joints(world);
+  who("removeJoint", joints, joint);
+  const Joint removed = joints[joint];
+  joints.erase(joints.begin() + static_cast<std::ptrdiff_t>(joint));
+  WorldAccess::updateJointFilter(world);  // the pair may collide again, unless another joint holds it apart
+  wakeBodies(world, removed);
 }
 
 }  // namespace rbsim

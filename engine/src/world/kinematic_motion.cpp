@@ -5,10 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/math/rotation.h"
 #include "rbsim/world/world.h"
+#include "world/world_access.h"
 
 namespace rbsim {
 
@@ -64,19 +66,22 @@ Keyframe keyframePoseAt(const KinematicMotion& motion, double t) {
   return {t, a.position + s * (b.position - a.position), a.orientation.slerp(s, b.orientation)};
 }
 
-void World::setKinematicMotion(const KinematicMotion& motion) {
-  const RigidBody& moved = body(motion.body);  // throws on a stale id
+void setKinematicMotion(World& world, const KinematicMotion& motion) {
+  const RigidBody& moved = std::as_const(world).body(motion.body);  // throws on a stale id
   if (!moved.isKinematic()) throw std::invalid_argument("motion: body '" + moved.name() + "' is not kinematic");
   const std::string problem = checkKinematicMotion(motion);
   if (!problem.empty()) throw std::invalid_argument("motion of body '" + moved.name() + "': " + problem);
-  for (KinematicMotion& m : motions_) {
+  std::vector<KinematicMotion>& motions = WorldAccess::motions(world);
+  for (KinematicMotion& m : motions) {
     if (m.body == motion.body) {
       m = motion;
       return;
     }
   }
-  motions_.push_back(motion);
+  motions.push_back(motion);
 }
+
+const std::vector<KinematicMotion>& kinematicMotions(const World& world) { return WorldAccess::motions(world); }
 
 void World::driveKinematicBodies() {
   const double t = time();

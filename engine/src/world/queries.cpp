@@ -32,11 +32,24 @@ std::size_t awakeCount(const World& world) {
 std::vector<std::pair<Vec3, Vec3>> activeForces(const World& world, BodyId body, double t) {
   std::vector<std::pair<Vec3, Vec3>> active;
   const RigidBody& b = world.body(body);
-  for (const ScriptedForce& f : world.scriptedForces()) {
+  for (const ScriptedForce& f : scriptedForces(world)) {
     if (f.body == body && isActive(f, t)) active.push_back(inWorldFrame(f, b));
   }
   return active;
 }
+
+const Material& bodyMaterial(const World& world, BodyId body) {
+  return WorldAccess::bodyMaterials(world)[world.indexOf(body)];
+}
+
+const Material& planeMaterial(const World& world, std::size_t plane) { return WorldAccess::planeMaterials(world).at(plane); }
+const std::vector<BodySolid>& bodySolids(const World& world) { return WorldAccess::bodySolids(world); }
+const std::vector<FractureEvent>& fractureEvents(const World& world) { return WorldAccess::fractureEvents(world); }
+const std::vector<ScriptedForce>& scriptedForces(const World& world) { return WorldAccess::forces(world); }
+std::size_t recycledContacts(const World& world) { return WorldAccess::collision(world).recycledCount(); }
+std::uint64_t geometryVersion(const World& world) { return WorldAccess::geometryVersion(world); }
+// Declared in world/contact_events.h, beside the events it returns.
+const ContactEvents& contactEvents(const World& world) { return WorldAccess::contactEvents(world).events(); }
 
 BodyDistance bodyDistance(const World& world, BodyId a, BodyId b) {
   const ConvexDistance d = convexDistance(world.body(a).worldVertices(), world.body(b).worldVertices());

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 #include "world/compound_contacts.h"
 #include "world/world_access.h"
@@ -122,7 +123,7 @@ std::uint32_t QueryTree::build(std::uint32_t begin, std::uint32_t end, int depth
 std::shared_ptr<const QueryTree> queryTree(const World& world) {
   QueryTreeCache& cache = WorldAccess::queryCache(world);
   const std::lock_guard<std::mutex> lock(cache.mutex);
-  if (!cache.tree || cache.version != world.geometryVersion()) {
+  if (!cache.tree || cache.version != geometryVersion(world)) {
     std::vector<Aabb> boxes(world.bodies().size());
     for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = queryBounds(world.bodies()[i]);
     auto tree = std::make_shared<QueryTree>(std::move(boxes));
@@ -139,7 +140,7 @@ std::shared_ptr<const QueryTree> queryTree(const World& world) {
       proxy.filter = body.filter();
     }
     cache.tree = std::move(tree);
-    cache.version = world.geometryVersion();
+    cache.version = geometryVersion(world);
   }
   return cache.tree;
 }

@@ -205,7 +205,7 @@ void QueryTree::walkNearest(const Vec3& p, double& bound, Leaf&& leaf) const {
 }
 
 // What World keeps in its QueryCacheSlot (world/query_cache.h): the tree and the
-// World::geometryVersion it was built at.
+// geometryVersion (world/queries.h) it was built at.
 struct QueryTreeCache {
   std::mutex mutex;
   std::shared_ptr<const QueryTree> tree;  // null until the first query

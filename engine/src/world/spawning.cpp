@@ -9,6 +9,7 @@
 
 #include "rbsim/world/ragdoll.h"
 #include "rbsim/world/world.h"
+#include "world/world_access.h"
 
 namespace rbsim {
 
@@ -95,16 +96,17 @@ RagdollDef spawnRagdoll(Spawner& spawner, const SpawnDraw& draw, const Vec3& off
   return def;
 }
 
-std::size_t World::addSpawner(const SpawnerDef& def) {
-  const std::string problem = checkSpawner(def, settings_.timeStep);
+std::size_t addSpawner(World& world, const SpawnerDef& def) {
+  const Settings& settings = world.settings();
+  const std::string problem = checkSpawner(def, settings.timeStep);
   if (!problem.empty()) throw std::invalid_argument("spawner '" + def.name + "': " + problem);
-  if (def.ragdoll && settings_.solver != Settings::ContactSolverMethod::SoftStep) {
+  if (def.ragdoll && settings.solver != Settings::ContactSolverMethod::SoftStep) {
     throw std::invalid_argument("spawner '" + def.name + "': ragdoll: a ragdoll's joints need the soft-step solver");
   }
   // The prototype's (or the figure's bodies' and joints') own checks, now rather than at the first
   // burst, in the middle of a step.
   if (def.ragdoll) {
-    World probe(settings_);
+    World probe(settings);
     static_cast<void>(addRagdoll(probe, *def.ragdoll));
   } else {
     static_cast<void>(RigidBody(def.prototype));
@@ -113,15 +115,23 @@ std::size_t World::addSpawner(const SpawnerDef& def) {
   spawner.def = def;
   spawner.random = UniformRandom(def.seed);
   // A spawner added late starts with its next burst, not with all those it missed.
-  if (def.start < time()) spawner.bursts = static_cast<std::uint64_t>(std::ceil((time() - def.start) / def.period));
-  spawners_.push_back(std::move(spawner));
-  return spawners_.size() - 1;
+  const double now = world.time();
+  if (def.start < now) spawner.bursts = static_cast<std::uint64_t>(std::ceil((now - def.start) / def.period));
+  std::vector<Spawner>& spawners = WorldAccess::spawners(world);
+  spawners.push_back(std::move(spawner));
+  return spawners.size() - 1;
 }
 
-void World::setKillVolume(const Aabb& volume) {
+const std::vector<Spawner>& spawners(const World& world) { return WorldAccess::spawners(world); }
+
+void setKillVolume(World& world, const Aabb& volume) {
   if (volume.min.hasNaN() || volume.max.hasNaN()) throw std::invalid_argument("kill volume: a corner is not a number");
-  killVolume_ = volume;
+  WorldAccess::killVolume(world) = volume;
 }
+
+const Aabb& killVolume(const World& world) { return WorldAccess::killVolume(world); }
+const std::vector<BodyId>& spawnedBodies(const World& world) { return WorldAccess::spawnedNow(world); }
+const std::vector<BodyId>& removedBodies(const World& world) { return WorldAccess::removedNow(world); }
 
 // Half a step early: a burst due at 1.0 s happens at the step starting then, not one later for
 // the rounding of 60 x (1/60); an age likewise.

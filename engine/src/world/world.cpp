@@ -82,8 +82,20 @@ std::vector<std::unique_ptr<StepListener>> cloned(const std::vector<std::unique_
 }
 }  // namespace
 
-// Member by member: the three owned polymorphic parts are cloned, the rest are values (shapes,
-// grids and fracture patterns are shared, immutable).
+// Every member of World, in the order world.h declares them: the three owned polymorphic parts
+// are cloned, the step listeners through StepListener::clone, the rest are values (shapes, grids
+// and fracture patterns are shared, immutable).
+//
+// sizeof(World) is checked so that a member added to world.h cannot be forgotten here. If this
+// fails: copy the new member below (or say below why a copy starts without it, as the query
+// cache and the undo record do), write and read it in the snapshot (world_snapshot.cpp, which
+// checks the same figure), then set the figure here and there to the new sizeof(World). One hole
+// escapes it: the 4 bytes of padding after freeSlot_, which a member of 4 bytes or less would fill.
+// Checked where the standard library lays out vectors in 3 pointers of 8 bytes (libstdc++, libc++
+// and MSVC's release library on every 64-bit target the engine builds for, docs/ci.md).
+constexpr std::size_t kWorldBytesCopied = 1584;
+static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(World) == kWorldBytesCopied,
+              "a member was added to or removed from World: see the comment above World's copy constructor");
 World::World(const World& other)
     : settings_(other.settings_),
       bodies_(other.bodies_),
@@ -110,6 +122,8 @@ World::World(const World& other)
       awakeSorted_(other.awakeSorted_),
       awakeStale_(other.awakeStale_),
       awakeScanned_(other.awakeScanned_),
+      localIndex_(),      // UpdateSleep's scratch, filled afresh by the next step
+      undoOpen_(false),   // true only inside a step
       joints_(other.joints_),
       pendingEvents_(other.pendingEvents_),
       motions_(other.motions_),
@@ -118,9 +132,12 @@ World::World(const World& other)
       spawnedNow_(other.spawnedNow_),
       removedNow_(other.removedNow_),
       stepCount_(other.stepCount_),
+      geometryVersion_(other.geometryVersion_),
+      queryCache_(),  // the copy builds its own query tree on its first query (world_queries.h)
       timeOrigin_(other.timeOrigin_),
       stepsAtOrigin_(other.stepsAtOrigin_),
       stats_(other.stats_),
+      undo_(),  // a step's scratch, filled afresh by the next step (step_undo.cpp)
       stageClock_(other.stageClock_) {}
 
 World& World::operator=(const World& other) {
@@ -165,39 +182,11 @@ void World::setSettings(const Settings& settings) {
 }
 
 const std::vector<Contact>& World::contacts() const { return collision_->reported(); }
-std::size_t World::recycledContacts() const { return collision_->recycledCount(); }
 const std::vector<SolvedContactPoint>& World::contactPoints() const { return solver_->points(); }
-const ContactEvents& World::contactEvents() const { return contactEvents_->events(); }
 
 void World::addForce(const ScriptedForce& force) {
   if (!isValid(force.body)) throw std::invalid_argument("scripted force names no body");
   forces_.push_back(force);
-}
-
-std::size_t World::addSpring(const Spring& spring) {
-  if (!isValid(spring.body)) throw std::invalid_argument("spring names no body");
-  if (!body(spring.body).isDynamic()) {
-    throw std::invalid_argument("spring on the static or kinematic body '" + body(spring.body).name() + "'");
-  }
-  if (!spring.anchor.allFinite() || !spring.point.allFinite() || !(spring.stiffness >= 0.0) || !(spring.restLength >= 0.0) ||
-      !(spring.damping >= 0.0) || !std::isfinite(spring.stiffness) || !std::isfinite(spring.restLength) ||
-      !std::isfinite(spring.damping)) {
-    throw std::invalid_argument("spring on body '" + body(spring.body).name() + "': expected finite anchor and point, k, rest length and damping >= 0");
-  }
-  springs_.push_back(spring);
-  return springs_.size() - 1;
-}
-
-void World::moveSpringAnchor(std::size_t spring, const Vec3& anchor) {
-  if (spring >= springs_.size()) throw std::invalid_argument("moveSpringAnchor: no such spring");
-  if (!anchor.allFinite()) throw std::invalid_argument("moveSpringAnchor: expected a finite anchor");
-  springs_[spring].anchor = anchor;
-  body(springs_[spring].body).wake();
-}
-
-void World::removeSpring(std::size_t spring) {
-  if (spring >= springs_.size()) throw std::invalid_argument("removeSpring: no such spring");
-  springs_.erase(springs_.begin() + static_cast<std::ptrdiff_t>(spring));
 }
 
 void World::addPlane(const Plane& plane, const Material& material) {

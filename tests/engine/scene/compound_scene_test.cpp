@@ -73,7 +73,7 @@ TEST(CompoundScene, FilterAndMotionAreRead) {
   ASSERT_EQ(scene.motions[1].keys.size(), 2u);
   EXPECT_NEAR(scene.motions[1].keys[1].orientation.angularDistance(Quat::Identity()), kPi / 2, 1e-12);
   World w = buildWorld(scene);
-  EXPECT_EQ(w.kinematicMotions().size(), 2u);
+  EXPECT_EQ(kinematicMotions(w).size(), 2u);
 }
 
 TEST(CompoundScene, BadValuesNameTheirPath) {

@@ -10,6 +10,7 @@
 
 #include "rbsim/io/input_error.h"
 #include "rbsim/math/rotation.h"
+#include "rbsim/world/queries.h"
 #include "test_util.h"
 
 namespace rbsim {
@@ -131,7 +132,7 @@ TEST(ParseScene, BuildsTheExpectedBodies) {
 
   World world = buildWorld(scene);
   ASSERT_EQ(world.bodies().size(), 2u);
-  EXPECT_EQ(world.scriptedForces().size(), 1u);
+  EXPECT_EQ(scriptedForces(world).size(), 1u);
   EXPECT_EQ(world.bodies()[1].name(), "tet");
   EXPECT_TRUE(allNear(world.bodies()[0].velocity(), Vec3(0, 1, 0), 1e-15));
 }

@@ -13,6 +13,7 @@
 #include "../../sanitized_build.h"
 #include "rbsim/body/shape_body.h"
 #include "rbsim/math/uniform_random.h"
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {
@@ -73,7 +74,7 @@ BatchScene batchScene(Settings::ContactSolverMethod solver, bool sleep) {
     spring.anchor = w.body(scene.ids[k]).position() + Vec3(0.0, 2.0, 0.0);
     spring.stiffness = 5.0;
     spring.restLength = 2.0;
-    w.addSpring(spring);
+    addSpring(w, spring);
   }
   for (std::size_t k = 3; k < scene.ids.size(); k += 11) {
     ScriptedForce push;
@@ -134,11 +135,11 @@ void expectSameWorld(const World& batched, const World& oneByOne, const std::vec
     EXPECT_EQ(batched.joints()[k].a, oneByOne.joints()[k].a);
     EXPECT_EQ(batched.joints()[k].b, oneByOne.joints()[k].b);
   }
-  ASSERT_EQ(batched.springs().size(), oneByOne.springs().size());
-  for (std::size_t k = 0; k < batched.springs().size(); ++k) EXPECT_EQ(batched.springs()[k].body, oneByOne.springs()[k].body);
-  ASSERT_EQ(batched.scriptedForces().size(), oneByOne.scriptedForces().size());
-  for (std::size_t k = 0; k < batched.scriptedForces().size(); ++k) {
-    EXPECT_EQ(batched.scriptedForces()[k].body, oneByOne.scriptedForces()[k].body);
+  ASSERT_EQ(springs(batched).size(), springs(oneByOne).size());
+  for (std::size_t k = 0; k < springs(batched).size(); ++k) EXPECT_EQ(springs(batched)[k].body, springs(oneByOne)[k].body);
+  ASSERT_EQ(scriptedForces(batched).size(), scriptedForces(oneByOne).size());
+  for (std::size_t k = 0; k < scriptedForces(batched).size(); ++k) {
+    EXPECT_EQ(scriptedForces(batched)[k].body, scriptedForces(oneByOne)[k].body);
   }
 }
 
@@ -185,7 +186,7 @@ TEST(BatchRemovalEdges, EveryBodyAtOnce) {
   EXPECT_TRUE(scene.world.bodies().empty());
   EXPECT_TRUE(scene.world.contacts().empty());
   EXPECT_TRUE(scene.world.joints().empty());
-  EXPECT_TRUE(scene.world.springs().empty());
+  EXPECT_TRUE(springs(scene.world).empty());
   for (const BodyId id : scene.ids) EXPECT_FALSE(scene.world.isValid(id));
   scene.world.step();
 }

@@ -1,4 +1,4 @@
-// Changes of a running body (World::setBodyMass, setBodyMaterial, setBodyFilter; issue 57): each
+// Changes of a running body (world/body_changes.h: setBodyMass, setBodyMaterial, setBodyFilter; issue 57): each
 // acts from the next step, on that body alone, and a refused one leaves the World as it was.
 // Every case at dt = 1/60 and 1/240 s.
 #include <gtest/gtest.h>
@@ -10,6 +10,8 @@
 
 #include "rbsim/body/shape_body.h"
 #include "rbsim/mass/mass_properties.h"
+#include "rbsim/world/body_changes.h"
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 #include "test_util.h"
 #include "refusal.h"
@@ -66,7 +68,7 @@ TEST_P(BodyChanges, RestitutionChangedBetweenBouncesGivesTheNewReboundHeight) {
         rebounds.push_back(top);
         top = 0.0;
         bounces = 0;
-        if (change && rebounds.size() == 1) world.setBodyMaterial(a, Material{kSecond, 0.6, 0.5});
+        if (change && rebounds.size() == 1) setBodyMaterial(world, a, Material{kSecond, 0.6, 0.5});
       }
       lastVy = vy;
     }
@@ -101,14 +103,14 @@ TEST_P(BodyChanges, MassChangeOnASpringGivesTheNewEquilibrium) {
   constexpr double kStiffness = 200.0, kDamping = 20.0;  // [N/m], [N s/m]: an underdamped 10 rad/s
   World world(settings());
   const BodyId id = world.addBody(boxDef(Vec3(0.2, 0.2, 0.2), 1.0));
-  world.addSpring(Spring{id, Vec3::Zero(), Vec3::Zero(), kStiffness, 0.0, kDamping});
+  addSpring(world, Spring{id, Vec3::Zero(), Vec3::Zero(), kStiffness, 0.0, kDamping});
   const auto settle = [&] {
     for (int i = 0; i < static_cast<int>(6.0 / dt()); ++i) world.step();
   };
   settle();
   EXPECT_NEAR(world.body(id).position().y(), -1.0 * kG / kStiffness, 1e-6);
   const Mat3 inertia = world.body(id).inertiaBody();
-  world.setBodyMass(id, 2.0, 2.0 * inertia);
+  setBodyMass(world, id, 2.0, 2.0 * inertia);
   EXPECT_EQ(world.body(id).mass(), 2.0);
   settle();
   EXPECT_NEAR(world.body(id).position().y(), -2.0 * kG / kStiffness, 1e-6);
@@ -129,7 +131,7 @@ TEST_P(BodyChanges, MassChangeKeepsTheVelocitiesAndLeavesCopiesAlone) {
   const World before = world;
   const Vec3 v = world.body(id).velocity(), omega = world.body(id).angularVelocity();
   const Mat3 inertia = cuboidInertia(3.0, Vec3(0.4, 0.2, 0.1));
-  world.setBodyMass(id, 3.0, inertia);
+  setBodyMass(world, id, 3.0, inertia);
   EXPECT_TRUE(allNear(world.body(id).velocity(), v, 1e-15));
   EXPECT_TRUE(allNear(world.body(id).angularVelocity(), omega, 1e-14));
   EXPECT_TRUE(allNear(world.body(id).state().linearMomentum, 3.0 * v, 1e-14));
@@ -157,12 +159,12 @@ TEST_P(BodyChanges, FrictionChangeStartsAndStopsSlidingAtTheFrictionAngle) {
   run(1.0);
   EXPECT_LT(std::abs(world.body(id).velocity().x()), 1e-3);  // held: tan 30 < 0.7
   const double x0 = world.body(id).position().x();
-  world.setBodyMaterial(id, material(0.3));
+  setBodyMaterial(world, id, material(0.3));
   run(0.5);
   const double down = kG * (std::sin(theta) - 0.3 * std::cos(theta));  // 2.357 m/s^2
   EXPECT_NEAR(world.body(id).velocity().x(), down * 0.5, 0.02 * down * 0.5);
   EXPECT_GT(world.body(id).position().x() - x0, 0.5 * down * 0.25 * 0.9);
-  world.setBodyMaterial(id, material(0.9));
+  setBodyMaterial(world, id, material(0.9));
   const double stop = kG * (0.9 * std::cos(theta) - std::sin(theta));  // 2.746 m/s^2
   run(world.body(id).velocity().x() / stop + 0.5);
   EXPECT_LT(std::abs(world.body(id).velocity().x()), 1e-3);  // stopped, and held again
@@ -184,7 +186,7 @@ TEST_P(BodyChanges, FilterChangeLetsABodyPassThroughFromTheNextStep) {
   EXPECT_FALSE(world.contacts().empty());
   CollisionFilter filter;
   filter.mask = ~std::uint64_t{2};
-  world.setBodyFilter(id, filter);
+  setBodyFilter(world, id, filter);
   EXPECT_EQ(world.body(id).filter(), filter);
   const double vy = world.body(id).velocity().y();
   const int steps = static_cast<int>(0.5 / dt());
@@ -210,7 +212,7 @@ TEST_P(BodyChanges, NewInertiaMovesOnAsABodyBuiltWithIt) {
     for (int i = 0; i < 30; ++i) changed.step();
     // The same principal moments about other axes.
     const Mat3 inertia = cuboidInertia(1.0, Vec3(0.1, 0.2, 0.4));
-    changed.setBodyMass(id, 1.0, inertia);
+    setBodyMass(changed, id, 1.0, inertia);
     World built(s);
     BodyDef same = boxDef(Vec3(0.4, 0.2, 0.1), 1.0);
     same.inertiaBody = inertia;
@@ -244,7 +246,7 @@ TEST_P(BodyChanges, AChangeWakesTheBodyAndItsIsland) {
   for (int i = 0; i < static_cast<int>(3.0 / dt()); ++i) world.step();
   ASSERT_FALSE(world.body(a).awake());
   ASSERT_FALSE(world.body(b).awake());
-  world.setBodyMaterial(a, Material{0.0, 0.3, 0.3});
+  setBodyMaterial(world, a, Material{0.0, 0.3, 0.3});
   EXPECT_TRUE(world.body(a).awake());
   world.step();
   EXPECT_TRUE(world.body(b).awake());
@@ -264,22 +266,22 @@ TEST_P(BodyChanges, BadValuesAreRefusedAndChangeNothing) {
     EXPECT_EQ(world.stateHash(), hash);
     EXPECT_EQ(world.body(id).mass(), 1.0);
     EXPECT_TRUE(allNear(world.body(id).inertiaBody(), inertia, 0.0));
-    EXPECT_EQ(world.bodyMaterial(id).restitution, 0.3);
-    EXPECT_EQ(world.bodyMaterial(id).staticFriction, 0.6);
+    EXPECT_EQ(bodyMaterial(world, id).restitution, 0.3);
+    EXPECT_EQ(bodyMaterial(world, id).staticFriction, 0.6);
     EXPECT_EQ(world.body(id).filter(), CollisionFilter{});
   };
-  refused([&] { world.setBodyMass(id, -1.0, inertia); }, "World::setBodyMass: body 'ball': mass: expected a positive number, got -1");
-  refused([&] { world.setBodyMass(id, NAN, inertia); }, "body 'ball': mass: expected a finite number");
-  refused([&] { world.setBodyMass(id, 1.0, -inertia); }, "body 'ball': inertia: expected a symmetric positive definite");
+  refused([&] { setBodyMass(world, id, -1.0, inertia); }, "setBodyMass: body 'ball': mass: expected a positive number, got -1");
+  refused([&] { setBodyMass(world, id, NAN, inertia); }, "body 'ball': mass: expected a finite number");
+  refused([&] { setBodyMass(world, id, 1.0, -inertia); }, "body 'ball': inertia: expected a symmetric positive definite");
   Mat3 skew = inertia;
   skew(0, 1) = 1e-3;
-  refused([&] { world.setBodyMass(id, 1.0, skew); }, "body 'ball': inertia: expected a symmetric positive definite");
-  refused([&] { world.setBodyMass(id, 1e200, inertia * 1e200); }, "body 'ball': mass: a mass of 1e+200 kg");
-  refused([&] { world.setBodyMaterial(id, Material{1.5, 0.6, 0.5}); }, "body 'ball': restitution: expected a coefficient in [0, 1]");
-  refused([&] { world.setBodyMaterial(id, Material{0.5, -0.1, 0.0}); }, "body 'ball': friction_static: expected a finite value >= 0 (mu_s)");
-  refused([&] { world.setBodyMaterial(id, Material{0.5, INFINITY, 0.5}); }, "body 'ball': friction_static: expected a finite value >= 0 (mu_s)");
-  refused([&] { world.setBodyMaterial(id, Material{0.5, 0.4, 0.5}); }, "body 'ball': friction_kinetic: expected mu_k <= friction_static (mu_s)");
-  EXPECT_THROW(world.setBodyMaterial(BodyId{}, Material{}), std::invalid_argument);  // a stale id
+  refused([&] { setBodyMass(world, id, 1.0, skew); }, "body 'ball': inertia: expected a symmetric positive definite");
+  refused([&] { setBodyMass(world, id, 1e200, inertia * 1e200); }, "body 'ball': mass: a mass of 1e+200 kg");
+  refused([&] { setBodyMaterial(world, id, Material{1.5, 0.6, 0.5}); }, "body 'ball': restitution: expected a coefficient in [0, 1]");
+  refused([&] { setBodyMaterial(world, id, Material{0.5, -0.1, 0.0}); }, "body 'ball': friction_static: expected a finite value >= 0 (mu_s)");
+  refused([&] { setBodyMaterial(world, id, Material{0.5, INFINITY, 0.5}); }, "body 'ball': friction_static: expected a finite value >= 0 (mu_s)");
+  refused([&] { setBodyMaterial(world, id, Material{0.5, 0.4, 0.5}); }, "body 'ball': friction_kinetic: expected mu_k <= friction_static (mu_s)");
+  EXPECT_THROW(setBodyMaterial(world, BodyId{}, Material{}), std::invalid_argument);  // a stale id
 }
 
 INSTANTIATE_TEST_SUITE_P(Dt, BodyChanges, testing::Values(1.0 / 60.0, 1.0 / 240.0),

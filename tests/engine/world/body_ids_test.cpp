@@ -11,6 +11,7 @@
 #include "../../sanitized_build.h"
 #include "test_util.h"
 #include "rbsim/body/shape_body.h"
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {
@@ -112,8 +113,8 @@ TEST(BodyIds, WhatActedOnADestroyedBodyGoesAndTheRestFollowTheirBodies) {
   onA.body = a;
   onC.body = c;
   onC.anchor = Vec3(6.0, 5.0, 0.0);
-  w.addSpring(onA);
-  w.addSpring(onC);
+  addSpring(w, onA);
+  addSpring(w, onC);
   ScriptedForce pushA, pushC;
   pushA.body = a;
   pushC.body = c;
@@ -121,11 +122,11 @@ TEST(BodyIds, WhatActedOnADestroyedBodyGoesAndTheRestFollowTheirBodies) {
   w.addForce(pushA);
   w.addForce(pushC);
   w.destroyBody(a);
-  ASSERT_EQ(w.springs().size(), 1u);
-  EXPECT_EQ(w.springs()[0].body, c);  // c moved into a's index, its spring with it, by id
-  EXPECT_EQ(w.springs()[0].anchor, Vec3(6.0, 5.0, 0.0));
-  ASSERT_EQ(w.scriptedForces().size(), 1u);
-  EXPECT_EQ(w.scriptedForces()[0].body, c);
+  ASSERT_EQ(springs(w).size(), 1u);
+  EXPECT_EQ(springs(w)[0].body, c);  // c moved into a's index, its spring with it, by id
+  EXPECT_EQ(springs(w)[0].anchor, Vec3(6.0, 5.0, 0.0));
+  ASSERT_EQ(scriptedForces(w).size(), 1u);
+  EXPECT_EQ(scriptedForces(w)[0].body, c);
   EXPECT_EQ(w.bodies()[w.indexOf(c)].name(), "c");
 }
 

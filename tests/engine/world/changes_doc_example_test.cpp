@@ -7,6 +7,9 @@
 #include <string>
 
 #include "rbsim/body/shape_body.h"
+#include "rbsim/world/body_changes.h"
+#include "rbsim/world/joint_changes.h"
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim::test::changes_doc_example {
@@ -19,12 +22,12 @@ TEST(ChangesDocExample, RunsAsDocumented) {
   rbsim::BodyDef def = rbsim::shapeBodyDef(rbsim::Shape::sphere(0.1), 1.0, "ball");
   def.position = rbsim::Vec3(0.0, 1.1, 0.0);
   const rbsim::BodyId ball = world.addBody(def);
-  const rbsim::World start = world;                          // a saved state
-  world.setBodyMaterial(ball, rbsim::Material{0.8, 0.6, 0.5});  // restitution, mu_s, mu_k, from the next step
-  world.setBodyMass(ball, 2.0, 2.0 * world.body(ball).inertiaBody());  // v and omega stay; P, L follow
+  const rbsim::World start = world;                                  // a saved state
+  rbsim::setBodyMaterial(world, ball, rbsim::Material{0.8, 0.6, 0.5});  // restitution, mu_s, mu_k, from the next step
+  rbsim::setBodyMass(world, ball, 2.0, 2.0 * world.body(ball).inertiaBody());  // v and omega stay; P, L follow
   rbsim::CollisionFilter nothing;
   nothing.mask = 0;
-  world.setBodyFilter(ball, nothing);                        // from the next step it collides with nothing
+  rbsim::setBodyFilter(world, ball, nothing);                        // from the next step it collides with nothing
   rbsim::BodyDef rod = rbsim::shapeBodyDef(rbsim::Shape::box(rbsim::Vec3(0.5, 0.05, 0.05)), 1.0, "rod");  // half extents [m]
   rod.position = rbsim::Vec3(3.5, 2.0, 0.0);
   rbsim::JointDef hinge;
@@ -32,21 +35,21 @@ TEST(ChangesDocExample, RunsAsDocumented) {
   hinge.bodyA = world.addBody(rod);
   hinge.anchor = rbsim::Vec3(3.0, 2.0, 0.0);
   const std::size_t j = world.addJoint(hinge);
-  world.setJointMotor(j, true, -2.0, 50.0);                  // on: speed [rad/s], largest torque [N m]
-  world.setJointLimits(j, true, -1.0, 1.0);                  // [rad]
+  rbsim::setJointMotor(world, j, true, -2.0, 50.0);                  // on: speed [rad/s], largest torque [N m]
+  rbsim::setJointLimits(world, j, true, -1.0, 1.0);                  // [rad]
   world.step();
-  world.removeJoint(j);                                      // later joints move down one index
+  rbsim::removeJoint(world, j);                                      // later joints move down one index
   std::string refused;
   try {
-    world.setBodyMaterial(ball, rbsim::Material{1.5, 0.6, 0.5});
+    rbsim::setBodyMaterial(world, ball, rbsim::Material{1.5, 0.6, 0.5});
   } catch (const std::invalid_argument& e) {
-    refused = e.what();  // World::setBodyMaterial: body 'ball': restitution: expected a coefficient in [0, 1]
+    refused = e.what();  // setBodyMaterial: body 'ball': restitution: expected a coefficient in [0, 1]
   }
-  world = start;                                             // back to the saved state, old values and all
+  world = start;                                                     // back to the saved state, old values and all
   // docs/cpp-api.md end
-  EXPECT_EQ(refused, "World::setBodyMaterial: body 'ball': restitution: expected a coefficient in [0, 1]");
+  EXPECT_EQ(refused, "setBodyMaterial: body 'ball': restitution: expected a coefficient in [0, 1]");
   EXPECT_EQ(world.body(ball).mass(), 1.0);  // the saved World's
-  EXPECT_EQ(world.bodyMaterial(ball).restitution, 0.0);
+  EXPECT_EQ(bodyMaterial(world, ball).restitution, 0.0);
   EXPECT_EQ(world.bodies().size(), 1u);
 }
 

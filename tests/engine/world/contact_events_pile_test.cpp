@@ -1,4 +1,4 @@
-// World::contactEvents on many bodies (issue 57): on a random pile of boxes and balls the begins
+// contactEvents(world) on many bodies (issue 57): on a random pile of boxes and balls the begins
 // and ends of every step are exactly the pairs of shapes that entered and left the contacts()
 // set (brute force, by id), bodies destroyed mid-run included; a resting stack is silent once
 // settled, asleep or not; compound children and fracture name their pairs.
@@ -14,6 +14,7 @@
 #include "rbsim/body/shape_body.h"
 #include "rbsim/fracture/fracture.h"
 #include "rbsim/math/uniform_random.h"
+#include "rbsim/world/queries.h"
 #include "rbsim/world/world.h"
 #include "test_util.h"
 
@@ -88,8 +89,8 @@ TEST_P(ContactEventsPile, EventsAreTheStepToStepDifferenceOfTheContactSets) {
     std::set<PairKey> began, ended;
     std::set_difference(after.begin(), after.end(), before.begin(), before.end(), std::inserter(began, began.end()));
     std::set_difference(before.begin(), before.end(), after.begin(), after.end(), std::inserter(ended, ended.end()));
-    ASSERT_EQ(keysOf(w.contactEvents().begin), began) << "step " << step;
-    ASSERT_EQ(keysOf(w.contactEvents().end), ended) << "step " << step;
+    ASSERT_EQ(keysOf(contactEvents(w).begin), began) << "step " << step;
+    ASSERT_EQ(keysOf(contactEvents(w).end), ended) << "step " << step;
     begins += began.size();
     ends += ended.size();
   }
@@ -118,7 +119,7 @@ TEST_P(ContactEventsStack, ARestingStackIsSilentOnceSettledAsleepOrNot) {
   for (int step = 0; step < settle; ++step) w.step();
   for (int step = 0; step < settle; ++step) {
     w.step();
-    const ContactEvents& e = w.contactEvents();
+    const ContactEvents& e = contactEvents(w);
     ASSERT_TRUE(e.begin.empty() && e.end.empty() && e.hit.empty()) << "step " << settle + step;
   }
   if (GetParam()) {  // it fell asleep, and kept its pairs touching
@@ -157,7 +158,7 @@ TEST(ContactEventsCompound, TheTouchingChildrenAreNamed) {
   std::vector<ContactBeginEvent> begun;
   for (int step = 0; step < 120; ++step) {
     w.step();
-    for (const ContactBeginEvent& e : w.contactEvents().begin) begun.push_back(e);
+    for (const ContactBeginEvent& e : contactEvents(w).begin) begun.push_back(e);
   }
   const auto ballOnTable = std::find_if(begun.begin(), begun.end(), [&](const ContactBeginEvent& e) { return e.pair.bodyB == b; });
   ASSERT_NE(ballOnTable, begun.end());
@@ -196,17 +197,17 @@ TEST(ContactEventsFracture, ABrokenBodyEndsItsPairs) {
   projectile.velocity = Vec3(6.0, 0.0, 0.0);
   const BodyId p = w.addBody(projectile);
   bool touched = false;
-  for (int step = 0; step < 120 && w.fractureEvents().empty(); ++step) {
+  for (int step = 0; step < 120 && fractureEvents(w).empty(); ++step) {
     w.step();
-    touched = touched || !w.contactEvents().begin.empty();
+    touched = touched || !contactEvents(w).begin.empty();
   }
   ASSERT_TRUE(touched);
-  ASSERT_EQ(w.fractureEvents().size(), 1u);
-  const std::vector<ContactEndEvent>& ends = w.contactEvents().end;
+  ASSERT_EQ(fractureEvents(w).size(), 1u);
+  const std::vector<ContactEndEvent>& ends = contactEvents(w).end;
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(ends[0].pair.bodyA, target);
   EXPECT_EQ(ends[0].pair.bodyB, p);
-  EXPECT_FALSE(w.contactEvents().hit.empty());  // 6 m/s against the slab
+  EXPECT_FALSE(contactEvents(w).hit.empty());  // 6 m/s against the slab
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// World::contactEvents (world/contact_events.h, issue 57): a ball dropped on a box begins touching
+// contactEvents(world) (world/contact_events.h, issue 57): a ball dropped on a box begins touching
 // at the step its manifold first appears, is hit at sqrt(2 g h), ends when it bounces off and
 // begins again; removed and broken bodies end their pairs; a resting stack is silent; compound
 // children are named; and on a random pile the events are exactly the step-to-step difference of
@@ -66,7 +66,7 @@ TEST_P(ContactEventsDrop, OneBeginWhereTheManifoldAppearsThenOneHitAtTheImpactSp
     const double bottom = w.body(ball_).position().y() - kRadius;  // where a collide-first step collides
     const double falling = -w.body(ball_).velocity().y();          // [m/s]
     w.step();
-    const ContactEvents& e = w.contactEvents();
+    const ContactEvents& e = contactEvents(w);
     ends += static_cast<int>(e.end.size());
     if (!e.begin.empty()) {
       ++begins;
@@ -110,7 +110,7 @@ TEST_P(ContactEventsDrop, ABounceEndsThePairAndTheFallBackBeginsItAgain) {
   std::vector<double> speeds;
   for (int step = 0; step < static_cast<int>(1.5 / w.settings().timeStep); ++step) {
     w.step();
-    const ContactEvents& e = w.contactEvents();
+    const ContactEvents& e = contactEvents(w);
     for (std::size_t k = 0; k < e.begin.size(); ++k) kinds.push_back('b');
     for (const ContactHitEvent& hit : e.hit) {
       kinds.push_back('h');
@@ -130,8 +130,8 @@ TEST_P(ContactEventsDrop, NoHitBelowTheHitSpeed) {
   int begins = 0;
   for (int step = 0; step < static_cast<int>(1.0 / w.settings().timeStep); ++step) {
     w.step();
-    begins += static_cast<int>(w.contactEvents().begin.size());
-    EXPECT_TRUE(w.contactEvents().hit.empty());
+    begins += static_cast<int>(contactEvents(w).begin.size());
+    EXPECT_TRUE(contactEvents(w).hit.empty());
   }
   EXPECT_EQ(begins, 1);
   Settings s = w.settings();  // and the same landing is a hit under a lower threshold
@@ -141,7 +141,7 @@ TEST_P(ContactEventsDrop, NoHitBelowTheHitSpeed) {
   int hits = 0;
   for (int step = 0; step < static_cast<int>(1.0 / s.timeStep); ++step) {
     again.step();
-    hits += static_cast<int>(again.contactEvents().hit.size());
+    hits += static_cast<int>(contactEvents(again).hit.size());
   }
   EXPECT_EQ(hits, 1);
 }
@@ -155,22 +155,22 @@ TEST_P(ContactEventsDrop, DestroyedAndKilledBodiesEndTheirPairsNamingTheirStaleI
   ASSERT_EQ(w.contacts().size(), 2u);
   w.destroyBody(ball_);
   w.step();  // the end comes with the next step's events
-  ASSERT_EQ(w.contactEvents().end.size(), 1u);
-  expectBoxBall(w.contactEvents().end[0].pair, box_, ball_);
+  ASSERT_EQ(contactEvents(w).end.size(), 1u);
+  expectBoxBall(contactEvents(w).end[0].pair, box_, ball_);
   EXPECT_FALSE(w.isValid(ball_));
-  EXPECT_TRUE(w.contactEvents().begin.empty());
+  EXPECT_TRUE(contactEvents(w).begin.empty());
   // The kill volume takes the other ball at the start of a step: its end is that step's.
-  w.setKillVolume(Aabb{Vec3(-5, -5, -5), Vec3(0.5, 5, 5)});
+  setKillVolume(w, Aabb{Vec3(-5, -5, -5), Vec3(0.5, 5, 5)});
   w.step();
-  ASSERT_EQ(w.removedBodies().size(), 1u);
-  ASSERT_EQ(w.contactEvents().end.size(), 1u);
-  expectBoxBall(w.contactEvents().end[0].pair, box_, second);
+  ASSERT_EQ(removedBodies(w).size(), 1u);
+  ASSERT_EQ(contactEvents(w).end.size(), 1u);
+  expectBoxBall(contactEvents(w).end[0].pair, box_, second);
 }
 
 TEST_P(ContactEventsDrop, AFailedStepLeavesTheLastStepsEvents) {
   World w = drop(1.0, 0.0);
-  while (w.contactEvents().begin.empty()) w.step();
-  const ContactBeginEvent begun = w.contactEvents().begin[0];
+  while (contactEvents(w).begin.empty()) w.step();
+  const ContactBeginEvent begun = contactEvents(w).begin[0];
   // A spring no double holds (k |d| overflows) on a body far away: the next step throws. (Not on
   // the ball: a failed step keeps the warm starts of its attempt, world.h.)
   BodyDef far = shapeBodyDef(Shape::sphere(kRadius), 1.0, "far");
@@ -179,14 +179,14 @@ TEST_P(ContactEventsDrop, AFailedStepLeavesTheLastStepsEvents) {
   wild.body = w.addBody(far);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  w.addSpring(wild);
+  addSpring(w, wild);
   EXPECT_THROW(w.step(), SimulationError);
-  ASSERT_EQ(w.contactEvents().begin.size(), 1u);
-  EXPECT_EQ(w.contactEvents().begin[0].point, begun.point);
-  w.removeSpring(0);
+  ASSERT_EQ(contactEvents(w).begin.size(), 1u);
+  EXPECT_EQ(contactEvents(w).begin[0].point, begun.point);
+  removeSpring(w, 0);
   w.step();  // the retry: the pair goes on touching, nothing begins twice
-  EXPECT_TRUE(w.contactEvents().begin.empty());
-  EXPECT_TRUE(w.contactEvents().end.empty());
+  EXPECT_TRUE(contactEvents(w).begin.empty());
+  EXPECT_TRUE(contactEvents(w).end.empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(SolversAndSteps, ContactEventsDrop,

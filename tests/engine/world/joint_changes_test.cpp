@@ -1,4 +1,4 @@
-// Changes of a running World's joints (World::setJointMotor, setJointLimits, removeJoint; issue
+// Changes of a running World's joints (world/joint_changes.h: setJointMotor, setJointLimits, removeJoint; issue
 // 57): each acts from the next step, a refused one leaves the World as it was. At dt = 1/60 and
 // 1/240 s.
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "rbsim/world/joint_changes.h"
 #include "rbsim/world/joint_reading.h"
 #include "rbsim/world/world.h"
 #include "test_util.h"
@@ -47,12 +48,12 @@ TEST_P(JointChanges, MotorReachesTheNewTargetSpeed) {
   world.addJoint(def);
   run(world, 0.5);
   EXPECT_NEAR(readJoint(world, 0).speed, 1.0, 1e-6);
-  world.setJointMotor(0, true, -2.0, 100.0);
+  setJointMotor(world, 0, true, -2.0, 100.0);
   EXPECT_EQ(world.joints()[0].def.motorSpeed, -2.0);
   run(world, 0.1);
   EXPECT_NEAR(readJoint(world, 0).speed, -2.0, 1e-6);
   // Off, the motor lets the wheel spin on freely at the speed it had.
-  world.setJointMotor(0, false, 0.0, 0.0);
+  setJointMotor(world, 0, false, 0.0, 0.0);
   EXPECT_FALSE(world.joints()[0].def.motor);
   const double speed = readJoint(world, 0).speed;
   run(world, 0.2);
@@ -72,14 +73,14 @@ TEST_P(JointChanges, LimitsSetWhileRunningHoldTheAngle) {
   def.bodyA = id;
   world.addJoint(def);
   world.step();
-  world.setJointLimits(0, true, -0.3, 0.3);
+  setJointLimits(world, 0, true, -0.3, 0.3);
   double most = 0.0;
   for (int i = 0; i < static_cast<int>(2.0 / dt()); ++i) {
     world.step();
     most = std::max(most, std::abs(readJoint(world, 0).angle));
   }
   EXPECT_LT(most, 0.3 + 0.01);
-  world.setJointLimits(0, false, 0.0, 0.0);
+  setJointLimits(world, 0, false, 0.0, 0.0);
   // Turning about the pivot at 2 rad/s: omega and the centre's v = omega x (x - pivot) together.
   world.body(id).setAngularVelocity(Vec3(0.0, 0.0, 2.0));
   world.body(id).setVelocity(Vec3(0.0, 0.0, 2.0).cross(world.body(id).position()));
@@ -107,7 +108,7 @@ TEST_P(JointChanges, RemovedJointLetsTheBodyFallFreely) {
   world.addJoint(hang);
   run(world, 1.0);
   EXPECT_NEAR(world.body(id).position().y(), -0.5, 1e-3);  // hanging
-  world.removeJoint(0);
+  removeJoint(world, 0);
   ASSERT_EQ(world.joints().size(), 1u);
   EXPECT_EQ(world.joints()[0].def.name, "second");
   EXPECT_EQ(world.joints()[0].a, world.indexOf(second));
@@ -134,7 +135,7 @@ TEST_P(JointChanges, RemovedJointsBodiesCollideAgain) {
   world.addJoint(def);
   world.step();
   EXPECT_TRUE(world.contacts().empty());
-  world.removeJoint(0);
+  removeJoint(world, 0);
   world.step();
   EXPECT_FALSE(world.contacts().empty());
 }
@@ -165,17 +166,17 @@ TEST_P(JointChanges, BadValuesAreRefusedAndChangeNothing) {
     const JointDef& d = world.joints()[0].def;
     EXPECT_TRUE(d.motor && d.motorSpeed == 1.0 && d.maxMotorTorque == 5.0 && !d.limits);
   };
-  refused([&] { world.setJointMotor(0, true, 2e5, 5.0); },
-          "World::setJointMotor: joint 0 ('elbow'): motor.speed: expected a speed of at most 100000 rad/s either way, got 200000");
-  refused([&] { world.setJointMotor(0, true, 1.0, -5.0); }, "motor.max_torque: expected a torque from 0 to 1e+12 N m, got -5");
-  refused([&] { world.setJointMotor(0, true, NAN, 5.0); }, "motor.speed: expected a speed of at most");
-  refused([&] { world.setJointLimits(0, true, 1.0, -1.0); },
+  refused([&] { setJointMotor(world, 0, true, 2e5, 5.0); },
+          "setJointMotor: joint 0 ('elbow'): motor.speed: expected a speed of at most 100000 rad/s either way, got 200000");
+  refused([&] { setJointMotor(world, 0, true, 1.0, -5.0); }, "motor.max_torque: expected a torque from 0 to 1e+12 N m, got -5");
+  refused([&] { setJointMotor(world, 0, true, NAN, 5.0); }, "motor.speed: expected a speed of at most");
+  refused([&] { setJointLimits(world, 0, true, 1.0, -1.0); },
           "limits: expected [lower, upper] angles in radians with -pi <= lower <= upper <= pi");
-  refused([&] { world.setJointLimits(0, true, -4.0, 0.0); }, "limits: expected [lower, upper] angles");
-  refused([&] { world.setJointMotor(1, true, 1.0, 5.0); }, "motor: a weld joint takes no motor");
-  refused([&] { world.setJointLimits(1, true, -1.0, 1.0); }, "limits: a weld joint takes no limits");
-  refused([&] { world.setJointMotor(2, true, 1.0, 5.0); }, "joint 2: no such joint; expected an index below 2");
-  refused([&] { world.removeJoint(2); }, "World::removeJoint: joint 2: no such joint");
+  refused([&] { setJointLimits(world, 0, true, -4.0, 0.0); }, "limits: expected [lower, upper] angles");
+  refused([&] { setJointMotor(world, 1, true, 1.0, 5.0); }, "motor: a weld joint takes no motor");
+  refused([&] { setJointLimits(world, 1, true, -1.0, 1.0); }, "limits: a weld joint takes no limits");
+  refused([&] { setJointMotor(world, 2, true, 1.0, 5.0); }, "joint 2: no such joint; expected an index below 2");
+  refused([&] { removeJoint(world, 2); }, "removeJoint: joint 2: no such joint");
 }
 
 INSTANTIATE_TEST_SUITE_P(Dt, JointChanges, testing::Values(1.0 / 60.0, 1.0 / 240.0),

@@ -40,7 +40,7 @@ TEST_P(KinematicMotionTest, TurningAboutAPivotStaysOnTheCircle) {
   m.body = door;
   m.pivot = Vec3::Zero();
   m.angularVelocity = Vec3(0.0, 0.0, 2.0);
-  w.setKinematicMotion(m);
+  setKinematicMotion(w, m);
   const int n = steps(1.3);
   for (int i = 0; i < n; ++i) w.step();
   const double t = n * GetParam();
@@ -65,7 +65,7 @@ TEST_P(KinematicMotionTest, KeyframesAreMetAtTheirTimes) {
     m.loop = loop;
     const Quat quarter(Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()));
     m.keys = {{0.0, Vec3::Zero(), Quat::Identity()}, {1.0, Vec3(0, 2, 0), quarter}, {2.0, Vec3(1, 2, 0), quarter}};
-    w.setKinematicMotion(m);
+    setKinematicMotion(w, m);
     const auto at = [&](double seconds) {
       while (w.time() < seconds - 0.5 * GetParam()) w.step();
     };
@@ -96,7 +96,7 @@ TEST_P(KinematicMotionTest, ATurntableCarriesABoxByFriction) {
   KinematicMotion m;
   m.body = table;
   m.angularVelocity = Vec3(0.0, omega, 0.0);
-  w.setKinematicMotion(m);
+  setKinematicMotion(w, m);
   BodyDef box = shapeBodyDef(Shape::box(Vec3::Constant(0.1)), 1.0, "box");
   box.position = Vec3(R, 0.2, 0.0);
   const BodyId id = w.addBody(box);
@@ -124,10 +124,10 @@ TEST(KinematicMotion, BadMotionsAreRefused) {
   const BodyId k = w.addBody(dynamic);
   KinematicMotion m;
   m.body = ball;
-  EXPECT_THROW(w.setKinematicMotion(m), std::invalid_argument);  // not kinematic
+  EXPECT_THROW(setKinematicMotion(w, m), std::invalid_argument);  // not kinematic
   m.body = k;
   m.kind = KinematicMotion::Kind::Keyframes;
-  EXPECT_THROW(w.setKinematicMotion(m), std::invalid_argument);  // no keys
+  EXPECT_THROW(setKinematicMotion(w, m), std::invalid_argument);  // no keys
   m.keys = {{1.0, Vec3::Zero(), Quat::Identity()}, {1.0, Vec3::Ones(), Quat::Identity()}};
   EXPECT_NE(checkKinematicMotion(m).find("keys[1].time"), std::string::npos);
   m.keys = {{1.0, Vec3::Zero(), Quat(2, 0, 0, 0)}};
@@ -137,8 +137,8 @@ TEST(KinematicMotion, BadMotionsAreRefused) {
   EXPECT_NE(checkKinematicMotion(m).find("loop"), std::string::npos);
   m.kind = KinematicMotion::Kind::Pivot;
   m.angularVelocity = Vec3(0, std::nan(""), 0);
-  EXPECT_THROW(w.setKinematicMotion(m), std::invalid_argument);
-  EXPECT_TRUE(w.kinematicMotions().empty());
+  EXPECT_THROW(setKinematicMotion(w, m), std::invalid_argument);
+  EXPECT_TRUE(kinematicMotions(w).empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(TimeSteps, KinematicMotionTest, testing::Values(1.0 / 60.0, 1.0 / 240.0),

@@ -49,23 +49,23 @@ class PresetSpawning : public testing::TestWithParam<double> {
 // Removed ids are exactly a burst's, never issued again, and every joint joins two bones of one figure.
 TEST_P(PresetSpawning, BurstsOfRagdollsComeAndGoWithTheirJoints) {
   World w(settings());
-  w.addSpawner(figureRain());
+  addSpawner(w, figureRain());
   std::set<std::pair<std::uint32_t, std::uint32_t>> issued;
   std::map<double, std::vector<BodyId>> bursts;  // by the time they came
   while (w.time() < 2.0) {
     const double t = w.time();
     w.step();
-    for (const BodyId id : w.spawnedBodies()) EXPECT_TRUE(issued.insert({id.slot, id.generation}).second) << "an id issued twice";
-    if (!w.spawnedBodies().empty()) {
-      EXPECT_EQ(w.spawnedBodies().size(), 2 * kBoneCount) << "at " << t;
-      bursts[t] = w.spawnedBodies();
+    for (const BodyId id : spawnedBodies(w)) EXPECT_TRUE(issued.insert({id.slot, id.generation}).second) << "an id issued twice";
+    if (!spawnedBodies(w).empty()) {
+      EXPECT_EQ(spawnedBodies(w).size(), 2 * kBoneCount) << "at " << t;
+      bursts[t] = spawnedBodies(w);
     }
-    if (!w.removedBodies().empty()) {
+    if (!removedBodies(w).empty()) {
       // The burst 0.75 s older, to the half step the schedule rounds to.
       const auto oldest = bursts.begin();
       ASSERT_NE(oldest, bursts.end());
       EXPECT_NEAR(t - oldest->first, 0.75, 0.5 * GetParam());
-      EXPECT_EQ(w.removedBodies(), oldest->second);
+      EXPECT_EQ(removedBodies(w), oldest->second);
       for (const BodyId id : oldest->second) EXPECT_FALSE(w.isValid(id));
       bursts.erase(oldest);
     }
@@ -80,7 +80,7 @@ TEST_P(PresetSpawning, BurstsOfRagdollsComeAndGoWithTheirJoints) {
       EXPECT_EQ(a.substr(0, a.find('_', 5)), b.substr(0, b.find('_', 5))) << a << " joined to " << b;
     }
   }
-  EXPECT_EQ(w.spawners()[0].bursts, 4u);
+  EXPECT_EQ(spawners(w)[0].bursts, 4u);
 }
 
 // Two figures spawned overlapping (0.2 m apart) push each other apart as they fall, their joints
@@ -92,7 +92,7 @@ TEST_P(PresetSpawning, FallingFiguresKeepTheirMomentumLaw) {
   def.offsets = {Vec3(-0.1, 0, 0), Vec3(0.1, 0, 0)};
   def.lifetime = std::numeric_limits<double>::infinity();
   def.end = 0.1;  // one burst
-  w.addSpawner(def);
+  addSpawner(w, def);
   const auto momentum = [&](std::size_t first, std::size_t bones) {
     Vec3 p = Vec3::Zero();
     double m = 0.0;
@@ -134,7 +134,7 @@ TEST_P(PresetSpawning, OffsetsPlaceCopiesAndTheKillVolumeMayTakeThemFirst) {
   def.randomOrientation = false;
   def.period = 0.4;
   def.lifetime = 1.0;
-  w.addSpawner(def);
+  addSpawner(w, def);
   Aabb volume;
   volume.min = Vec3(-10, 1, -10);  // a ball from 3 m leaves it after 0.64 s, before its lifetime
   volume.max = Vec3(10, 10, 10);
@@ -148,12 +148,12 @@ TEST_P(PresetSpawning, OffsetsPlaceCopiesAndTheKillVolumeMayTakeThemFirst) {
       EXPECT_EQ(b.position().z(), w.bodies()[3 * point].position().z());
     }
   }
-  w.setKillVolume(volume);
+  setKillVolume(w, volume);
   std::size_t removed = 0;
   while (w.time() < 3.0) {
     w.step();
-    removed += w.removedBodies().size();
-    for (const BodyId id : w.removedBodies()) EXPECT_FALSE(w.isValid(id));
+    removed += removedBodies(w).size();
+    for (const BodyId id : removedBodies(w)) EXPECT_FALSE(w.isValid(id));
   }
   // Bursts at 0, 0.4, ..., 2.8 s (8 of 6 balls); those of 2.4 and 2.8 s are still up at 3.0 s.
   EXPECT_EQ(removed + w.bodies().size(), 48u);
@@ -163,7 +163,7 @@ TEST_P(PresetSpawning, OffsetsPlaceCopiesAndTheKillVolumeMayTakeThemFirst) {
 // A copy of the World mid-run carries the bursts still alive and their removal times with it.
 TEST_P(PresetSpawning, ACopyRemovesWhatTheOriginalRemoves) {
   World w(settings());
-  w.addSpawner(figureRain());
+  addSpawner(w, figureRain());
   while (w.time() < 0.6) w.step();
   World copy(w);
   for (int i = 0; i < static_cast<int>(0.5 / GetParam()); ++i) {
@@ -194,12 +194,12 @@ TEST(PresetSpawningDefs, BadDefsAreRefused) {
   def = figureRain();
   def.ragdoll->mass = -70.0;
   World soft{Settings{}};
-  EXPECT_THROW(soft.addSpawner(def), std::invalid_argument) << "the figure's checks, before its first burst";
-  EXPECT_TRUE(soft.spawners().empty());
+  EXPECT_THROW(addSpawner(soft, def), std::invalid_argument) << "the figure's checks, before its first burst";
+  EXPECT_TRUE(spawners(soft).empty());
   Settings pgs;
   pgs.solver = Settings::ContactSolverMethod::Pgs;
   World w(pgs);
-  EXPECT_THROW(w.addSpawner(figureRain()), std::invalid_argument) << "a ragdoll needs the soft step";
+  EXPECT_THROW(addSpawner(w, figureRain()), std::invalid_argument) << "a ragdoll needs the soft step";
 }
 
 nlohmann::json ragdollSpawnScene() {

@@ -43,15 +43,15 @@ class Spawning : public testing::TestWithParam<double> {
 // no faster than the speed range, named ball_0 ... ball_11 in turn.
 TEST_P(Spawning, BurstsComeAtTheirTimesWithTheirCount) {
   World w(settings());
-  w.addSpawner(ballRain());
+  addSpawner(w, ballRain());
   std::vector<double> burstTimes;
   while (w.time() < 2.0) {
     const double t = w.time();
     w.step();
-    if (!w.spawnedBodies().empty()) {
+    if (!spawnedBodies(w).empty()) {
       burstTimes.push_back(t);
-      EXPECT_EQ(w.spawnedBodies().size(), 3u);
-      for (const BodyId id : w.spawnedBodies()) {
+      EXPECT_EQ(spawnedBodies(w).size(), 3u);
+      for (const BodyId id : spawnedBodies(w)) {
         const RigidBody& b = w.body(id);
         // Drawn in the region at the step's start, then moved by one step: within |v| dt + g dt^2.
         const double slack = 2.0 * GetParam() + 9.81 * GetParam() * GetParam();
@@ -69,11 +69,11 @@ TEST_P(Spawning, BurstsComeAtTheirTimesWithTheirCount) {
 // The same seed gives the same bodies in the same places, however many steps a burst falls in.
 TEST_P(Spawning, TheSeedDecidesTheDraws) {
   World a(settings()), b(settings()), c(settings());
-  a.addSpawner(ballRain());
-  b.addSpawner(ballRain());
+  addSpawner(a, ballRain());
+  addSpawner(b, ballRain());
   SpawnerDef other = ballRain();
   other.seed = 2;
-  c.addSpawner(other);
+  addSpawner(c, other);
   for (int i = 0; i < static_cast<int>(1.0 / GetParam()); ++i) {
     a.step();
     b.step();
@@ -89,7 +89,7 @@ TEST_P(Spawning, TheKillVolumeRemovesWhatFallsOutAndItsIdsStayStale) {
   World w(settings());
   SpawnerDef rain = ballRain();
   rain.end = 3.0;
-  w.addSpawner(rain);
+  addSpawner(w, rain);
   // A static shelf whose centre lies outside the volume stays: it never leaves it (issue 56, item 5).
   BodyDef shelf = shapeBodyDef(Shape::box(Vec3(2, 0.1, 2)), 1.0, "shelf");
   shelf.isStatic = true;
@@ -98,16 +98,16 @@ TEST_P(Spawning, TheKillVolumeRemovesWhatFallsOutAndItsIdsStayStale) {
   Aabb volume;
   volume.min = Vec3(-10, 0, -10);
   volume.max = Vec3(10, 10, 10);
-  w.setKillVolume(volume);
+  setKillVolume(w, volume);
   std::vector<BodyId> removed;
   std::set<std::pair<std::uint32_t, std::uint32_t>> everIssued;
   std::size_t most = 0;
   while (w.time() < 4.0) {
     w.step();
-    for (const BodyId id : w.spawnedBodies()) {
+    for (const BodyId id : spawnedBodies(w)) {
       EXPECT_TRUE(everIssued.insert({id.slot, id.generation}).second) << "an id issued twice";
     }
-    for (const BodyId id : w.removedBodies()) removed.push_back(id);
+    for (const BodyId id : removedBodies(w)) removed.push_back(id);
     for (const RigidBody& b : w.bodies()) {
       if (!b.isStatic()) {
         EXPECT_GE(b.position().y(), -1.0) << "removed once out";
@@ -131,7 +131,7 @@ TEST(SpawningDefs, BadDefsAreRefused) {
   World w{Settings{}};
   SpawnerDef def = ballRain();
   def.period = 0.0;
-  EXPECT_THROW(w.addSpawner(def), std::invalid_argument);
+  EXPECT_THROW(addSpawner(w, def), std::invalid_argument);
   def = ballRain();
   def.regionMax.x() = -2.0;
   EXPECT_NE(checkSpawner(def).find("region"), std::string::npos);
@@ -140,10 +140,10 @@ TEST(SpawningDefs, BadDefsAreRefused) {
   EXPECT_NE(checkSpawner(def).find("end"), std::string::npos);
   def = ballRain();
   def.prototype.mass = -1.0;
-  EXPECT_THROW(w.addSpawner(def), std::invalid_argument);
+  EXPECT_THROW(addSpawner(w, def), std::invalid_argument);
   Aabb nan;
   nan.min = Vec3(std::nan(""), 0, 0);
-  EXPECT_THROW(w.setKillVolume(nan), std::invalid_argument);
+  EXPECT_THROW(setKillVolume(w, nan), std::invalid_argument);
 }
 
 TEST(SpawningScene, PeriodicSpawnBlocksAndTheKillVolumeAreRead) {

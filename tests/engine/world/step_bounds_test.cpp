@@ -70,18 +70,18 @@ TEST(StepBounds, ASpawnerPeriodShorterThanTheStepIsRefused) {
   s.timeStep = 1.0 / 60.0;
   World w(s);
   try {
-    w.addSpawner(quickRain(1e-9));
+    addSpawner(w, quickRain(1e-9));
     FAIL() << "period 1e-9 s was taken";
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("spawner 'drip': period: 1e-09 s is shorter than the time step"), std::string::npos) << message;
     EXPECT_NE(message.find("16666667 bursts in one step"), std::string::npos) << message;
   }
-  EXPECT_THROW(w.addSpawner(quickRain(0.5 * s.timeStep)), std::invalid_argument);
-  EXPECT_TRUE(w.spawners().empty());
-  w.addSpawner(quickRain(s.timeStep));
-  w.addSpawner(quickRain(0.016666666667 - 1e-12));  // 1/60 s to ten digits, rounded down
-  EXPECT_EQ(w.spawners().size(), 2u);
+  EXPECT_THROW(addSpawner(w, quickRain(0.5 * s.timeStep)), std::invalid_argument);
+  EXPECT_TRUE(spawners(w).empty());
+  addSpawner(w, quickRain(s.timeStep));
+  addSpawner(w, quickRain(0.016666666667 - 1e-12));  // 1/60 s to ten digits, rounded down
+  EXPECT_EQ(spawners(w).size(), 2u);
   // The time step cannot grow past a spawner's period either.
   Settings longer = s;
   longer.timeStep = 0.05;
@@ -89,7 +89,7 @@ TEST(StepBounds, ASpawnerPeriodShorterThanTheStepIsRefused) {
   EXPECT_EQ(w.settings().timeStep, s.timeStep);
   // A burst a step: 60 steps of a 1/60 s period add 60 bodies.
   World one(s);
-  one.addSpawner(quickRain(s.timeStep));
+  addSpawner(one, quickRain(s.timeStep));
   for (int i = 0; i < 60; ++i) one.step();
   EXPECT_EQ(one.bodies().size(), 60u);
 }

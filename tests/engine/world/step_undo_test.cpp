@@ -57,7 +57,7 @@ TEST_P(StepUndo, AFailedStepLeavesTheWorldAsItWasAndARetryTakesTheStepWithoutThe
   wild.body = w.idAt(1);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  w.addSpring(wild);
+  addSpring(w, wild);
   const std::uint64_t hash = w.stateHash();
   const std::uint64_t steps = w.stepCount();
   EXPECT_THROW(w.step(), SimulationError);
@@ -65,7 +65,7 @@ TEST_P(StepUndo, AFailedStepLeavesTheWorldAsItWasAndARetryTakesTheStepWithoutThe
   EXPECT_EQ(w.stepCount(), steps);
   EXPECT_THROW(w.step(), SimulationError);  // the same step fails the same way: nothing compounds
   EXPECT_EQ(w.stateHash(), hash);
-  w.removeSpring(0);
+  removeSpring(w, 0);
   World twin = without;
   w.step();
   twin.step();
@@ -99,15 +99,15 @@ TEST_P(StepUndo, AFailedStepThatSpawnsAndRemovesLeavesTheBodiesAsTheyWere) {
   spawn.regionMin = Vec3(-1, 20, -1);
   spawn.regionMax = Vec3(1, 21, 1);
   spawn.seed = 7;
-  w.addSpawner(spawn);
-  w.setKillVolume(Aabb{Vec3(-100, 9.8, -100), Vec3(100, 100, 100)});  // b0..b2 fly up from y = 10
+  addSpawner(w, spawn);
+  setKillVolume(w, Aabb{Vec3(-100, 9.8, -100), Vec3(100, 100, 100)});  // b0..b2 fly up from y = 10
   for (int i = 0; i < 2; ++i) w.step();  // steps 11 and 12: a burst, then nothing
   const World without = w;
   Spring wild;
   wild.body = w.idAt(1);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  w.addSpring(wild);
+  addSpring(w, wild);
   const auto names = [](const World& world) {
     std::vector<std::string> out;
     for (const RigidBody& b : world.bodies()) out.push_back(b.name());
@@ -122,9 +122,9 @@ TEST_P(StepUndo, AFailedStepThatSpawnsAndRemovesLeavesTheBodiesAsTheyWere) {
   EXPECT_EQ(names(w), namesBefore);
   for (std::size_t i = 0; i < w.bodies().size(); ++i) EXPECT_EQ(w.idAt(i), idsBefore[i]) << i;
   EXPECT_EQ(w.stateHash(), hash);
-  EXPECT_TRUE(w.spawnedBodies().empty()) << "the lists of the last step that stood (none)";
-  EXPECT_TRUE(w.removedBodies().empty());
-  w.removeSpring(0);
+  EXPECT_TRUE(spawnedBodies(w).empty()) << "the lists of the last step that stood (none)";
+  EXPECT_TRUE(removedBodies(w).empty());
+  removeSpring(w, 0);
   World twin = without;
   const int steps = static_cast<int>(std::ceil(0.7 / dt));  // b0..b2 fall below 9.8 m by 0.5 s
   for (int i = 0; i < steps; ++i) {  // the retry, then on until the kill volume has taken bodies too
@@ -152,26 +152,26 @@ TEST_P(SoftStepUndo, AFailedStepThatOnlySpawnsLeavesTheBodiesAsTheyWere) {
   boxes.start = w.time() + dt;
   boxes.regionMin = Vec3(-1, 20, -1);
   boxes.regionMax = Vec3(1, 21, 1);
-  w.addSpawner(boxes);
+  addSpawner(w, boxes);
   SpawnerDef figures = boxes;
   figures.name = "figure";
   figures.count = 1;
   figures.ragdoll = RagdollDef{};
-  w.addSpawner(figures);
+  addSpawner(w, figures);
   w.step();  // nothing due yet
   const World without = w;
   Spring wild;
   wild.body = w.idAt(0);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  w.addSpring(wild);
+  addSpring(w, wild);
   const std::size_t bodies = w.bodies().size(), joints = w.joints().size();
   const std::uint64_t hash = w.stateHash();
   EXPECT_THROW(w.step(), SimulationError);
   EXPECT_EQ(w.bodies().size(), bodies);
   EXPECT_EQ(w.joints().size(), joints);
   EXPECT_EQ(w.stateHash(), hash);
-  w.removeSpring(0);
+  removeSpring(w, 0);
   World twin = without;
   for (int i = 0; i < 5; ++i) {
     w.step();

@@ -99,8 +99,8 @@ TEST_P(WorldSnapshot, AWorldReadFromItStepsBitForBitAsTheSavedOne) {
     ASSERT_EQ(read.stateHash(), original.stateHash()) << "step " << i << " after the snapshot";
     ASSERT_EQ(read.contacts().size(), original.contacts().size()) << "step " << i;
     // The touching pairs are in the snapshot: the read World begins, ends and hits as the saved one.
-    const ContactEvents& er = read.contactEvents();
-    const ContactEvents& eo = original.contactEvents();
+    const ContactEvents& er = contactEvents(read);
+    const ContactEvents& eo = contactEvents(original);
     ASSERT_EQ(er.begin.size(), eo.begin.size()) << "step " << i;
     ASSERT_EQ(er.end.size(), eo.end.size()) << "step " << i;
     ASSERT_EQ(er.hit.size(), eo.hit.size()) << "step " << i;
@@ -155,8 +155,8 @@ TEST(WorldSnapshotCases, TheStacksSleepTheSpawnerHasSpawnedAndRemovedTheWallBrok
                              0, 0});
   const std::size_t atStart = spawns.bodies().size();
   stepN(spawns, scaled(300));
-  EXPECT_GT(spawns.spawners().front().spawned, 0u);
-  EXPECT_NE(spawns.bodies().size(), atStart + spawns.spawners().front().spawned) << "the kill volume removed none";
+  EXPECT_GT(spawners(spawns).front().spawned, 0u);
+  EXPECT_NE(spawns.bodies().size(), atStart + spawners(spawns).front().spawned) << "the kill volume removed none";
 
   World wall = sceneWorld({"", "fracture_wall.json", {}, 0, 0});
   const std::size_t bricks = wall.bodies().size();

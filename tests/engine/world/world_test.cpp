@@ -261,22 +261,22 @@ TEST(World, AMovedSpringWakesItsBodyPullsItAndStopsWhenRemoved) {
   spring.anchor = Vec3::Zero();
   spring.point = Vec3(0.5, 0.0, 0.0);  // on the +x face
   spring.stiffness = 10.0;
-  const std::size_t index = world.addSpring(spring);
+  const std::size_t index = addSpring(world, spring);
   world.body(world.idAt(0)).sleep();
-  world.moveSpringAnchor(index, Vec3(1.5, 0.0, 0.0));
+  moveSpringAnchor(world, index, Vec3(1.5, 0.0, 0.0));
   EXPECT_TRUE(world.bodies()[0].awake());
-  const Spring& moved = world.springs()[index];
+  const Spring& moved = springs(world)[index];
   const auto [point, force] = forceOfSpring(moved, world.body(moved.body));
   EXPECT_TRUE(allNear(point, Vec3(0.5, 0.0, 0.0), 0.0));
   EXPECT_TRUE(allNear(force, Vec3(10.0, 0.0, 0.0), 1e-15)) << "k |d| along d, d = 1 m";
   world.step();
   EXPECT_NEAR(world.bodies()[0].velocity().x(), 10.0 / 2.0 * settings.timeStep, 1e-15) << "F / m dt";
-  world.removeSpring(index);
+  removeSpring(world, index);
   const double v = world.bodies()[0].velocity().x();
   world.step();
   EXPECT_EQ(world.bodies()[0].velocity().x(), v);
-  EXPECT_TRUE(world.springs().empty());
-  EXPECT_THROW(world.moveSpringAnchor(0, Vec3::Zero()), std::invalid_argument);
+  EXPECT_TRUE(springs(world).empty());
+  EXPECT_THROW(moveSpringAnchor(world, 0, Vec3::Zero()), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// The checks of a body's mass properties given by hand (World::setBodyMass, Python's
+// The checks of a body's mass properties given by hand (setBodyMass, Python's
 // World.set_body), in the scene loader's words and ranges (math/physical_ranges.h): each empty
 // when the value is usable, otherwise what was expected.
 #include <string>

@@ -22,7 +22,7 @@ inline Material combine(const Material& a, const Material& b) {
 }
 
 // The checks of a material's keys (a scene's "restitution", "friction_static", "friction_kinetic"),
-// one each, shared by the scene loader and World::setBodyMaterial: empty when usable, otherwise
+// one each, shared by the scene loader and setBodyMaterial: empty when usable, otherwise
 // what was expected.
 inline std::string restitutionProblem(double restitution) {
   return restitution >= 0.0 && restitution <= 1.0 ? std::string() : "expected a coefficient in [0, 1]";

@@ -15,9 +15,9 @@
 namespace rbsim {
 
 // A RigidBody is laid out for World::step's pass over many bodies: the fields a step reads and
-// writes fill the first 6 of its 7 cache lines (see the members), the constants no step of the
-// forward-Euler family reads live in a block of their own, and world vertices are computed only
-// when asked for.
+// writes fill its first 408 bytes, 7 of its 8 cache lines (see the members; 512 bytes, asserted
+// below the class), the constants no step of the forward-Euler family reads live in a block of
+// their own, and world vertices are computed only when asked for.
 class alignas(64) RigidBody {
  public:
   explicit RigidBody(const BodyDef& def);  // throws std::invalid_argument on an invalid def
@@ -62,7 +62,7 @@ class alignas(64) RigidBody {
   void setOrientation(const Quat& q);
   void setVelocity(const Vec3& v);             // P = m v
   void setAngularVelocity(const Vec3& omega);  // L = I(t) omega
-  // A change of the constants (World::setBodyMass, setBodyFilter go through here). The velocity
+  // A change of the constants (setBodyMass, setBodyFilter go through here). The velocity
   // and angular velocity stay, P = m v and L = I(t) omega follow (as Box2D's b2Body_SetMassData
   // and Jolt's SetMassProperties keep velocities); the inertia is about the centre of mass in the
   // body frame. Throws std::invalid_argument, changing nothing, as the constructor would.
@@ -157,8 +157,8 @@ class alignas(64) RigidBody {
 
   // Hot: what an Integrate pass over awake bodies reads and writes, in the first 408 bytes (the
   // flags and m in 16, x q P L in 112 with q aligned to 16, the step's inputs in 280; the class is
-  // aligned to a 64-byte line, so 7 lines). The flags lead, so a pass that only tests awake_
-  // touches one line per body.
+  // aligned to a 64-byte line, so a pass touches 7 lines of a body). The flags lead, so a pass
+  // that only tests awake_ touches one line per body.
   static_assert(sizeof(BodyState) == 112 && sizeof(StepInputs) == 280, "the hot fields' size in the comment above");
   bool awake_ = true;
   bool isStatic_ = false;
@@ -175,6 +175,11 @@ class alignas(64) RigidBody {
   mutable std::vector<Vec3> worldVertices_;  // a cache, filled by worldVertices() on demand
   FreeFlowMemoSlot freeFlow_;
 };
+// 8 cache lines of 64 bytes: the hot 408 bytes (7 lines), then the resting time, the cold block's
+// pointer, the world vertices' cache and the free-flow memo up to byte 464, padded to the line by
+// alignas(64). A field added to the hot part pushes it into the eighth line; up to 48 bytes
+// more after it keep the body at 8 lines, more make it 9.
+static_assert(sizeof(RigidBody) == 8 * 64, "RigidBody's size in cache lines: see the comment above");
 
 // Tolerance for accepting a matrix or quaternion as a rotation: ||R^T R - I||_F and | |q| - 1 |.
 // Loose enough for values typed with 9 significant digits, tight enough to reject real errors.

@@ -91,6 +91,12 @@ struct Joint {
   Vec3 springImpulse = Vec3::Zero();
   Vec3 frictionImpulse = Vec3::Zero();
 };
+// 544 bytes, 8.5 cache lines of 64: the def (264, its name a 32-byte std::string), the indices
+// (16), anchors and axes (96), the reference rotation aligned to 16 (40), then the warm-start
+// impulses (128, bytes 416 to 543), which the soft step's sweeps read and write every substep: two
+// lines and a half (the sweep of a plain ball joint reads only these, soft_step_solver.h
+// JointConstraint). Checked where std::string is 32 bytes (libstdc++, MSVC's release library).
+static_assert(sizeof(std::string) != 32 || sizeof(Joint) == 544, "Joint's size: see the comment above");
 
 // The hinge angle of A relative to the base about the base's axis [rad], in (-pi, pi]: the twist
 // of q_base^-1 q_A q_ref^-1 about the base's local axis.

@@ -1,7 +1,7 @@
 #pragma once
 // The ranges of a joint's motor and limits, and the words that refuse a value outside them: one
 // check for each, called by the scene loader (engine/src/scene/joint_parser.cpp) and by a change
-// to a running World (World::setJointMotor, setJointLimits), so both say the same.
+// to a running World (setJointMotor, setJointLimits), so both say the same.
 #include <string>
 
 #include "rbsim/dynamics/joint.h"

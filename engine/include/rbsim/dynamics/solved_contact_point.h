@@ -21,5 +21,8 @@ struct SolvedContactPoint {
 
   Vec3 impulse() const { return normalImpulse * normal + frictionImpulse; }  // on body 1
 };
+// 120 bytes, under 2 cache lines of 64: the contact's index (8), three vectors (72), four doubles
+// (32), the flag and 7 of padding. The solvers write one per contact point each step.
+static_assert(sizeof(SolvedContactPoint) == 120, "SolvedContactPoint's size: see the comment above");
 
 }  // namespace rbsim

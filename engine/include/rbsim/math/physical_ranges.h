@@ -1,7 +1,7 @@
 #pragma once
 // The physical ranges a body's lengths, speeds and masses must lie in, wherever they come from: a
 // scene file (the loader's checks, engine/src/scene/input_ranges.h) or a change to a running World
-// (World::setBodyMass, setJointLimits). Each number in them is finite, but finite is not enough:
+// (setBodyMass, setJointLimits). Each number in them is finite, but finite is not enough:
 // a speed of 1e300 m/s passes a finiteness check and then overflows a body's bounding box in its
 // first step. Beyond these bounds no rigid-body scene is meaningful.
 

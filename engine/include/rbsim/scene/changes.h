@@ -2,7 +2,7 @@
 // A change to a running body or joint given as keys of the scene format (Python's World.set_body
 // and World.set_joint), read with the scene loader's checks and messages over the values the body
 // or joint has now: InputError naming `file` (the call) and the key. What comes back is what the
-// World's own change calls take (World::setBodyMass, setBodyMaterial, setBodyFilter,
+// World's own change calls take (setBodyMass, setBodyMaterial, setBodyFilter,
 // setJointMotor, setJointLimits), checked, so a change that parses is one the World accepts.
 #include <optional>
 #include <string>

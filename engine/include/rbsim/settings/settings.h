@@ -126,7 +126,7 @@ struct Settings {
   // Approach speeds below this do not bounce: a resting body meets the ground at g dt every step,
   // and bouncing that would never let it rest (Box2D's b2_velocityThreshold is 1 m/s).
   double restitutionThreshold = 0.5;  // [m/s]
-  // A contact is reported as a hit (World::contactEvents, world/contact_events.h) when a point of
+  // A contact is reported as a hit (contactEvents, world/contact_events.h) when a point of
   // it takes a normal impulse while the bodies approach faster than this: Box2D v3's
   // b2_hitEventThreshold and Box3D's b3WorldDef::hitEventThreshold, 1 m/s. Reading nothing else.
   double hitEventSpeed = 1.0;  // [m/s]

@@ -14,6 +14,8 @@
 
 namespace rbsim {
 
+class World;
+
 inline constexpr std::int64_t kNoPlane = -1;  // ContactPair::plane between two bodies
 
 struct ContactPair {
@@ -59,5 +61,10 @@ struct ContactEvents {
     hit.clear();
   }
 };
+
+// The World's events of its last step (a free function over World: docs/architecture.md, "The World's surface").
+// The ends of pairs whose body destroyBody removed between steps come with the next step's. A
+// step that throws leaves the last successful step's events in place.
+const ContactEvents& contactEvents(const World& world);
 
 }  // namespace rbsim

@@ -14,6 +14,8 @@
 
 namespace rbsim {
 
+class World;
+
 struct Keyframe {
   double time = 0.0;                   // [s]
   Vec3 position = Vec3::Zero();        // of the centre of mass, world frame [m]
@@ -47,5 +49,11 @@ std::string checkKinematicMotion(const KinematicMotion& motion);
 // The pose the motion prescribes at time t (keyframes only), in O(log keys): the step's key by
 // bisection (a scan from the first took 2.6 ms a step over 1e6 keys).
 Keyframe keyframePoseAt(const KinematicMotion& motion, double t);
+
+// A kinematic body's prescribed motion in `world`, from the next step on; replaces the body's
+// earlier one. Throws std::invalid_argument on a bad motion (checkKinematicMotion) or a body not
+// kinematic. Free functions over World, as spawners and ragdolls are (docs/architecture.md, "The World's surface").
+void setKinematicMotion(World& world, const KinematicMotion& motion);
+const std::vector<KinematicMotion>& kinematicMotions(const World& world);  // at most one per body
 
 }  // namespace rbsim

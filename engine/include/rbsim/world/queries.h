@@ -4,17 +4,39 @@
 // go through the World, so their callers need none of the collision module's private headers
 // (docs/architecture.md).
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
+#include "rbsim/body/body_id.h"
+#include "rbsim/body/material.h"
+#include "rbsim/collision/body_solid.h"
 #include "rbsim/collision/broadphase/broad_phase.h"
 #include "rbsim/collision/impact.h"
 #include "rbsim/math/types.h"
-#include "rbsim/body/body_id.h"
+#include "rbsim/world/scripts.h"
+#include "rbsim/world/world.h"
 
 namespace rbsim {
 
-class World;
+// Plain reads of a World's per-body and per-step data, free functions rather than members (the
+// World's class keeps its core: docs/architecture.md, "The World's surface").
+// The material a body was given (or setBodyMaterial set); throws std::invalid_argument on a stale
+// id. A plane's, by its index in World::planes() (std::out_of_range past the last).
+const Material& bodyMaterial(const World& world, BodyId body);
+const Material& planeMaterial(const World& world, std::size_t plane);
+// Per body: its solid for point queries (particles, soft-body nodes, surface samples).
+const std::vector<BodySolid>& bodySolids(const World& world);
+// The bodies that broke since the World began (stage BreakBodies), oldest first.
+const std::vector<FractureEvent>& fractureEvents(const World& world);
+const std::vector<ScriptedForce>& scriptedForces(const World& world);  // as World::addForce added them
+// How many of World::contacts() the last narrow phase recycled (Settings::contactRecycleDistance).
+std::size_t recycledContacts(const World& world);
+// Changes whenever a body may have moved, appeared, gone or changed outside the scene queries'
+// sight: step, addBody, destroyBodies, restore, setSettings, setBodyFilter and the non-const
+// World::body(id). A new mutator of the bodies must bump it too. The queries rebuild their tree
+// when it changed.
+std::uint64_t geometryVersion(const World& world);
 
 // The candidate pairs of the last broad phase (sweep and prune; proxy ids are body indices until
 // a body is destroyed), and per body the AABB it was given, inflated by the contact margin.

@@ -22,6 +22,8 @@
 
 namespace rbsim {
 
+class World;
+
 struct SpawnerDef {
   std::string name = "spawn";  // its bodies are named <name>_<n>, n counting from 0 over the run
   BodyDef prototype;           // what every body is, but its pose and velocities
@@ -46,7 +48,7 @@ struct SpawnerDef {
 
 // Empty when the def is usable; otherwise what is wrong, naming the field.
 std::string checkSpawner(const SpawnerDef& def);
-// The same, and the period against the World's time step (checkSpawnPeriod): World::addSpawner's.
+// The same, and the period against the World's time step (checkSpawnPeriod): addSpawner's.
 std::string checkSpawner(const SpawnerDef& def, double timeStep);
 
 // A period shorter than the time step brings several bursts in one step, all at that step's
@@ -88,5 +90,22 @@ SpawnDraw drawPoint(Spawner& spawner);
 // The next copy of the prototype body (or of the figure) at `offset` from the drawn point, named in turn.
 BodyDef spawnBody(Spawner& spawner, const SpawnDraw& draw, const Vec3& offset);
 RagdollDef spawnRagdoll(Spawner& spawner, const SpawnDraw& draw, const Vec3& offset);
+
+// A World's spawners and kill volume: free functions over World, as ragdolls (addRagdoll) and
+// kinematic motions are (docs/architecture.md, "The World's surface"); stage SpawnAndRemove runs them.
+// Bodies born while the World steps: copies of def.prototype in bursts, from the step at or after
+// def.start; returns the spawner's index in spawners(world). Throws std::invalid_argument on a bad
+// def (checkSpawner with the World's time step), and on a ragdoll spawner under a solver other
+// than the soft step.
+std::size_t addSpawner(World& world, const SpawnerDef& def);
+const std::vector<Spawner>& spawners(const World& world);
+// Bodies whose centre of mass is outside `volume` at the start of a step are destroyed (static
+// ones too). An empty box removes the volume. Throws std::invalid_argument on a box with a NaN.
+void setKillVolume(World& world, const Aabb& volume);
+const Aabb& killVolume(const World& world);
+// What stage SpawnAndRemove did in the last step: the bodies it added (valid ids) and the ids of
+// those it removed (stale now).
+const std::vector<BodyId>& spawnedBodies(const World& world);
+const std::vector<BodyId>& removedBodies(const World& world);
 
 }  // namespace rbsim

@@ -70,8 +70,16 @@ struct StageStats {
   double seconds = 0.0;       // wall time spent in it and in the step's checks before it [s]
 };
 
+// World is a conductor (issue 58; docs/architecture.md, "The World's surface"): the class holds
+// the core (bodies and ids, the step, settings, planes, joints, scripted forces, pose events, the
+// step hook, the last step's contacts), and what grows beside it is a free function over World in
+// a header of its own (world/spawner.h, kinematic_motion.h, ragdoll.h, spring.h, body_changes.h,
+// joint_changes.h, contact_events.h, queries.h), reaching the members through WorldAccess. At most
+// 35 public member functions, counted by tests/layers/check_world_api.py (ctest world_api): every
+// public member function declaration once, constructors, the destructor and the assignments
+// included, each overload on its own; 33 now.
 class World {
-  friend struct WorldAccess;
+  friend struct WorldAccess;  // world/world_access.h: the free functions' and tests' way in
   friend struct WorldSnapshotAccess;  // world/world_snapshot.cpp: writes and reads every member
 
  public:
@@ -118,27 +126,6 @@ class World {
   const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
-  // A kinematic body's prescribed motion, from the next step on; replaces the body's earlier one.
-  // Throws std::invalid_argument on a bad motion (checkKinematicMotion) or a body not kinematic.
-  void setKinematicMotion(const KinematicMotion& motion);
-  const std::vector<KinematicMotion>& kinematicMotions() const { return motions_; }
-  // Bodies born while the World steps: copies of def.prototype in bursts (world/spawner.h), from
-  // the step at or after def.start. Throws std::invalid_argument on a bad def (checkSpawner).
-  std::size_t addSpawner(const SpawnerDef& def);
-  const std::vector<Spawner>& spawners() const { return spawners_; }
-  // Bodies whose centre of mass is outside `volume` at the start of a step are destroyed (static
-  // ones too). An empty box removes the volume. Throws std::invalid_argument on a box with a NaN.
-  void setKillVolume(const Aabb& volume);
-  const Aabb& killVolume() const { return killVolume_; }
-  // What stage SpawnAndRemove did in the last step: the bodies it added (valid ids) and the ids
-  // of those it removed (stale now).
-  const std::vector<BodyId>& spawnedBodies() const { return spawnedNow_; }
-  const std::vector<BodyId>& removedBodies() const { return removedNow_; }
-  std::size_t addSpring(const Spring& spring);  // throws std::invalid_argument on a bad spring
-  // A spring whose anchor is moved by hand (window mode drags a body by one, as Box2D's mouse
-  // joint): wakes the body, as every manual change does. Throws on a bad index or anchor.
-  void moveSpringAnchor(std::size_t spring, const Vec3& anchor);
-  void removeSpring(std::size_t spring);  // later springs move down one index
   // Static and infinite; throws unless the normal is unit and the material valid.
   void addPlane(const Plane& plane, const Material& material = {});
   // The step hook (Jolt's PhysicsStepListener): a system stepped after the rigid bodies each
@@ -152,31 +139,6 @@ class World {
   std::size_t addJoint(const JointDef& def);
   const std::vector<Joint>& joints() const { return joints_; }
 
-  // Changes while running (PyBullet's changeDynamics, setJointMotorControl2, removeConstraint;
-  // world/body_changes.cpp, joint_changes.cpp), from the next step on. Each is checked with the
-  // scene loader's ranges and words (body/material.h, body/mass_ranges.h,
-  // dynamics/joint_ranges.h) and throws std::invalid_argument naming the call, the body or joint,
-  // the field and what was expected, the World unchanged. Each wakes the body (a joint's bodies),
-  // and so at the next step its island, as a manual change does.
-  // The mass [kg] and the inertia about the centre of mass, body frame [kg m^2]: the velocity and
-  // angular velocity stay, P = m v and L = I(t) omega follow (RigidBody::setMassProperties).
-  void setBodyMass(BodyId id, double mass, const Mat3& inertiaBody);
-  // Restitution and friction, read by the next step's contacts (nothing keeps the old ones). A
-  // compound body's materials are its shapes': refused for one, as the scene refuses them.
-  void setBodyMaterial(BodyId id, const Material& material);
-  // What the body collides with (shapes/collision_filter.h), from the next broad phase; refused
-  // for a compound body, whose filters are its shapes'.
-  void setBodyFilter(BodyId id, const CollisionFilter& filter);
-  // A hinge's or slider's motor, on with a target speed [rad/s; m/s] and a largest torque [N m]
-  // (a slider's force [N]), or off (speed and max are then not read). A lower cap clamps the
-  // impulse kept for the warm start to it.
-  void setJointMotor(std::size_t joint, bool on, double speed, double maxTorque);
-  // A hinge's angle limits, a ball's twist limits, a slider's translation limits, or none (off);
-  // the limits' warm starts are forgotten, as Box2D v3's b2RevoluteJoint_SetLimits does.
-  void setJointLimits(std::size_t joint, bool on, double lower, double upper);
-  // Removes the joint; later joints move down one index (as removeSpring). Its bodies wake and
-  // collide with each other again unless their filters or another joint say otherwise.
-  void removeJoint(std::size_t joint);
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite,
   // and StepLimitError (a SimulationError) when the bodies overlap in more pairs or contacts than
@@ -207,13 +169,7 @@ class World {
     return timeOrigin_ + static_cast<double>(stepCount_ - stepsAtOrigin_) * settings_.timeStep;
   }
   std::uint64_t stepCount() const { return stepCount_; }
-  // Changes whenever a body may have moved, appeared, gone or changed outside the scene queries'
-  // sight: step, addBody, destroyBodies, restore, setSettings and the non-const body(id). A new
-  // mutator of bodies_ must bump it too. The queries rebuild their tree when it changed.
-  std::uint64_t geometryVersion() const { return geometryVersion_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
-  const std::vector<ScriptedForce>& scriptedForces() const { return forces_; }
-  const std::vector<Spring>& springs() const { return springs_; }
   const std::vector<Plane>& planes() const { return planes_; }
   // The contact manifolds of the last narrow phase, and every contact point of the last step
   // with the impulse the solver gave it. contacts() lists the step's (those of awake bodies, then
@@ -221,19 +177,7 @@ class World {
   // fell asleep in, ordered by (kind, a, b, part, children); the sleeping ones are gathered when
   // asked, not by the step (issue 58). contactPoints() index the first part.
   const std::vector<Contact>& contacts() const;
-  // How many of contacts() the last narrow phase recycled (Settings::contactRecycleDistance).
-  std::size_t recycledContacts() const;
   const std::vector<SolvedContactPoint>& contactPoints() const;
-  const Material& bodyMaterial(BodyId body) const { return bodyMaterials_[indexOf(body)]; }
-  // Per body: its solid for point queries (particles, soft-body nodes, surface samples).
-  const std::vector<BodySolid>& bodySolids() const { return bodySolids_; }
-  const std::vector<FractureEvent>& fractureEvents() const { return fractureEvents_; }
-  // The pairs of shapes that began and stopped touching in the last step, and those hit faster
-  // than Settings::hitEventSpeed (world/contact_events.h; Box3D's b3World_GetContactEvents).
-  // The ends of pairs whose body destroyBody removed between steps come with the next step's.
-  // A step that throws leaves the last successful step's events in place.
-  const ContactEvents& contactEvents() const;
-  const Material& planeMaterial(std::size_t plane) const { return planeMaterials_[plane]; }
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
 
   // FNV-1a over the bit patterns of every body's state, then of each step listener's (particles,

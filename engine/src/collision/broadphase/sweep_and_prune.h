@@ -70,6 +70,9 @@ class SweepAndPrune final : public BroadPhase {
     ProxyId id() const { return tag >> 1; }
     bool isMax() const { return (tag & 1u) != 0; }
   };
+  // 16 bytes, 4 endpoints a cache line: the insertion sort walks each axis's list every update,
+  // comparing values and masks without leaving it.
+  static_assert(sizeof(Endpoint) == 16, "Endpoint's size: see the comment above");
   static bool before(const Endpoint& x, const Endpoint& y) {
     return x.value < y.value || (x.value == y.value && x.isMax() < y.isMax());
   }
@@ -112,6 +115,7 @@ class SweepAndPrune final : public BroadPhase {
   struct Crossing {
     std::uint32_t moving, passed;
   };
+  static_assert(sizeof(Crossing) == 8, "two tags, 8 crossings a cache line");
   std::vector<Crossing> crossings_;  // the first crossingCount_ are this update's
   std::size_t crossingCount_ = 0;
   std::vector<std::uint64_t> started_, ended_;  // pair keys seen by the current update()

@@ -30,6 +30,8 @@ struct ProxyPair {
   friend bool operator==(const ProxyPair& x, const ProxyPair& y) { return x.a == y.a && x.b == y.b; }
   friend bool operator<(const ProxyPair& x, const ProxyPair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; }
 };
+// 8 bytes, 8 pairs a cache line: the broad phase lists up to kMaxBroadPhasePairs of them a step.
+static_assert(sizeof(ProxyPair) == 8, "ProxyPair's size: see the comment above");
 
 class BroadPhase {
  public:
