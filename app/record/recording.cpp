@@ -9,6 +9,8 @@
 #include <libdeflate.h>
 #include <nlohmann/json.hpp>
 
+#include "rbsim/world/queries.h"
+#include "rbsim/world/spawner.h"
 #include "rbsim/world/systems.h"
 #include "rbsim/world/world_snapshot.h"
 #include "record/entry_codec.h"
@@ -114,9 +116,9 @@ void RecordWriter::write(std::size_t world, const World& state) {
   // events accumulate over the run (a world's first step starts its count again: a new phase).
   if (world >= fractures_.size()) fractures_.resize(world + 1, 0);
   if (state.stepCount() == 1) fractures_[world] = 0;
-  const bool changed = !state.spawnedBodies().empty() || !state.removedBodies().empty() ||
-                       state.fractureEvents().size() != fractures_[world];
-  fractures_[world] = state.fractureEvents().size();
+  const bool changed = !spawnedBodies(state).empty() || !removedBodies(state).empty() ||
+                       fractureEvents(state).size() != fractures_[world];
+  fractures_[world] = fractureEvents(state).size();
   std::vector<std::uint8_t> bodySet;
   if (changed) {
     try {

@@ -19,6 +19,7 @@
 
 #include "demos/demo.h"
 #include "record/recording.h"
+#include "render/body_colors.h"
 #include "run/paths.h"
 #include "run/phase.h"
 #include "run/runner.h"
@@ -151,15 +152,17 @@ void hashEveryStep(const std::string& file, int steps, const fs::path& dir) {
     }
     writer.close();
   }
-  const auto looks = [](const World& w) {
+  // Colours are the app's, found by the body's name (app/render/body_colors.h).
+  const auto looks = [](const World& w, const BodyColors& colors) {
     std::vector<std::string> out;
     for (const RigidBody& b : w.bodies()) {
-      out.push_back(b.name() + " " + std::to_string(b.color().x()) + " " + std::to_string(b.color().y()) + " " +
-                    std::to_string(b.color().z()) + " " + std::to_string(b.mesh().vertices.size()));
+      const Vec3 color = bodyColor(colors, b.name());
+      out.push_back(b.name() + " " + std::to_string(color.x()) + " " + std::to_string(color.y()) + " " +
+                    std::to_string(color.z()) + " " + std::to_string(b.mesh().vertices.size()));
     }
     return out;
   };
-  for (std::size_t k = 0; k < worlds.size(); ++k) last[k] = looks(worlds[k]);
+  for (std::size_t k = 0; k < worlds.size(); ++k) last[k] = looks(worlds[k], phase.worlds[k].scene.colors);
   RecordReader reader(path);
   std::vector<World> replayed;
   for (const PhaseWorld& w : phase.worlds) replayed.push_back(buildWorld(w.scene));
@@ -170,7 +173,7 @@ void hashEveryStep(const std::string& file, int steps, const fs::path& dir) {
     }
   }
   reader.expectEnd();
-  for (std::size_t k = 0; k < replayed.size(); ++k) EXPECT_EQ(looks(replayed[k]), last[k]) << file;
+  for (std::size_t k = 0; k < replayed.size(); ++k) EXPECT_EQ(looks(replayed[k], phase.worlds[k].scene.colors), last[k]) << file;
 }
 
 class EveryScene : public testing::TestWithParam<std::string> {};
