@@ -101,8 +101,8 @@ class World {
   BodyId addBody(const BodyDef& def);
   // Removes the body and what acts on it alone (its scripted forces, springs, pose events and
   // joints) and wakes the bodies touching it; the last body takes its index (bodies() stays
-  // dense), its id unchanged. The other contacts are renumbered; the solvers' warm starts are
-  // forgotten for one step. Throws std::invalid_argument on a stale id.
+  // dense), its id unchanged. The other contacts are renumbered and the solvers' warm starts
+  // follow their bodies (renumberCache). Throws std::invalid_argument on a stale id.
   void destroyBody(BodyId id);
   // Destroys the bodies in the order given, leaving the World exactly as destroyBody on each in
   // turn would (the same indices, ids, contacts and warm starts), in one pass over what names
