@@ -111,7 +111,9 @@ void runAndReplay(const std::vector<std::string>& files, const std::vector<std::
   EXPECT_EQ(summary.steps, recorded.steps);
   const std::string original = readAll(run.tracePath), again = readAll(replay.tracePath);
   // More than the header: the bodies' rows (a 2D world alone has none: hashEveryStep sees it).
-  if (!phases.front().scene().bodies.empty()) EXPECT_GT(original.size(), 100u) << files.front();
+  if (!phases.front().scene().bodies.empty()) {
+    EXPECT_GT(original.size(), 100u) << files.front();
+  }
   EXPECT_TRUE(original == again) << files.front() << ": the replay's trace differs from the run's";
 }
 
@@ -189,7 +191,8 @@ TEST_P(EveryScene, RecordsAndReplaysBitForBit) {
   runAndReplay({file}, {"world.steps=" + std::to_string(steps)}, "", dir, least);
   // What the trace does not show: step systems (particles, soft bodies, a 2D world) and the
   // bodies' looks after their set changed.
-  const Scene& scene = loadPhase(assetDir() + "/scenes/" + file).scene();
+  const Phase phase = loadPhase(assetDir() + "/scenes/" + file);  // kept: scene() points into it
+  const Scene& scene = phase.scene();
   if (least > 0 || scene.planar || !scene.particleSystems.empty() || !scene.softBodies.empty()) hashEveryStep(file, steps, dir);
   fs::remove_all(dir);
 }
