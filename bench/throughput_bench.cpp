@@ -74,6 +74,9 @@ std::size_t integratorReadBytes(Integrator integrator) {
     case Integrator::Rk4: return 0;                                        // R(q) from q
     case Integrator::ImplicitGyro: return 2 * sizeof(Mat3) + sizeof(void*);  // R, I_body
     case Integrator::Dlm: return sizeof(Mat3) + sizeof(Vec3) + sizeof(void*);  // E, principal moments
+    case Integrator::Newmark: return sizeof(Mat3) + sizeof(Vec3) + sizeof(void*);  // R, v, I_body
+    case Integrator::Exact:
+    case Integrator::Exact4: return sizeof(void*);  // principal axes and moments (no torque here: no R)
   }
   return 0;
 }

@@ -24,6 +24,17 @@ void ContactSolver::hits(double speed, std::vector<ContactHit>& out) const {
   }
 }
 
+void ContactSolver::reindexPoints(std::vector<SolvedContactPoint>& points, const std::vector<std::uint32_t>& newIndex) {
+  std::size_t kept = 0;
+  for (SolvedContactPoint& p : points) {
+    const std::uint32_t to = newIndex[p.contact];
+    if (to == kDroppedContact) continue;
+    p.contact = to;
+    points[kept++] = p;
+  }
+  points.resize(kept);
+}
+
 std::unique_ptr<ContactSolver> makeContactSolver(Settings::ContactSolverMethod method) {
   if (method == Settings::ContactSolverMethod::Pgs) return std::make_unique<PgsSolver>();
   if (method == Settings::ContactSolverMethod::Lcp) return std::make_unique<LcpSolver>();

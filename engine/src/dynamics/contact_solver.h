@@ -81,8 +81,12 @@ class ContactSolver {
   virtual void forget() = 0;
   // Bodies were destroyed and others moved into their indices (World::destroyBodies,
   // body/body_removal.h): the warm starts follow (contact_key.h renumberCache); which bodies the
-  // last step advanced is forgotten. `bodies` as they were before the removal.
-  virtual void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) = 0;
+  // last step advanced is forgotten. `bodies` as they were before the removal. `keptReached`: the
+  // sleeping islands' contacts of the bodies the removal reached, as they were
+  // (CollisionPipeline::removeBodies), whose warm starts, kept aside (contactsSlept), follow them:
+  // no other sleeping one is visited.
+  virtual void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
+                             const std::vector<Contact>& keptReached) = 0;
   // A deep copy, warm starts included (World's copy, a saved state).
   virtual std::unique_ptr<ContactSolver> clone() const = 0;
   // A World snapshot (world/world_snapshot.h; Jolt's ContactConstraintManager::SaveState): what
@@ -104,6 +108,16 @@ class ContactSolver {
   // their warm starts serve the next solve. The default keeps none (a sleeping pair starts cold).
   virtual void contactsSlept(const std::vector<Contact>& /*contacts*/) {}
   virtual void contactsWoke(const std::vector<Contact>& /*contacts*/) {}
+  // Islands fell asleep at the end of the step and their contacts left the step's
+  // (CollisionPipeline::sleepContacts): `newIndex`, per contact the solve was given, its index now
+  // or kDroppedContact. The points reported follow; the slept contacts' leave the report, as a
+  // sleeping pair's are not reported (it is not solved).
+  virtual void contactsReindexed(const std::vector<std::uint32_t>& newIndex) = 0;
+  static constexpr std::uint32_t kDroppedContact = UINT32_MAX;
+
+ protected:
+  // The points of the contacts kept, renamed by `newIndex`, in order.
+  static void reindexPoints(std::vector<SolvedContactPoint>& points, const std::vector<std::uint32_t>& newIndex);
 
  private:
   static inline const std::vector<std::size_t> kNone{};

@@ -50,7 +50,8 @@ int LcpSolver::solverBody(const SolverInput& input, std::size_t body) {
   return slot;
 }
 
-void LcpSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) {
+void LcpSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
+                              const std::vector<Contact>& /*keptReached: its cache holds every warm start*/) {
   clearAdvanced();
   solved_.clear();
   // A turned pair: the points were the moved body's (body 1) and become the partner's; the

@@ -76,12 +76,14 @@ class LcpSolver final : public ContactSolver {
   void solve(const SolverInput& input) override;
   std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<LcpSolver>(*this); }
   const std::vector<SolvedContactPoint>& points() const override { return solved_; }
+  void contactsReindexed(const std::vector<std::uint32_t>& newIndex) override { reindexPoints(solved_, newIndex); }
   void forget() override {
     clearAdvanced();
     cache_.clear();
     solved_.clear();
   }
-  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
+  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
+                     const std::vector<Contact>& keptReached) override;
   const std::vector<std::size_t>& advancedBodies() const override { return advancedList_; }
   const std::vector<char>& advancedFlags() const override { return advanced_; }  // per World body
   void clearAdvanced() override {

@@ -27,7 +27,8 @@ int PgsSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) {
   return slot;
 }
 
-void PgsSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) {
+void PgsSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
+                              const std::vector<Contact>& /*keptReached: its cache holds every warm start*/) {
   solved_.clear();
   // A turned pair: the points were the moved body's (body 1); they become the partner's, and the
   // friction impulses, which act + on body 1, change sign (the twist's, about the flipped normal, not).

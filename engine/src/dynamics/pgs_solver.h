@@ -32,11 +32,13 @@ class PgsSolver final : public ContactSolver {
   void load(ByteReader& in, std::size_t bodies) override;
   std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<PgsSolver>(*this); }
   const std::vector<SolvedContactPoint>& points() const override { return solved_; }
+  void contactsReindexed(const std::vector<std::uint32_t>& newIndex) override { reindexPoints(solved_, newIndex); }
   void forget() override {
     cache_.clear();
     solved_.clear();
   }
-  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
+  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
+                     const std::vector<Contact>& keptReached) override;
 
  private:
   // The velocities a sweep reads and changes, 48 bytes per body (as Box2D's b2BodyState): the

@@ -154,6 +154,7 @@ void SoftStepSolver::applyRestitution(const Settings& settings) {
 void SoftStepSolver::report() const {
   solved_.clear();
   for (const Constraint& c : constraints_) {
+    if (c.contact == kNotReported) continue;
     const SolverState& A = states_[c.a];
     const SolverState& B = states_[c.b];
     for (std::size_t j = c.firstPoint; j < c.firstPoint + c.pointCount; ++j) {
@@ -219,10 +220,37 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies) {
 }
 
 void SoftStepSolver::contactsSlept(const std::vector<Contact>& contacts) {
+  std::vector<std::uint64_t> slept;
+  slept.reserve(contacts.size());
   for (const Contact& c : contacts) {
     const std::uint64_t key = pairKey(c);
-    if (const Cached* old = cached(key)) asleepCache_[key] = *old;
+    if (const Cached* old = cached(key)) {
+      asleepCache_[key] = *old;
+      slept.push_back(key);
+    }
   }
+  if (slept.empty()) return;
+  // They leave cache_, which then holds the awake pairs' alone: a removal renumbers it whole.
+  std::sort(slept.begin(), slept.end());
+  cache_.erase(std::remove_if(cache_.begin(), cache_.end(),
+                              [&](const Cached& e) { return std::binary_search(slept.begin(), slept.end(), e.key); }),
+               cache_.end());
+  indexCache();
+}
+
+void SoftStepSolver::contactsReindexed(const std::vector<std::uint32_t>& newIndex) {
+  if (reported_) {
+    reindexPoints(solved_, newIndex);
+  } else {  // the report is built from the constraints when asked: those of slept contacts leave it
+    for (Constraint& c : constraints_) c.contact = c.contact == kNotReported ? kNotReported : newIndex[c.contact];
+  }
+  std::size_t kept = 0;
+  for (ContactHit& hit : hits_) {
+    if (newIndex[hit.contact] == kDroppedContact) continue;
+    hit.contact = newIndex[hit.contact];
+    hits_[kept++] = hit;
+  }
+  hits_.resize(kept);
 }
 
 void SoftStepSolver::contactsWoke(const std::vector<Contact>& contacts) {
@@ -243,14 +271,19 @@ void SoftStepSolver::contactsWoke(const std::vector<Contact>& contacts) {
 
 void SoftStepSolver::mergeAsleep(std::vector<Cached>& into) const {
   if (asleepCache_.empty()) return;
-  // Both in key order: one merge, a key in both taken once (from `into`).
+  // The kept ones sorted by key (a hash map has no order; only a snapshot asks), then one merge
+  // with `into`, a key in both taken once (from `into`).
+  std::vector<const Cached*> asleep;
+  asleep.reserve(asleepCache_.size());
+  for (const auto& [key, entry] : asleepCache_) asleep.push_back(&entry);
+  std::sort(asleep.begin(), asleep.end(), [](const Cached* x, const Cached* y) { return x->key < y->key; });
   std::vector<Cached> merged;
-  merged.reserve(into.size() + asleepCache_.size());
+  merged.reserve(into.size() + asleep.size());
   auto a = into.begin();
-  for (const auto& [key, entry] : asleepCache_) {
-    while (a != into.end() && a->key < key) merged.push_back(*a++);
-    if (a != into.end() && a->key == key) continue;
-    merged.push_back(entry);
+  for (const Cached* entry : asleep) {
+    while (a != into.end() && a->key < entry->key) merged.push_back(*a++);
+    if (a != into.end() && a->key == entry->key) continue;
+    merged.push_back(*entry);
   }
   merged.insert(merged.end(), a, into.end());
   into.swap(merged);

@@ -50,24 +50,34 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   return s;
 }
 
-void SoftStepSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) {
+void SoftStepSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
+                                   const std::vector<Contact>& keptReached) {
   clearAdvanced();
   solved_.clear();
   hits_.clear();
   reported_ = true;
-  // The sleeping contacts' warm starts rejoin the others to be renumbered with them (as the
-  // collision pipeline's contacts do; contactsSlept keeps them apart again).
-  mergeAsleep(cache_);
-  asleepCache_.clear();
   // A turned pair: the anchors were the moved body's (B); they become the partner's, and the
   // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
   // inside the surface, so its points may miss their match and start cold.
-  renumberCache(cache_, removal, [&](Cached& entry, std::size_t moved, std::size_t partner) {
+  const auto turn = [&](Cached& entry, std::size_t moved, std::size_t partner) {
     anchorsToPartner(entry.localPoints, entry.count, bodies[moved], bodies[partner]);
     for (int j = 0; j < entry.count; ++j) entry.frictionImpulses[j] = -entry.frictionImpulses[j];
     return true;
-  });
+  };
+  renumberCache(cache_, removal, turn);
   indexCache();
+  // The sleeping contacts' warm starts: only those of the contacts the removal reached are
+  // looked up, renumbered and filed again (contactsWoke brings them back when their island wakes).
+  std::vector<Cached> reached;
+  for (const Contact& c : keptReached) {
+    const auto at = asleepCache_.find(pairKey(c));
+    if (at == asleepCache_.end()) continue;  // a grid pair's further manifold, or never solved
+    reached.push_back(at->second);
+    asleepCache_.erase(at);
+  }
+  std::sort(reached.begin(), reached.end(), [](const Cached& x, const Cached& y) { return x.key < y.key; });
+  renumberCache(reached, removal, turn);
+  for (Cached& entry : reached) asleepCache_.emplace(entry.key, std::move(entry));
 }
 
 const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {

@@ -24,7 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <map>
+#include <unordered_map>
 #include <vector>
 
 #include "dynamics/contact_key.h"
@@ -55,9 +55,11 @@ class SoftStepSolver final : public ContactSolver {
     hits_.clear();
     reported_ = true;
   }
-  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies) override;
+  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
+                     const std::vector<Contact>& keptReached) override;
   void contactsSlept(const std::vector<Contact>& contacts) override;  // soft_step_finish.cpp
   void contactsWoke(const std::vector<Contact>& contacts) override;
+  void contactsReindexed(const std::vector<std::uint32_t>& newIndex) override;
   void clearAdvanced() override {
     for (std::size_t body : advancedList_) advanced_[body] = 0;
     advancedList_.clear();
@@ -286,6 +288,8 @@ class SoftStepSolver final : public ContactSolver {
     Vec3 position = Vec3::Zero();  // [m]
   };
   std::vector<Pose> poses_;
+  // Constraint::contact of a contact that slept after the solve (contactsReindexed): not reported.
+  static constexpr std::size_t kNotReported = kDroppedContact;
   std::vector<Constraint> constraints_;
   std::vector<std::size_t> bouncing_;  // the constraints collide() looks at: one point, c_R > 0
   std::vector<Point> points_;
@@ -301,7 +305,9 @@ class SoftStepSolver final : public ContactSolver {
   std::vector<Cached> cache_, nextCache_;  // sorted by key
   KeyIndex cacheIndex_;  // cache_'s entries by key (cached()), rebuilt by indexCache()
   // The warm starts of sleeping contacts (contactsSlept), by key, until they wake.
-  std::map<std::uint64_t, Cached> asleepCache_;  // ordered: merged into cache_ without a sort
+  // A hash map: a removal or a wake looks up a few of a resting pile's tens of thousands in one
+  // probe each, where an ordered map's tree walk missed the cache at each level.
+  std::unordered_map<std::uint64_t, Cached> asleepCache_;
   void mergeAsleep(std::vector<Cached>& into) const;  // into a list sorted by key, keys not in it
   Softness softness_;  // of every contact this step
   std::vector<JointConstraint> joints_;

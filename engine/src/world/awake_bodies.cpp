@@ -141,7 +141,22 @@ void World::updateSleep() {
       slept = true;
     }
   }
-  if (slept) refreshAwake();
+  if (!slept) return;
+  refreshAwake();
+  // The integrate and continuous stages have read which bodies the solve advanced: the list of
+  // the step's bodies goes now, not at the next removal or step.
+  solver_->clearAdvanced();
+  sleepContacts();
+}
+
+void World::sleepContacts() {
+  static_assert(CollisionPipeline::kNoContact == ContactSolver::kDroppedContact, "one mark for a contact that slept");
+  std::vector<std::uint32_t> newIndex;
+  collision_->sleepContacts(bodies_, newIndex);
+  if (collision_->sleptNow().empty()) return;
+  solver_->contactsSlept(collision_->sleptNow());
+  solver_->contactsReindexed(newIndex);
+  contactEvents_->contactsSlept(collision_->sleptNow(), *collision_, newIndex);
 }
 
 }  // namespace rbsim

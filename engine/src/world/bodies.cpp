@@ -120,11 +120,14 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     slotOfBody_.pop_back();
   }
   const BodyRemoval removal(bodies_.size(), std::move(steps));
-  awakeStale_ = true;  // indices move, and the bodies woken below are not listed
-  contactEvents_->bodiesRemoved(removal);
   // Whatever rested on a removed body must notice it is gone (as Box2D's b2DestroyBody wakes its
-  // contacts); the contacts follow their bodies.
-  for (const std::size_t touched : collision_->removeBodies(removal)) bodies_[touched].wake();
+  // contacts); the contacts follow their bodies. Woken through wakeBody, indices before the
+  // removal: the awake list is renumbered with the rest below.
+  std::vector<std::size_t> touched;
+  std::vector<Contact> keptReached;
+  collision_->removeBodies(removal, touched, keptReached);
+  contactEvents_->bodiesRemoved(removal, keptReached);
+  for (const std::size_t partner : touched) wakeBody(partner);
   // What names a removed body goes with it (every id these name was valid before the batch).
   removeStale(forces_);
   removeStale(springs_);
@@ -136,8 +139,8 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     const std::uint32_t a = removal.newIndex(joint.a);
     const std::uint32_t b = joint.b == kWorldIndex ? 0 : removal.newIndex(joint.b);
     if (a == BodyRemoval::kGone || b == BodyRemoval::kGone) {
-      if (a != BodyRemoval::kGone) bodies_[joint.a].wake();
-      if (b != BodyRemoval::kGone && joint.b != kWorldIndex) bodies_[joint.b].wake();
+      if (a != BodyRemoval::kGone) wakeBody(joint.a);
+      if (b != BodyRemoval::kGone && joint.b != kWorldIndex) wakeBody(joint.b);
       continue;
     }
     joint.a = a;
@@ -149,7 +152,7 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   }
   joints_.resize(keptJoints);
   // Warm starts are keyed by body indices: the moved bodies' follow them (read before the moves).
-  solver_->bodiesRemoved(removal, bodies_);
+  solver_->bodiesRemoved(removal, bodies_, keptReached);
   for (const BodyRemoval::Step& s : removal.steps()) {
     for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(s.removed, s.last, s.removed);
   }
@@ -160,7 +163,28 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   removal.gather(bodyMaterials_);
   removal.gather(bodySolids_);
   removal.gather(fracturePatterns_);
+  renumberAwake(removal);
   updateJointFilter();
+}
+
+void World::renumberAwake(const BodyRemoval& removal) {
+  // The awake list follows the removal (a scan of every body to rebuild it would cost the World,
+  // not the removal): the removed leave it, the moved take their new indices.
+  std::size_t kept = 0;
+  for (const std::uint32_t i : awakeList_) {
+    const std::uint32_t to = removal.newIndex(i);
+    if (to == BodyRemoval::kGone) continue;
+    if (to != i) awakeSorted_ = false;
+    awakeList_[kept++] = to;
+  }
+  awakeList_.resize(kept);
+  if (listed_.size() < removal.before()) listed_.resize(removal.before(), 0);
+  removal.gather(listed_);
+  // A body refreshAwake has not looked at yet (added since) may have moved below the mark.
+  for (const auto& [to, from] : removal.moves()) {
+    if (from >= awakeScanned_ && bodies_[to].awake()) listAwake(to);
+  }
+  awakeScanned_ = std::min(awakeScanned_, removal.after());
 }
 
 void World::restore(std::uint64_t stepCount, const std::vector<BodyState>& states, const std::vector<char>& awake) {

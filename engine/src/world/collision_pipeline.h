@@ -46,9 +46,14 @@ class CollisionPipeline {
   // lies up to a cell inside its exact surface).
   void addBody(const RigidBody& body, const BodySolid& solid);
   // Bodies were destroyed (World::destroyBodies, body/body_removal.h): their contacts go, the
-  // moved bodies' are renumbered, and the last step's impacts are forgotten. Returns the bodies
-  // (indices before the removal) that a removed body touched, to be woken.
-  std::vector<std::size_t> removeBodies(const BodyRemoval& removal);
+  // moved bodies' are renumbered, and the last step's impacts are forgotten. `touched` gets the
+  // bodies (indices before the removal) that a removed body touched, to be woken; `reached` the
+  // sleeping islands' contacts of the bodies the removal reached, as they were (their warm starts
+  // follow them: ContactSolver::bodiesRemoved). A sleeping island's contacts are visited only
+  // when a reached body holds them; the step's, all (a step visits them anyway).
+  void removeBodies(const BodyRemoval& removal, std::vector<std::size_t>& touched, std::vector<Contact>& reached);
+  // The sleeping islands' contacts of these bodies (indices), each once, in key order.
+  void keptContactsOf(const std::vector<std::uint32_t>& bodies, std::vector<Contact>& out) const { sleeping_.of(bodies, out); }
   // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
   // bounds are rebuilt, and it may have stopped being static.
   void replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid);
@@ -90,6 +95,12 @@ class CollisionPipeline {
   void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
                    const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes, double time);
   const std::vector<Contact>& sleptNow() const { return sleptNow_; }  // the last narrow phase's
+  // Islands fell asleep at the end of a step (World::updateSleep): their contacts leave the step's
+  // for sleeping_ now (listed in sleptNow()), as Box2D v3's b2TrySleepIsland moves an island's
+  // contacts into its solver set, so that nothing after the step (a removal, the next step) visits
+  // them. `newIndex` gets, per contact of the step before, its index after, or kNoContact.
+  static constexpr std::uint32_t kNoContact = UINT32_MAX;
+  void sleepContacts(const std::vector<RigidBody>& bodies, std::vector<std::uint32_t>& newIndex);
   // Whether body `index` has kept contacts (it sleeps, or woke since and its island has not).
   bool keepsContactsOf(std::size_t index) const { return sleeping_.holds(index); }
   // The islands of `seeds` (SleepingContacts::takeIslands): their bodies, to be woken, and their
@@ -108,6 +119,7 @@ class CollisionPipeline {
                        const std::vector<Plane>& planes) const;
   // Broad-phase proxy ids: the bodies' indices until a body is destroyed, bodyOfProxy after.
   const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
+  const std::vector<ProxyId>& broadPhaseAwake() const { return broad_->awakeAtUpdate(); }  // the awake proxies
   std::size_t bodyOfProxy(ProxyId proxy) const { return bodyOfProxy_.at(proxy); }
   ProxyId proxyOf(std::size_t body) const { return proxies_[body]; }  // kept while the body lives
   // This step's contacts: those of the awake bodies, the solver's (then those of islands woken
@@ -144,6 +156,9 @@ class CollisionPipeline {
   static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
   // The last step's contacts whose bodies all sleep now go to sleeping_ (and sleptNow_).
   void keepSleeping(const std::vector<RigidBody>& bodies);
+  // Whether contact `c` is kept apart while its bodies sleep: they all sleep, and it comes back
+  // whole when they wake (a grid pair's manifolds are found afresh instead).
+  bool keptAsleep(const Contact& c, const std::vector<RigidBody>& bodies) const;
   // Contact recycling (world/contact_recycling.h): the manifold of the pair (kind, a, b) rebuilt
   // from the frame it was computed in, if it had one and has moved little enough since; `frame`
   // gets the frame the contact now carries.

@@ -8,6 +8,7 @@
 #include "world/compound_contacts.h"
 #include "world/mesh_ground_contacts.h"
 #include "body/body_removal.h"
+#include "world/contact_renumbering.h"
 
 namespace rbsim {
 
@@ -66,10 +67,19 @@ void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, co
   fast_[index] = 0;
 }
 
-std::vector<std::size_t> CollisionPipeline::removeBodies(const BodyRemoval& removal) {
+void CollisionPipeline::removeBodies(const BodyRemoval& removal, std::vector<std::size_t>& touched,
+                                     std::vector<Contact>& reached) {
   for (const std::uint32_t gone : removal.removed()) broad_->remove(proxies_[gone]);
   recycle_.clear();  // keyed by body index, which the moves change: collided afresh next step
   for (const auto& [to, from] : removal.moves()) bodyOfProxy_[proxies_[from]] = to;
+  // The swept bodies' list follows them (read before fast_ moves); it stays in index order.
+  std::size_t keptFast = 0;
+  for (const std::size_t i : fastList_) {
+    const std::uint32_t to = removal.newIndex(i);
+    if (to != BodyRemoval::kGone) fastList_[keptFast++] = to;
+  }
+  fastList_.resize(keptFast);
+  std::sort(fastList_.begin(), fastList_.end());
   removal.gather(proxies_);
   removal.gather(radius_);
   removal.gather(thickness_);
@@ -82,37 +92,17 @@ std::vector<std::size_t> CollisionPipeline::removeBodies(const BodyRemoval& remo
   removal.gather(boxes_);
   // The contacts follow the bodies to their new indices (as the solver's warm starts do,
   // contact_key.h renumberCache): a removed body's go, waking its partner, and the others take
-  // their bodies' new indices, so that sleeping pairs keep theirs. A pair in order (the lower index
-  // first) that a move turns round has its normal reversed (points are midway, unchanged), or, for
-  // a compound's or mesh ground's manifolds, whose part names their shapes in order, goes.
-  std::vector<std::size_t> touched;
-  std::size_t kept = 0;
-  // The sleeping islands' contacts rejoin the step's to be renumbered with them (the next narrow
-  // phase keeps them apart again).
-  const std::vector<Contact> sleeping = sleeping_.takeAll();
-  contacts_.insert(contacts_.end(), sleeping.begin(), sleeping.end());
+  // their bodies' new indices, so that sleeping pairs keep theirs.
+  sleeping_.bodiesRemoved(removal, touched, reached);
   reportedStale_ = true;
-  fastList_.clear();
-  for (std::size_t i = 0; i < fast_.size(); ++i) {
-    if (fast_[i] != 0) fastList_.push_back(i);
-  }
+  std::size_t kept = 0;
   for (Contact& c : contacts_) {
-    const bool pair = c.kind == Contact::Kind::BodyBody;
-    if (removal.involves(c.b) || (pair && removal.involves(c.a))) {
-      const auto turn = [&c](std::size_t, std::size_t) {
-        if (c.part != 0) return false;
-        std::swap(c.childA, c.childB);
-        c.manifold.normal = -c.manifold.normal;
-        return true;
-      };
-      if (!removal.replay(pair, c.a, c.b, turn, [&](std::size_t partner) { touched.push_back(partner); })) continue;
-    }
+    if (!renumberContact(c, removal, touched)) continue;
     if (&contacts_[kept] != &c) contacts_[kept] = c;  // those before the first change stay put
     ++kept;
   }
   contacts_.resize(kept);
   impacts_.clear();
-  return touched;
 }
 
 }  // namespace rbsim

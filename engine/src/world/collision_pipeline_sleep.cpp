@@ -7,19 +7,48 @@
 
 namespace rbsim {
 
+bool CollisionPipeline::keptAsleep(const Contact& c, const std::vector<RigidBody>& bodies) const {
+  const bool plane = c.kind == Contact::Kind::PlaneBody;
+  if (bodies[c.b].awake() || (!plane && bodies[c.a].awake())) return false;
+  // A pair with a compound or a mesh ground keeps all its contacts, one per part; a pair with a
+  // grid, whose several manifolds are found afresh, none (both as before issue 58).
+  const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
+  if (c.part != 0 && !several) return false;
+  return plane || several || (hasGrid_[c.a] == 0 && hasGrid_[c.b] == 0);
+}
+
 void CollisionPipeline::keepSleeping(const std::vector<RigidBody>& bodies) {
   sleptNow_.clear();
   for (const Contact& c : contacts_) {
-    const bool plane = c.kind == Contact::Kind::PlaneBody;
-    if (bodies[c.b].awake() || (!plane && bodies[c.a].awake())) continue;
-    // A pair with a compound or a mesh ground keeps all its contacts, one per part; a pair with a
-    // grid, whose several manifolds are found afresh, none (both as before issue 58).
-    const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
-    if (c.part != 0 && !several) continue;
-    if (!plane && !several && (hasGrid_[c.a] || hasGrid_[c.b])) continue;
+    if (!keptAsleep(c, bodies)) continue;
     sleeping_.add(c, bodies);
     sleptNow_.push_back(c);
   }
+}
+
+void CollisionPipeline::sleepContacts(const std::vector<RigidBody>& bodies, std::vector<std::uint32_t>& newIndex) {
+  sleptNow_.clear();
+  newIndex.resize(contacts_.size());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const Contact& c = contacts_[i];
+    if (keptAsleep(c, bodies)) {
+      sleeping_.add(c, bodies);
+      sleptNow_.push_back(c);
+      newIndex[i] = kNoContact;
+      continue;
+    }
+    newIndex[i] = static_cast<std::uint32_t>(kept);
+    if (kept != i) contacts_[kept] = c;
+    ++kept;
+  }
+  contacts_.resize(kept);
+  reportedStale_ = true;
+  std::vector<ProxyId> asleep;
+  for (const ProxyId p : broad_->awakeAtUpdate()) {
+    if (!bodies[bodyOfProxy_[p]].awake()) asleep.push_back(p);
+  }
+  broad_->rest(asleep);
 }
 
 void CollisionPipeline::takeIslands(const std::vector<std::size_t>& seeds, const std::vector<RigidBody>& bodies,

@@ -173,8 +173,8 @@ void ContactEventTracker::afterSolve(const World& world, const CollisionPipeline
 }
 
 template <typename Names>
-void ContactEventTracker::endWhere(std::vector<Entry>& list, const World& world, const CollisionPipeline& collision,
-                                   Names&& names, std::vector<ContactEndEvent>& ends) {
+void ContactEventTracker::takeWhere(std::vector<Entry>& list, const CollisionPipeline& collision, Names&& names,
+                                    std::vector<Entry>& taken) {
   std::size_t kept = 0;
   for (const Entry& e : list) {
     const std::size_t second = static_cast<std::size_t>(e.lo >> 32);
@@ -183,7 +183,7 @@ void ContactEventTracker::endWhere(std::vector<Entry>& list, const World& world,
                              : names(collision.bodyOfProxy(static_cast<ProxyId>(e.hi))) ||
                                    names(collision.bodyOfProxy(static_cast<ProxyId>(second)));
     if (named) {
-      ends.push_back({pairOf(e, world, collision)});
+      taken.push_back(e);
     } else {
       list[kept++] = e;
     }
@@ -196,39 +196,70 @@ void ContactEventTracker::bodyBroken(const World& world, const CollisionPipeline
     next_ = touching_;
     haveNext_ = true;
   }
-  endWhere(next_, world, collision, [index](std::size_t body) { return body == index; }, step_.end);
+  std::vector<Entry> ending;
+  takeWhere(next_, collision, [index](std::size_t body) { return body == index; }, ending);
+  for (const Entry& e : ending) step_.end.push_back({pairOf(e, world, collision)});
 }
 
 void ContactEventTracker::bodiesRemoving(const World& world, const CollisionPipeline& collision,
                                          const std::vector<std::uint32_t>& gone) {
-  restoreAsleep(touching_);  // renumbered with the others; afterNarrowPhase keeps them aside again
-  endWhere(touching_, world, collision,
-           [&gone](std::size_t body) { return std::binary_search(gone.begin(), gone.end(), body); }, queuedEnds_);
+  const auto named = [&gone](std::size_t body) { return std::binary_search(gone.begin(), gone.end(), body); };
+  std::vector<Entry> ending;
+  takeWhere(touching_, collision, named, ending);
+  // The asleep pairs of the removed bodies, found from their kept contacts: no other asleep pair
+  // is visited (issue 58: removal costs what it touches).
+  std::vector<Contact> kept;
+  collision.keptContactsOf(gone, kept);
+  for (const Contact& c : kept) {
+    const Entry key = keyOf(c, collision);
+    const auto at = asleep_.find({key.hi, key.lo});
+    if (at == asleep_.end()) continue;  // a grid pair's further manifold, or not touching
+    ending.push_back(at->second);
+    asleep_.erase(at);
+  }
+  std::sort(ending.begin(), ending.end());  // in key order, as the pairs are listed
+  for (const Entry& e : ending) queuedEnds_.push_back({pairOf(e, world, collision)});
 }
 
-void ContactEventTracker::bodiesRemoved(const BodyRemoval& removal) {
+void ContactEventTracker::bodiesRemoved(const BodyRemoval& removal, const std::vector<Contact>& keptReached) {
   // Only the plane pairs of moved bodies change key (proxies stay). Each plane's pairs are sorted
   // by body index, so a moved body's are found by binary search, taken out, renamed and merged
   // back, as contact_key.h renumberCache does: no pass over every pair, no sort of them all. The
   // keys are unique, so this is the order a sort of the renamed list gave.
+  const auto moved = [&](std::uint32_t body) {
+    const std::uint32_t to = removal.newIndex(body);
+    return to != BodyRemoval::kGone && to != body;
+  };
+  const auto rename = [&](Entry e) {
+    e.lo = (std::uint64_t{removal.newIndex(e.lo >> 32)} << 32) | (e.lo & 0xffffffffull);
+    return e;
+  };
   std::vector<Entry> renamed;
   for (std::size_t k = 0; k < removal.involvedCount(); ++k) {
     const std::uint32_t body = removal.involvedBody(k);
-    const std::uint32_t to = removal.newIndex(body);
-    if (to == BodyRemoval::kGone || to == body) continue;
+    if (!moved(body)) continue;
     auto plane = std::lower_bound(touching_.begin(), touching_.end(), Entry{kPlaneBit, 0});
     while (plane != touching_.end()) {
       const std::uint64_t hi = plane->hi;
       const auto first = std::lower_bound(plane, touching_.end(), Entry{hi, std::uint64_t{body} << 32});
       auto last = first;
-      while (last != touching_.end() && last->hi == hi && (last->lo >> 32) == body) {
-        renamed.push_back(*last++);
-        renamed.back().lo = (std::uint64_t{to} << 32) | (renamed.back().lo & 0xffffffffull);
-      }
+      while (last != touching_.end() && last->hi == hi && (last->lo >> 32) == body) renamed.push_back(rename(*last++));
       const auto after = touching_.erase(first, last);  // before end() is read: erase moves it
       plane = std::upper_bound(after, touching_.end(), Entry{hi, ~std::uint64_t{0}});
     }
   }
+  // The asleep pairs, found from the kept contacts of the moved bodies: taken out first, then
+  // put back renamed, so that a renamed key never meets one not yet taken.
+  std::vector<Entry> renamedAsleep;
+  for (const Contact& c : keptReached) {
+    if (c.kind != Contact::Kind::PlaneBody || !moved(static_cast<std::uint32_t>(c.b))) continue;
+    const Entry key{kPlaneBit | std::uint64_t{c.a}, secondAndChildren(c.b, c.childA, c.childB)};
+    const auto at = asleep_.find({key.hi, key.lo});
+    if (at == asleep_.end()) continue;  // a further manifold of the pair, or not touching
+    renamedAsleep.push_back(rename(at->second));
+    asleep_.erase(at);
+  }
+  for (const Entry& e : renamedAsleep) asleep_[{e.hi, e.lo}] = e;
   if (renamed.empty()) return;
   std::sort(renamed.begin(), renamed.end());
   const std::size_t kept = touching_.size();
@@ -248,14 +279,6 @@ void ContactEventTracker::commit() {
   step_.clear();
 }
 
-void ContactEventTracker::restoreAsleep(std::vector<Entry>& into) {
-  if (asleep_.empty()) return;
-  const std::size_t first = into.size();
-  for (const auto& [key, entry] : asleep_) into.push_back(entry);  // in key order
-  std::inplace_merge(into.begin(), into.begin() + static_cast<std::ptrdiff_t>(first), into.end());
-  asleep_.clear();
-}
-
 void ContactEventTracker::contactsWoke(const std::vector<Contact>& contacts, const CollisionPipeline& collision) {
   if (asleep_.empty()) return;
   std::vector<Entry>& list = haveNext_ ? next_ : touching_;
@@ -269,6 +292,27 @@ void ContactEventTracker::contactsWoke(const std::vector<Contact>& contacts, con
   }
   std::sort(list.begin() + static_cast<std::ptrdiff_t>(first), list.end());
   std::inplace_merge(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(first), list.end());
+}
+
+void ContactEventTracker::contactsSlept(const std::vector<Contact>& contacts, const CollisionPipeline& collision,
+                                        const std::vector<std::uint32_t>& newIndex) {
+  std::vector<Entry>& list = haveNext_ ? next_ : touching_;
+  std::vector<Entry> slept;
+  slept.reserve(contacts.size());
+  for (const Contact& c : contacts) slept.push_back(keyOf(c, collision));
+  std::sort(slept.begin(), slept.end());
+  std::size_t kept = 0;
+  for (Entry& e : list) {
+    const auto at = std::lower_bound(slept.begin(), slept.end(), e);
+    if (at != slept.end() && at->sameKey(e)) {
+      e.contact = kNoContact;
+      asleep_[{e.hi, e.lo}] = e;
+      continue;
+    }
+    if (e.contact != kNoContact && e.contact < newIndex.size()) e.contact = newIndex[e.contact];
+    list[kept++] = e;
+  }
+  list.resize(kept);
 }
 
 // The asleep pairs with the others, in one list sorted by key: read back into touching_, the

@@ -13,7 +13,8 @@
 // sleeping pair of grid bodies is not collided, and an island asleep is not apart).
 #include <cstddef>
 #include <cstdint>
-#include <map>
+#include <functional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -46,11 +47,17 @@ class ContactEventTracker {
   // Bodies are destroyed (World::destroyBodies), before their ids go stale: `gone`, their
   // indices, sorted. Their pairs end, with this step's events or, between steps, the next step's.
   void bodiesRemoving(const World& world, const CollisionPipeline& collision, const std::vector<std::uint32_t>& gone);
-  // After the removal: the plane pairs follow their bodies' new indices.
-  void bodiesRemoved(const BodyRemoval& removal);
+  // After the removal: the plane pairs follow their bodies' new indices. `keptReached`: the
+  // sleeping islands' contacts of the bodies the removal reached, as they were
+  // (CollisionPipeline::removeBodies), which name the asleep pairs to rename.
+  void bodiesRemoved(const BodyRemoval& removal, const std::vector<Contact>& keptReached);
   // These contacts' island woke (World::wakeIslandsOf): their pairs, kept aside while asleep,
   // touch on among this step's (or, before its narrow phase, the last step's).
   void contactsWoke(const std::vector<Contact>& contacts, const CollisionPipeline& collision);
+  // Islands fell asleep at the end of the step (CollisionPipeline::sleepContacts): their touching
+  // pairs go aside now, and the others' contacts take their new indices (`newIndex`).
+  void contactsSlept(const std::vector<Contact>& contacts, const CollisionPipeline& collision,
+                     const std::vector<std::uint32_t>& newIndex);
   // The step succeeded: its events are the World's until the next one succeeds.
   void commit();
   const ContactEvents& events() const { return events_; }
@@ -74,16 +81,21 @@ class ContactEventTracker {
   static Entry keyOf(const Contact& contact, const CollisionPipeline& collision);
   ContactPair pairOf(const Entry& entry, const World& world, const CollisionPipeline& collision) const;
   bool asleep(const Entry& entry, const World& world, const CollisionPipeline& collision) const;
-  // The entries of `list` naming a body for which `names` is true end (into `ends`) and go.
+  // The entries of `list` naming a body for which `names` is true leave it for `taken`, in order.
   template <typename Names>
-  void endWhere(std::vector<Entry>& list, const World& world, const CollisionPipeline& collision, Names&& names,
-                std::vector<ContactEndEvent>& ends);
+  static void takeWhere(std::vector<Entry>& list, const CollisionPipeline& collision, Names&& names,
+                        std::vector<Entry>& taken);
 
   std::vector<Entry> touching_;  // after the last step, sorted by key, but for asleep_
   // The touching pairs both of whose sides sleep (issue 58: a step visits awake pairs alone), by
   // key, until their island wakes.
-  std::map<std::pair<std::uint64_t, std::uint64_t>, Entry> asleep_;
-  void restoreAsleep(std::vector<Entry>& into);  // asleep_'s entries into a sorted list, which stays so
+  // A hash map: the narrow phase, a wake or a removal looks up a few in one probe each.
+  struct KeyHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
+      return std::hash<std::uint64_t>()(k.first * 0x9e3779b97f4a7c15ull ^ k.second);  // Fibonacci mix of both halves
+    }
+  };
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, Entry, KeyHash> asleep_;
   std::vector<Entry> keys_;      // this step's contacts' keys (scratch)
   std::vector<Entry> next_;      // this step's touching pairs, sorted
   std::vector<ContactHit> hits_;  // the solver's (scratch)

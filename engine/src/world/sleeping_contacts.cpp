@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <tuple>
 
+#include "body/body_removal.h"
+#include "world/contact_renumbering.h"
+
 namespace rbsim {
 
 bool keptBefore(const Contact& x, const Contact& y) {
@@ -79,12 +82,62 @@ void SleepingContacts::all(std::vector<Contact>& out) const {
   for (const std::uint32_t s : order) out.push_back(slots_[s]);
 }
 
-std::vector<Contact> SleepingContacts::takeAll() {
-  std::vector<Contact> out;
-  out.reserve(live_);
-  all(out);
-  *this = SleepingContacts();
-  return out;
+std::vector<std::uint32_t> SleepingContacts::slotsOf(const std::uint32_t* first, std::size_t count) const {
+  std::vector<std::uint32_t> slots;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t body = first[k];
+    if (body >= of_.size()) continue;
+    for (const std::uint32_t slot : of_[body]) {
+      if (used_[slot] != 0) slots.push_back(slot);
+    }
+  }
+  std::sort(slots.begin(), slots.end());
+  slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
+  return slots;
+}
+
+void SleepingContacts::release(std::uint32_t slot) {
+  used_[slot] = 0;
+  free_.push_back(slot);
+  --live_;
+}
+
+void SleepingContacts::of(const std::vector<std::uint32_t>& bodies, std::vector<Contact>& out) const {
+  const std::size_t first = out.size();
+  for (const std::uint32_t slot : slotsOf(bodies.data(), bodies.size())) out.push_back(slots_[slot]);
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), keptBefore);
+}
+
+void SleepingContacts::bodiesRemoved(const BodyRemoval& removal, std::vector<std::size_t>& touched,
+                                     std::vector<Contact>& reached) {
+  std::vector<std::uint32_t> bodies(removal.involvedCount());
+  for (std::size_t k = 0; k < bodies.size(); ++k) bodies[k] = removal.involvedBody(k);
+  const std::size_t firstReached = reached.size();
+  for (const std::uint32_t slot : slotsOf(bodies.data(), bodies.size())) {
+    reached.push_back(slots_[slot]);
+    if (renumberContact(slots_[slot], removal, touched)) continue;
+    // It goes: out of the lists of its bodies as they were (a body staying keeps its list).
+    const Contact& was = reached.back();
+    const auto unfile = [&](std::size_t body) {
+      if (body >= of_.size()) return;
+      std::vector<std::uint32_t>& list = of_[body];
+      list.erase(std::remove(list.begin(), list.end(), slot), list.end());
+    };
+    unfile(was.b);
+    if (was.kind == Contact::Kind::BodyBody) unfile(was.a);
+    release(slot);
+  }
+  std::sort(reached.begin() + static_cast<std::ptrdiff_t>(firstReached), reached.end(), keptBefore);
+  // The lists follow their bodies, as BodyRemoval::gather moves any per-body array; a body past
+  // of_'s end has none.
+  for (const auto& [to, from] : removal.moves()) {
+    if (from < of_.size()) {
+      of_[to] = std::move(of_[from]);
+    } else if (to < of_.size()) {
+      of_[to].clear();
+    }
+  }
+  if (of_.size() > removal.after()) of_.resize(removal.after());
 }
 
 }  // namespace rbsim

@@ -13,6 +13,8 @@
 
 namespace rbsim {
 
+class BodyRemoval;
+
 class SleepingContacts {
  public:
   void add(const Contact& contact, const std::vector<RigidBody>& bodies);
@@ -25,9 +27,14 @@ class SleepingContacts {
                    std::vector<std::size_t>& islandBodies, std::vector<Contact>& contacts);
   // Every kept contact, in key order (kind, lower body or plane, higher body, part), appended.
   void all(std::vector<Contact>& out) const;
-  // Every kept contact leaves, in key order (a removal renumbers them with the step's): the same
-  // order however they were filed, so that a World read back from a snapshot removes alike.
-  std::vector<Contact> takeAll();
+  // The kept contacts of these bodies (indices), each once, in key order.
+  void of(const std::vector<std::uint32_t>& bodies, std::vector<Contact>& out) const;
+  // World::destroyBodies: the kept contacts of the bodies the removal reached follow them
+  // (world/contact_renumbering.h), a removed body's go (their partners into `touched`), and the
+  // lists filed per body move with their bodies. `reached` gets those contacts as they were, in
+  // key order. It costs the reached bodies' contacts, not every kept one (issue 58: removal costs
+  // what it touches; Box2D v3's b2DestroyBody walks the body's own contact list).
+  void bodiesRemoved(const BodyRemoval& removal, std::vector<std::size_t>& touched, std::vector<Contact>& reached);
 
  private:
   std::vector<Contact> slots_;
@@ -35,6 +42,9 @@ class SleepingContacts {
   std::vector<std::uint32_t> free_;           // unused slots
   std::vector<std::vector<std::uint32_t>> of_;  // per body: the slots filed under it
   std::vector<char> seen_;                    // takeIslands' scratch, per body
+  // The slots filed under these bodies, each once, in slot order.
+  std::vector<std::uint32_t> slotsOf(const std::uint32_t* first, std::size_t count) const;
+  void release(std::uint32_t slot);  // the slot's contact leaves (its lists are the caller's)
   std::size_t live_ = 0;
 };
 

@@ -90,6 +90,18 @@ void SplitBroadPhase::rest(ProxyId id) {
   extra_.push_back(id);
 }
 
+void SplitBroadPhase::rest(const std::vector<ProxyId>& asleep) {
+  if (asleep.empty()) return;
+  for (const ProxyId id : asleep) {
+    if (inAwake_[id] == kNone) continue;
+    awake_->remove(inAwake_[id]);
+    inAwake_[id] = kNone;
+    rest(id);
+  }
+  awakeMembers_.erase(std::remove_if(awakeMembers_.begin(), awakeMembers_.end(), [&](ProxyId id) { return inAwake_[id] == kNone; }),
+                      awakeMembers_.end());
+}
+
 void SplitBroadPhase::rebuildTree() {
   for (const ProxyId id : treeItems_) {
     if (id < inTree_.size()) inTree_[id] = 0;

@@ -40,6 +40,9 @@ class SplitBroadPhase {
   const std::vector<ProxyPair>& pairs() const { return pairs_; }
   // Into `out`: the resting proxies whose box overlaps `box`, as of the last update().
   void resting(const Aabb& box, std::vector<ProxyId>& out) const;
+  // Awake proxies whose bodies fell asleep at the end of a step rest now, not at the next
+  // update(), so that nothing before it (a removal) visits them as awake.
+  void rest(const std::vector<ProxyId>& asleep);
   // The proxies awake at the last update() (some may have fallen asleep since).
   const std::vector<ProxyId>& awakeAtUpdate() const { return awakeMembers_; }
   std::size_t capacity() const { return ids_.capacity(); }

@@ -26,6 +26,7 @@
 namespace rbsim {
 
 struct FracturePattern;    // fracture/fracture.h: a body's pieces, kept per body
+class BodyRemoval;         // a batch of removals (engine/src/body/body_removal.h)
 class CollisionPipeline;   // the collision stages (engine/src/world/collision_pipeline.h)
 class ContactSolver;       // the contact solver's seam (engine/src/dynamics/contact_solver.h)
 class ContactEventTracker;  // contact events step to step (engine/src/world/contact_event_tracker.h)
@@ -175,7 +176,8 @@ class World {
   // with the impulse the solver gave it. contacts() lists the step's (those of awake bodies, then
   // those of islands the step woke), then the contacts sleeping islands keep from the step they
   // fell asleep in, ordered by (kind, a, b, part, children); the sleeping ones are gathered when
-  // asked, not by the step (issue 58). contactPoints() index the first part.
+  // asked, not by the step (issue 58). contactPoints() index the first part: an island's contacts
+  // go aside in the step it falls asleep, and their points leave the report with them.
   const std::vector<Contact>& contacts() const;
   const std::vector<SolvedContactPoint>& contactPoints() const;
   const StageStats& stageStats(Stage stage) const { return stats_[static_cast<int>(stage)]; }
@@ -204,10 +206,12 @@ class World {
   void removeStale(std::vector<T>& items) const;  // the entries whose `body` id is no longer valid
   void updateJointFilter();   // the pairs that must not collide, after joints or indices changed
   void checkFinite(const std::vector<std::size_t>& bodies) const;  // after a solver advanced them
-  void updateSleep();                  // world/awake_bodies.cpp, with the five below
+  void updateSleep();                  // world/awake_bodies.cpp, with the six below
+  void sleepContacts();                // the contacts of islands that fell asleep go aside now
   void refreshAwake();                 // awakeList_ is the awake bodies, in index order
   void rebuildAwake();                 // ... from a scan of every body (after removals, loads, undo)
   void wakeBody(std::size_t index);    // wakes and lists it
+  void renumberAwake(const BodyRemoval& removal);  // world/bodies.cpp: the list after a removal
   // Sleeping islands with a body awake now wake whole (Box2D's b2WakeSolverSet): their kept
   // contacts go back to the solver and the event tracker; `solveNow`: appended to this step's
   // contacts (the narrow phase has run), else dropped (it collides them afresh).
