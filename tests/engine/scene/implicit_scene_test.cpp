@@ -91,7 +91,13 @@ TEST(ImplicitScene, EveryFunctionWeighsItsAnalyticVolume) {
       {{{"function", "box"}, {"extents", {0.5, 0.3, 0.2}}}, 0.5 * 0.3 * 0.2},
       {{{"function", "capsule"}, {"radius", 0.2}, {"length", 0.5}}, pi * 0.04 * 0.5 + 4.0 / 3.0 * pi * 0.008},
       {{{"function", "cylinder"}, {"radius", 0.3}, {"height", 0.5}}, pi * 0.09 * 0.5}};
-  for (auto [shape, volume] : shapes) {
+  // Under the sanitizers the ellipsoid, the box and the capsule (the meshing is the same code for
+  // each; the sphere and the cylinder go through the parser there in the ball and cup tests of this
+  // file, the torus in fuzz_corpus_scene): the normal build weighs all six.
+  const std::vector<std::size_t> weighed = test::kSanitizedBuild ? std::vector<std::size_t>{1, 3, 4}
+                                                                 : std::vector<std::size_t>{0, 1, 2, 3, 4, 5};
+  for (const std::size_t i : weighed) {
+    auto [shape, volume] = shapes[i];
     shape["type"] = "implicit";
     const Scene scene = parseImplicit({{"bodies", {{{"name", "b"}, {"shape", shape}, {"density", 1000.0}}}}});
     EXPECT_NEAR(scene.bodies[0].mass / 1000.0, volume, 0.015 * volume) << shape.dump();
