@@ -127,27 +127,23 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   for (const std::size_t touched : collision_->removeBodies(removal)) bodies_[touched].wake();
   // What names a removed body goes with it (every id these name was valid before the batch).
   removeStale(forces_);
-  removeStale(springs_);
+  springIds_.erase(springs_, [&](const Spring& spring) { return !isValid(spring.body); });  // their ids go stale
   removeStale(pendingEvents_);
   removeStale(motions_);
   // A joint goes with either of its bodies; its other body wakes to fall free.
-  std::size_t keptJoints = 0;
-  for (Joint& joint : joints_) {
+  // Its id goes stale (IdTable::erase, which keeps the others in order).
+  jointIds_.erase(joints_, [&](Joint& joint) {
     const std::uint32_t a = removal.newIndex(joint.a);
     const std::uint32_t b = joint.b == kWorldIndex ? 0 : removal.newIndex(joint.b);
     if (a == BodyRemoval::kGone || b == BodyRemoval::kGone) {
       if (a != BodyRemoval::kGone) bodies_[joint.a].wake();
       if (b != BodyRemoval::kGone && joint.b != kWorldIndex) bodies_[joint.b].wake();
-      continue;
+      return true;
     }
     joint.a = a;
     if (joint.b != kWorldIndex) joint.b = b;
-    // Not onto itself: a self-move leaves a std::string member empty (libstdc++), and the joints
-    // before the first removed one kept their bodies but lost their names.
-    if (&joints_[keptJoints] != &joint) joints_[keptJoints] = std::move(joint);
-    ++keptJoints;
-  }
-  joints_.resize(keptJoints);
+    return false;
+  });
   // Warm starts are keyed by body indices: the moved bodies' follow them (read before the moves).
   solver_->bodiesRemoved(removal, bodies_);
   for (const BodyRemoval::Step& s : removal.steps()) {
