@@ -5,6 +5,7 @@
 // next free slot) and its generation; per item its slot. Removing an item moves its slot's
 // generation on and puts the slot on the free list, so an id kept past the removal is stale even
 // once the slot names a new item.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -49,13 +50,22 @@ class IdTable {
   // and may change the ones it keeps.
   template <typename T, typename Gone>
   void erase(std::vector<T>& items, Gone gone) {
+    eraseRanked(items, [&](T& item) { return gone(item) ? std::size_t{0} : kKept; });
+  }
+
+  // As erase, rankOf(item) saying kKept or the erased item's rank: the slots join the free list
+  // by rank, then in array order, as erasing rank 0's items, then rank 1's, ... one call each
+  // would leave them (World::destroyBodies, a batch removed as one body after another).
+  static constexpr std::size_t kKept = SIZE_MAX;
+  template <typename T, typename RankOf>
+  void eraseRanked(std::vector<T>& items, RankOf rankOf) {
+    std::vector<std::pair<std::size_t, std::uint32_t>> freed;  // (rank, slot)
     std::size_t kept = 0;
     for (std::size_t i = 0; i < items.size(); ++i) {
       const std::uint32_t slot = slotOfItem_[i];
-      if (gone(items[i])) {
-        ++slots_[slot].generation;
-        slots_[slot].index = freeSlot_;
-        freeSlot_ = slot;
+      const std::size_t rank = rankOf(items[i]);
+      if (rank != kKept) {
+        freed.emplace_back(rank, slot);
         continue;
       }
       // Not onto itself: a self-move leaves a std::string member empty (libstdc++).
@@ -66,6 +76,12 @@ class IdTable {
     }
     items.resize(kept);
     slotOfItem_.resize(kept);
+    std::stable_sort(freed.begin(), freed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& [rank, slot] : freed) {
+      ++slots_[slot].generation;
+      slots_[slot].index = freeSlot_;
+      freeSlot_ = slot;
+    }
   }
 
   // Erases items[index] (later items move down one), retiring its id.
