@@ -204,6 +204,7 @@ class Session {
     const int dx = input.mouseX - lastX_, dy = input.mouseY - lastY_;
     lastX_ = input.mouseX;
     lastY_ = input.mouseY;
+    dropStaleDrag();
     if (input.pressed[0] && !overPanel && input.mouseX >= 0) grab(input.mouseX, input.mouseY);
     if (!input.down[0]) {
       if (drag_) removeSpring(*world_, drag_->spring);
@@ -218,6 +219,12 @@ class Session {
     if ((orbitingWithLeft_ || input.down[1]) && (dx != 0 || dy != 0) && !input.pressed[0] && !input.pressed[1]) orbit().orbit(dx, dy);
     if (input.down[2] && (dx != 0 || dy != 0) && !input.pressed[2]) orbit().pan(dx, dy, scene_.view.height);
     if (input.wheel != 0.0f && !overPanel) orbit().zoom(input.wheel);
+  }
+
+  // The dragged body left the World (a kill volume, a spawner's lifetime) and took the drag's
+  // spring with it: the drag ends.
+  void dropStaleDrag() {
+    if (drag_ && !isValid(*world_, drag_->spring)) drag_.reset();
   }
 
   // A left press on a body selects it and, unless it is static, starts dragging it; on empty
@@ -252,14 +259,15 @@ class Session {
       f.overlay.plotsRight = panelRect(scene_.view.width, scene_.view.height).x - 8.0f;
     }
     if (orbit_) f.camera = orbit_->camera();
+    dropStaleDrag();
     if (drag_) {
-      const Spring& spring = springs(*world_)[drag_->spring];
+      const Spring& spring = springs(*world_)[indexOf(*world_, drag_->spring)];
       const RigidBody& body = world_->body(spring.body);
       const auto [point, force] = forceOfSpring(spring, body);
       const double gravity = world_->settings().gravity.norm() > 0.0 ? world_->settings().gravity.norm() : kStandardGravity;
       const double weight = body.mass() * gravity;  // [N]
       const Vec3 torque = (point - body.position()).cross(force);
-      const Vec3 anchor = springs(*world_)[drag_->spring].anchor;
+      const Vec3 anchor = spring.anchor;
       f.lines.push_back({toGlm(point), toGlm(anchor), kDragForceColor, true});
       render::appendArrowLines(f.lines, toGlm(point), toGlm(Vec3(point + force / weight)), kDragForceColor);
       render::appendArrowLines(f.lines, toGlm(body.position()), toGlm(Vec3(body.position() + torque / weight)),
@@ -418,7 +426,7 @@ class Session {
   }
 
   struct Drag {
-    std::size_t spring = 0;
+    SpringId spring;
     Vec3 planePoint = Vec3::Zero();   // the grabbed point: the anchor moves in the plane
     Vec3 planeNormal = Vec3::UnitZ(); // through it, facing the camera
   };

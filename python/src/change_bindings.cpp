@@ -89,10 +89,11 @@ void setJoint(PyWorld& w, const py::handle& jointIndex, const py::kwargs& keys) 
   const JointDef& d = c.def;
   try {
     const double max = d.type == JointDef::Type::Prismatic ? d.maxMotorForce : d.maxMotorTorque;
-    if (c.motor) rbsim::setJointMotor(world, j, d.motor, d.motorSpeed, max);
+    const JointId id = world.jointIdAt(j);
+    if (c.motor) rbsim::setJointMotor(world, id, d.motor, d.motorSpeed, max);
     if (c.limits) {
       const bool slider = d.type == JointDef::Type::Prismatic;
-      rbsim::setJointLimits(world, j, d.limits, slider ? d.lowerTranslation : d.lowerAngle, slider ? d.upperTranslation : d.upperAngle);
+      rbsim::setJointLimits(world, id, d.limits, slider ? d.lowerTranslation : d.lowerAngle, slider ? d.upperTranslation : d.upperAngle);
     }
   } catch (const std::invalid_argument& e) {
     throw InputError(kSetJointCall, "", e.what());
@@ -129,7 +130,7 @@ void bindChanges(py::class_<PyWorld>& world) {
       .def("remove_joint",
            [](PyWorld& w, const py::object& joint) {
              const std::size_t j = jointArgument(w, joint, kRemoveJointCall);
-             rbsim::removeJoint(w.world(), j);
+             rbsim::removeJoint(w.world(), w.world().jointIdAt(j));
            },
            py::arg("joint"),
            "remove_joint(self, /, joint)\n--\n\n-> None: removes the joint (PyBullet's removeConstraint); later "

@@ -224,7 +224,7 @@ std::size_t PyWorld::addJoint(const py::kwargs& joint) {
   const JointDef def = parseJointBlock(keys, kJointCall, "", world_);
   std::size_t row = 0;
   try {
-    row = world_.addJoint(def);
+    row = world_.indexOf(world_.addJoint(def));
   } catch (const std::invalid_argument& e) {
     throw InputError(kJointCall, "", e.what());
   }

@@ -130,27 +130,39 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   for (const std::size_t partner : touched) wakeBody(partner);
   // What names a removed body goes with it (every id these name was valid before the batch).
   removeStale(forces_);
-  removeStale(springs_);
+  // A spring or joint goes with its body; their ids go stale, their slots freed in the order one
+  // destroyBody after another frees them (IdTable::eraseRanked): by the rank in `ids` of the first
+  // removed body they name. Ranks by slot and by index before the batch, looked up by binary search.
+  std::vector<std::pair<std::uint32_t, std::size_t>> rankOfSlot, rankOfIndex;
+  for (std::size_t r = 0; r < ids.size(); ++r) {
+    rankOfSlot.emplace_back(ids[r].slot, r);
+    rankOfIndex.emplace_back(removal.removed()[r], r);
+  }
+  std::sort(rankOfSlot.begin(), rankOfSlot.end());
+  std::sort(rankOfIndex.begin(), rankOfIndex.end());
+  const auto rankIn = [](const std::vector<std::pair<std::uint32_t, std::size_t>>& ranks, std::uint32_t key) {
+    return std::lower_bound(ranks.begin(), ranks.end(), std::make_pair(key, std::size_t{0}))->second;
+  };
+  springIds_.eraseRanked(springs_, [&](const Spring& spring) {
+    return isValid(spring.body) ? IdTable<SpringId>::kKept : rankIn(rankOfSlot, spring.body.slot);
+  });
   removeStale(pendingEvents_);
   removeStale(motions_);
   // A joint goes with either of its bodies; its other body wakes to fall free.
-  std::size_t keptJoints = 0;
-  for (Joint& joint : joints_) {
+  jointIds_.eraseRanked(joints_, [&](Joint& joint) {
     const std::uint32_t a = removal.newIndex(joint.a);
     const std::uint32_t b = joint.b == kWorldIndex ? 0 : removal.newIndex(joint.b);
     if (a == BodyRemoval::kGone || b == BodyRemoval::kGone) {
       if (a != BodyRemoval::kGone) wakeBody(joint.a);
       if (b != BodyRemoval::kGone && joint.b != kWorldIndex) wakeBody(joint.b);
-      continue;
+      const std::size_t rankA = a == BodyRemoval::kGone ? rankIn(rankOfIndex, joint.a) : IdTable<JointId>::kKept;
+      const std::size_t rankB = b == BodyRemoval::kGone ? rankIn(rankOfIndex, joint.b) : IdTable<JointId>::kKept;
+      return std::min(rankA, rankB);
     }
     joint.a = a;
     if (joint.b != kWorldIndex) joint.b = b;
-    // Not onto itself: a self-move leaves a std::string member empty (libstdc++), and the joints
-    // before the first removed one kept their bodies but lost their names.
-    if (&joints_[keptJoints] != &joint) joints_[keptJoints] = std::move(joint);
-    ++keptJoints;
-  }
-  joints_.resize(keptJoints);
+    return IdTable<JointId>::kKept;
+  });
   // Warm starts are keyed by body indices: the moved bodies' follow them (read before the moves).
   solver_->bodiesRemoved(removal, bodies_, keptReached);
   for (const BodyRemoval::Step& s : removal.steps()) {

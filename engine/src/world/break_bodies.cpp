@@ -41,9 +41,7 @@ void World::breakBody(std::size_t body, double impulse) {
   awakeStale_ = true;  // its pieces are added awake
   for (std::size_t k = 1; k < pieces.size(); ++k) event.added.push_back(addBody(pieces[k]));
   // The pieces are new bodies with their own centres of mass: the broken body's joints let go.
-  joints_.erase(std::remove_if(joints_.begin(), joints_.end(),
-                               [&](const Joint& j) { return j.a == body || j.b == body; }),
-                joints_.end());
+  jointIds_.erase(joints_, [&](const Joint& j) { return j.a == body || j.b == body; });  // their ids go stale
   updateJointFilter();
   fractureEvents_.push_back(event);
 }

@@ -15,13 +15,15 @@ namespace rbsim {
 
 namespace {
 
-// "setJointMotor: joint 2 ('elbow')", the joint checked to exist.
-std::string who(const char* call, const std::vector<Joint>& joints, std::size_t joint) {
-  const std::string named = std::string(call) + ": joint " + std::to_string(joint);
-  if (joint >= joints.size()) {
-    throw std::invalid_argument(named + ": no such joint; expected an index below " + std::to_string(joints.size()));
+// "setJointMotor: joint 2 ('elbow')", the joint checked to exist; its index in `index`.
+std::string who(const char* call, const World& world, JointId joint, std::size_t& index) {
+  if (!world.isValid(joint)) {
+    throw std::invalid_argument(std::string(call) + ": joint id (slot " + std::to_string(joint.slot) + ", generation " +
+                                std::to_string(joint.generation) + ") is stale: the joint was removed, or never made here");
   }
-  const std::string& name = joints[joint].def.name;
+  index = world.indexOf(joint);
+  const std::string named = std::string(call) + ": joint " + std::to_string(index);
+  const std::string& name = world.joints()[index].def.name;
   return name.empty() ? named : named + " ('" + name + "')";
 }
 
@@ -36,10 +38,11 @@ void wakeBodies(World& world, const Joint& j) {
 
 }  // namespace
 
-void setJointMotor(World& world, std::size_t joint, bool on, double speed, double maxTorque) {
+void setJointMotor(World& world, JointId joint, bool on, double speed, double maxTorque) {
   std::vector<Joint>& joints = WorldAccess::joints(world);
-  const std::string name = who("setJointMotor", joints, joint);
-  Joint& j = joints[joint];
+  std::size_t index = 0;
+  const std::string name = who("setJointMotor", world, joint, index);
+  Joint& j = joints[index];
   const JointDef::Type type = j.def.type;
   if (type != JointDef::Type::Hinge && type != JointDef::Type::Prismatic) {
     refuse(name, "motor", std::string("a ") + jointTypeName(type) + " joint takes no motor; expected a hinge or a prismatic joint");
@@ -58,10 +61,11 @@ void setJointMotor(World& world, std::size_t joint, bool on, double speed, doubl
   wakeBodies(world, j);
 }
 
-void setJointLimits(World& world, std::size_t joint, bool on, double lower, double upper) {
+void setJointLimits(World& world, JointId joint, bool on, double lower, double upper) {
   std::vector<Joint>& joints = WorldAccess::joints(world);
-  const std::string name = who("setJointLimits", joints, joint);
-  Joint& j = joints[joint];
+  std::size_t index = 0;
+  const std::string name = who("setJointLimits", world, joint, index);
+  Joint& j = joints[index];
   const JointDef::Type type = j.def.type;
   if (type == JointDef::Type::Weld) refuse(name, "limits", "a weld joint takes no limits");
   if (on) {
@@ -74,11 +78,11 @@ void setJointLimits(World& world, std::size_t joint, bool on, double lower, doub
   wakeBodies(world, j);
 }
 
-void removeJoint(World& world, std::size_t joint) {
-  std::vector<Joint>& joints = WorldAccess::joints(world);
-  who("removeJoint", joints, joint);
-  const Joint removed = joints[joint];
-  joints.erase(joints.begin() + static_cast<std::ptrdiff_t>(joint));
+void removeJoint(World& world, JointId joint) {
+  std::size_t index = 0;
+  who("removeJoint", world, joint, index);
+  const Joint removed = world.joints()[index];
+  WorldAccess::jointIds(world).eraseAt(WorldAccess::joints(world), index);
   WorldAccess::updateJointFilter(world);  // the pair may collide again, unless another joint holds it apart
   wakeBodies(world, removed);
 }

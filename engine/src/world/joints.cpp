@@ -12,7 +12,7 @@
 
 namespace rbsim {
 
-std::size_t World::addJoint(const JointDef& def) {
+JointId World::addJoint(const JointDef& def) {
   const std::string who = "joint" + (def.name.empty() ? std::string() : " '" + def.name + "'");
   if (!solver_->solvesJoints()) {
     throw std::invalid_argument(who + ": joints need the soft-step solver (world.solver \"soft-step\"); " +
@@ -80,7 +80,20 @@ std::size_t World::addJoint(const JointDef& def) {
   wakeBody(ia);
   if (!world) wakeBody(ib);
   if (!world && !def.collideConnected) collision_->ignorePair(ia, ib);
-  return joints_.size() - 1;
+  return jointIds_.add();
+}
+
+std::size_t World::indexOf(JointId id) const {
+  if (!jointIds_.isValid(id)) {
+    throw std::invalid_argument("joint id (slot " + std::to_string(id.slot) + ", generation " +
+                                std::to_string(id.generation) + ") is stale: the joint was removed, or never made here");
+  }
+  return jointIds_.indexOf(id);
+}
+
+JointId World::jointIdAt(std::size_t index) const {
+  if (index >= joints_.size()) throw std::invalid_argument("jointIdAt: no joint at index " + std::to_string(index));
+  return jointIds_.idAt(index);
 }
 
 void World::wakeJointed() {

@@ -115,7 +115,7 @@ Ragdoll addRagdoll(World& world, const RagdollDef& def) {
     joint.spring = def.jointHertz > 0.0;
     joint.springHertz = def.jointHertz;
     joint.springDampingRatio = def.jointDampingRatio;
-    ragdoll.joints[j] = world.addJoint(joint);
+    ragdoll.joints[j] = world.indexOf(world.addJoint(joint));
   }
   return ragdoll;
 }

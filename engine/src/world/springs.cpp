@@ -12,7 +12,7 @@
 
 namespace rbsim {
 
-std::size_t addSpring(World& world, const Spring& spring) {
+SpringId addSpring(World& world, const Spring& spring) {
   if (!world.isValid(spring.body)) throw std::invalid_argument("spring names no body");
   const RigidBody& body = std::as_const(world).body(spring.body);
   if (!body.isDynamic()) throw std::invalid_argument("spring on the static or kinematic body '" + body.name() + "'");
@@ -21,25 +21,45 @@ std::size_t addSpring(World& world, const Spring& spring) {
       !std::isfinite(spring.damping)) {
     throw std::invalid_argument("spring on body '" + body.name() + "': expected finite anchor and point, k, rest length and damping >= 0");
   }
-  std::vector<Spring>& springs = WorldAccess::springs(world);
-  springs.push_back(spring);
-  return springs.size() - 1;
+  WorldAccess::springs(world).push_back(spring);
+  return WorldAccess::springIds(world).add();
 }
 
 const std::vector<Spring>& springs(const World& world) { return WorldAccess::springs(world); }
 
-void moveSpringAnchor(World& world, std::size_t spring, const Vec3& anchor) {
-  std::vector<Spring>& springs = WorldAccess::springs(world);
-  if (spring >= springs.size()) throw std::invalid_argument("moveSpringAnchor: no such spring");
-  if (!anchor.allFinite()) throw std::invalid_argument("moveSpringAnchor: expected a finite anchor");
-  springs[spring].anchor = anchor;
-  WorldAccess::wakeBody(world, world.indexOf(springs[spring].body));  // and lists it awake
+bool isValid(const World& world, SpringId spring) { return WorldAccess::springIds(world).isValid(spring); }
+
+namespace {
+
+// The spring's index, or std::invalid_argument naming the call.
+std::size_t checkedIndex(const World& world, SpringId spring, const char* call) {
+  if (!isValid(world, spring)) {
+    throw std::invalid_argument(std::string(call) + ": spring id (slot " + std::to_string(spring.slot) + ", generation " +
+                                std::to_string(spring.generation) + ") is stale: the spring was removed, or never made here");
+  }
+  return WorldAccess::springIds(world).indexOf(spring);
 }
 
-void removeSpring(World& world, std::size_t spring) {
-  std::vector<Spring>& springs = WorldAccess::springs(world);
-  if (spring >= springs.size()) throw std::invalid_argument("removeSpring: no such spring");
-  springs.erase(springs.begin() + static_cast<std::ptrdiff_t>(spring));
+}  // namespace
+
+std::size_t indexOf(const World& world, SpringId spring) { return checkedIndex(world, spring, "indexOf"); }
+
+SpringId springIdAt(const World& world, std::size_t index) {
+  if (index >= springs(world).size()) throw std::invalid_argument("springIdAt: no spring at index " + std::to_string(index));
+  return WorldAccess::springIds(world).idAt(index);
+}
+
+void moveSpringAnchor(World& world, SpringId spring, const Vec3& anchor) {
+  const std::size_t index = checkedIndex(world, spring, "moveSpringAnchor");
+  if (!anchor.allFinite()) throw std::invalid_argument("moveSpringAnchor: expected a finite anchor");
+  Spring& s = WorldAccess::springs(world)[index];
+  s.anchor = anchor;
+  WorldAccess::wakeBody(world, world.indexOf(s.body));  // and lists it awake
+}
+
+void removeSpring(World& world, SpringId spring) {
+  const std::size_t index = checkedIndex(world, spring, "removeSpring");
+  WorldAccess::springIds(world).eraseAt(WorldAccess::springs(world), index);
 }
 
 }  // namespace rbsim

@@ -93,7 +93,7 @@ std::vector<std::unique_ptr<StepListener>> cloned(const std::vector<std::unique_
 // escapes it: the 4 bytes of padding after freeSlot_, which a member of 4 bytes or less would fill.
 // Checked where the standard library lays out vectors in 3 pointers of 8 bytes (libstdc++, libc++
 // and MSVC's release library on every 64-bit target the engine builds for, docs/ci.md).
-constexpr std::size_t kWorldBytesCopied = 1584;
+constexpr std::size_t kWorldBytesCopied = 1696;
 static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(World) == kWorldBytesCopied,
               "a member was added to or removed from World: see the comment above World's copy constructor");
 World::World(const World& other)
@@ -104,6 +104,7 @@ World::World(const World& other)
       freeSlot_(other.freeSlot_),
       forces_(other.forces_),
       springs_(other.springs_),
+      springIds_(other.springIds_),
       planes_(other.planes_),
       bodyMaterials_(other.bodyMaterials_),
       planeMaterials_(other.planeMaterials_),
@@ -125,6 +126,7 @@ World::World(const World& other)
       localIndex_(),      // UpdateSleep's scratch, filled afresh by the next step
       undoOpen_(false),   // true only inside a step
       joints_(other.joints_),
+      jointIds_(other.jointIds_),
       pendingEvents_(other.pendingEvents_),
       motions_(other.motions_),
       spawners_(other.spawners_),

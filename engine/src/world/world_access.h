@@ -27,6 +27,9 @@ struct WorldAccess {
   static std::vector<Spring>& springs(World& world) { return world.springs_; }
   static const std::vector<Spring>& springs(const World& world) { return world.springs_; }
   static std::vector<Joint>& joints(World& world) { return world.joints_; }
+  static IdTable<SpringId>& springIds(World& world) { return world.springIds_; }
+  static const IdTable<SpringId>& springIds(const World& world) { return world.springIds_; }
+  static IdTable<JointId>& jointIds(World& world) { return world.jointIds_; }
   static std::vector<KinematicMotion>& motions(World& world) { return world.motions_; }
   static const std::vector<KinematicMotion>& motions(const World& world) { return world.motions_; }
   static std::vector<Spawner>& spawners(World& world) { return world.spawners_; }

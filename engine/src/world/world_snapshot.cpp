@@ -63,6 +63,33 @@ std::vector<T> readNaming(ByteReader& in, const World& world, std::size_t minByt
   return items;
 }
 
+// An IdTable (world/id_table.h): its slots, each item's slot, the free list's head.
+template <typename Id>
+void writeIdTable(ByteWriter& out, const IdTable<Id>& table) {
+  out.count(table.slots().size());
+  for (const typename IdTable<Id>::Slot& s : table.slots()) {
+    out.u32(s.index);
+    out.u32(s.generation);
+  }
+  for (std::uint32_t slot : table.slotOfItem()) out.u32(slot);
+  out.u32(table.freeSlot());
+}
+
+// The ids of `items` items, checked as the bodies' are.
+template <typename Id>
+void readIdTable(ByteReader& in, std::size_t items, IdTable<Id>& table, const char* what) {
+  std::vector<typename IdTable<Id>::Slot> slots(in.count(8, what));
+  for (typename IdTable<Id>::Slot& s : slots) {
+    s.index = in.u32();
+    s.generation = in.u32();
+  }
+  std::vector<std::uint32_t> slotOfItem(items);
+  for (std::uint32_t& slot : slotOfItem) slot = in.u32();
+  const std::uint32_t freeSlot = in.u32();
+  const std::string problem = table.assign(std::move(slots), std::move(slotOfItem), freeSlot);
+  if (!problem.empty()) in.fail(std::string(what) + ": " + problem);
+}
+
 }  // namespace
 
 // save and load name the World's members one by one, as World's copy constructor does
@@ -74,7 +101,7 @@ std::vector<T> readNaming(ByteReader& in, const World& world, std::size_t minByt
 // queryCache_ (the queries rebuild their tree); stats_, stageClock_ (timing, not state);
 // awakeList_, listed_, awakeSorted_, awakeStale_, awakeScanned_ (the awake list, rebuilt from the
 // bodies' flags after a load), localIndex_, undoOpen_ (a step's scratch).
-constexpr std::size_t kWorldBytesSaved = 1584;
+constexpr std::size_t kWorldBytesSaved = 1696;
 static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(World) == kWorldBytesSaved,
               "a member was added to or removed from World: see the comment above WorldSnapshotAccess::save");
 
@@ -96,7 +123,9 @@ void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
   }
   writeAll(out, w.forces_, [](ByteWriter& o, const ScriptedForce& f) { snapshot::write(o, f); });
   writeAll(out, w.springs_, [](ByteWriter& o, const Spring& s) { snapshot::write(o, s); });
+  writeIdTable(out, w.springIds_);
   writeAll(out, w.joints_, [](ByteWriter& o, const Joint& j) { snapshot::write(o, j); });
+  writeIdTable(out, w.jointIds_);
   writeAll(out, w.pendingEvents_, [](ByteWriter& o, const PoseEvent& e) { snapshot::write(o, e); });
   writeAll(out, w.motions_, [](ByteWriter& o, const KinematicMotion& m) { snapshot::write(o, m); });
   out.count(w.spawners_.size());
@@ -175,12 +204,14 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
   }
   w.forces_ = readNaming<ScriptedForce>(in, w, 8 + 8 * 8 + 8, "scripted forces", snapshot::readForce);
   w.springs_ = readNaming<Spring>(in, w, 8 + 9 * 8, "springs", snapshot::readSpring);
+  readIdTable(in, w.springs_.size(), w.springIds_, "spring ids");
   std::vector<Joint> joints(in.count(8, "joints"));
   for (Joint& j : joints) {
     j = snapshot::readJoint(in);
     if (j.a >= n || (j.b != kWorldIndex && j.b >= n) || j.a == j.b) in.fail("joint '" + j.def.name + "': bodies out of range");
   }
   w.joints_ = std::move(joints);
+  readIdTable(in, w.joints_.size(), w.jointIds_, "joint ids");
   if (!w.joints_.empty() && !w.solver_->solvesJoints()) in.fail("joints under a solver that solves none");
   w.pendingEvents_ = readNaming<PoseEvent>(in, w, 8 + 8 + 4, "pose events", snapshot::readPoseEvent);
   w.motions_ = readNaming<KinematicMotion>(in, w, 8 + 4 + 6 * 8 + 8 + 1, "kinematic motions", snapshot::readMotion);

@@ -34,11 +34,11 @@ TEST(ChangesDocExample, RunsAsDocumented) {
   hinge.type = rbsim::JointDef::Type::Hinge;
   hinge.bodyA = world.addBody(rod);
   hinge.anchor = rbsim::Vec3(3.0, 2.0, 0.0);
-  const std::size_t j = world.addJoint(hinge);
+  const rbsim::JointId j = world.addJoint(hinge);
   rbsim::setJointMotor(world, j, true, -2.0, 50.0);                  // on: speed [rad/s], largest torque [N m]
   rbsim::setJointLimits(world, j, true, -1.0, 1.0);                  // [rad]
   world.step();
-  rbsim::removeJoint(world, j);                                      // later joints move down one index
+  rbsim::removeJoint(world, j);                                      // j is stale from now on
   std::string refused;
   try {
     rbsim::setBodyMaterial(world, ball, rbsim::Material{1.5, 0.6, 0.5});

@@ -179,11 +179,11 @@ TEST_P(ContactEventsDrop, AFailedStepLeavesTheLastStepsEvents) {
   wild.body = w.addBody(far);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  addSpring(w, wild);
+  const SpringId wildSpring = addSpring(w, wild);
   EXPECT_THROW(w.step(), SimulationError);
   ASSERT_EQ(contactEvents(w).begin.size(), 1u);
   EXPECT_EQ(contactEvents(w).begin[0].point, begun.point);
-  removeSpring(w, 0);
+  removeSpring(w, wildSpring);
   w.step();  // the retry: the pair goes on touching, nothing begins twice
   EXPECT_TRUE(contactEvents(w).begin.empty());
   EXPECT_TRUE(contactEvents(w).end.empty());

@@ -45,15 +45,15 @@ TEST_P(JointChanges, MotorReachesTheNewTargetSpeed) {
   def.motor = true;
   def.motorSpeed = 1.0;
   def.maxMotorTorque = 100.0;  // [N m]: I = 0.04 kg m^2 turns 3 rad/s in about 1.2 ms
-  world.addJoint(def);
+  const JointId joint = world.addJoint(def);
   run(world, 0.5);
   EXPECT_NEAR(readJoint(world, 0).speed, 1.0, 1e-6);
-  setJointMotor(world, 0, true, -2.0, 100.0);
+  setJointMotor(world, joint, true, -2.0, 100.0);
   EXPECT_EQ(world.joints()[0].def.motorSpeed, -2.0);
   run(world, 0.1);
   EXPECT_NEAR(readJoint(world, 0).speed, -2.0, 1e-6);
   // Off, the motor lets the wheel spin on freely at the speed it had.
-  setJointMotor(world, 0, false, 0.0, 0.0);
+  setJointMotor(world, joint, false, 0.0, 0.0);
   EXPECT_FALSE(world.joints()[0].def.motor);
   const double speed = readJoint(world, 0).speed;
   run(world, 0.2);
@@ -71,16 +71,16 @@ TEST_P(JointChanges, LimitsSetWhileRunningHoldTheAngle) {
   JointDef def;
   def.type = JointDef::Type::Hinge;
   def.bodyA = id;
-  world.addJoint(def);
+  const JointId joint = world.addJoint(def);
   world.step();
-  setJointLimits(world, 0, true, -0.3, 0.3);
+  setJointLimits(world, joint, true, -0.3, 0.3);
   double most = 0.0;
   for (int i = 0; i < static_cast<int>(2.0 / dt()); ++i) {
     world.step();
     most = std::max(most, std::abs(readJoint(world, 0).angle));
   }
   EXPECT_LT(most, 0.3 + 0.01);
-  setJointLimits(world, 0, false, 0.0, 0.0);
+  setJointLimits(world, joint, false, 0.0, 0.0);
   // Turning about the pivot at 2 rad/s: omega and the centre's v = omega x (x - pivot) together.
   world.body(id).setAngularVelocity(Vec3(0.0, 0.0, 2.0));
   world.body(id).setVelocity(Vec3(0.0, 0.0, 2.0).cross(world.body(id).position()));
@@ -101,14 +101,14 @@ TEST_P(JointChanges, RemovedJointLetsTheBodyFallFreely) {
   const BodyId second = world.addBody(other);
   JointDef hang;
   hang.bodyA = id;
-  world.addJoint(hang);
+  const JointId first = world.addJoint(hang);
   hang.bodyA = second;
   hang.anchor = Vec3(3.0, 0.0, 0.0);
   hang.name = "second";
   world.addJoint(hang);
   run(world, 1.0);
   EXPECT_NEAR(world.body(id).position().y(), -0.5, 1e-3);  // hanging
-  removeJoint(world, 0);
+  removeJoint(world, first);
   ASSERT_EQ(world.joints().size(), 1u);
   EXPECT_EQ(world.joints()[0].def.name, "second");
   EXPECT_EQ(world.joints()[0].a, world.indexOf(second));
@@ -132,10 +132,10 @@ TEST_P(JointChanges, RemovedJointsBodiesCollideAgain) {
   def.bodyA = world.idAt(1);
   def.bodyB = world.idAt(0);
   def.anchor = Vec3(0.2, 0.0, 0.0);
-  world.addJoint(def);
+  const JointId joint = world.addJoint(def);
   world.step();
   EXPECT_TRUE(world.contacts().empty());
-  removeJoint(world, 0);
+  removeJoint(world, joint);
   world.step();
   EXPECT_FALSE(world.contacts().empty());
 }
@@ -152,11 +152,11 @@ TEST_P(JointChanges, BadValuesAreRefusedAndChangeNothing) {
   hinge.motor = true;
   hinge.motorSpeed = 1.0;
   hinge.maxMotorTorque = 5.0;
-  world.addJoint(hinge);
+  const JointId elbow = world.addJoint(hinge);
   JointDef weld;
   weld.type = JointDef::Type::Weld;
   weld.bodyA = a;
-  world.addJoint(weld);
+  const JointId welded = world.addJoint(weld);
   world.step();
   const std::uint64_t hash = world.stateHash();
   const auto refused = [&](auto change, const std::string& words) {
@@ -166,17 +166,19 @@ TEST_P(JointChanges, BadValuesAreRefusedAndChangeNothing) {
     const JointDef& d = world.joints()[0].def;
     EXPECT_TRUE(d.motor && d.motorSpeed == 1.0 && d.maxMotorTorque == 5.0 && !d.limits);
   };
-  refused([&] { setJointMotor(world, 0, true, 2e5, 5.0); },
+  refused([&] { setJointMotor(world, elbow, true, 2e5, 5.0); },
           "setJointMotor: joint 0 ('elbow'): motor.speed: expected a speed of at most 100000 rad/s either way, got 200000");
-  refused([&] { setJointMotor(world, 0, true, 1.0, -5.0); }, "motor.max_torque: expected a torque from 0 to 1e+12 N m, got -5");
-  refused([&] { setJointMotor(world, 0, true, NAN, 5.0); }, "motor.speed: expected a speed of at most");
-  refused([&] { setJointLimits(world, 0, true, 1.0, -1.0); },
+  refused([&] { setJointMotor(world, elbow, true, 1.0, -5.0); }, "motor.max_torque: expected a torque from 0 to 1e+12 N m, got -5");
+  refused([&] { setJointMotor(world, elbow, true, NAN, 5.0); }, "motor.speed: expected a speed of at most");
+  refused([&] { setJointLimits(world, elbow, true, 1.0, -1.0); },
           "limits: expected [lower, upper] angles in radians with -pi <= lower <= upper <= pi");
-  refused([&] { setJointLimits(world, 0, true, -4.0, 0.0); }, "limits: expected [lower, upper] angles");
-  refused([&] { setJointMotor(world, 1, true, 1.0, 5.0); }, "motor: a weld joint takes no motor");
-  refused([&] { setJointLimits(world, 1, true, -1.0, 1.0); }, "limits: a weld joint takes no limits");
-  refused([&] { setJointMotor(world, 2, true, 1.0, 5.0); }, "joint 2: no such joint; expected an index below 2");
-  refused([&] { removeJoint(world, 2); }, "removeJoint: joint 2: no such joint");
+  refused([&] { setJointLimits(world, elbow, true, -4.0, 0.0); }, "limits: expected [lower, upper] angles");
+  refused([&] { setJointMotor(world, welded, true, 1.0, 5.0); }, "motor: a weld joint takes no motor");
+  refused([&] { setJointLimits(world, welded, true, -1.0, 1.0); }, "limits: a weld joint takes no limits");
+  const JointId never{2, 0};  // slot 2: no joint was ever made there
+  refused([&] { setJointMotor(world, never, true, 1.0, 5.0); },
+          "setJointMotor: joint id (slot 2, generation 0) is stale: the joint was removed, or never made here");
+  refused([&] { removeJoint(world, never); }, "removeJoint: joint id (slot 2, generation 0) is stale");
 }
 
 INSTANTIATE_TEST_SUITE_P(Dt, JointChanges, testing::Values(1.0 / 60.0, 1.0 / 240.0),

@@ -57,7 +57,7 @@ TEST_P(StepUndo, AFailedStepLeavesTheWorldAsItWasAndARetryTakesTheStepWithoutThe
   wild.body = w.idAt(1);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  addSpring(w, wild);
+  const SpringId wildSpring = addSpring(w, wild);
   const std::uint64_t hash = w.stateHash();
   const std::uint64_t steps = w.stepCount();
   EXPECT_THROW(w.step(), SimulationError);
@@ -65,7 +65,7 @@ TEST_P(StepUndo, AFailedStepLeavesTheWorldAsItWasAndARetryTakesTheStepWithoutThe
   EXPECT_EQ(w.stepCount(), steps);
   EXPECT_THROW(w.step(), SimulationError);  // the same step fails the same way: nothing compounds
   EXPECT_EQ(w.stateHash(), hash);
-  removeSpring(w, 0);
+  removeSpring(w, wildSpring);
   World twin = without;
   w.step();
   twin.step();
@@ -107,7 +107,7 @@ TEST_P(StepUndo, AFailedStepThatSpawnsAndRemovesLeavesTheBodiesAsTheyWere) {
   wild.body = w.idAt(1);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  addSpring(w, wild);
+  const SpringId wildSpring = addSpring(w, wild);
   const auto names = [](const World& world) {
     std::vector<std::string> out;
     for (const RigidBody& b : world.bodies()) out.push_back(b.name());
@@ -124,7 +124,7 @@ TEST_P(StepUndo, AFailedStepThatSpawnsAndRemovesLeavesTheBodiesAsTheyWere) {
   EXPECT_EQ(w.stateHash(), hash);
   EXPECT_TRUE(spawnedBodies(w).empty()) << "the lists of the last step that stood (none)";
   EXPECT_TRUE(removedBodies(w).empty());
-  removeSpring(w, 0);
+  removeSpring(w, wildSpring);
   World twin = without;
   const int steps = static_cast<int>(std::ceil(0.7 / dt));  // b0..b2 fall below 9.8 m by 0.5 s
   for (int i = 0; i < steps; ++i) {  // the retry, then on until the kill volume has taken bodies too
@@ -164,14 +164,14 @@ TEST_P(SoftStepUndo, AFailedStepThatOnlySpawnsLeavesTheBodiesAsTheyWere) {
   wild.body = w.idAt(0);
   wild.anchor = Vec3(0, -1e6, 0);
   wild.stiffness = std::numeric_limits<double>::max();
-  addSpring(w, wild);
+  const SpringId wildSpring = addSpring(w, wild);
   const std::size_t bodies = w.bodies().size(), joints = w.joints().size();
   const std::uint64_t hash = w.stateHash();
   EXPECT_THROW(w.step(), SimulationError);
   EXPECT_EQ(w.bodies().size(), bodies);
   EXPECT_EQ(w.joints().size(), joints);
   EXPECT_EQ(w.stateHash(), hash);
-  removeSpring(w, 0);
+  removeSpring(w, wildSpring);
   World twin = without;
   for (int i = 0; i < 5; ++i) {
     w.step();

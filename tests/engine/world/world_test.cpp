@@ -261,11 +261,11 @@ TEST(World, AMovedSpringWakesItsBodyPullsItAndStopsWhenRemoved) {
   spring.anchor = Vec3::Zero();
   spring.point = Vec3(0.5, 0.0, 0.0);  // on the +x face
   spring.stiffness = 10.0;
-  const std::size_t index = addSpring(world, spring);
+  const SpringId index = addSpring(world, spring);
   world.body(world.idAt(0)).sleep();
   moveSpringAnchor(world, index, Vec3(1.5, 0.0, 0.0));
   EXPECT_TRUE(world.bodies()[0].awake());
-  const Spring& moved = springs(world)[index];
+  const Spring& moved = springs(world)[indexOf(world, index)];
   const auto [point, force] = forceOfSpring(moved, world.body(moved.body));
   EXPECT_TRUE(allNear(point, Vec3(0.5, 0.0, 0.0), 0.0));
   EXPECT_TRUE(allNear(force, Vec3(10.0, 0.0, 0.0), 1e-15)) << "k |d| along d, d = 1 m";
@@ -276,7 +276,7 @@ TEST(World, AMovedSpringWakesItsBodyPullsItAndStopsWhenRemoved) {
   world.step();
   EXPECT_EQ(world.bodies()[0].velocity().x(), v);
   EXPECT_TRUE(springs(world).empty());
-  EXPECT_THROW(moveSpringAnchor(world, 0, Vec3::Zero()), std::invalid_argument);
+  EXPECT_THROW(moveSpringAnchor(world, index, Vec3::Zero()), std::invalid_argument);  // removed: stale
 }
 
 }  // namespace

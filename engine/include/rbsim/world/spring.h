@@ -8,6 +8,7 @@
 #include "rbsim/body/body_id.h"
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/math/types.h"
+#include "rbsim/world/item_ids.h"
 
 namespace rbsim {
 
@@ -29,14 +30,23 @@ struct Spring {
 std::pair<Vec3, Vec3> forceOfSpring(const Spring& spring, const RigidBody& body);
 
 // A World's springs, free functions over World (docs/architecture.md, "The World's surface").
-// Adds one on a dynamic body; returns its index in springs(world). Throws std::invalid_argument on
-// a stale id, a static or kinematic body, or an anchor, point, stiffness, rest length or damping
-// that is not finite and >= 0.
-std::size_t addSpring(World& world, const Spring& spring);
+// Adds one on a dynamic body; returns its id (world/item_ids.h), which names the spring until it
+// is removed, by hand or with its body. Throws std::invalid_argument on a stale body id, a static
+// or kinematic body, or an anchor, point, stiffness, rest length or damping that is not finite
+// and >= 0.
+SpringId addSpring(World& world, const Spring& spring);
 const std::vector<Spring>& springs(const World& world);
+// A spring's id and its index in springs(world): false / throws std::invalid_argument for a stale
+// id (the spring removed, or never made here); springIdAt throws when out of range.
+bool isValid(const World& world, SpringId spring);
+std::size_t indexOf(const World& world, SpringId spring);
+SpringId springIdAt(const World& world, std::size_t index);
 // A spring whose anchor is moved by hand (window mode drags a body by one, as Box2D's mouse
-// joint): wakes the body, as every manual change does. Throws on a bad index or anchor.
-void moveSpringAnchor(World& world, std::size_t spring, const Vec3& anchor);
-void removeSpring(World& world, std::size_t spring);  // later springs move down one index
+// joint): wakes the body, as every manual change does. Throws on a stale id or a bad anchor,
+// the World unchanged.
+void moveSpringAnchor(World& world, SpringId spring, const Vec3& anchor);
+// Its id goes stale; later springs move down one index in springs(world), their ids unchanged.
+// Throws on a stale id, the World unchanged.
+void removeSpring(World& world, SpringId spring);
 
 }  // namespace rbsim

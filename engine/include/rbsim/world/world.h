@@ -16,6 +16,8 @@
 #include "rbsim/dynamics/step_listener.h"
 #include "rbsim/body/body_id.h"
 #include "rbsim/world/contact_events.h"
+#include "rbsim/world/id_table.h"
+#include "rbsim/world/item_ids.h"
 #include "rbsim/world/kinematic_motion.h"
 #include "rbsim/world/query_cache.h"
 #include "rbsim/world/scripts.h"
@@ -138,9 +140,14 @@ class World {
   const std::vector<std::unique_ptr<StepListener>>& stepListeners() const { return listeners_; }
   // A ball or hinge joint between def.bodyA (dynamic) and def.bodyB (any body, or kWorldAnchor)
   // at the bodies' poses now (world/joints.cpp). Throws std::invalid_argument on a bad def, and
-  // under the PGS solver, which does not solve joints.
-  std::size_t addJoint(const JointDef& def);
+  // under the PGS solver, which does not solve joints. Returns its id (world/item_ids.h).
+  JointId addJoint(const JointDef& def);
   const std::vector<Joint>& joints() const { return joints_; }
+  // A joint's id and its index in joints(), as for bodies (world/joints.cpp): false / throws
+  // std::invalid_argument for a stale id (the joint removed, or never made here).
+  bool isValid(JointId id) const { return jointIds_.isValid(id); }
+  std::size_t indexOf(JointId id) const;
+  JointId jointIdAt(std::size_t index) const;  // the id of joints()[index]; throws when out of range
 
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite,
@@ -254,6 +261,7 @@ class World {
   std::uint32_t freeSlot_ = UINT32_MAX;  // head of the free list
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
+  IdTable<SpringId> springIds_;  // springs_'s ids (world/spring.h)
   std::vector<Plane> planes_;
   std::vector<Material> bodyMaterials_;   // per body
   std::vector<Material> planeMaterials_;  // per plane
@@ -279,6 +287,7 @@ class World {
   std::vector<std::uint32_t> localIndex_;  // UpdateSleep's scratch, per body: its place in awakeList_
   bool undoOpen_ = false;  // in a step, after saveUndo: a body listed now is saved first
   std::vector<Joint> joints_;
+  IdTable<JointId> jointIds_;  // joints_'s ids
   std::vector<PoseEvent> pendingEvents_;  // sorted by time; applied ones are removed
   std::vector<KinematicMotion> motions_;  // at most one per body
   std::vector<Spawner> spawners_;

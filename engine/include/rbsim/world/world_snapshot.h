@@ -36,8 +36,9 @@ namespace rbsim {
 
 // 2: which bodies share one mesh object (issue 58: a World read back is drawn in the same
 // instanced batches). 3: a body record has no colour (issue 58: colours are the app's,
-// rbsim/scene/view_desc.h).
-inline constexpr std::uint32_t kWorldSnapshotVersion = 3;
+// rbsim/scene/view_desc.h). 4: the joints' and springs' id tables (issue 58: a JointId or SpringId
+// taken before a save names the same joint or spring in the World read back).
+inline constexpr std::uint32_t kWorldSnapshotVersion = 4;
 
 // Throws std::invalid_argument for a World with a step listener or the LCP solver.
 std::vector<std::uint8_t> saveWorldSnapshot(const World& world);
