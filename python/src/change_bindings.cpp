@@ -89,7 +89,7 @@ void setJoint(PyWorld& w, const py::handle& jointIndex, const py::kwargs& keys) 
   const JointDef& d = c.def;
   try {
     const double max = d.type == JointDef::Type::Prismatic ? d.maxMotorForce : d.maxMotorTorque;
-    const JointId id = world.jointIdAt(j);
+    const JointId id = jointIdAt(world, j);
     if (c.motor) rbsim::setJointMotor(world, id, d.motor, d.motorSpeed, max);
     if (c.limits) {
       const bool slider = d.type == JointDef::Type::Prismatic;
@@ -130,7 +130,7 @@ void bindChanges(py::class_<PyWorld>& world) {
       .def("remove_joint",
            [](PyWorld& w, const py::object& joint) {
              const std::size_t j = jointArgument(w, joint, kRemoveJointCall);
-             rbsim::removeJoint(w.world(), w.world().jointIdAt(j));
+             rbsim::removeJoint(w.world(), rbsim::jointIdAt(w.world(), j));
            },
            py::arg("joint"),
            "remove_joint(self, /, joint)\n--\n\n-> None: removes the joint (PyBullet's removeConstraint); later "

@@ -11,6 +11,7 @@
 #include "rbsim/integrate/free_rigid_body.h"
 #include "rbsim/io/input_error.h"
 #include "rbsim/scene/scene_parts.h"
+#include "rbsim/world/joint_changes.h"
 #include "rbsim/world/made_names.h"
 #include "to_json.h"
 
@@ -224,7 +225,7 @@ std::size_t PyWorld::addJoint(const py::kwargs& joint) {
   const JointDef def = parseJointBlock(keys, kJointCall, "", world_);
   std::size_t row = 0;
   try {
-    row = world_.indexOf(world_.addJoint(def));
+    row = indexOf(world_, world_.addJoint(def));
   } catch (const std::invalid_argument& e) {
     throw InputError(kJointCall, "", e.what());
   }

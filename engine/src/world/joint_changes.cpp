@@ -15,13 +15,18 @@ namespace rbsim {
 
 namespace {
 
-// "setJointMotor: joint 2 ('elbow')", the joint checked to exist; its index in `index`.
-std::string who(const char* call, const World& world, JointId joint, std::size_t& index) {
-  if (!world.isValid(joint)) {
+// The joint's index, or std::invalid_argument naming the call.
+std::size_t checkedIndex(const World& world, JointId joint, const char* call) {
+  if (!isValid(world, joint)) {
     throw std::invalid_argument(std::string(call) + ": joint id (slot " + std::to_string(joint.slot) + ", generation " +
                                 std::to_string(joint.generation) + ") is stale: the joint was removed, or never made here");
   }
-  index = world.indexOf(joint);
+  return WorldAccess::jointIds(world).indexOf(joint);
+}
+
+// "setJointMotor: joint 2 ('elbow')", the joint checked to exist; its index in `index`.
+std::string who(const char* call, const World& world, JointId joint, std::size_t& index) {
+  index = checkedIndex(world, joint, call);
   const std::string named = std::string(call) + ": joint " + std::to_string(index);
   const std::string& name = world.joints()[index].def.name;
   return name.empty() ? named : named + " ('" + name + "')";
@@ -37,6 +42,15 @@ void wakeBodies(World& world, const Joint& j) {
 }
 
 }  // namespace
+
+bool isValid(const World& world, JointId joint) { return WorldAccess::jointIds(world).isValid(joint); }
+
+std::size_t indexOf(const World& world, JointId joint) { return checkedIndex(world, joint, "indexOf"); }
+
+JointId jointIdAt(const World& world, std::size_t index) {
+  if (index >= world.joints().size()) throw std::invalid_argument("jointIdAt: no joint at index " + std::to_string(index));
+  return WorldAccess::jointIds(world).idAt(index);
+}
 
 void setJointMotor(World& world, JointId joint, bool on, double speed, double maxTorque) {
   std::vector<Joint>& joints = WorldAccess::joints(world);

@@ -83,19 +83,6 @@ JointId World::addJoint(const JointDef& def) {
   return jointIds_.add();
 }
 
-std::size_t World::indexOf(JointId id) const {
-  if (!jointIds_.isValid(id)) {
-    throw std::invalid_argument("joint id (slot " + std::to_string(id.slot) + ", generation " +
-                                std::to_string(id.generation) + ") is stale: the joint was removed, or never made here");
-  }
-  return jointIds_.indexOf(id);
-}
-
-JointId World::jointIdAt(std::size_t index) const {
-  if (index >= joints_.size()) throw std::invalid_argument("jointIdAt: no joint at index " + std::to_string(index));
-  return jointIds_.idAt(index);
-}
-
 void World::wakeJointed() {
   // A body a joint wakes wakes its island, whose kept contacts are solved this step; that island
   // may hold the sleeping side of another joint, hence the rounds.

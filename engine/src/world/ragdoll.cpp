@@ -10,6 +10,7 @@
 
 #include "rbsim/geometry/mesh_generators.h"
 #include "rbsim/shapes/shape.h"
+#include "rbsim/world/joint_changes.h"
 #include "rbsim/world/world.h"
 
 namespace rbsim {
@@ -115,7 +116,7 @@ Ragdoll addRagdoll(World& world, const RagdollDef& def) {
     joint.spring = def.jointHertz > 0.0;
     joint.springHertz = def.jointHertz;
     joint.springDampingRatio = def.jointDampingRatio;
-    ragdoll.joints[j] = world.indexOf(world.addJoint(joint));
+    ragdoll.joints[j] = indexOf(world, world.addJoint(joint));
   }
   return ragdoll;
 }

@@ -30,6 +30,7 @@ struct WorldAccess {
   static IdTable<SpringId>& springIds(World& world) { return world.springIds_; }
   static const IdTable<SpringId>& springIds(const World& world) { return world.springIds_; }
   static IdTable<JointId>& jointIds(World& world) { return world.jointIds_; }
+  static const IdTable<JointId>& jointIds(const World& world) { return world.jointIds_; }
   static std::vector<KinematicMotion>& motions(World& world) { return world.motions_; }
   static const std::vector<KinematicMotion>& motions(const World& world) { return world.motions_; }
   static std::vector<Spawner>& spawners(World& world) { return world.spawners_; }

@@ -72,16 +72,16 @@ TEST_P(JointSpringIds, JointIdNamesItsJointAfterAnEarlierOneIsRemoved) {
   const JointId a = hinge(world, 0), b = hinge(world, 1), c = hinge(world, 2);
   removeJoint(world, a);
   ASSERT_EQ(world.joints().size(), 2u);
-  EXPECT_EQ(world.indexOf(b), 0u);
-  EXPECT_EQ(world.indexOf(c), 1u);
-  EXPECT_EQ(world.jointIdAt(1), c);
+  EXPECT_EQ(indexOf(world, b), 0u);
+  EXPECT_EQ(indexOf(world, c), 1u);
+  EXPECT_EQ(jointIdAt(world, 1), c);
   setJointMotor(world, c, true, kSpeed, kMaxTorque);
-  EXPECT_EQ(world.joints()[world.indexOf(c)].def.name, "c");
-  EXPECT_TRUE(world.joints()[world.indexOf(c)].def.motor);
-  EXPECT_FALSE(world.joints()[world.indexOf(b)].def.motor);
+  EXPECT_EQ(world.joints()[indexOf(world, c)].def.name, "c");
+  EXPECT_TRUE(world.joints()[indexOf(world, c)].def.motor);
+  EXPECT_FALSE(world.joints()[indexOf(world, b)].def.motor);
   run(world, 0.5);
-  EXPECT_NEAR(readJoint(world, world.indexOf(c)).speed, kSpeed, 1e-6);
-  EXPECT_EQ(readJoint(world, world.indexOf(b)).speed, 0.0);
+  EXPECT_NEAR(readJoint(world, indexOf(world, c)).speed, kSpeed, 1e-6);
+  EXPECT_EQ(readJoint(world, indexOf(world, b)).speed, 0.0);
   EXPECT_EQ(world.body(world.idAt(1)).angularVelocity().norm(), 0.0);  // wheel b never turned
 }
 
@@ -97,15 +97,15 @@ TEST_P(JointSpringIds, StaleJointIdsAreRefusedAndChangeNothing) {
   world.step();
   const std::vector<std::uint8_t> before = saveWorldSnapshot(world);
   for (const JointId stale : {a, b}) {
-    EXPECT_FALSE(world.isValid(stale));
+    EXPECT_FALSE(isValid(world, stale));
     expectRefused([&] { setJointMotor(world, stale, true, kSpeed, kMaxTorque); }, "setJointMotor: joint id (slot " +
                   std::to_string(stale.slot) + ", generation " + std::to_string(stale.generation) + ") is stale");
     expectRefused([&] { setJointLimits(world, stale, true, -1.0, 1.0); }, "setJointLimits: joint id");
     expectRefused([&] { removeJoint(world, stale); }, "removeJoint: joint id");
-    expectRefused([&] { static_cast<void>(world.indexOf(stale)); }, "is stale");
+    expectRefused([&] { static_cast<void>(indexOf(world, stale)); }, "is stale");
     EXPECT_EQ(saveWorldSnapshot(world), before);
   }
-  expectRefused([&] { static_cast<void>(world.jointIdAt(1)); }, "jointIdAt: no joint at index 1");
+  expectRefused([&] { static_cast<void>(jointIdAt(world, 1)); }, "jointIdAt: no joint at index 1");
 }
 
 // A new joint takes the removed one's slot with the next generation: the old id stays refused
@@ -117,13 +117,13 @@ TEST_P(JointSpringIds, AReusedJointSlotDoesNotReviveTheOldId) {
   const JointId reused = hinge(world, 1);
   EXPECT_EQ(reused.slot, old.slot);
   EXPECT_NE(reused.generation, old.generation);
-  EXPECT_FALSE(world.isValid(old));
+  EXPECT_FALSE(isValid(world, old));
   const std::vector<std::uint8_t> before = saveWorldSnapshot(world);
   expectRefused([&] { setJointMotor(world, old, true, kSpeed, kMaxTorque); }, "is stale");
   EXPECT_EQ(saveWorldSnapshot(world), before);
   setJointMotor(world, reused, true, kSpeed, kMaxTorque);
   run(world, 0.5);
-  EXPECT_NEAR(readJoint(world, world.indexOf(reused)).speed, kSpeed, 1e-6);
+  EXPECT_NEAR(readJoint(world, indexOf(world, reused)).speed, kSpeed, 1e-6);
   EXPECT_EQ(world.body(world.idAt(0)).angularVelocity().norm(), 0.0);  // wheel a is free, still
 }
 
@@ -186,9 +186,9 @@ TEST_P(JointSpringIds, IdsSurviveASnapshot) {
   world.step();
   const World base = wheels();
   World read = loadWorldSnapshot(saveWorldSnapshot(world), base);
-  ASSERT_TRUE(read.isValid(jc));
-  EXPECT_EQ(read.joints()[read.indexOf(jc)].def.name, "c");
-  EXPECT_FALSE(read.isValid(ja));
+  ASSERT_TRUE(isValid(read, jc));
+  EXPECT_EQ(read.joints()[indexOf(read, jc)].def.name, "c");
+  EXPECT_FALSE(isValid(read, ja));
   expectRefused([&] { setJointMotor(read, ja, true, kSpeed, kMaxTorque); }, "is stale");
   ASSERT_TRUE(isValid(read, sb));
   EXPECT_EQ(springs(read)[indexOf(read, sb)].body, read.idAt(1));
@@ -197,7 +197,7 @@ TEST_P(JointSpringIds, IdsSurviveASnapshot) {
   EXPECT_EQ(hinge(read, 1), hinge(world, 1));
   setJointMotor(read, jc, true, kSpeed, kMaxTorque);
   run(read, 0.5);
-  EXPECT_NEAR(readJoint(read, read.indexOf(jc)).speed, kSpeed, 1e-6);
+  EXPECT_NEAR(readJoint(read, indexOf(read, jc)).speed, kSpeed, 1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(TimeSteps, JointSpringIds, testing::Values(1.0 / 60.0, 1.0 / 240.0));

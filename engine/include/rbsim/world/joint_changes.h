@@ -13,6 +13,13 @@ namespace rbsim {
 
 class World;
 
+// A joint's id and its index in World::joints(), as for bodies: false / std::invalid_argument
+// naming the call for a stale id (the joint removed, or never made here); jointIdAt throws when
+// out of range.
+bool isValid(const World& world, JointId joint);
+std::size_t indexOf(const World& world, JointId joint);
+JointId jointIdAt(const World& world, std::size_t index);
+
 // A hinge's or slider's motor, on with a target speed [rad/s; m/s] and a largest torque [N m]
 // (a slider's force [N]), or off (speed and max are then not read). A lower cap clamps the
 // impulse kept for the warm start to it.

@@ -143,11 +143,7 @@ class World {
   // under the PGS solver, which does not solve joints. Returns its id (world/item_ids.h).
   JointId addJoint(const JointDef& def);
   const std::vector<Joint>& joints() const { return joints_; }
-  // A joint's id and its index in joints(), as for bodies (world/joints.cpp): false / throws
-  // std::invalid_argument for a stale id (the joint removed, or never made here).
-  bool isValid(JointId id) const { return jointIds_.isValid(id); }
-  std::size_t indexOf(JointId id) const;
-  JointId jointIdAt(std::size_t index) const;  // the id of joints()[index]; throws when out of range
+  // A joint's id and its index in joints(): isValid, indexOf and jointIdAt in world/joint_changes.h.
 
 
   // Advances by settings().timeStep. Throws SimulationError if a body's state stops being finite,
