@@ -34,7 +34,7 @@ constexpr double kPilePitch = 0.505;    // [m] between pile boxes' centres: 5 mm
 constexpr int kAwake = 10;              // the awake boxes, falling
 constexpr double kDropHeight = 40.0;    // [m] the awake boxes fall for about 2.8 s
 constexpr int kMaxSettleSteps = 600;    // steps allowed for the sleepers to fall asleep
-constexpr int kTimedSteps = 30;         // steps timed per repeat
+constexpr int kTimedSteps = 150;        // steps timed per repeat (the boxes land after 171)
 
 BodyDef boxDef(const Vec3& position) {
   static const auto mesh = std::make_shared<const Mesh>(makeBox(Vec3::Constant(kBox)));
