@@ -16,27 +16,26 @@ BodyRemoval::BodyRemoval(std::size_t before, std::vector<Step> steps) : before_(
   };
   struct Raw {
     std::uint32_t body;
-    Event event;
+    std::uint32_t to;  // where the body went at that step, or kGone
   };
   std::vector<Raw> raw;
   raw.reserve(2 * steps_.size());
   for (std::uint32_t t = 0; t < steps_.size(); ++t) {
     const Step& s = steps_[t];
     const std::uint32_t removedBody = originOf(s.removed);
-    raw.push_back({removedBody, {t, kGone}});
+    raw.push_back({removedBody, kGone});
     removed_.push_back(removedBody);
     if (s.removed == s.last) continue;
     const std::uint32_t lastBody = originOf(s.last);
-    raw.push_back({lastBody, {t, s.removed}});
+    raw.push_back({lastBody, s.removed});
     origin[s.removed] = lastBody;
   }
-  // Events by body, each body's in step order (raw is in step order; the sort is stable).
+  // By body, each body's in step order (raw is in step order; the sort is stable): a body's last
+  // is where it ends, or kGone.
   std::stable_sort(raw.begin(), raw.end(), [](const Raw& x, const Raw& y) { return x.body < y.body; });
-  events_.reserve(raw.size());
   for (const Raw& r : raw) {
-    if (involved_.empty() || involved_.back().body != r.body) involved_.push_back({r.body, static_cast<std::uint32_t>(events_.size()), r.body});
-    events_.push_back(r.event);
-    involved_.back().newIndex = r.event.to;  // a body's last event is where it ends, or kGone
+    if (involved_.empty() || involved_.back().body != r.body) involved_.push_back({r.body, r.body});
+    involved_.back().newIndex = r.to;
   }
   std::vector<std::uint32_t> reached;
   for (const Step& s : steps_) {
@@ -54,18 +53,6 @@ const BodyRemoval::Involved* BodyRemoval::find(std::size_t index) const {
   const auto at = std::lower_bound(involved_.begin(), involved_.end(), index,
                                    [](const Involved& x, std::size_t i) { return x.body < i; });
   return at != involved_.end() && at->body == index ? &*at : nullptr;
-}
-
-const BodyRemoval::Event* BodyRemoval::eventsBegin(std::size_t index) const {
-  const Involved* at = find(index);
-  return at ? events_.data() + at->firstEvent : nullptr;
-}
-
-const BodyRemoval::Event* BodyRemoval::eventsEnd(std::size_t index) const {
-  const Involved* at = find(index);
-  if (!at) return nullptr;
-  const std::size_t next = static_cast<std::size_t>(at - involved_.data()) + 1;
-  return events_.data() + (next < involved_.size() ? involved_[next].firstEvent : events_.size());
 }
 
 }  // namespace rbsim

@@ -22,7 +22,6 @@ namespace rbsim {
 // What stage SolveContacts hands the solver. `bodyMaterials` has one entry per body,
 // `planeMaterials` one per plane; `addGravity`: the forces accumulated in the bodies lack m g
 // (World::step adds gravity in its Integrate pass unless other forces act).
-class BodyRemoval;  // body/body_removal.h
 class ByteWriter;   // math/byte_stream.h
 class ByteReader;
 
@@ -34,6 +33,9 @@ struct SolverInput {
   const std::vector<Material>& planeMaterials;
   const Settings& settings;
   bool addGravity = true;
+  // Per body index, its stable key (the BodyId slot, which a removal leaves as it was): what the
+  // warm starts are keyed by (contact_key.h pairKey).
+  const std::vector<std::uint32_t>& bodyKeys;
 };
 
 // A manifold of the last solve that was hit (Box3D's hit events, src/solver.c and
@@ -80,21 +82,20 @@ class ContactSolver {
   // Forgets the warm starts and which bodies the last step advanced (bodies were renumbered).
   virtual void forget() = 0;
   // Bodies were destroyed and others moved into their indices (World::destroyBodies,
-  // body/body_removal.h): the warm starts follow (contact_key.h renumberCache); which bodies the
-  // last step advanced is forgotten. `bodies` as they were before the removal. `keptReached`: the
-  // sleeping islands' contacts of the bodies the removal reached, as they were
-  // (CollisionPipeline::removeBodies), whose warm starts, kept aside (contactsSlept), follow them:
-  // no other sleeping one is visited.
-  virtual void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
-                             const std::vector<Contact>& keptReached) = 0;
+  // body/body_removal.h). Warm starts are keyed by the bodies' stable keys, so only those naming a
+  // removed body go: `removed`, the removed bodies' keys, sorted; `goneAsleep`, the pairKeys of
+  // their sleeping islands' contacts (CollisionPipeline::removeBodies), whose warm starts were kept
+  // aside (contactsSlept): no other sleeping one is visited. Which bodies the last step advanced
+  // is forgotten.
+  virtual void bodiesRemoved(const std::vector<std::uint32_t>& removed, const std::vector<std::uint64_t>& goneAsleep) = 0;
   // A deep copy, warm starts included (World's copy, a saved state).
   virtual std::unique_ptr<ContactSolver> clone() const = 0;
   // A World snapshot (world/world_snapshot.h; Jolt's ContactConstraintManager::SaveState): what
   // the next solve reads of the last one (the warm starts, the bodies it advanced, its contact
-  // points), for a World of `bodies` bodies. The default refuses, naming the solver: a solver
-  // whose state has no saved form (dynamics/solver_snapshot.cpp).
+  // points), for a World whose bodies have these keys (SolverInput::bodyKeys). The default
+  // refuses, naming the solver: a solver whose state has no saved form (dynamics/solver_snapshot.cpp).
   virtual void save(ByteWriter& out) const;
-  virtual void load(ByteReader& in, std::size_t bodies);
+  virtual void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys);
 
   // Order::CollideFirst: the World bodies the last solve advanced, which the integrator must
   // leave alone, as a list and as flags per body. Empty for a solver that advances none.
@@ -106,8 +107,9 @@ class ContactSolver {
   // contacts' impulses): these contacts of the last solve now sleep, kept apart and not given to
   // solve(); the solver keeps their warm starts aside. contactsWoke: they are awake again, and
   // their warm starts serve the next solve. The default keeps none (a sleeping pair starts cold).
-  virtual void contactsSlept(const std::vector<Contact>& /*contacts*/) {}
-  virtual void contactsWoke(const std::vector<Contact>& /*contacts*/) {}
+  // `bodyKeys` as SolverInput's.
+  virtual void contactsSlept(const std::vector<Contact>& /*contacts*/, const std::vector<std::uint32_t>& /*bodyKeys*/) {}
+  virtual void contactsWoke(const std::vector<Contact>& /*contacts*/, const std::vector<std::uint32_t>& /*bodyKeys*/) {}
   // Islands fell asleep at the end of the step and their contacts left the step's
   // (CollisionPipeline::sleepContacts): `newIndex`, per contact the solve was given, its index now
   // or kDroppedContact. The points reported follow; the slept contacts' leave the report, as a

@@ -50,18 +50,11 @@ int LcpSolver::solverBody(const SolverInput& input, std::size_t body) {
   return slot;
 }
 
-void LcpSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
-                              const std::vector<Contact>& /*keptReached: its cache holds every warm start*/) {
+void LcpSolver::bodiesRemoved(const std::vector<std::uint32_t>& removed,
+                              const std::vector<std::uint64_t>& /*goneAsleep: its cache holds every warm start*/) {
   clearAdvanced();
   solved_.clear();
-  // A turned pair: the points were the moved body's (body 1) and become the partner's; the
-  // friction, which acts + on body 1, changes sign (the twist's, about the flipped normal, not),
-  // as PgsSolver::bodiesRemoved.
-  renumberCache(cache_, removal, [&](Cached& entry, std::size_t moved, std::size_t partner) {
-    anchorsToPartner(entry.localPoints, entry.count, bodies[moved], bodies[partner]);
-    entry.linearFriction = -entry.linearFriction;
-    return true;
-  });
+  dropRemoved(cache_, removed);
 }
 
 double LcpSolver::normalVelocity(const Row& row, const std::vector<Velocity>& velocities) const {
@@ -103,7 +96,7 @@ void LcpSolver::buildPatch(const SolverInput& input, const Contact& contact, std
   patch.material = material;
   patch.firstRow = rows_.size();
   patch.rowCount = static_cast<std::size_t>(m.count);
-  patch.key = pairKey(contact);
+  patch.key = pairKey(contact, input.bodyKeys);
   const RigidBody& b1 = bodies[contact.b];
   const Vec3 x2 = plane ? Vec3::Zero() : bodies[contact.a].position();
   const SolverBody& s1 = bodies_[patch.body1];

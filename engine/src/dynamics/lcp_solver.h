@@ -82,8 +82,7 @@ class LcpSolver final : public ContactSolver {
     cache_.clear();
     solved_.clear();
   }
-  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
-                     const std::vector<Contact>& keptReached) override;
+  void bodiesRemoved(const std::vector<std::uint32_t>& removed, const std::vector<std::uint64_t>& goneAsleep) override;
   const std::vector<std::size_t>& advancedBodies() const override { return advancedList_; }
   const std::vector<char>& advancedFlags() const override { return advanced_; }  // per World body
   void clearAdvanced() override {

@@ -27,17 +27,10 @@ int PgsSolver::solverBody(std::vector<RigidBody>& bodies, std::size_t body) {
   return slot;
 }
 
-void PgsSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
-                              const std::vector<Contact>& /*keptReached: its cache holds every warm start*/) {
+void PgsSolver::bodiesRemoved(const std::vector<std::uint32_t>& removed,
+                              const std::vector<std::uint64_t>& /*goneAsleep: its cache holds every warm start*/) {
   solved_.clear();
-  // A turned pair: the points were the moved body's (body 1); they become the partner's, and the
-  // friction impulses, which act + on body 1, change sign (the twist's, about the flipped normal, not).
-  renumberCache(cache_, removal, [&](Cached& entry, std::size_t moved, std::size_t partner) {
-    anchorsToPartner(entry.localPoints, entry.count, bodies[moved], bodies[partner]);
-    for (int j = 0; j < entry.count; ++j) entry.pointFriction[j] = -entry.pointFriction[j];
-    entry.linearFriction = -entry.linearFriction;
-    return true;
-  });
+  dropRemoved(cache_, removed);
 }
 
 const PgsSolver::Cached* PgsSolver::cached(std::uint64_t key) const {
@@ -76,7 +69,7 @@ void PgsSolver::applyFriction(const Patch& patch, const Vec3& impulse) {
   v2.angular -= patch.angularStep2 * impulse;
 }
 
-void PgsSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
+void PgsSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, std::uint64_t key,
                                const Material& material, const Settings& settings) {
   const double dt = settings.timeStep;
   const bool plane = contact.kind == Contact::Kind::PlaneBody;
@@ -123,7 +116,7 @@ void PgsSolver::buildPatch(std::vector<RigidBody>& bodies, const Contact& contac
        frictionImpulseFactor(s2.inverseMass, s2.inverseInertiaWorld, c2, patch.tangent1, patch.tangent2, n))
           .inverse();
 
-  const Cached* old = settings.warmStarting ? cached(pairKey(contact)) : nullptr;
+  const Cached* old = settings.warmStarting ? cached(key) : nullptr;
   bool collision = false, collisionSlides = false;
   for (int i = 0; i < m.count; ++i) {
     NormalRow row;
@@ -299,12 +292,12 @@ void PgsSolver::writeBack(std::vector<RigidBody>& bodies, double dt) {
   }
 }
 
-void PgsSolver::remember(const std::vector<Contact>& contacts) {
+void PgsSolver::remember(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& bodyKeys) {
   nextCache_.clear();
   for (std::size_t p = 0; p < patches_.size(); ++p) {
     const Patch& patch = patches_[p];
     Cached c;
-    c.key = pairKey(contacts[patchContact_[p]]);
+    c.key = pairKey(contacts[patchContact_[p]], bodyKeys);
     c.count = static_cast<int>(patch.rowCount);
     for (int i = 0; i < c.count; ++i) {
       c.localPoints[i] = rows_[patch.firstRow + i].localPoint1;
@@ -338,7 +331,7 @@ void PgsSolver::solve(const SolverInput& input) {
     const Material material = contactMaterial(input, contact);
     // A sleeping pair receives nothing (World wakes the sleeping side of a pair with an awake one).
     const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
-    if (contact.manifold.count > 0 && awake) buildPatch(bodies, contact, c, material, settings);
+    if (contact.manifold.count > 0 && awake) buildPatch(bodies, contact, c, pairKey(contact, input.bodyKeys), material, settings);
   }
 
   pseudoVelocities_.assign(bodies_.size(), Velocity{});
@@ -390,7 +383,7 @@ void PgsSolver::solve(const SolverInput& input) {
     }
   }
   writeBack(bodies, settings.timeStep);
-  remember(contacts);
+  remember(contacts, input.bodyKeys);
 }
 
 void PgsSolver::applyPointFriction(const Patch& patch, const NormalRow& row, const Vec3& impulse) {

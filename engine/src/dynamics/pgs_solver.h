@@ -29,7 +29,7 @@ class PgsSolver final : public ContactSolver {
   // Changes P and L of the bodies in contact (and x, q where they penetrate beyond the slop).
   void solve(const SolverInput& input) override;
   void save(ByteWriter& out) const override;  // dynamics/solver_snapshot.cpp
-  void load(ByteReader& in, std::size_t bodies) override;
+  void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) override;
   std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<PgsSolver>(*this); }
   const std::vector<SolvedContactPoint>& points() const override { return solved_; }
   void contactsReindexed(const std::vector<std::uint32_t>& newIndex) override { reindexPoints(solved_, newIndex); }
@@ -37,8 +37,7 @@ class PgsSolver final : public ContactSolver {
     cache_.clear();
     solved_.clear();
   }
-  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
-                     const std::vector<Contact>& keptReached) override;
+  void bodiesRemoved(const std::vector<std::uint32_t>& removed, const std::vector<std::uint64_t>& goneAsleep) override;
 
  private:
   // The velocities a sweep reads and changes, 48 bytes per body (as Box2D's b2BodyState): the
@@ -111,7 +110,8 @@ class PgsSolver final : public ContactSolver {
 
   int solverBody(std::vector<RigidBody>& bodies, std::size_t body);
   const Cached* cached(std::uint64_t key) const;
-  void buildPatch(std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
+  void buildPatch(std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, std::uint64_t key,
+                  const Material& material,
                   const Settings& settings);
   double normalVelocity(const Patch& patch, const NormalRow& row) const;  // u_rel,N [m/s]
   void applyNormal(const Patch& patch, const NormalRow& row, double impulse, std::vector<Velocity>& velocities) const;
@@ -125,7 +125,7 @@ class PgsSolver final : public ContactSolver {
   void markSliding();  // seed000: each row's regime for the next step, from its slip now
   void solvePosition(const Patch& patch, NormalRow& row);
   void writeBack(std::vector<RigidBody>& bodies, double dt);
-  void remember(const std::vector<Contact>& contacts);
+  void remember(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& bodyKeys);
 
   std::vector<SolverBody> bodies_;       // bodies_[0] is the ground: infinite mass, at rest
   std::vector<Velocity> velocities_;     // per entry of bodies_

@@ -219,18 +219,18 @@ void SoftStepSolver::finish(std::vector<RigidBody>& bodies) {
   }
 }
 
-void SoftStepSolver::contactsSlept(const std::vector<Contact>& contacts) {
+void SoftStepSolver::contactsSlept(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& bodyKeys) {
   std::vector<std::uint64_t> slept;
   slept.reserve(contacts.size());
   for (const Contact& c : contacts) {
-    const std::uint64_t key = pairKey(c);
+    const std::uint64_t key = pairKey(c, bodyKeys);
     if (const Cached* old = cached(key)) {
       asleepCache_[key] = *old;
       slept.push_back(key);
     }
   }
   if (slept.empty()) return;
-  // They leave cache_, which then holds the awake pairs' alone: a removal renumbers it whole.
+  // They leave cache_, which then holds the awake pairs' alone: a removal filters it whole.
   std::sort(slept.begin(), slept.end());
   cache_.erase(std::remove_if(cache_.begin(), cache_.end(),
                               [&](const Cached& e) { return std::binary_search(slept.begin(), slept.end(), e.key); }),
@@ -253,10 +253,10 @@ void SoftStepSolver::contactsReindexed(const std::vector<std::uint32_t>& newInde
   hits_.resize(kept);
 }
 
-void SoftStepSolver::contactsWoke(const std::vector<Contact>& contacts) {
+void SoftStepSolver::contactsWoke(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& bodyKeys) {
   bool added = false;
   for (const Contact& c : contacts) {
-    const auto at = asleepCache_.find(pairKey(c));
+    const auto at = asleepCache_.find(pairKey(c, bodyKeys));
     if (at == asleepCache_.end()) continue;
     if (!cached(at->first)) {
       cache_.push_back(at->second);

@@ -50,34 +50,17 @@ int SoftStepSolver::slot(const std::vector<RigidBody>& bodies, std::size_t body,
   return s;
 }
 
-void SoftStepSolver::bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
-                                   const std::vector<Contact>& keptReached) {
+void SoftStepSolver::bodiesRemoved(const std::vector<std::uint32_t>& removed,
+                                   const std::vector<std::uint64_t>& goneAsleep) {
   clearAdvanced();
   solved_.clear();
   hits_.clear();
   reported_ = true;
-  // A turned pair: the anchors were the moved body's (B); they become the partner's, and the
-  // friction impulses, which act + on B, change sign. A round shape's anchor sits its radius
-  // inside the surface, so its points may miss their match and start cold.
-  const auto turn = [&](Cached& entry, std::size_t moved, std::size_t partner) {
-    anchorsToPartner(entry.localPoints, entry.count, bodies[moved], bodies[partner]);
-    for (int j = 0; j < entry.count; ++j) entry.frictionImpulses[j] = -entry.frictionImpulses[j];
-    return true;
-  };
-  renumberCache(cache_, removal, turn);
+  // The awake pairs' warm starts: a pass, which a step makes anyway; the sleeping ones: only those
+  // of the removed bodies' contacts (every other keeps its key, so nothing is renamed or turned).
+  dropRemoved(cache_, removed);
   indexCache();
-  // The sleeping contacts' warm starts: only those of the contacts the removal reached are
-  // looked up, renumbered and filed again (contactsWoke brings them back when their island wakes).
-  std::vector<Cached> reached;
-  for (const Contact& c : keptReached) {
-    const auto at = asleepCache_.find(pairKey(c));
-    if (at == asleepCache_.end()) continue;  // a grid pair's further manifold, or never solved
-    reached.push_back(at->second);
-    asleepCache_.erase(at);
-  }
-  std::sort(reached.begin(), reached.end(), [](const Cached& x, const Cached& y) { return x.key < y.key; });
-  renumberCache(reached, removal, turn);
-  for (Cached& entry : reached) asleepCache_.emplace(entry.key, std::move(entry));
+  for (const std::uint64_t key : goneAsleep) asleepCache_.erase(key);
 }
 
 const SoftStepSolver::Cached* SoftStepSolver::cached(std::uint64_t key) const {
@@ -91,7 +74,7 @@ void SoftStepSolver::indexCache() {
 }
 
 void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index,
-                             const Material& material, const Settings& settings) {
+                             std::uint64_t key, const Material& material, const Settings& settings) {
   const bool plane = contact.kind == Contact::Kind::PlaneBody;
   const ContactManifold& m = contact.manifold;
   Constraint c;
@@ -104,7 +87,7 @@ void SoftStepSolver::prepare(const std::vector<RigidBody>& bodies, const Contact
   c.firstPoint = points_.size();
   c.pointCount = static_cast<std::size_t>(m.count);
   c.contact = index;
-  c.key = pairKey(contact);
+  c.key = key;
   const Cached* old = settings.warmStarting ? cached(c.key) : nullptr;
   // A new manifold first assumes sticking (seed 000); a known one keeps the regime its last step
   // ended in: sliding when friction reached the cone, sticking again when it stayed inside.
@@ -453,7 +436,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
     const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
     if (contact.manifold.count == 0) continue;
     if (!awake) {
-      if (const Cached* old = cached(pairKey(contact))) nextCache_.push_back(*old);
+      if (const Cached* old = cached(pairKey(contact, input.bodyKeys))) nextCache_.push_back(*old);
       continue;
     }
     slot(bodies, contact.b, settings, addGravity);
@@ -469,7 +452,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
     if (a == 0 && b == 0) continue;  // asleep, or static against static
     if (sims_[a].inverseMass == 0.0 && sims_[b].inverseMass == 0.0) continue;  // kinematic against static
     const Material material = contactMaterial(input, contact);
-    prepare(bodies, contact, i, material, settings);
+    prepare(bodies, contact, i, pairKey(contact, input.bodyKeys), material, settings);
   }
 
   bouncing_.clear();

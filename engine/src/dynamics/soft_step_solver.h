@@ -55,10 +55,10 @@ class SoftStepSolver final : public ContactSolver {
     hits_.clear();
     reported_ = true;
   }
-  void bodiesRemoved(const BodyRemoval& removal, const std::vector<RigidBody>& bodies,
-                     const std::vector<Contact>& keptReached) override;
-  void contactsSlept(const std::vector<Contact>& contacts) override;  // soft_step_finish.cpp
-  void contactsWoke(const std::vector<Contact>& contacts) override;
+  void bodiesRemoved(const std::vector<std::uint32_t>& removed, const std::vector<std::uint64_t>& goneAsleep) override;
+  // soft_step_finish.cpp
+  void contactsSlept(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& bodyKeys) override;
+  void contactsWoke(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& bodyKeys) override;
   void contactsReindexed(const std::vector<std::uint32_t>& newIndex) override;
   void clearAdvanced() override {
     for (std::size_t body : advancedList_) advanced_[body] = 0;
@@ -67,7 +67,7 @@ class SoftStepSolver final : public ContactSolver {
   const std::vector<std::size_t>& advancedBodies() const override { return advancedList_; }
   const std::vector<char>& advancedFlags() const override { return advanced_; }  // per World body
   void save(ByteWriter& out) const override;  // dynamics/solver_snapshot.cpp
-  void load(ByteReader& in, std::size_t bodies) override;
+  void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) override;
   std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<SoftStepSolver>(*this); }
   // Built when first asked for after a step (most steps nobody asks: 60,000 points of Box3D's
   // pyramid took 5 % of its step), from what the step left in the constraints and states.
@@ -211,8 +211,8 @@ class SoftStepSolver final : public ContactSolver {
   static_assert(sizeof(JointConstraint) == 160, "JointConstraint's size: see the comment above");
 
   int slot(const std::vector<RigidBody>& bodies, std::size_t body, const Settings& settings, bool addGravity);
-  void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, const Material& material,
-               const Settings& settings);
+  void prepare(const std::vector<RigidBody>& bodies, const Contact& contact, std::size_t index, std::uint64_t key,
+               const Material& material, const Settings& settings);
   const Cached* cached(std::uint64_t key) const;
   void indexCache();  // cacheIndex_ for cache_ as it now is
   // Seed 000's regime at a collision (a point approaching faster than

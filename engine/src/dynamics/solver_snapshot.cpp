@@ -59,16 +59,22 @@ int loadPointCount(ByteReader& in) {
 }
 
 // The caches are looked up by key (binary search, a hash index): strictly ascending keys, whose
-// body indices (contact_key.h pairKey: a plane's index or body A's, then body B's) name bodies,
-// since renumberCache looks them up when bodies are removed.
+// body keys (contact_key.h pairKey: a plane's index or body A's key, then body B's) name living
+// bodies, since a removal drops a body's warm starts by its key.
 template <typename Cached>
-void checkKeys(ByteReader& in, const std::vector<Cached>& cache, std::size_t bodies) {
+void checkKeys(ByteReader& in, const std::vector<Cached>& cache, const std::vector<std::uint32_t>& bodyKeys) {
   constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << 24) - 1;
+  std::vector<char> living;
+  for (const std::uint32_t key : bodyKeys) {
+    if (key >= living.size()) living.resize(std::size_t{key} + 1, 0);
+    living[key] = 1;
+  }
+  const auto lives = [&](std::uint64_t key) { return key < living.size() && living[key] != 0; };
   for (std::size_t i = 0; i < cache.size(); ++i) {
     if (i > 0 && !(cache[i - 1].key < cache[i].key)) in.fail("warm-start cache keys not strictly ascending");
     const bool plane = (cache[i].key >> 63) != 0;
-    if ((cache[i].key & kIndexMask) >= bodies || (!plane && ((cache[i].key >> 24) & kIndexMask) >= bodies)) {
-      in.fail("a warm-start cache key naming a body past the " + std::to_string(bodies));
+    if (!lives(cache[i].key & kIndexMask) || (!plane && !lives((cache[i].key >> 24) & kIndexMask))) {
+      in.fail("a warm-start cache key naming no body of the " + std::to_string(bodyKeys.size()));
     }
   }
 }
@@ -79,7 +85,7 @@ void ContactSolver::save(ByteWriter&) const {
   throw std::invalid_argument("World snapshot: this contact solver's warm starts have no saved form");
 }
 
-void ContactSolver::load(ByteReader& in, std::size_t) { in.fail("this contact solver's warm starts have no saved form"); }
+void ContactSolver::load(ByteReader& in, const std::vector<std::uint32_t>&) { in.fail("this contact solver's warm starts have no saved form"); }
 
 // A cached manifold's points past its count are never read, and the solvers leave them
 // uninitialised: only the first `count` are written, so equal states give equal bytes.
@@ -105,7 +111,8 @@ void SoftStepSolver::save(ByteWriter& out) const {
   savePoints(out, points());
 }
 
-void SoftStepSolver::load(ByteReader& in, std::size_t bodies) {
+void SoftStepSolver::load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) {
+  const std::size_t bodies = bodyKeys.size();
   constexpr std::size_t kCachedBytes = 8 + 4 + 1;  // the least save writes for one: no points
   std::vector<Cached> cache(in.count(kCachedBytes, "cached manifolds"));
   for (Cached& c : cache) {
@@ -119,7 +126,7 @@ void SoftStepSolver::load(ByteReader& in, std::size_t bodies) {
     }
     c.sticking = in.boolean();
   }
-  checkKeys(in, cache, bodies);
+  checkKeys(in, cache, bodyKeys);
   std::vector<std::size_t> advanced(in.count(8, "advanced bodies"));
   std::vector<char> flags(bodies, 0);
   for (std::size_t& body : advanced) {
@@ -154,7 +161,7 @@ void PgsSolver::save(ByteWriter& out) const {
   savePoints(out, solved_);
 }
 
-void PgsSolver::load(ByteReader& in, std::size_t bodies) {
+void PgsSolver::load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) {
   constexpr std::size_t kCachedBytes = 8 + 4 + 4 * 8 + 1;  // the least save writes for one: no points
   std::vector<Cached> cache(in.count(kCachedBytes, "cached manifolds"));
   for (Cached& c : cache) {
@@ -170,7 +177,7 @@ void PgsSolver::load(ByteReader& in, std::size_t bodies) {
     c.twistFriction = in.f64();
     c.sticking = in.boolean();
   }
-  checkKeys(in, cache, bodies);
+  checkKeys(in, cache, bodyKeys);
   std::vector<SolvedContactPoint> points = loadPoints(in);
   forget();
   cache_ = std::move(cache);

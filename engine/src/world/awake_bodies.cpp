@@ -65,7 +65,7 @@ void World::wakeIslandsOf(const std::vector<std::size_t>& seeds, bool solveNow) 
     if (!bodies_[i].awake() && !bodies_[i].isStatic()) wakeBody(i);
   }
   if (!contacts.empty()) {
-    solver_->contactsWoke(contacts);
+    solver_->contactsWoke(contacts, bodyKeys());
     contactEvents_->contactsWoke(contacts, *collision_);
     if (solveNow) collision_->appendContacts(contacts);
   }
@@ -154,7 +154,7 @@ void World::sleepContacts() {
   std::vector<std::uint32_t> newIndex;
   collision_->sleepContacts(bodies_, newIndex);
   if (collision_->sleptNow().empty()) return;
-  solver_->contactsSlept(collision_->sleptNow());
+  solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
   solver_->contactsReindexed(newIndex);
   contactEvents_->contactsSlept(collision_->sleptNow(), *collision_, newIndex);
 }

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "rbsim/world/world.h"
+#include "dynamics/contact_key.h"
 #include "dynamics/contact_solver.h"
 #include "world/collision_pipeline.h"
 #include "world/contact_event_tracker.h"
@@ -124,9 +125,9 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   // contacts); the contacts follow their bodies. Woken through wakeBody, indices before the
   // removal: the awake list is renumbered with the rest below.
   std::vector<std::size_t> touched;
-  std::vector<Contact> keptReached;
-  collision_->removeBodies(removal, touched, keptReached);
-  contactEvents_->bodiesRemoved(removal, keptReached);
+  std::vector<Contact> reached;
+  collision_->removeBodies(removal, touched, reached);
+  contactEvents_->bodiesRemoved(removal, reached);
   for (const std::size_t partner : touched) wakeBody(partner);
   // What names a removed body goes with it (every id these name was valid before the batch).
   removeStale(forces_);
@@ -163,8 +164,24 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     if (joint.b != kWorldIndex) joint.b = b;
     return IdTable<JointId>::kKept;
   });
-  // Warm starts are keyed by body indices: the moved bodies' follow them (read before the moves).
-  solver_->bodiesRemoved(removal, bodies_, keptReached);
+  // Warm starts are keyed by the bodies' stable keys (dynamics/contact_key.h pairKey): the
+  // removed bodies' go and nothing else is renamed. A sleeping contact that went is named by its
+  // bodies' keys before the batch, a removed body's being its id's slot.
+  std::vector<std::uint32_t> removedKeys;
+  removedKeys.reserve(ids.size());
+  for (const BodyId id : ids) removedKeys.push_back(id.slot);
+  std::sort(removedKeys.begin(), removedKeys.end());
+  const auto keyBefore = [&](std::size_t index) -> std::uint64_t {
+    const std::uint32_t to = removal.newIndex(index);
+    return to == BodyRemoval::kGone ? ids[rankIn(rankOfIndex, static_cast<std::uint32_t>(index))].slot : slotOfBody_[to];
+  };
+  std::vector<std::uint64_t> goneAsleep;
+  for (const Contact& c : reached) {
+    const bool plane = c.kind == Contact::Kind::PlaneBody;
+    if (removal.newIndex(c.b) != BodyRemoval::kGone && (plane || removal.newIndex(c.a) != BodyRemoval::kGone)) continue;
+    goneAsleep.push_back(pairKey(c.kind, c.part, plane ? c.a : keyBefore(c.a), keyBefore(c.b)));
+  }
+  solver_->bodiesRemoved(removedKeys, goneAsleep);
   for (const BodyRemoval::Step& s : removal.steps()) {
     for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(s.removed, s.last, s.removed);
   }

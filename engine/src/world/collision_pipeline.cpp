@@ -229,16 +229,21 @@ void CollisionPipeline::ignorePair(std::size_t a, std::size_t b) {
   ignoredSorted_ = false;
 }
 
+ProxyPair CollisionPipeline::bodiesOf(const ProxyPair& proxies, const std::vector<std::uint32_t>& keys) const {
+  // A destroyed body's index goes to the last body, whose proxy id stays as it was.
+  ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
+  if (keys[pair.a] > keys[pair.b]) std::swap(pair.a, pair.b);
+  return pair;
+}
+
 CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
-                                                       const std::vector<BodySolid>& shapes, double time, Contact& out,
+                                                       const std::vector<BodySolid>& shapes,
+                                                       const std::vector<std::uint32_t>& keys, double time, Contact& out,
                                                        RecycleFrame& frame) {
   out.manifold.count = 0;
-  // Body indices, the lower first (a destroyed body's index goes to the last body, whose proxy id
-  // stays as it was).
-  ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
-  if (pair.a > pair.b) std::swap(pair.a, pair.b);
-  if (!ignored_.empty() &&
-      std::binary_search(ignored_.begin(), ignored_.end(), (std::uint64_t{pair.a} << 32) | std::uint64_t{pair.b})) {
+  const ProxyPair pair = bodiesOf(proxies, keys);
+  if (!ignored_.empty() && std::binary_search(ignored_.begin(), ignored_.end(),
+                                              (std::uint64_t{std::min(pair.a, pair.b)} << 32) | std::max(pair.a, pair.b))) {
     return Later::Nothing;
   }
   const RigidBody& a = bodies[pair.a];
@@ -296,7 +301,8 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
 }
 
 void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                                    const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes, double time) {
+                                    const std::vector<std::uint32_t>& keys, const std::vector<BodySolid>& shapes,
+                                    const std::vector<Plane>& planes, double time) {
   keepSleeping(bodies);
   contacts_.clear();
   reportedStale_ = true;
@@ -323,9 +329,9 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   later_.assign(pairs.size(), Later::Nothing);
   parallelFor(pairs.size(), threads, [&](std::size_t k) {
     pairFrames_[k].count = 0;
-    later_[k] = collidePair(pairs[k], bodies, shapes, time, pairSlots_[k], pairFrames_[k]);
+    later_[k] = collidePair(pairs[k], bodies, shapes, keys, time, pairSlots_[k], pairFrames_[k]);
   });
-  collideCompounds(pairs, bodies, shapes, threads);
+  collideCompounds(pairs, bodies, shapes, keys, threads);
   // A pair of compounds gives a contact per pair of children (up to 128^2): the contacts are
   // bounded with the pairs, before the list grows past what a step may hold.
   const auto admit = [&](std::size_t more) {
@@ -345,8 +351,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       contacts_.insert(contacts_.end(), compoundSlots_[k].begin(), compoundSlots_[k].end());
       continue;
     }
-    ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[pairs[k].a]), static_cast<ProxyId>(bodyOfProxy_[pairs[k].b])};
-    if (pair.a > pair.b) std::swap(pair.a, pair.b);
+    const ProxyPair pair = bodiesOf(pairs[k], keys);
     const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
     const BodySolid& sa = shapes[pair.a];
     const BodySolid& sb = shapes[pair.b];

@@ -92,8 +92,10 @@ class CollisionPipeline {
   // all sleep now are kept apart (sleeping_; listed in sleptNow()), as they were (nothing of
   // theirs has moved since), until their island wakes (takeIslands).
   // `shapes` are per body (bodySolids in world/queries.h): pairs with a signed distance grid use them.
+  // `keys`: per body its stable key (World's bodyKeys), which orders each pair (bodiesOf).
   void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                   const std::vector<BodySolid>& shapes, const std::vector<Plane>& planes, double time);
+                   const std::vector<std::uint32_t>& keys, const std::vector<BodySolid>& shapes,
+                   const std::vector<Plane>& planes, double time);
   const std::vector<Contact>& sleptNow() const { return sleptNow_; }  // the last narrow phase's
   // Islands fell asleep at the end of a step (World::updateSleep): their contacts leave the step's
   // for sleeping_ now (listed in sleptNow()), as Box2D v3's b2TrySleepIsland moves an island's
@@ -147,11 +149,15 @@ class CollisionPipeline {
   // The convex or round contact of candidate pair `proxies` into `out` (count 0: none, or a pair
   // to skip), or what is left for later.
   Later collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
-                   double time, Contact& out, RecycleFrame& frame);
+                   const std::vector<std::uint32_t>& keys, double time, Contact& out, RecycleFrame& frame);
+  // A candidate pair's bodies (indices) in the order its contacts name them: the lower stable key
+  // first (`keys`, World's bodyKeys: the BodyId slots). A removal moves bodies to new indices but
+  // leaves their keys, so it never turns a pair round (Box2D v3 orders a contact's shapes by id).
+  ProxyPair bodiesOf(const ProxyPair& proxies, const std::vector<std::uint32_t>& keys) const;
   // The pairs collidePair left to the compound and mesh-ground pass, on `threads` threads into
   // compoundSlots_.
   void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
-                        const std::vector<BodySolid>& shapes, int threads);
+                        const std::vector<BodySolid>& shapes, const std::vector<std::uint32_t>& keys, int threads);
   void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // radius_, thickness_, boxes_ of a body
   static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
   // The last step's contacts whose bodies all sleep now go to sleeping_ (and sleptNow_).

@@ -90,9 +90,9 @@ void CollisionPipeline::removeBodies(const BodyRemoval& removal, std::vector<std
   removal.gather(meshGround_);
   removal.gather(gap_);
   removal.gather(boxes_);
-  // The contacts follow the bodies to their new indices (as the solver's warm starts do,
-  // contact_key.h renumberCache): a removed body's go, waking its partner, and the others take
-  // their bodies' new indices, so that sleeping pairs keep theirs.
+  // The contacts follow the bodies to their new indices (contact_renumbering.h): a removed body's
+  // go, waking its partner, and the others take their bodies' new indices in the same order (a
+  // pair is ordered by its bodies' keys, which stay), so that sleeping pairs keep theirs.
   sleeping_.bodiesRemoved(removal, touched, reached);
   reportedStale_ = true;
   std::size_t kept = 0;

@@ -11,7 +11,7 @@
 namespace rbsim {
 
 std::uint64_t CollisionPipeline::keptKey(Contact::Kind kind, std::size_t a, std::size_t b) {
-  // Either order for two bodies: a body renumbered by removeBody may now come first.
+  // Either order for two bodies: the pair is named alike whichever its contact puts first.
   if (kind == Contact::Kind::BodyBody && a > b) std::swap(a, b);
   return (std::uint64_t{kind == Contact::Kind::PlaneBody} << 63) | (std::uint64_t{a} << 32) | std::uint64_t{b};
 }
@@ -24,7 +24,7 @@ std::optional<ContactManifold> CollisionPipeline::recycled(Contact::Kind kind, s
   if (!slot) return std::nullopt;
   const RecycleFrame& last =
       *slot < keptPairFrames_.size() ? keptPairFrames_[*slot] : keptPlaneFrames_[*slot - keptPairFrames_.size()];
-  // Bodies in key order: keptKey puts the lower index first, as collidePair does.
+  // poseA and poseB in the contact's order (bodiesOf), which the frame kept keeps.
   std::optional<ContactManifold> m = recycledManifold(last, poseA, poseB, recycleTolerance_, settings_.contactMargin);
   if (m) {
     frame = last;
@@ -60,7 +60,8 @@ void CollisionPipeline::keepFrames() {
 }
 
 void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
-                                         const std::vector<BodySolid>& shapes, int threads) {
+                                         const std::vector<BodySolid>& shapes, const std::vector<std::uint32_t>& keys,
+                                         int threads) {
   compoundWork_.clear();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     if (later_[k] == Later::Compound || later_[k] == Later::MeshGround) compoundWork_.push_back(k);
@@ -71,8 +72,7 @@ void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, co
     const std::size_t k = compoundWork_[w];
     std::vector<Contact>& out = compoundSlots_[k];
     out.clear();
-    ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[pairs[k].a]), static_cast<ProxyId>(bodyOfProxy_[pairs[k].b])};
-    if (pair.a > pair.b) std::swap(pair.a, pair.b);
+    const ProxyPair pair = bodiesOf(pairs[k], keys);
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) return;  // kept apart with their island's (keepSleeping)
@@ -80,7 +80,7 @@ void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, co
     if (later_[k] == Later::MeshGround) {
       const bool groundIsA = meshGround_[pair.a] != 0;
       const std::size_t ig = groundIsA ? pair.a : pair.b, io = groundIsA ? pair.b : pair.a;
-      collideMeshGround(bodies[ig], ig, *shapes[ig].triangles, bodies[io], io, margin, out);
+      collideMeshGround(bodies[ig], ig, *shapes[ig].triangles, bodies[io], io, groundIsA, margin, out);
       return;
     }
     collideCompoundPair(a, pair.a, b, pair.b, margin, out);

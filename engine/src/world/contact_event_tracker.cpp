@@ -105,8 +105,9 @@ void ContactEventTracker::afterNarrowPhase(const World& world, const CollisionPi
     if (!keys_.empty() && e < keys_.back()) sorted = false;
     keys_.push_back(e);
   }
-  // Out of order only after destroyBody turned a compound pair round: the list order is kept
-  // among equal keys (a grid pair's several manifolds), so the first is the one reported.
+  // Out of order when a pair's proxies are not in its contact's order (bodies ordered by their
+  // keys, CollisionPipeline::bodiesOf, whose proxies a removal may have reused): the list order is
+  // kept among equal keys (a grid pair's several manifolds), so the first is the one reported.
   if (!sorted) std::stable_sort(keys_.begin(), keys_.end());
   next_.clear();
   std::size_t i = 0, j = 0;
@@ -224,7 +225,7 @@ void ContactEventTracker::bodiesRemoving(const World& world, const CollisionPipe
 void ContactEventTracker::bodiesRemoved(const BodyRemoval& removal, const std::vector<Contact>& keptReached) {
   // Only the plane pairs of moved bodies change key (proxies stay). Each plane's pairs are sorted
   // by body index, so a moved body's are found by binary search, taken out, renamed and merged
-  // back, as contact_key.h renumberCache does: no pass over every pair, no sort of them all. The
+  // back: no pass over every pair, no sort of them all. The
   // keys are unique, so this is the order a sort of the renamed list gave.
   const auto moved = [&](std::uint32_t body) {
     const std::uint32_t to = removal.newIndex(body);

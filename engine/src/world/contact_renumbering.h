@@ -3,7 +3,7 @@
 // indices, wherever it is kept (the step's contacts, a sleeping island's), so that a removal
 // touches only the contacts of the bodies it reached.
 #include <cstddef>
-#include <utility>
+#include <cstdint>
 #include <vector>
 
 #include "body/body_removal.h"
@@ -12,19 +12,21 @@
 namespace rbsim {
 
 // False when the contact goes with a removed body (its partner's index before the removal, when
-// it has one, into `touched`: it must wake). A pair in order (the lower index first) that a move
-// turns round has its normal reversed (points are midway, unchanged), or, for a compound's or
-// mesh ground's manifolds, whose part names their shapes in order, goes.
+// it has one that stays, into `touched`: it must wake). Otherwise its bodies take their indices
+// after the removal, in the same order: a pair is ordered by the bodies' stable keys
+// (CollisionPipeline::bodiesOf), which a removal leaves as they were, so it never turns round.
 inline bool renumberContact(Contact& c, const BodyRemoval& removal, std::vector<std::size_t>& touched) {
   const bool pair = c.kind == Contact::Kind::BodyBody;
-  if (!removal.involves(c.b) && !(pair && removal.involves(c.a))) return true;
-  const auto turn = [&c](std::size_t, std::size_t) {
-    if (c.part != 0) return false;
-    std::swap(c.childA, c.childB);
-    c.manifold.normal = -c.manifold.normal;
-    return true;
-  };
-  return removal.replay(pair, c.a, c.b, turn, [&](std::size_t partner) { touched.push_back(partner); });
+  const std::uint32_t b = removal.newIndex(c.b);
+  const std::uint32_t a = pair ? removal.newIndex(c.a) : static_cast<std::uint32_t>(c.a);
+  if (a == BodyRemoval::kGone || b == BodyRemoval::kGone) {
+    if (pair && a != BodyRemoval::kGone) touched.push_back(c.a);
+    if (pair && b != BodyRemoval::kGone) touched.push_back(c.b);
+    return false;
+  }
+  c.a = a;
+  c.b = b;
+  return true;
 }
 
 }  // namespace rbsim

@@ -20,8 +20,8 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(bodies_, awakeList_, bodySolids_, planes_, time());
-    if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow());
+    collision_->narrowPhase(bodies_, awakeList_, bodyKeys(), bodySolids_, planes_, time());
+    if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   const bool sweeping = settings_.continuousCollision && collides && awake;
@@ -51,8 +51,8 @@ void World::stepIntegrateFirst(bool withGravity, bool awake, bool collides) {
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(bodies_, awakeList_, bodySolids_, planes_, time());
-    if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow());
+    collision_->narrowPhase(bodies_, awakeList_, bodyKeys(), bodySolids_, planes_, time());
+    if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   runStage(Stage::SolveContacts, awake && !collision_->contacts().empty() && settings_.respondToContacts, [&] {
@@ -65,7 +65,7 @@ void World::solveContacts(bool withGravity) {
   if (solver_->solvesJoints()) wakeJointed();  // and the islands of the bodies it wakes
   static const std::vector<Contact> kNoContacts;
   const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_->contacts() : kNoContacts;
-  solver_->solve({bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity});
+  solver_->solve({bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity, bodyKeys()});
   contactEvents_->afterSolve(*this, *collision_, contacts, *solver_, settings_.hitEventSpeed);
   checkFinite(solver_->advancedBodies());
 }

@@ -23,7 +23,7 @@ Aabb inGroundFrame(const Aabb& world, const Mat3& R, const Vec3& x) {
 
 // One shape of the other body (child `child`) against the ground's triangles near it.
 void collideShape(const RigidBody& ground, std::size_t ig, const TriangleBvh& bvh, const PosedShape& shape,
-                  std::size_t child, std::size_t io, double margin, std::vector<Contact>& out) {
+                  std::size_t child, std::size_t io, bool groundFirst, double margin, std::vector<Contact>& out) {
   // Per thread: the narrow phase runs pairs on any thread, and these are reused pair after pair.
   thread_local std::vector<std::uint32_t> near;
   thread_local ShapePoints points;
@@ -34,7 +34,6 @@ void collideShape(const RigidBody& ground, std::size_t ig, const TriangleBvh& bv
   bvh.overlapping(inGroundFrame(Aabb{lo, hi}.inflated(margin), R, x), near);
   if (near.empty()) return;
   shapePointsOf(shape, points);
-  const bool groundFirst = ig < io;
   for (const std::uint32_t t : near) {
     const Triangle& tri = bvh.triangles()[t];
     WorldTriangle w;
@@ -63,10 +62,11 @@ bool isMeshGround(const RigidBody& body, const BodySolid& solid) {
 }
 
 void collideMeshGround(const RigidBody& ground, std::size_t ig, const TriangleBvh& triangles, const RigidBody& other,
-                       std::size_t io, double margin, std::vector<Contact>& out) {
+                       std::size_t io, bool groundFirst, double margin, std::vector<Contact>& out) {
   if (!other.isCompound()) {
     if (!shouldCollide(ground.filter(), other.filter())) return;
-    collideShape(ground, ig, triangles, {&other.shape(), other.rotation(), other.position()}, 0, io, margin, out);
+    collideShape(ground, ig, triangles, {&other.shape(), other.rotation(), other.position()}, 0, io, groundFirst, margin,
+                 out);
     return;
   }
   const Mat3& R = other.rotation();
@@ -75,7 +75,7 @@ void collideMeshGround(const RigidBody& ground, std::size_t ig, const TriangleBv
     if (!shouldCollide(ground.filter(), children[c].filter)) continue;
     const PosedShape posed{&children[c].shape, R * children[c].orientation.toRotationMatrix(),
                            other.bodyToWorld(children[c].position)};
-    collideShape(ground, ig, triangles, posed, c, io, margin, out);
+    collideShape(ground, ig, triangles, posed, c, io, groundFirst, margin, out);
   }
 }
 

@@ -27,9 +27,10 @@ std::uint16_t meshGroundPart(std::uint32_t triangle, std::size_t child);
 bool isMeshGround(const RigidBody& body, const BodySolid& solid);
 
 // Contacts of mesh ground `ground` (index ig, triangles in its body frame) and body `other`
-// (index io), appended to `out`: a is the lower index, the normal from a to b. `margin` [m]:
-// the contact margin with both bodies' reach.
+// (index io), appended to `out`: a is the ground when `groundFirst` (the pair's order,
+// CollisionPipeline::bodiesOf), the normal from a to b. `margin` [m]: the contact margin with
+// both bodies' reach.
 void collideMeshGround(const RigidBody& ground, std::size_t ig, const TriangleBvh& triangles, const RigidBody& other,
-                       std::size_t io, double margin, std::vector<Contact>& out);
+                       std::size_t io, bool groundFirst, double margin, std::vector<Contact>& out);
 
 }  // namespace rbsim

@@ -251,7 +251,7 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
   if (w.stepsAtOrigin_ > w.stepCount_) in.fail("the time step changed after the step count");
   w.updateJointFilter();
   w.collision_->load(in, w.bodies_, w.planes_.size());
-  w.solver_->load(in, n);
+  w.solver_->load(in, w.bodyKeys());
   w.contactEvents_->load(in);
   // Each contact point names its contact (World::contactPoints, read by index).
   for (const SolvedContactPoint& point : w.solver_->points()) {

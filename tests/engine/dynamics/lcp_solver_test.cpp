@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -245,8 +246,10 @@ TEST(LcpSolver, ABoxOnASlopeMeetsSeed001sConditionsAndStaysAtRest) {
       std::vector<RigidBody> copy = world.bodies();
       const std::vector<Material> bodyMaterials(copy.size()), planeMaterials(world.planes().size());
       std::vector<Joint> joints;
+      std::vector<std::uint32_t> keys(copy.size());  // none removed: each body's key is its index
+      std::iota(keys.begin(), keys.end(), 0u);
       LcpSolver solver;
-      solver.solve({copy, world.contacts(), joints, bodyMaterials, planeMaterials, world.settings()});
+      solver.solve({copy, world.contacts(), joints, bodyMaterials, planeMaterials, world.settings(), true, keys});
       EXPECT_LT(solver.lastFrictionPasses(), kMaxLcpFrictionPasses / 2) << what;
       // The normal impulses carry the weight's normal part, friction the rest (exactly, at rest).
       double normalSum = 0.0;

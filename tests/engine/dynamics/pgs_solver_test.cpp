@@ -160,7 +160,8 @@ TEST(PgsSolver, InelasticImpulsesNeverAddKineticEnergy) {
     PgsSolver solver;
     std::vector<Joint> joints;
     const std::vector<Contact> contacts{contact};
-    solver.solve({bodies, contacts, joints, materials, {}, settings});
+    const std::vector<std::uint32_t> keys{0, 1};
+    solver.solve({bodies, contacts, joints, materials, {}, settings, true, keys});
     for (const RigidBody& b : bodies) after += b.kineticEnergy();
     EXPECT_LE(after, before * (1.0 + 1e-12)) << "trial " << trial << ", mu_s = " << m.staticFriction;
   }

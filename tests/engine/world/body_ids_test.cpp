@@ -69,8 +69,9 @@ TEST(BodyIds, DestroyingTheMiddleOfAStackLetsTheTopFall) {
 }
 
 // A ball removed far from a resting stack of ten boxes: the top box moves into the ball's index,
-// and the stack's warm starts follow their bodies (contact_key.h renumberCache), so the step after
-// the removal is as quiet as the one before. Forgetting every warm start instead gave the stack a
+// below the box under it, and the stack's warm starts, keyed by the bodies' stable keys
+// (contact_key.h pairKey), are found as they were, so the step after the removal is as quiet as
+// the one before. Forgetting every warm start instead gave the stack a
 // cold step: its boxes jumped to 0.049 m/s at 1/60 s (soft step), 6.5e-5 before.
 TEST(BodyIds, RemovingABodyElsewhereLeavesARestingStackAsItWas) {
   for (const Settings::ContactSolverMethod solver : {Settings::ContactSolverMethod::SoftStep, Settings::ContactSolverMethod::Pgs}) {

@@ -104,8 +104,9 @@ class World {
   BodyId addBody(const BodyDef& def);
   // Removes the body and what acts on it alone (its scripted forces, springs, pose events and
   // joints) and wakes the bodies touching it; the last body takes its index (bodies() stays
-  // dense), its id unchanged. The other contacts are renumbered and the solvers' warm starts
-  // follow their bodies (renumberCache). Throws std::invalid_argument on a stale id.
+  // dense), its id unchanged. The other contacts take their bodies' new indices; pairs and warm
+  // starts are keyed by the bodies' slots, which stay (dynamics/contact_key.h pairKey), so none is
+  // renamed or turned round. Throws std::invalid_argument on a stale id.
   void destroyBody(BodyId id);
   // Destroys the bodies in the order given, leaving the World exactly as destroyBody on each in
   // turn would (the same indices, ids, contacts and warm starts), in one pass over what names
@@ -255,6 +256,9 @@ class World {
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> slotOfBody_;
   std::uint32_t freeSlot_ = UINT32_MAX;  // head of the free list
+  // Per body index, its stable key (its slot): what pairs, warm starts and recycled manifolds are
+  // named by, so that a removal, which moves bodies to new indices, renames none of them.
+  const std::vector<std::uint32_t>& bodyKeys() const { return slotOfBody_; }
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
   IdTable<SpringId> springIds_;  // springs_'s ids (world/spring.h)
