@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,10 +18,13 @@
 #include "rbsim/body/compound_body.h"
 #include "rbsim/body/shape_body.h"
 #include "rbsim/fracture/fracture.h"
+#include "rbsim/integrate/simulation_error.h"
 #include "rbsim/world/contact_events.h"
 #include "rbsim/world/queries.h"
 #include "rbsim/world/ray_cast.h"
 #include "rbsim/world/shape_ids.h"
+#include "rbsim/world/spawner.h"
+#include "rbsim/world/spring.h"
 #include "rbsim/world/world.h"
 #include "rbsim/world/world_queries.h"
 #include "rbsim/world/world_snapshot.h"
@@ -279,6 +283,41 @@ TEST(ShapeIds, FractureRetiresTheBrokenBodysShapes) {
   ASSERT_EQ(fractureEvents(w)[0].added.size(), pattern->pieces.size() - 1);
   for (const BodyId piece : fractureEvents(w)[0].added) EXPECT_EQ(bodyOf(w, shapeIdAt(w, piece, 0)), piece);
   EXPECT_EQ(allShapes(w).size(), w.bodies().size());
+}
+
+// A step that spawns a row and a ball and then fails (a spring of infinite stiffness) is undone:
+// the shape table is as before, the generations of the slots the burst took included, and the
+// retry gives the spawned bodies the ids an untouched twin gives them.
+TEST(ShapeIds, AFailedStepThatSpawnsLeavesTheTableAsItWas) {
+  Settings s;
+  s.gravity = Vec3::Zero();
+  World w(s);
+  const BodyId box = w.addBody(boxDef(Vec3(1, 1, 1), 1.0, "box"));
+  w.destroyBody(w.addBody(row(2, "two")));  // two free slots for the burst to take
+  SpawnerDef rows;
+  rows.name = "rows";
+  rows.prototype = row(2, "spawned");
+  rows.prototype.isStatic = false;
+  rows.count = 2;
+  rows.start = w.time();  // due at the next step
+  rows.regionMin = Vec3(-1, 20, -1);
+  rows.regionMax = Vec3(1, 21, 1);
+  addSpawner(w, rows);
+  const World twin(w);
+  Spring wild;
+  wild.body = box;
+  wild.anchor = Vec3(0, -1e6, 0);
+  wild.stiffness = std::numeric_limits<double>::max();
+  const SpringId wildSpring = addSpring(w, wild);
+  EXPECT_THROW(w.step(), SimulationError);
+  expectSameTable(w, twin);
+  removeSpring(w, wildSpring);
+  World retry(twin);
+  w.step();
+  retry.step();
+  ASSERT_EQ(w.bodies().size(), 3u);
+  EXPECT_EQ(allShapes(w), allShapes(retry));
+  expectSameTable(w, retry);
 }
 
 // The scene of the snapshot tests: a box, rows of 2 and 3, a ball; then the row of 2 destroyed,
