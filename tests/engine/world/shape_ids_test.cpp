@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -318,6 +319,30 @@ TEST(ShapeIds, AFailedStepThatSpawnsLeavesTheTableAsItWas) {
   ASSERT_EQ(w.bodies().size(), 3u);
   EXPECT_EQ(allShapes(w), allShapes(retry));
   expectSameTable(w, retry);
+}
+
+// The example of docs/cpp-api.md, "Shape ids", as it stands there (between the markers;
+// tests/python/test_cpp_doc_blocks.py checks the two are the same text), and what it says.
+TEST(ShapeIdsDocExample, RunsAsDocumented) {
+  // docs/cpp-api.md begin
+  rbsim::World world(rbsim::Settings{});
+  rbsim::CompoundPart left, right;
+  left.shape = right.shape = rbsim::Shape::box(rbsim::Vec3(0.5, 0.5, 0.5));  // half extents [m]
+  left.position = rbsim::Vec3(-2.0, 0.0, 0.0);
+  right.position = rbsim::Vec3(2.0, 0.0, 0.0);
+  rbsim::BodyDef def = rbsim::compoundBodyDef({left, right}, "table");
+  def.isStatic = true;
+  const rbsim::BodyId table = world.addBody(def);
+  const std::vector<rbsim::ShapeId> shapes = rbsim::shapeIds(world, table);  // child 0, child 1
+  const std::optional<rbsim::QueryHit> hit = rbsim::castRay(world, {2, 5, 0}, {0, -1, 0}, 10.0);
+  const bool named = hit->shape == shapes[1] && rbsim::childOf(world, hit->shape) == 1;  // true
+  world.destroyBody(table);
+  const bool stale = !rbsim::isValid(world, shapes[1]);                     // true, for good
+  // docs/cpp-api.md end
+  EXPECT_EQ(hit->child, 1);
+  EXPECT_TRUE(named);
+  EXPECT_TRUE(stale);
+  expectRefused([&] { rbsim::bodyOf(world, shapes[1]); }, "bodyOf: shape id (slot 1, generation 0) is stale");
 }
 
 // The scene of the snapshot tests: a box, rows of 2 and 3, a ball; then the row of 2 destroyed,
