@@ -23,6 +23,8 @@ constexpr char kMagic[8] = {'R', 'B', 'S', 'I', 'M', 'W', 'S', 'N'};
 constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
 constexpr std::size_t kChecksumBytes = 8;
 constexpr std::size_t kIdBytes = 8;
+constexpr std::uint32_t kFirstWithShapeIds = 5;  // the version that added the shapes' id table
+constexpr std::size_t kShapeSlotBytes = 4 * 4;   // a shape id slot: generation, body, child, link
 
 // FNV-1a 64 over bytes (the hash World::stateHash uses), to tell a corrupted payload.
 std::uint64_t checksum(const std::uint8_t* data, std::size_t size) {
@@ -282,12 +284,12 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
 void WorldSnapshotAccess::readShapeTable(ByteReader& in, std::uint32_t version, World& w) {
   std::vector<std::size_t> shapeCounts(w.slots_.size(), 0);  // per body id slot
   for (std::size_t i = 0; i < w.bodies_.size(); ++i) shapeCounts[w.slotOfBody_[i]] = shapeCountOf(w.bodies_[i]);
-  if (version < 5) {  // no table saved: made as adding the bodies in index order makes it
+  if (version < kFirstWithShapeIds) {  // no table saved: made as adding the bodies in index order makes it
     w.shapeIds_ = ShapeTable();
     for (std::size_t i = 0; i < w.bodies_.size(); ++i) w.shapeIds_.add(w.slotOfBody_[i], shapeCounts[w.slotOfBody_[i]]);
     return;
   }
-  std::vector<ShapeTable::Slot> slots(in.count(16, "shape id slots"));
+  std::vector<ShapeTable::Slot> slots(in.count(kShapeSlotBytes, "shape id slots"));
   for (ShapeTable::Slot& s : slots) {
     s.generation = in.u32();
     s.body = in.u32();
