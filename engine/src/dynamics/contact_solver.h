@@ -92,10 +92,12 @@ class ContactSolver {
   virtual std::unique_ptr<ContactSolver> clone() const = 0;
   // A World snapshot (world/world_snapshot.h; Jolt's ContactConstraintManager::SaveState): what
   // the next solve reads of the last one (the warm starts, the bodies it advanced, its contact
-  // points), for a World whose bodies have these keys (SolverInput::bodyKeys). The default
-  // refuses, naming the solver: a solver whose state has no saved form (dynamics/solver_snapshot.cpp).
+  // points), for a World whose bodies have these keys (SolverInput::bodyKeys). `keyedByIndex`: the
+  // saved warm starts name bodies by index (snapshots before version 6), renamed to keys on load.
+  // The default refuses, naming the solver: a solver whose state has no saved form
+  // (dynamics/solver_snapshot.cpp).
   virtual void save(ByteWriter& out) const;
-  virtual void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys);
+  virtual void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys, bool keyedByIndex);
 
   // Order::CollideFirst: the World bodies the last solve advanced, which the integrator must
   // leave alone, as a list and as flags per body. Empty for a solver that advances none.

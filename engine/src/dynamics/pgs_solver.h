@@ -29,7 +29,7 @@ class PgsSolver final : public ContactSolver {
   // Changes P and L of the bodies in contact (and x, q where they penetrate beyond the slop).
   void solve(const SolverInput& input) override;
   void save(ByteWriter& out) const override;  // dynamics/solver_snapshot.cpp
-  void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) override;
+  void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys, bool keyedByIndex) override;
   std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<PgsSolver>(*this); }
   const std::vector<SolvedContactPoint>& points() const override { return solved_; }
   void contactsReindexed(const std::vector<std::uint32_t>& newIndex) override { reindexPoints(solved_, newIndex); }

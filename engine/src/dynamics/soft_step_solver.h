@@ -67,7 +67,7 @@ class SoftStepSolver final : public ContactSolver {
   const std::vector<std::size_t>& advancedBodies() const override { return advancedList_; }
   const std::vector<char>& advancedFlags() const override { return advanced_; }  // per World body
   void save(ByteWriter& out) const override;  // dynamics/solver_snapshot.cpp
-  void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) override;
+  void load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys, bool keyedByIndex) override;
   std::unique_ptr<ContactSolver> clone() const override { return std::make_unique<SoftStepSolver>(*this); }
   // Built when first asked for after a step (most steps nobody asks: 60,000 points of Box3D's
   // pyramid took 5 % of its step), from what the step left in the constraints and states.

@@ -3,6 +3,7 @@
 // what persists is the warm-start cache (Jolt's ContactConstraintManager::SaveState saves the
 // same: the cached manifolds and their impulses), which bodies the last solve advanced, and the
 // contact points it reported.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -79,13 +80,30 @@ void checkKeys(ByteReader& in, const std::vector<Cached>& cache, const std::vect
   }
 }
 
+// A snapshot before version 6 names a warm start's bodies by index: each becomes its body's key,
+// the pair's order kept (as its contact names it), and the list is sorted by the new keys.
+template <typename Cached>
+void renameToKeys(ByteReader& in, std::vector<Cached>& cache, const std::vector<std::uint32_t>& bodyKeys) {
+  constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << 24) - 1;
+  const auto keyOf = [&](std::uint64_t index) -> std::uint64_t {
+    if (index >= bodyKeys.size()) in.fail("a warm-start cache key naming a body past the " + std::to_string(bodyKeys.size()));
+    return bodyKeys[index];
+  };
+  for (Cached& c : cache) {
+    const bool plane = (c.key >> 63) != 0;
+    const std::uint64_t a = (c.key >> 24) & kIndexMask, b = c.key & kIndexMask;
+    c.key = (c.key & ~((kIndexMask << 24) | kIndexMask)) | ((plane ? a : keyOf(a)) << 24) | keyOf(b);
+  }
+  std::sort(cache.begin(), cache.end(), [](const Cached& x, const Cached& y) { return x.key < y.key; });
+}
+
 }  // namespace
 
 void ContactSolver::save(ByteWriter&) const {
   throw std::invalid_argument("World snapshot: this contact solver's warm starts have no saved form");
 }
 
-void ContactSolver::load(ByteReader& in, const std::vector<std::uint32_t>&) { in.fail("this contact solver's warm starts have no saved form"); }
+void ContactSolver::load(ByteReader& in, const std::vector<std::uint32_t>&, bool) { in.fail("this contact solver's warm starts have no saved form"); }
 
 // A cached manifold's points past its count are never read, and the solvers leave them
 // uninitialised: only the first `count` are written, so equal states give equal bytes.
@@ -111,7 +129,7 @@ void SoftStepSolver::save(ByteWriter& out) const {
   savePoints(out, points());
 }
 
-void SoftStepSolver::load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) {
+void SoftStepSolver::load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys, bool keyedByIndex) {
   const std::size_t bodies = bodyKeys.size();
   constexpr std::size_t kCachedBytes = 8 + 4 + 1;  // the least save writes for one: no points
   std::vector<Cached> cache(in.count(kCachedBytes, "cached manifolds"));
@@ -126,6 +144,7 @@ void SoftStepSolver::load(ByteReader& in, const std::vector<std::uint32_t>& body
     }
     c.sticking = in.boolean();
   }
+  if (keyedByIndex) renameToKeys(in, cache, bodyKeys);
   checkKeys(in, cache, bodyKeys);
   std::vector<std::size_t> advanced(in.count(8, "advanced bodies"));
   std::vector<char> flags(bodies, 0);
@@ -161,7 +180,7 @@ void PgsSolver::save(ByteWriter& out) const {
   savePoints(out, solved_);
 }
 
-void PgsSolver::load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys) {
+void PgsSolver::load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys, bool keyedByIndex) {
   constexpr std::size_t kCachedBytes = 8 + 4 + 4 * 8 + 1;  // the least save writes for one: no points
   std::vector<Cached> cache(in.count(kCachedBytes, "cached manifolds"));
   for (Cached& c : cache) {
@@ -177,6 +196,7 @@ void PgsSolver::load(ByteReader& in, const std::vector<std::uint32_t>& bodyKeys)
     c.twistFriction = in.f64();
     c.sticking = in.boolean();
   }
+  if (keyedByIndex) renameToKeys(in, cache, bodyKeys);
   checkKeys(in, cache, bodyKeys);
   std::vector<SolvedContactPoint> points = loadPoints(in);
   forget();

@@ -57,6 +57,7 @@ BodyId World::addBody(const BodyDef& def) {
   }
   slots_[slot].index = static_cast<std::uint32_t>(bodies_.size() - 1);
   slotOfBody_.push_back(slot);
+  shapeIds_.add(slot, shapeCountOf(bodies_.back()));  // its shapes' ids, in child order
   return {slot, slots_[slot].generation};
 }
 
@@ -129,6 +130,8 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   collision_->removeBodies(removal, touched, reached);
   contactEvents_->bodiesRemoved(removal, reached);
   for (const std::size_t partner : touched) wakeBody(partner);
+  // Their shapes' ids go stale, body after body as one destroyBody after another retires them.
+  for (const BodyId id : ids) shapeIds_.retire(id.slot);
   // What names a removed body goes with it (every id these name was valid before the batch).
   removeStale(forces_);
   // A spring or joint goes with its body; their ids go stale, their slots freed in the order one

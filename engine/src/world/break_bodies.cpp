@@ -38,6 +38,10 @@ void World::breakBody(std::size_t body, double impulse) {
   bodies_[body] = RigidBody(pieces.front());
   bodySolids_[body] = bodySolidOf(pieces.front());
   collision_->replaceBody(body, bodies_[body], bodySolids_[body]);
+  // Its shapes are the first piece's now: the broken body's shape ids go stale (Box2D destroys a
+  // body's shapes and makes new ones the same way), the body's own id stays.
+  shapeIds_.retire(slotOfBody_[body]);
+  shapeIds_.add(slotOfBody_[body], shapeCountOf(bodies_[body]));
   awakeStale_ = true;  // its pieces are added awake
   for (std::size_t k = 1; k < pieces.size(); ++k) event.added.push_back(addBody(pieces[k]));
   // The pieces are new bodies with their own centres of mass: the broken body's joints let go.

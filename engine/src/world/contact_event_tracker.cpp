@@ -6,6 +6,7 @@
 #include "math/byte_stream.h"
 #include "rbsim/world/world.h"
 #include "world/collision_pipeline.h"
+#include "world/world_access.h"
 
 namespace rbsim {
 
@@ -37,6 +38,8 @@ ContactPair pairOfContact(const Contact& c, const World& world) {
   pair.bodyB = world.idAt(c.b);
   pair.childA = c.childA;
   pair.childB = c.childB;
+  if (c.kind != Contact::Kind::PlaneBody) pair.shapeA = WorldAccess::shapeIdOf(world, c.a, c.childA);
+  pair.shapeB = WorldAccess::shapeIdOf(world, c.b, c.childB);
   return pair;
 }
 
@@ -70,14 +73,19 @@ ContactPair ContactEventTracker::pairOf(const Entry& e, const World& world, cons
     pair.bodyB = world.idAt(secondIndex);
     pair.childA = first;
     pair.childB = second;
+    pair.shapeB = WorldAccess::shapeIdOf(world, secondIndex, second);
     return pair;
   }
-  const BodyId low = world.idAt(collision.bodyOfProxy(static_cast<ProxyId>(e.hi)));
-  const BodyId high = world.idAt(collision.bodyOfProxy(static_cast<ProxyId>(secondIndex)));
+  const std::size_t lowIndex = collision.bodyOfProxy(static_cast<ProxyId>(e.hi));
+  const std::size_t highIndex = collision.bodyOfProxy(static_cast<ProxyId>(secondIndex));
+  const BodyId low = world.idAt(lowIndex);
+  const BodyId high = world.idAt(highIndex);
   pair.bodyA = e.swapped ? high : low;
   pair.bodyB = e.swapped ? low : high;
   pair.childA = e.swapped ? second : first;
   pair.childB = e.swapped ? first : second;
+  pair.shapeA = WorldAccess::shapeIdOf(world, e.swapped ? highIndex : lowIndex, pair.childA);
+  pair.shapeB = WorldAccess::shapeIdOf(world, e.swapped ? lowIndex : highIndex, pair.childB);
   return pair;
 }
 

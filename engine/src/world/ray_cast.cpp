@@ -10,6 +10,7 @@ std::optional<WorldRayHit> rayCast(const World& world, const Vec3& origin, const
   WorldRayHit out;
   out.isPlane = hit->isPlane;
   out.body = hit->body;
+  out.shape = hit->shape;
   out.plane = hit->plane;
   out.distance = hit->distance;
   out.point = hit->point;

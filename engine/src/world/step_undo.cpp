@@ -86,6 +86,7 @@ void World::saveSpawns() {
   u.bodyCount = bodies_.size();
   u.slots = slots_;
   u.freeSlot = freeSlot_;
+  u.shapeIds = shapeIds_;
   u.spawners = spawners_;
   u.spawned = spawnedNow_;
   u.removed = removedNow_;
@@ -101,6 +102,7 @@ void World::undoSpawns() {
   destroyBodies(made);
   slots_ = u.slots;
   freeSlot_ = u.freeSlot;
+  shapeIds_ = u.shapeIds;
   spawners_ = u.spawners;
   spawnedNow_ = u.spawned;
   removedNow_ = u.removed;

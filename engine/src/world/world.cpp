@@ -93,7 +93,7 @@ std::vector<std::unique_ptr<StepListener>> cloned(const std::vector<std::unique_
 // escapes it: the 4 bytes of padding after freeSlot_, which a member of 4 bytes or less would fill.
 // Checked where the standard library lays out vectors in 3 pointers of 8 bytes (libstdc++, libc++
 // and MSVC's release library on every 64-bit target the engine builds for, docs/ci.md).
-constexpr std::size_t kWorldBytesCopied = 1696;
+constexpr std::size_t kWorldBytesCopied = 1808;
 static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(World) == kWorldBytesCopied,
               "a member was added to or removed from World: see the comment above World's copy constructor");
 World::World(const World& other)
@@ -102,6 +102,7 @@ World::World(const World& other)
       slots_(other.slots_),
       slotOfBody_(other.slotOfBody_),
       freeSlot_(other.freeSlot_),
+      shapeIds_(other.shapeIds_),
       forces_(other.forces_),
       springs_(other.springs_),
       springIds_(other.springIds_),

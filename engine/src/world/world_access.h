@@ -30,6 +30,12 @@ struct WorldAccess {
   static IdTable<SpringId>& springIds(World& world) { return world.springIds_; }
   static const IdTable<SpringId>& springIds(const World& world) { return world.springIds_; }
   static IdTable<JointId>& jointIds(World& world) { return world.jointIds_; }
+  // The shapes' ids (world/shape_table.h), and the id of bodies()[index]'s child `child`.
+  static const ShapeTable& shapeIds(const World& world) { return world.shapeIds_; }
+  static ShapeId shapeIdOf(const World& world, std::size_t index, std::size_t child) {
+    return world.shapeIds_.idOf(world.slotOfBody_[index], child);
+  }
+  static BodyId bodyIdOfSlot(const World& world, std::uint32_t slot) { return {slot, world.slots_[slot].generation}; }
   static const IdTable<JointId>& jointIds(const World& world) { return world.jointIds_; }
   static std::vector<KinematicMotion>& motions(World& world) { return world.motions_; }
   static const std::vector<KinematicMotion>& motions(const World& world) { return world.motions_; }

@@ -13,6 +13,7 @@
 #include "rbsim/world/world.h"
 #include "world/body_queries.h"
 #include "world/query_tree.h"
+#include "world/world_access.h"
 
 namespace rbsim {
 
@@ -28,6 +29,12 @@ Vec3 checkedCastDirection(const std::string& call, const Vec3& direction, double
   }
   if (!(maxDistance >= 0.0)) throw std::invalid_argument(call + ": expected a max distance >= 0");
   return direction / length;
+}
+
+// The hit's body and shape, body i's child hit (its one shape for a body of one shape).
+void nameBody(const World& world, std::uint32_t i, QueryHit& hit) {
+  hit.body = world.idAt(i);
+  hit.shape = WorldAccess::shapeIdOf(world, i, hit.child < 0 ? 0 : static_cast<std::size_t>(hit.child));
 }
 
 void checkFinitePoint(const std::string& call, const char* field, const Vec3& p) {
@@ -57,7 +64,7 @@ std::optional<QueryHit> castOneRay(const World& world, const QueryTree& tree, co
     }
     if (hit) {
       if (best && hit->distance >= best->distance) return;
-      hit->body = world.idAt(i);
+      nameBody(world, i, *hit);
       limit = hit->distance;
       best = hit;
     }
@@ -172,7 +179,7 @@ std::optional<QueryHit> castShape(const World& world, const QueryShape& shape, c
   queryTree(world)->walkRay(centre, d, reach, grow, [&](std::uint32_t i, std::uint32_t, double& limit) {
     std::optional<QueryHit> hit = castBody(world.bodies()[i], p.shape, p.rotation, p.position, d, limit, filter);
     if (hit && (!best || hit->distance < best->distance)) {
-      hit->body = world.idAt(i);
+      nameBody(world, i, *hit);
       limit = hit->distance;
       best = hit;
     }
@@ -201,7 +208,7 @@ std::vector<QueryHit> overlapShape(const World& world, const QueryShape& shape, 
   std::sort(bodies.begin(), bodies.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<QueryHit> found;
   for (auto& [i, hit] : bodies) {
-    hit.body = world.idAt(i);
+    nameBody(world, i, hit);
     found.push_back(hit);
   }
   if (planePasses(filter)) {
@@ -227,7 +234,7 @@ std::optional<QueryHit> closestPoint(const World& world, const Vec3& point, doub
   queryTree(world)->walkNearest(point, bound, [&](std::uint32_t i, double& limit) {
     std::optional<QueryHit> hit = closestOnBody(world.bodies()[i], point, filter);
     if (hit && better(*hit)) {
-      hit->body = world.idAt(i);
+      nameBody(world, i, *hit);
       limit = hit->distance;
       best = hit;
     }

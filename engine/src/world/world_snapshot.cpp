@@ -23,6 +23,9 @@ constexpr char kMagic[8] = {'R', 'B', 'S', 'I', 'M', 'W', 'S', 'N'};
 constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
 constexpr std::size_t kChecksumBytes = 8;
 constexpr std::size_t kIdBytes = 8;
+constexpr std::uint32_t kFirstWithShapeIds = 5;  // the version that added the shapes' id table
+constexpr std::uint32_t kFirstWithSlotKeys = 6;  // the first whose warm starts name bodies by id slot
+constexpr std::size_t kShapeSlotBytes = 4 * 4;   // a shape id slot: generation, body, child, link
 
 // FNV-1a 64 over bytes (the hash World::stateHash uses), to tell a corrupted payload.
 std::uint64_t checksum(const std::uint8_t* data, std::size_t size) {
@@ -90,6 +93,19 @@ void readIdTable(ByteReader& in, std::size_t items, IdTable<Id>& table, const ch
   if (!problem.empty()) in.fail(std::string(what) + ": " + problem);
 }
 
+// The shapes' ids (world/shape_table.h): per slot its generation, body id slot, child and link;
+// then the free list's head.
+void writeShapeTable(ByteWriter& out, const ShapeTable& table) {
+  out.count(table.slots().size());
+  for (const ShapeTable::Slot& s : table.slots()) {
+    out.u32(s.generation);
+    out.u32(s.body);
+    out.u32(s.child);
+    out.u32(s.next);
+  }
+  out.u32(table.freeSlot());
+}
+
 }  // namespace
 
 // save and load name the World's members one by one, as World's copy constructor does
@@ -101,7 +117,7 @@ void readIdTable(ByteReader& in, std::size_t items, IdTable<Id>& table, const ch
 // queryCache_ (the queries rebuild their tree); stats_, stageClock_ (timing, not state);
 // awakeList_, listed_, awakeSorted_, awakeStale_, awakeScanned_ (the awake list, rebuilt from the
 // bodies' flags after a load), localIndex_, undoOpen_ (a step's scratch).
-constexpr std::size_t kWorldBytesSaved = 1696;
+constexpr std::size_t kWorldBytesSaved = 1808;
 static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(World) == kWorldBytesSaved,
               "a member was added to or removed from World: see the comment above WorldSnapshotAccess::save");
 
@@ -115,6 +131,7 @@ void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
   }
   for (std::uint32_t slot : w.slotOfBody_) out.u32(slot);
   out.u32(w.freeSlot_);
+  writeShapeTable(out, w.shapeIds_);
   out.count(w.planes_.size());
   for (std::size_t p = 0; p < w.planes_.size(); ++p) {
     out.vec3(w.planes_[p].normal);
@@ -158,7 +175,7 @@ void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
   w.contactEvents_->save(out);
 }
 
-World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
+World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t version) {
   World w(snapshot::readSettings(in));
   loadBodies(in, base, w);
   const std::size_t n = w.bodies_.size();
@@ -189,6 +206,7 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
   w.slots_ = std::move(slots);
   w.slotOfBody_ = std::move(slotOfBody);
   w.freeSlot_ = freeSlot;
+  readShapeTable(in, version, w);
 
   const std::size_t planes = in.count(7 * 8, "planes");
   for (std::size_t p = 0; p < planes; ++p) {
@@ -251,7 +269,7 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
   if (w.stepsAtOrigin_ > w.stepCount_) in.fail("the time step changed after the step count");
   w.updateJointFilter();
   w.collision_->load(in, w.bodies_, w.planes_.size());
-  w.solver_->load(in, w.bodyKeys());
+  w.solver_->load(in, w.bodyKeys(), version < kFirstWithSlotKeys);
   w.contactEvents_->load(in);
   // Each contact point names its contact (World::contactPoints, read by index).
   for (const SolvedContactPoint& point : w.solver_->points()) {
@@ -262,6 +280,26 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base) {
   // saved World had them, and both go on alike.
   w.sleepContacts();
   return w;
+}
+
+void WorldSnapshotAccess::readShapeTable(ByteReader& in, std::uint32_t version, World& w) {
+  std::vector<std::size_t> shapeCounts(w.slots_.size(), 0);  // per body id slot
+  for (std::size_t i = 0; i < w.bodies_.size(); ++i) shapeCounts[w.slotOfBody_[i]] = shapeCountOf(w.bodies_[i]);
+  if (version < kFirstWithShapeIds) {  // no table saved: made as adding the bodies in index order makes it
+    w.shapeIds_ = ShapeTable();
+    for (std::size_t i = 0; i < w.bodies_.size(); ++i) w.shapeIds_.add(w.slotOfBody_[i], shapeCounts[w.slotOfBody_[i]]);
+    return;
+  }
+  std::vector<ShapeTable::Slot> slots(in.count(kShapeSlotBytes, "shape id slots"));
+  for (ShapeTable::Slot& s : slots) {
+    s.generation = in.u32();
+    s.body = in.u32();
+    s.child = in.u32();
+    s.next = in.u32();
+  }
+  const std::uint32_t freeSlot = in.u32();
+  const std::string problem = w.shapeIds_.assign(std::move(slots), freeSlot, shapeCounts);
+  if (!problem.empty()) in.fail("shape ids: " + problem);
 }
 
 std::vector<std::uint8_t> saveWorldSnapshot(const World& world) {
@@ -284,17 +322,19 @@ std::vector<std::uint8_t> saveWorldSnapshot(const World& world) {
   return std::move(bytes);
 }
 
-// The payload's size, after checking the header and the checksum.
-static std::size_t checkedPayload(const std::uint8_t* data, std::size_t size, const std::string& what) {
+// The payload's size, after checking the header and the checksum; the version in *versionRead.
+static std::size_t checkedPayload(const std::uint8_t* data, std::size_t size, const std::string& what,
+                                  std::uint32_t* versionRead = nullptr) {
   ByteReader header(data, size, what);
   for (char c : kMagic) {
     if (header.u8() != static_cast<std::uint8_t>(c)) header.fail("not a World snapshot (expected the magic RBSIMWSN)");
   }
   const std::uint32_t version = header.u32();
-  if (version != kWorldSnapshotVersion) {
-    header.fail("World snapshot version " + std::to_string(version) + " (this build reads version " +
-                std::to_string(kWorldSnapshotVersion) + ")");
+  if (version < kOldestWorldSnapshotVersion || version > kWorldSnapshotVersion) {
+    header.fail("World snapshot version " + std::to_string(version) + " (this build reads versions " +
+                std::to_string(kOldestWorldSnapshotVersion) + " to " + std::to_string(kWorldSnapshotVersion) + ")");
   }
+  if (versionRead != nullptr) *versionRead = version;
   const std::uint64_t payload = header.u64();
   if (header.remaining() < kChecksumBytes || payload != header.remaining() - kChecksumBytes) {
     header.fail("truncated or extended: a payload of " + std::to_string(payload) + " bytes where " +
@@ -310,9 +350,10 @@ void checkWorldSnapshot(const std::uint8_t* data, std::size_t size, const std::s
 }
 
 World loadWorldSnapshot(const std::uint8_t* data, std::size_t size, const World& base, const std::string& what) {
-  const std::size_t payload = checkedPayload(data, size, what);
+  std::uint32_t version = kWorldSnapshotVersion;
+  const std::size_t payload = checkedPayload(data, size, what, &version);
   ByteReader in(data + kHeaderBytes, payload, what);
-  World world = WorldSnapshotAccess::load(in, base);
+  World world = WorldSnapshotAccess::load(in, base, version);
   if (in.remaining() != 0) in.fail(std::to_string(in.remaining()) + " bytes left over after the World");
   return world;
 }

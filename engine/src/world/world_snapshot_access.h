@@ -9,13 +9,15 @@ namespace rbsim {
 
 struct WorldSnapshotAccess {
   static void save(const World& world, ByteWriter& out);
-  static World load(ByteReader& in, const World& base);
+  static World load(ByteReader& in, const World& base, std::uint32_t version);  // of the snapshot read
   // Each body's record: its constants' fingerprint, name, colour, material, kind, state, rotation,
   // sleep, accumulators and free-flow memo.
   static void saveBodies(const World& world, ByteWriter& out);
   // The bodies added to `world` (a World with none yet) in order, each from the constants of a
   // body, spawner prototype or fracture piece of `base` with its fingerprint.
   static void loadBodies(ByteReader& in, const World& base, World& world);
+  // The shapes' id table, read (version 5 on) or made afresh (version 4), once the bodies' ids are.
+  static void readShapeTable(ByteReader& in, std::uint32_t version, World& world);
 };
 
 }  // namespace rbsim

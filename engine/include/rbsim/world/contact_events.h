@@ -11,6 +11,7 @@
 
 #include "rbsim/body/body_id.h"
 #include "rbsim/math/types.h"
+#include "rbsim/world/item_ids.h"
 
 namespace rbsim {
 
@@ -22,6 +23,9 @@ struct ContactPair {
   BodyId bodyA, bodyB;  // bodyA is BodyId{} when A is a plane
   std::int64_t plane = kNoPlane;  // the plane A's index in World::planes(), or kNoPlane
   std::uint16_t childA = 0, childB = 0;
+  // The two shapes' ids (world/shape_ids.h) when the event was made: a plane's side is ShapeId{}.
+  // An end event of a destroyed or broken body names the ids it had, now stale.
+  ShapeId shapeA, shapeB;
 };
 
 // The pair's manifold first has points: the shapes touch, or are within the contact margin of

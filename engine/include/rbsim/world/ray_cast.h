@@ -11,6 +11,7 @@
 
 #include "rbsim/body/body_id.h"
 #include "rbsim/math/types.h"
+#include "rbsim/world/item_ids.h"
 
 namespace rbsim {
 
@@ -19,6 +20,7 @@ class World;
 struct WorldRayHit {
   bool isPlane = false;
   BodyId body;             // the body hit (when !isPlane)
+  ShapeId shape;           // its shape hit (world/shape_ids.h; a compound's child); ShapeId{} for a plane
   std::size_t plane = 0;   // the plane hit, an index into World::planes() (when isPlane)
   double distance = 0.0;   // along the unit direction [m]
   Vec3 point = Vec3::Zero();     // where it hits, world frame [m]

@@ -21,6 +21,7 @@
 #include "rbsim/world/kinematic_motion.h"
 #include "rbsim/world/query_cache.h"
 #include "rbsim/world/scripts.h"
+#include "rbsim/world/shape_table.h"
 #include "rbsim/world/spawner.h"
 #include "rbsim/world/spring.h"
 #include "rbsim/settings/settings.h"
@@ -256,8 +257,9 @@ class World {
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> slotOfBody_;
   std::uint32_t freeSlot_ = UINT32_MAX;  // head of the free list
-  // Per body index, its stable key (its slot): what pairs, warm starts and recycled manifolds are
-  // named by, so that a removal, which moves bodies to new indices, renames none of them.
+  ShapeTable shapeIds_;  // the bodies' shapes' ids, by body id slot (world/shape_table.h)
+  // Per body index, its stable key (its slot): what pairs and warm starts are named by, so that a
+  // removal, which moves bodies to new indices, renames none of them.
   const std::vector<std::uint32_t>& bodyKeys() const { return slotOfBody_; }
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
@@ -313,12 +315,13 @@ class World {
     std::vector<PoseEvent> events;      // pendingEvents_, when some are due
     bool eventsSaved = false;
     std::uint64_t stepCount = 0;
-    // A step that only spawns (saveSpawns): the bodies before it, the ids' table, the spawners
+    // A step that only spawns (saveSpawns): the bodies before it, the ids' tables, the spawners
     // and the last step's lists of made and removed bodies.
     bool spawnsSaved = false;
     std::size_t bodyCount = 0;
     std::vector<Slot> slots;
     std::uint32_t freeSlot = UINT32_MAX;
+    ShapeTable shapeIds;
     std::vector<Spawner> spawners;
     std::vector<BodyId> spawned, removed;
   } undo_;

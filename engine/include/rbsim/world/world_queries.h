@@ -16,6 +16,7 @@
 #include "rbsim/body/body_id.h"
 #include "rbsim/geometry/aabb.h"
 #include "rbsim/math/types.h"
+#include "rbsim/world/item_ids.h"
 
 namespace rbsim {
 
@@ -31,11 +32,12 @@ struct QueryFilter {
   bool planes = true;
 };
 
-// What a query found: a body (and which child of a compound) or a plane.
+// What a query found: a body (and which child of a compound, and that shape's id) or a plane.
 struct QueryHit {
   bool isPlane = false;
   BodyId body;               // when !isPlane
   int child = -1;            // the compound child hit, an index into RigidBody::children(); -1 for a body of one shape
+  ShapeId shape;             // the shape hit (world/shape_ids.h): that child, or the body's one shape; ShapeId{} for a plane
   std::size_t plane = 0;     // when isPlane: an index into World::planes()
   double distance = 0.0;     // [m] along the unit direction (casts) or to the surface (closest point)
   Vec3 point = Vec3::Zero();     // on the surface of what was hit, world frame [m]

@@ -7,7 +7,7 @@
 // earlier body's mesh object it shares (the renderer's instancing groups them by it, and uploads
 // a mesh object once: a body read back keeps the base World's object of its id when equal),
 // accumulated forces and the exact integrator's free-flow memo; the ids (slots, generations, the
-// free list); materials, planes, scripted forces, springs, joints with their warm starts, pose
+// free list) and the shapes' ids; materials, planes, scripted forces, springs, joints with their warm starts, pose
 // events, kinematic motions, spawners (their random streams and living bursts), the kill volume,
 // the step count and time origin, the settings; the collision stages' proxies, boxes, contacts
 // and recycling frames; the contact solver's warm starts and last contact points; the last
@@ -37,8 +37,13 @@ namespace rbsim {
 // 2: which bodies share one mesh object (issue 58: a World read back is drawn in the same
 // instanced batches). 3: a body record has no colour (issue 58: colours are the app's,
 // rbsim/scene/view_desc.h). 4: the joints' and springs' id tables (issue 58: a JointId or SpringId
-// taken before a save names the same joint or spring in the World read back).
-inline constexpr std::uint32_t kWorldSnapshotVersion = 4;
+// taken before a save names the same joint or spring in the World read back). 5: the shapes' id
+// table (issue 58, world/shape_ids.h). Version 4 still loads: its shape ids are made afresh, as
+// adding its bodies in index order would make them (slots 0, 1, ... in child order, generation 0).
+// 6: the warm starts name bodies by their id slots, not their indices (dynamics/contact_key.h
+// pairKey); an older version's are renamed on load.
+inline constexpr std::uint32_t kWorldSnapshotVersion = 6;
+inline constexpr std::uint32_t kOldestWorldSnapshotVersion = 4;  // the oldest version read
 
 // Throws std::invalid_argument for a World with a step listener or the LCP solver.
 std::vector<std::uint8_t> saveWorldSnapshot(const World& world);
