@@ -63,7 +63,7 @@ std::vector<T> readNaming(ByteReader& in, const World& world, std::size_t minByt
   return items;
 }
 
-// An IdTable (world/id_table.h): its slots, each item's slot, the free list's head.
+// An IdTable (body/id_table.h): its slots, each item's slot, the free list's head.
 template <typename Id>
 void writeIdTable(ByteWriter& out, const IdTable<Id>& table) {
   out.count(table.slots().size());

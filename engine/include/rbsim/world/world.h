@@ -16,7 +16,7 @@
 #include "rbsim/dynamics/step_listener.h"
 #include "rbsim/body/body_id.h"
 #include "rbsim/world/contact_events.h"
-#include "rbsim/world/id_table.h"
+#include "rbsim/body/id_table.h"
 #include "rbsim/world/item_ids.h"
 #include "rbsim/world/kinematic_motion.h"
 #include "rbsim/world/query_cache.h"
