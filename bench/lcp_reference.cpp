@@ -137,12 +137,13 @@ Solve solveTimed(const std::vector<RigidBody>& bodies, const std::vector<Contact
                  bool addGravity) {
   const std::vector<Material> bodyMaterials(bodies.size(), kMaterial), planeMaterials(1, kMaterial);
   std::vector<Joint> joints;
+  const IdTable<BodyId> noIds;  // no joints to resolve
   std::vector<double> times;
   Solve out;
   for (int r = 0; r < kRepeats; ++r) {
     std::vector<RigidBody> copy = bodies;
     Solver solver;
-    const SolverInput input{copy, contacts, joints, bodyMaterials, planeMaterials, settings, addGravity};
+    const SolverInput input{copy, contacts, joints, noIds, bodyMaterials, planeMaterials, settings, addGravity};
     const auto start = std::chrono::steady_clock::now();
     solver.solve(input);
     times.push_back(1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

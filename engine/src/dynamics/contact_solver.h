@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "rbsim/body/id_table.h"
 #include "rbsim/body/material.h"
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/collision/contact.h"
@@ -30,6 +31,7 @@ struct SolverInput {
   std::vector<RigidBody>& bodies;
   const std::vector<Contact>& contacts;
   std::vector<Joint>& joints;
+  const IdTable<BodyId>& bodyIds;  // the bodies' ids: a joint's body's index is bodyIds.indexOf(id)
   const std::vector<Material>& bodyMaterials;
   const std::vector<Material>& planeMaterials;
   const Settings& settings;

@@ -459,8 +459,8 @@ void SoftStepSolver::solve(const SolverInput& input) {
     slot(bodies, contact.b, settings, addGravity);
     if (!plane) slot(bodies, contact.a, settings, addGravity);
   }
-  slotJoints(bodies, joints, settings, addGravity);
-  prepareJoints(bodies, joints, settings);
+  slotJoints(bodies, input.bodyIds, joints, settings, addGravity);
+  prepareJoints(bodies, input.bodyIds, joints, settings);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& contact = contacts[i];
     const bool plane = contact.kind == Contact::Kind::PlaneBody;

@@ -33,7 +33,8 @@ void World::breakBody(std::size_t body, double impulse) {
   --breakableBodies_;
   // The pieces start from the state the solver left: the impulse that broke the body is in it.
   std::vector<BodyDef> pieces = fracturePieces(bodies_[body], *pattern, bodyMaterials_[body]);
-  FractureEvent event{time(), idAt(body), {}, impulse};
+  const BodyId id = idAt(body);
+  FractureEvent event{time(), id, {}, impulse};
   contactEvents_->bodyBroken(*this, *collision_, body);  // a piece that touches on begins anew
   bodies_[body] = RigidBody(pieces.front());
   bodySolids_[body] = bodySolidOf(pieces.front());
@@ -41,7 +42,7 @@ void World::breakBody(std::size_t body, double impulse) {
   awakeStale_ = true;  // its pieces are added awake
   for (std::size_t k = 1; k < pieces.size(); ++k) event.added.push_back(addBody(pieces[k]));
   // The pieces are new bodies with their own centres of mass: the broken body's joints let go.
-  jointIds_.erase(joints_, [&](const Joint& j) { return j.a == body || j.b == body; });  // their ids go stale
+  jointIds_.erase(joints_, [&](const Joint& j) { return j.def.bodyA == id || j.def.bodyB == id; });  // their ids go stale
   updateJointFilter();
   fractureEvents_.push_back(event);
 }

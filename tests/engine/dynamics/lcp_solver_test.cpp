@@ -246,7 +246,7 @@ TEST(LcpSolver, ABoxOnASlopeMeetsSeed001sConditionsAndStaysAtRest) {
       const std::vector<Material> bodyMaterials(copy.size()), planeMaterials(world.planes().size());
       std::vector<Joint> joints;
       LcpSolver solver;
-      solver.solve({copy, world.contacts(), joints, bodyMaterials, planeMaterials, world.settings()});
+      solver.solve({copy, world.contacts(), joints, IdTable<BodyId>{}, bodyMaterials, planeMaterials, world.settings()});
       EXPECT_LT(solver.lastFrictionPasses(), kMaxLcpFrictionPasses / 2) << what;
       // The normal impulses carry the weight's normal part, friction the rest (exactly, at rest).
       double normalSum = 0.0;

@@ -160,7 +160,7 @@ TEST(PgsSolver, InelasticImpulsesNeverAddKineticEnergy) {
     PgsSolver solver;
     std::vector<Joint> joints;
     const std::vector<Contact> contacts{contact};
-    solver.solve({bodies, contacts, joints, materials, {}, settings});
+    solver.solve({bodies, contacts, joints, IdTable<BodyId>{}, materials, {}, settings});
     for (const RigidBody& b : bodies) after += b.kineticEnergy();
     EXPECT_LE(after, before * (1.0 + 1e-12)) << "trial " << trial << ", mu_s = " << m.staticFriction;
   }

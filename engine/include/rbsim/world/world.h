@@ -246,15 +246,9 @@ class World {
 
   Settings settings_;
   std::vector<RigidBody> bodies_;
-  // Ids (body/body_id.h): per slot the body's index in bodies_ (or, for a free slot, the next
-  // free slot) and its generation; per body its slot.
-  struct Slot {
-    std::uint32_t index = 0;
-    std::uint32_t generation = 0;
-  };
-  std::vector<Slot> slots_;
-  std::vector<std::uint32_t> slotOfBody_;
-  std::uint32_t freeSlot_ = UINT32_MAX;  // head of the free list
+  // Ids (body/body_id.h): per slot the body's index in bodies_ and its generation, per body its
+  // slot; the joints name their bodies by id and the solver resolves them through it.
+  IdTable<BodyId> bodyIds_;
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
   IdTable<SpringId> springIds_;  // springs_'s ids (world/spring.h)
@@ -313,7 +307,7 @@ class World {
     // and the last step's lists of made and removed bodies.
     bool spawnsSaved = false;
     std::size_t bodyCount = 0;
-    std::vector<Slot> slots;
+    std::vector<IdTable<BodyId>::Slot> slots;
     std::uint32_t freeSlot = UINT32_MAX;
     std::vector<Spawner> spawners;
     std::vector<BodyId> spawned, removed;
