@@ -30,7 +30,6 @@
 #include <cstring>
 #include <iterator>
 #include <memory>
-#include <numeric>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -138,14 +137,14 @@ Solve solveTimed(const std::vector<RigidBody>& bodies, const std::vector<Contact
                  bool addGravity) {
   const std::vector<Material> bodyMaterials(bodies.size(), kMaterial), planeMaterials(1, kMaterial);
   std::vector<Joint> joints;
-  std::vector<std::uint32_t> keys(bodies.size());  // a World that never removed a body: keys are indices
-  std::iota(keys.begin(), keys.end(), 0u);
+  IdTable<BodyId> bodyIds;  // a World's that never removed a body: each key is its index
+  for (std::size_t i = 0; i < bodies.size(); ++i) bodyIds.add();
   std::vector<double> times;
   Solve out;
   for (int r = 0; r < kRepeats; ++r) {
     std::vector<RigidBody> copy = bodies;
     Solver solver;
-    const SolverInput input{copy, contacts, joints, bodyMaterials, planeMaterials, settings, addGravity, keys};
+    const SolverInput input{copy, contacts, joints, bodyIds, bodyMaterials, planeMaterials, settings, addGravity};
     const auto start = std::chrono::steady_clock::now();
     solver.solve(input);
     times.push_back(1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -83,11 +83,11 @@ const glm::vec3 kHingeAxisColor(0.2f, 1.0f, 0.9f);
 
 void addJointLines(const World& world, render::FrameData& frame) {
   for (const Joint& joint : world.joints()) {
-    const RigidBody& a = world.bodies()[joint.a];
+    const RigidBody& a = world.body(joint.def.bodyA);
     const Vec3 onA = a.bodyToWorld(joint.localAnchorMoving);
     frame.lines.push_back({toGlm(a.position()), toGlm(onA), kJointColor, true});
-    if (joint.b != kWorldIndex) {
-      const RigidBody& b = world.bodies()[joint.b];
+    if (joint.def.bodyB != kWorldAnchor) {
+      const RigidBody& b = world.body(joint.def.bodyB);
       frame.lines.push_back({toGlm(b.position()), toGlm(b.bodyToWorld(joint.localAnchorBase)), kJointColor, true});
     }
     if (joint.def.type == JointDef::Type::Hinge) {

@@ -54,8 +54,8 @@ void bindJoints(py::class_<PyWorld>& c) {
         for (std::size_t j = 0; j < world.joints().size(); ++j, ++row) {
           const Joint& joint = world.joints()[j];
           const JointReading r = readJoint(world, j);
-          row->body_a = static_cast<std::int64_t>(joint.a);
-          row->body_b = joint.b == kWorldIndex ? -1 : static_cast<std::int64_t>(joint.b);
+          row->body_a = static_cast<std::int64_t>(world.indexOf(joint.def.bodyA));
+          row->body_b = joint.def.bodyB == kWorldAnchor ? -1 : static_cast<std::int64_t>(world.indexOf(joint.def.bodyB));
           row->angle = r.angle;
           row->speed = r.speed;
           row->translation = r.translation;

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "rbsim/body/id_table.h"
 #include "rbsim/body/material.h"
 #include "rbsim/body/rigid_body.h"
 #include "rbsim/collision/contact.h"
@@ -29,13 +30,14 @@ struct SolverInput {
   std::vector<RigidBody>& bodies;
   const std::vector<Contact>& contacts;
   std::vector<Joint>& joints;
+  // The bodies' ids: a joint's body's index is bodyIds.indexOf(id); a body's stable key (its slot,
+  // which a removal leaves as it was), what the warm starts are keyed by (contact_key.h pairKey),
+  // is bodyIds.slotOfItem()[index].
+  const IdTable<BodyId>& bodyIds;
   const std::vector<Material>& bodyMaterials;
   const std::vector<Material>& planeMaterials;
   const Settings& settings;
   bool addGravity = true;
-  // Per body index, its stable key (the BodyId slot, which a removal leaves as it was): what the
-  // warm starts are keyed by (contact_key.h pairKey).
-  const std::vector<std::uint32_t>& bodyKeys;
 };
 
 // A manifold of the last solve that was hit (Box3D's hit events, src/solver.c and
@@ -92,7 +94,7 @@ class ContactSolver {
   virtual std::unique_ptr<ContactSolver> clone() const = 0;
   // A World snapshot (world/world_snapshot.h; Jolt's ContactConstraintManager::SaveState): what
   // the next solve reads of the last one (the warm starts, the bodies it advanced, its contact
-  // points), for a World whose bodies have these keys (SolverInput::bodyKeys). `keyedByIndex`: the
+  // points), for a World whose bodies have these keys (SolverInput::bodyIds). `keyedByIndex`: the
   // saved warm starts name bodies by index (snapshots before version 6), renamed to keys on load.
   // The default refuses, naming the solver: a solver whose state has no saved form
   // (dynamics/solver_snapshot.cpp).
@@ -109,7 +111,7 @@ class ContactSolver {
   // contacts' impulses): these contacts of the last solve now sleep, kept apart and not given to
   // solve(); the solver keeps their warm starts aside. contactsWoke: they are awake again, and
   // their warm starts serve the next solve. The default keeps none (a sleeping pair starts cold).
-  // `bodyKeys` as SolverInput's.
+  // `bodyKeys`: SolverInput::bodyIds.slotOfItem().
   virtual void contactsSlept(const std::vector<Contact>& /*contacts*/, const std::vector<std::uint32_t>& /*bodyKeys*/) {}
   virtual void contactsWoke(const std::vector<Contact>& /*contacts*/, const std::vector<std::uint32_t>& /*bodyKeys*/) {}
   // Islands fell asleep at the end of the step and their contacts left the step's

@@ -96,7 +96,7 @@ void LcpSolver::buildPatch(const SolverInput& input, const Contact& contact, std
   patch.material = material;
   patch.firstRow = rows_.size();
   patch.rowCount = static_cast<std::size_t>(m.count);
-  patch.key = pairKey(contact, input.bodyKeys);
+  patch.key = pairKey(contact, input.bodyIds.slotOfItem());
   const RigidBody& b1 = bodies[contact.b];
   const Vec3 x2 = plane ? Vec3::Zero() : bodies[contact.a].position();
   const SolverBody& s1 = bodies_[patch.body1];

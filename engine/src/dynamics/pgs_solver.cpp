@@ -331,7 +331,7 @@ void PgsSolver::solve(const SolverInput& input) {
     const Material material = contactMaterial(input, contact);
     // A sleeping pair receives nothing (World wakes the sleeping side of a pair with an awake one).
     const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
-    if (contact.manifold.count > 0 && awake) buildPatch(bodies, contact, c, pairKey(contact, input.bodyKeys), material, settings);
+    if (contact.manifold.count > 0 && awake) buildPatch(bodies, contact, c, pairKey(contact, input.bodyIds.slotOfItem()), material, settings);
   }
 
   pseudoVelocities_.assign(bodies_.size(), Velocity{});
@@ -383,7 +383,7 @@ void PgsSolver::solve(const SolverInput& input) {
     }
   }
   writeBack(bodies, settings.timeStep);
-  remember(contacts, input.bodyKeys);
+  remember(contacts, input.bodyIds.slotOfItem());
 }
 
 void PgsSolver::applyPointFriction(const Patch& patch, const NormalRow& row, const Vec3& impulse) {

@@ -6,6 +6,7 @@
 // friction, the ball's cone and twist, the prismatic and weld joints are in joints/*.cpp.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "dynamics/contact_key.h"
 #include "dynamics/soft_step_solver.h"
@@ -30,6 +31,13 @@ bool needsExtra(const JointDef& def) {
          def.type == JointDef::Type::Prismatic || def.type == JointDef::Type::Weld;
 }
 
+// A joint's bodies' indices now: A's, and B's or kOnWorld for the world.
+constexpr std::size_t kOnWorld = SIZE_MAX;
+std::size_t indexA(const IdTable<BodyId>& bodyIds, const Joint& joint) { return bodyIds.indexOf(joint.def.bodyA); }
+std::size_t indexB(const IdTable<BodyId>& bodyIds, const Joint& joint) {
+  return joint.def.bodyB == kWorldAnchor ? kOnWorld : bodyIds.indexOf(joint.def.bodyB);
+}
+
 Mat3 skew(const Vec3& r) {
   Mat3 m;
   m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
@@ -38,31 +46,31 @@ Mat3 skew(const Vec3& r) {
 
 }  // namespace
 
-void SoftStepSolver::slotJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints,
-                                const Settings& settings, bool addGravity) {
+void SoftStepSolver::slotJoints(const std::vector<RigidBody>& bodies, const IdTable<BodyId>& bodyIds,
+                                std::vector<Joint>& joints, const Settings& settings, bool addGravity) {
   for (const Joint& joint : joints) {
-    const std::size_t a = joint.a, b = joint.b;
-    const bool awake = bodies[a].awake() || (b != kWorldIndex && bodies[b].awake());
+    const std::size_t a = indexA(bodyIds, joint), b = indexB(bodyIds, joint);
+    const bool awake = bodies[a].awake() || (b != kOnWorld && bodies[b].awake());
     if (!awake) continue;
     slot(bodies, a, settings, addGravity);
-    if (b != kWorldIndex) slot(bodies, b, settings, addGravity);
+    if (b != kOnWorld) slot(bodies, b, settings, addGravity);
   }
 }
 
-void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints,
-                                   const Settings& settings) {
+void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, const IdTable<BodyId>& bodyIds,
+                                   std::vector<Joint>& joints, const Settings& settings) {
   const double h = settings.timeStep / settings.substeps;
   jointSoftness_ = makeSoftness(std::min(kJointHertz, kMaxJointHertzPerSubstepRate / h), kJointDampingRatio, h);
   jointExtras_.clear();
   for (std::size_t i = 0; i < joints.size(); ++i) {
     Joint& joint = joints[i];
-    const std::size_t a = joint.a, b = joint.b;
+    const std::size_t a = indexA(bodyIds, joint), b = indexB(bodyIds, joint);
     JointConstraint c;
     c.joint = i;
     c.data = &joint;
     c.type = joint.def.type;
     c.moving = slotOfBody_[a];
-    c.base = b == kWorldIndex ? 0 : slotOfBody_[b];
+    c.base = b == kOnWorld ? 0 : slotOfBody_[b];
     // Body A is dynamic (scene/joint_parser.cpp, World::addJoint), and the World wakes both
     // sides of a joint together: without a slot, A is asleep with its base.
     if (c.moving == 0) continue;
@@ -74,7 +82,7 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
     c.localAnchorBase = joint.localAnchorBase;
     c.localAxisBase = joint.localAxisBase;
     c.baseOrientation = Quat::Identity();
-    if (c.base == 0 && b != kWorldIndex) {
+    if (c.base == 0 && b != kOnWorld) {
       c.localAnchorBase = bodies[b].position() + bodies[b].rotation() * joint.localAnchorBase;
       c.localAxisBase = bodies[b].rotation() * joint.localAxisBase;
       c.baseOrientation = bodies[b].orientation();
@@ -99,7 +107,7 @@ void SoftStepSolver::prepareJoints(const std::vector<RigidBody>& bodies, std::ve
       if (def.linearHertz > 0.0) extra.weldLinear = makeSoftness(def.linearHertz, def.linearDampingRatio, h);
       if (def.angularHertz > 0.0) extra.weldAngular = makeSoftness(def.angularHertz, def.angularDampingRatio, h);
       if (def.type == JointDef::Type::Ball && (def.limits || def.coneLimit)) {
-        const Quat base = b == kWorldIndex ? Quat::Identity() : bodies[b].orientation();
+        const Quat base = b == kOnWorld ? Quat::Identity() : bodies[b].orientation();
         const Vec3 coneAxis = base * joint.localAxisBase, twistAxis = bodies[a].orientation() * joint.localAxisMoving;
         joint_rows::prepareBallLimits(coneAxis, twistAxis, extra);
       }

@@ -436,14 +436,14 @@ void SoftStepSolver::solve(const SolverInput& input) {
     const bool awake = bodies[contact.b].awake() || (!plane && bodies[contact.a].awake());
     if (contact.manifold.count == 0) continue;
     if (!awake) {
-      if (const Cached* old = cached(pairKey(contact, input.bodyKeys))) nextCache_.push_back(*old);
+      if (const Cached* old = cached(pairKey(contact, input.bodyIds.slotOfItem()))) nextCache_.push_back(*old);
       continue;
     }
     slot(bodies, contact.b, settings, addGravity);
     if (!plane) slot(bodies, contact.a, settings, addGravity);
   }
-  slotJoints(bodies, joints, settings, addGravity);
-  prepareJoints(bodies, joints, settings);
+  slotJoints(bodies, input.bodyIds, joints, settings, addGravity);
+  prepareJoints(bodies, input.bodyIds, joints, settings);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& contact = contacts[i];
     const bool plane = contact.kind == Contact::Kind::PlaneBody;
@@ -452,7 +452,7 @@ void SoftStepSolver::solve(const SolverInput& input) {
     if (a == 0 && b == 0) continue;  // asleep, or static against static
     if (sims_[a].inverseMass == 0.0 && sims_[b].inverseMass == 0.0) continue;  // kinematic against static
     const Material material = contactMaterial(input, contact);
-    prepare(bodies, contact, i, pairKey(contact, input.bodyKeys), material, settings);
+    prepare(bodies, contact, i, pairKey(contact, input.bodyIds.slotOfItem()), material, settings);
   }
 
   bouncing_.clear();

@@ -266,9 +266,11 @@ class SoftStepSolver final : public ContactSolver {
   void finish(std::vector<RigidBody>& bodies);
   void report() const;  // solved_ from this step's constraints
   // soft_step_joints.cpp
-  void slotJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints, const Settings& settings,
-                  bool addGravity);
-  void prepareJoints(const std::vector<RigidBody>& bodies, std::vector<Joint>& joints, const Settings& settings);
+  // The joints name their bodies by id, resolved to indices through `bodyIds` here, where they are read.
+  void slotJoints(const std::vector<RigidBody>& bodies, const IdTable<BodyId>& bodyIds, std::vector<Joint>& joints,
+                  const Settings& settings, bool addGravity);
+  void prepareJoints(const std::vector<RigidBody>& bodies, const IdTable<BodyId>& bodyIds, std::vector<Joint>& joints,
+                     const Settings& settings);
   void warmStartJoints(std::size_t island);
   void solveJoints(std::size_t island, double h, bool useBias);
 

@@ -124,8 +124,10 @@ void World::updateSleep() {
     if (a < m && b < m) islands.link(a, b);
   }
   for (const Joint& joint : joints_) {  // jointed bodies sleep together (Box2D's b2LinkJoint)
-    if (joint.b == kWorldIndex || bodies_[joint.b].isStatic()) continue;
-    const std::size_t a = local(joint.a), b = local(joint.b);
+    if (joint.def.bodyB == kWorldAnchor) continue;
+    const std::size_t indexB = bodyIds_.indexOf(joint.def.bodyB);
+    if (bodies_[indexB].isStatic()) continue;
+    const std::size_t a = local(bodyIds_.indexOf(joint.def.bodyA)), b = local(indexB);
     if (a < m && b < m) islands.link(a, b);
   }
   std::vector<double>& rested = islandRestingTime_;

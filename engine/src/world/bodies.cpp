@@ -20,7 +20,6 @@ namespace rbsim {
 
 namespace {
 
-constexpr std::uint32_t kNoSlot = UINT32_MAX;
 // The contact solvers key a pair's manifolds by 24-bit body indices (dynamics/contact_key.h).
 constexpr std::size_t kMaxBodies = (std::size_t{1} << 24) - 1;
 
@@ -48,36 +47,24 @@ BodyId World::addBody(const BodyDef& def) {
   fracturePatterns_.push_back(def.fracture);
   if (def.fracture) ++breakableBodies_;
   collision_->addBody(bodies_.back(), bodySolids_.back());
-  std::uint32_t slot = freeSlot_;
-  if (slot == kNoSlot) {
-    slot = static_cast<std::uint32_t>(slots_.size());
-    slots_.push_back({});
-  } else {
-    freeSlot_ = slots_[slot].index;
-  }
-  slots_[slot].index = static_cast<std::uint32_t>(bodies_.size() - 1);
-  slotOfBody_.push_back(slot);
-  shapeIds_.add(slot, shapeCountOf(bodies_.back()));  // its shapes' ids, in child order
-  return {slot, slots_[slot].generation};
+  const BodyId id = bodyIds_.add();
+  shapeIds_.add(id.slot, shapeCountOf(bodies_.back()));  // its shapes' ids, in child order
+  return id;
 }
 
-bool World::isValid(BodyId id) const {
-  return id.slot < slots_.size() && slots_[id.slot].generation == id.generation &&
-         slots_[id.slot].index < slotOfBody_.size() && slotOfBody_[slots_[id.slot].index] == id.slot;
-}
+bool World::isValid(BodyId id) const { return bodyIds_.isValid(id); }
 
 std::size_t World::indexOf(BodyId id) const {
   if (!isValid(id)) {
     throw std::invalid_argument("body id (slot " + std::to_string(id.slot) + ", generation " +
                                 std::to_string(id.generation) + ") names no body: destroyed, or never made here");
   }
-  return slots_[id.slot].index;
+  return bodyIds_.indexOf(id);
 }
 
 BodyId World::idAt(std::size_t index) const {
   if (index >= bodies_.size()) throw std::invalid_argument("idAt: no body at index " + std::to_string(index));
-  const std::uint32_t slot = slotOfBody_[index];
-  return {slot, slots_[slot].generation};
+  return bodyIds_.idAt(index);
 }
 
 void World::destroyBody(BodyId id) { destroyBodies({id}); }
@@ -98,7 +85,7 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   // Their touching pairs end, named while the ids are still valid.
   std::vector<std::uint32_t> gone;
   gone.reserve(ids.size());
-  for (const BodyId id : ids) gone.push_back(slots_[id.slot].index);
+  for (const BodyId id : ids) gone.push_back(static_cast<std::uint32_t>(bodyIds_.indexOf(id)));
   std::sort(gone.begin(), gone.end());
   contactEvents_->bodiesRemoving(*this, *collision_, gone);
   ++geometryVersion_;
@@ -107,19 +94,9 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   // one's index, keeping its slot, which now points there.
   std::vector<BodyRemoval::Step> steps;
   steps.reserve(ids.size());
-  std::size_t count = bodies_.size();
   for (const BodyId id : ids) {
-    const std::uint32_t removed = slots_[id.slot].index;
-    const std::uint32_t last = static_cast<std::uint32_t>(--count);
-    steps.push_back({removed, last});
-    ++slots_[id.slot].generation;
-    slots_[id.slot].index = freeSlot_;
-    freeSlot_ = id.slot;
-    if (removed != last) {
-      slotOfBody_[removed] = slotOfBody_[last];
-      slots_[slotOfBody_[removed]].index = removed;
-    }
-    slotOfBody_.pop_back();
+    const std::uint32_t removed = bodyIds_.swapRemove(id);
+    steps.push_back({removed, static_cast<std::uint32_t>(bodyIds_.size())});
   }
   const BodyRemoval removal(bodies_.size(), std::move(steps));
   // Whatever rested on a removed body must notice it is gone (as Box2D's b2DestroyBody wakes its
@@ -136,36 +113,28 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   removeStale(forces_);
   // A spring or joint goes with its body; their ids go stale, their slots freed in the order one
   // destroyBody after another frees them (IdTable::eraseRanked): by the rank in `ids` of the first
-  // removed body they name. Ranks by slot and by index before the batch, looked up by binary search.
-  std::vector<std::pair<std::uint32_t, std::size_t>> rankOfSlot, rankOfIndex;
-  for (std::size_t r = 0; r < ids.size(); ++r) {
-    rankOfSlot.emplace_back(ids[r].slot, r);
-    rankOfIndex.emplace_back(removal.removed()[r], r);
-  }
+  // removed body they name. Ranks by slot, looked up by binary search.
+  std::vector<std::pair<std::uint32_t, std::size_t>> rankOfSlot;
+  for (std::size_t r = 0; r < ids.size(); ++r) rankOfSlot.emplace_back(ids[r].slot, r);
   std::sort(rankOfSlot.begin(), rankOfSlot.end());
-  std::sort(rankOfIndex.begin(), rankOfIndex.end());
-  const auto rankIn = [](const std::vector<std::pair<std::uint32_t, std::size_t>>& ranks, std::uint32_t key) {
-    return std::lower_bound(ranks.begin(), ranks.end(), std::make_pair(key, std::size_t{0}))->second;
+  const auto rankOf = [&](BodyId id) {
+    return std::lower_bound(rankOfSlot.begin(), rankOfSlot.end(), std::make_pair(id.slot, std::size_t{0}))->second;
   };
   springIds_.eraseRanked(springs_, [&](const Spring& spring) {
-    return isValid(spring.body) ? IdTable<SpringId>::kKept : rankIn(rankOfSlot, spring.body.slot);
+    return isValid(spring.body) ? IdTable<SpringId>::kKept : rankOf(spring.body);
   });
   removeStale(pendingEvents_);
   removeStale(motions_);
-  // A joint goes with either of its bodies; its other body wakes to fall free.
-  jointIds_.eraseRanked(joints_, [&](Joint& joint) {
-    const std::uint32_t a = removal.newIndex(joint.a);
-    const std::uint32_t b = joint.b == kWorldIndex ? 0 : removal.newIndex(joint.b);
-    if (a == BodyRemoval::kGone || b == BodyRemoval::kGone) {
-      if (a != BodyRemoval::kGone) wakeBody(joint.a);
-      if (b != BodyRemoval::kGone && joint.b != kWorldIndex) wakeBody(joint.b);
-      const std::size_t rankA = a == BodyRemoval::kGone ? rankIn(rankOfIndex, joint.a) : IdTable<JointId>::kKept;
-      const std::size_t rankB = b == BodyRemoval::kGone ? rankIn(rankOfIndex, joint.b) : IdTable<JointId>::kKept;
-      return std::min(rankA, rankB);
-    }
-    joint.a = a;
-    if (joint.b != kWorldIndex) joint.b = b;
-    return IdTable<JointId>::kKept;
+  // A joint goes with either of its bodies (named by id: the others need nothing); its other body
+  // wakes to fall free, by its index after the removal, once the bodies are gathered below.
+  std::vector<BodyId> partners;
+  jointIds_.eraseRanked(joints_, [&](const Joint& joint) {
+    const BodyId a = joint.def.bodyA, b = joint.def.bodyB;
+    const bool goneA = !isValid(a), goneB = b != kWorldAnchor && !isValid(b);
+    if (!goneA && !goneB) return IdTable<JointId>::kKept;
+    if (!goneA) partners.push_back(a);
+    if (!goneB && b != kWorldAnchor) partners.push_back(b);
+    return std::min(goneA ? rankOf(a) : IdTable<JointId>::kKept, goneB ? rankOf(b) : IdTable<JointId>::kKept);
   });
   // Warm starts are keyed by the bodies' stable keys (dynamics/contact_key.h pairKey): the
   // removed bodies' go and nothing else is renamed. A sleeping contact that went is named by its
@@ -174,9 +143,13 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   removedKeys.reserve(ids.size());
   for (const BodyId id : ids) removedKeys.push_back(id.slot);
   std::sort(removedKeys.begin(), removedKeys.end());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> removedKeyAt;  // (index before, slot), sorted
+  for (std::size_t r = 0; r < ids.size(); ++r) removedKeyAt.emplace_back(removal.removed()[r], ids[r].slot);
+  std::sort(removedKeyAt.begin(), removedKeyAt.end());
   const auto keyBefore = [&](std::size_t index) -> std::uint64_t {
     const std::uint32_t to = removal.newIndex(index);
-    return to == BodyRemoval::kGone ? ids[rankIn(rankOfIndex, static_cast<std::uint32_t>(index))].slot : slotOfBody_[to];
+    if (to != BodyRemoval::kGone) return bodyKeys()[to];
+    return std::lower_bound(removedKeyAt.begin(), removedKeyAt.end(), std::make_pair(static_cast<std::uint32_t>(index), 0u))->second;
   };
   std::vector<std::uint64_t> goneAsleep;
   for (const Contact& c : reached) {
@@ -196,6 +169,7 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   removal.gather(bodySolids_);
   removal.gather(fracturePatterns_);
   renumberAwake(removal);
+  for (const BodyId partner : partners) wakeBody(indexOf(partner));
   updateJointFilter();
 }
 

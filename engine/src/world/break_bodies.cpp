@@ -33,19 +33,20 @@ void World::breakBody(std::size_t body, double impulse) {
   --breakableBodies_;
   // The pieces start from the state the solver left: the impulse that broke the body is in it.
   std::vector<BodyDef> pieces = fracturePieces(bodies_[body], *pattern, bodyMaterials_[body]);
-  FractureEvent event{time(), idAt(body), {}, impulse};
+  const BodyId id = idAt(body);
+  FractureEvent event{time(), id, {}, impulse};
   contactEvents_->bodyBroken(*this, *collision_, body);  // a piece that touches on begins anew
   bodies_[body] = RigidBody(pieces.front());
   bodySolids_[body] = bodySolidOf(pieces.front());
   collision_->replaceBody(body, bodies_[body], bodySolids_[body]);
   // Its shapes are the first piece's now: the broken body's shape ids go stale (Box2D destroys a
   // body's shapes and makes new ones the same way), the body's own id stays.
-  shapeIds_.retire(slotOfBody_[body]);
-  shapeIds_.add(slotOfBody_[body], shapeCountOf(bodies_[body]));
+  shapeIds_.retire(bodyKeys()[body]);
+  shapeIds_.add(bodyKeys()[body], shapeCountOf(bodies_[body]));
   awakeStale_ = true;  // its pieces are added awake
   for (std::size_t k = 1; k < pieces.size(); ++k) event.added.push_back(addBody(pieces[k]));
   // The pieces are new bodies with their own centres of mass: the broken body's joints let go.
-  jointIds_.erase(joints_, [&](const Joint& j) { return j.a == body || j.b == body; });  // their ids go stale
+  jointIds_.erase(joints_, [&](const Joint& j) { return j.def.bodyA == id || j.def.bodyB == id; });  // their ids go stale
   updateJointFilter();
   fractureEvents_.push_back(event);
 }

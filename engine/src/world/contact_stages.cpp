@@ -65,7 +65,7 @@ void World::solveContacts(bool withGravity) {
   if (solver_->solvesJoints()) wakeJointed();  // and the islands of the bodies it wakes
   static const std::vector<Contact> kNoContacts;
   const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_->contacts() : kNoContacts;
-  solver_->solve({bodies_, contacts, joints_, bodyMaterials_, planeMaterials_, settings_, withGravity, bodyKeys()});
+  solver_->solve({bodies_, contacts, joints_, bodyIds_, bodyMaterials_, planeMaterials_, settings_, withGravity});
   contactEvents_->afterSolve(*this, *collision_, contacts, *solver_, settings_.hitEventSpeed);
   checkFinite(solver_->advancedBodies());
 }

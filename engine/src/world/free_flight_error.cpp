@@ -22,7 +22,7 @@ bool torqued(const World& world, BodyId id) {
     if (s.body == id) return true;
   }
   for (const Joint& j : world.joints()) {
-    if (j.a == i || j.b == i) return true;
+    if (j.def.bodyA == id || j.def.bodyB == id) return true;
   }
   const RigidBody& body = world.bodies()[i];
   const double stepStart = world.time() - world.settings().timeStep;

@@ -37,8 +37,8 @@ void refuse(const std::string& who, const std::string& field, const std::string&
 }
 
 void wakeBodies(World& world, const Joint& j) {
-  WorldAccess::wakeBody(world, j.a);  // listed awake too (world/awake_bodies.cpp)
-  if (j.b != kWorldIndex) WorldAccess::wakeBody(world, j.b);
+  WorldAccess::wakeBody(world, world.indexOf(j.def.bodyA));  // listed awake too (world/awake_bodies.cpp)
+  if (j.def.bodyB != kWorldAnchor) WorldAccess::wakeBody(world, world.indexOf(j.def.bodyB));
 }
 
 }  // namespace

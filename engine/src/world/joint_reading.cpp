@@ -14,17 +14,17 @@ JointReading readJoint(const World& world, std::size_t index) {
     throw std::invalid_argument("readJoint: joint " + std::to_string(index) + " of " + std::to_string(joints.size()));
   }
   const Joint& joint = joints[index];
-  const RigidBody& a = world.bodies()[joint.a];
-  const bool onWorld = joint.b == kWorldIndex;
-  const Quat baseOrientation = onWorld ? Quat::Identity() : world.bodies()[joint.b].orientation();
-  const Vec3 baseOmega = onWorld ? Vec3::Zero() : world.bodies()[joint.b].angularVelocity();
+  const RigidBody& a = world.body(joint.def.bodyA);
+  const bool onWorld = joint.def.bodyB == kWorldAnchor;
+  const RigidBody* b = onWorld ? nullptr : &world.body(joint.def.bodyB);
+  const Quat baseOrientation = onWorld ? Quat::Identity() : b->orientation();
+  const Vec3 baseOmega = onWorld ? Vec3::Zero() : b->angularVelocity();
 
   JointReading r;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   r.axis = (baseOrientation * joint.localAxisBase).normalized();
   r.anchorA = a.position() + a.rotation() * joint.localAnchorMoving;
-  r.anchorB = onWorld ? joint.localAnchorBase
-                      : Vec3(world.bodies()[joint.b].position() + world.bodies()[joint.b].rotation() * joint.localAnchorBase);
+  r.anchorB = onWorld ? joint.localAnchorBase : Vec3(b->position() + b->rotation() * joint.localAnchorBase);
   r.angle = r.speed = r.translation = r.translationSpeed = r.swing = r.twist = nan;
   const JointDef::Type type = joint.def.type;
   if (type == JointDef::Type::Hinge) {
@@ -40,7 +40,7 @@ JointReading readJoint(const World& world, std::size_t index) {
     const auto velocityAt = [](const RigidBody& body, const Vec3& p) {
       return Vec3(body.velocity() + body.angularVelocity().cross(p - body.position()));
     };
-    const Vec3 baseVelocity = onWorld ? Vec3::Zero() : velocityAt(world.bodies()[joint.b], r.anchorA);
+    const Vec3 baseVelocity = onWorld ? Vec3::Zero() : velocityAt(*b, r.anchorA);
     r.translation = r.axis.dot(d);
     r.translationSpeed = r.axis.dot(velocityAt(a, r.anchorA) - baseVelocity);
   }

@@ -23,7 +23,7 @@ JointId World::addJoint(const JointDef& def) {
   const bool world = def.bodyB == kWorldAnchor;
   if (!world && !isValid(def.bodyB)) throw std::invalid_argument(who + ": body_b names no body");
   if (def.bodyA == def.bodyB) throw std::invalid_argument(who + ": body_a and body_b are the same body");
-  const std::size_t ia = indexOf(def.bodyA), ib = world ? kWorldIndex : indexOf(def.bodyB);
+  const std::size_t ia = indexOf(def.bodyA), ib = world ? 0 : indexOf(def.bodyB);  // ib: B's, when a body
   if (!bodies_[ia].isDynamic()) {
     throw std::invalid_argument(who + ": body_a '" + bodies_[ia].name() + "' must be dynamic (neither static nor kinematic)");
   }
@@ -66,8 +66,6 @@ JointId World::addJoint(const JointDef& def) {
   Joint joint;
   joint.def = def;
   joint.def.axis = def.axis.normalized();
-  joint.a = ia;
-  joint.b = ib;
   const RigidBody& a = bodies_[ia];
   const Quat baseOrientation = world ? Quat::Identity() : bodies_[ib].orientation();
   const Vec3 basePosition = world ? Vec3::Zero() : bodies_[ib].position();
@@ -90,11 +88,12 @@ void World::wakeJointed() {
     woke = false;
     std::vector<std::size_t> seeds;
     for (const Joint& joint : joints_) {
-      if (joint.b == kWorldIndex) continue;
-      if (bodies_[joint.b].isStatic() || bodies_[joint.a].awake() == bodies_[joint.b].awake()) continue;
-      seeds.push_back(bodies_[joint.a].awake() ? joint.b : joint.a);
-      wakeBody(joint.a);
-      wakeBody(joint.b);
+      if (joint.def.bodyB == kWorldAnchor) continue;
+      const std::size_t a = bodyIds_.indexOf(joint.def.bodyA), b = bodyIds_.indexOf(joint.def.bodyB);
+      if (bodies_[b].isStatic() || bodies_[a].awake() == bodies_[b].awake()) continue;
+      seeds.push_back(bodies_[a].awake() ? b : a);
+      wakeBody(a);
+      wakeBody(b);
       woke = true;
     }
     if (woke) wakeIslandsOf(seeds, /*solveNow=*/true);
@@ -104,7 +103,9 @@ void World::wakeJointed() {
 void World::updateJointFilter() {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const Joint& joint : joints_) {
-    if (joint.b != kWorldIndex && !joint.def.collideConnected) pairs.emplace_back(joint.a, joint.b);
+    if (joint.def.bodyB != kWorldAnchor && !joint.def.collideConnected) {
+      pairs.emplace_back(bodyIds_.indexOf(joint.def.bodyA), bodyIds_.indexOf(joint.def.bodyB));
+    }
   }
   collision_->setIgnoredPairs(pairs);
 }

@@ -198,7 +198,7 @@ Spring readSpring(ByteReader& in) {
   return s;
 }
 
-void write(ByteWriter& out, const Joint& j) {
+void write(ByteWriter& out, const Joint& j, std::uint64_t indexA, std::uint64_t indexB) {
   const JointDef& d = j.def;
   writeEnum(out, d.type);
   out.text(d.name);
@@ -218,8 +218,8 @@ void write(ByteWriter& out, const Joint& j) {
     out.f64(v);
   }
   out.boolean(d.collideConnected);
-  out.u64(j.a);
-  out.u64(j.b);
+  out.u64(indexA);
+  out.u64(indexB);
   out.vec3(j.localAnchorBase);
   out.vec3(j.localAnchorMoving);
   out.vec3(j.localAxisBase);
@@ -232,7 +232,7 @@ void write(ByteWriter& out, const Joint& j) {
   out.vec3(j.frictionImpulse);
 }
 
-Joint readJoint(ByteReader& in) {
+Joint readJoint(ByteReader& in, std::uint64_t& indexA, std::uint64_t& indexB) {
   Joint j;
   JointDef& d = j.def;
   d.type = readEnum<JointDef::Type>(in, 4, "joint type");
@@ -253,8 +253,8 @@ Joint readJoint(ByteReader& in) {
     *v = in.f64();
   }
   d.collideConnected = in.boolean();
-  j.a = static_cast<std::size_t>(in.u64());
-  j.b = static_cast<std::size_t>(in.u64());
+  indexA = in.u64();
+  indexB = in.u64();
   j.localAnchorBase = in.vec3();
   j.localAnchorMoving = in.vec3();
   j.localAxisBase = in.vec3();

@@ -3,6 +3,8 @@
 // field (snapshot_parts.cpp): settings, ids, materials, planes, scripts, springs, joints, pose
 // events, kinematic motions. Readers check enums and counts; ids are checked by the World reader
 // once its id table is read.
+#include <cstdint>
+
 #include "math/byte_stream.h"
 #include "rbsim/body/material.h"
 #include "rbsim/dynamics/joint.h"
@@ -30,8 +32,11 @@ void write(ByteWriter& out, const ScriptedForce& f);
 ScriptedForce readForce(ByteReader& in);
 void write(ByteWriter& out, const Spring& s);
 Spring readSpring(ByteReader& in);
-void write(ByteWriter& out, const Joint& j);
-Joint readJoint(ByteReader& in);
+// A joint with its bodies' indices (the file keeps them beside the ids, as when Joint held both;
+// kWorldInFile for the world's side).
+inline constexpr std::uint64_t kWorldInFile = UINT64_MAX;
+void write(ByteWriter& out, const Joint& j, std::uint64_t indexA, std::uint64_t indexB);
+Joint readJoint(ByteReader& in, std::uint64_t& indexA, std::uint64_t& indexB);
 void write(ByteWriter& out, const PoseEvent& e);
 PoseEvent readPoseEvent(ByteReader& in);
 void write(ByteWriter& out, const KinematicMotion& m);

@@ -84,8 +84,8 @@ void World::saveSpawns() {
   StepUndo& u = undo_;
   u.spawnsSaved = true;
   u.bodyCount = bodies_.size();
-  u.slots = slots_;
-  u.freeSlot = freeSlot_;
+  u.slots = bodyIds_.slots();
+  u.freeSlot = bodyIds_.freeSlot();
   u.shapeIds = shapeIds_;
   u.spawners = spawners_;
   u.spawned = spawnedNow_;
@@ -100,8 +100,8 @@ void World::undoSpawns() {
   std::vector<BodyId> made;
   for (std::size_t i = u.bodyCount; i < bodies_.size(); ++i) made.push_back(idAt(i));
   destroyBodies(made);
-  slots_ = u.slots;
-  freeSlot_ = u.freeSlot;
+  // The bodies it made are gone, so the table's items are those before it, each in its slot.
+  bodyIds_.assign(u.slots, bodyIds_.slotOfItem(), u.freeSlot);
   shapeIds_ = u.shapeIds;
   spawners_ = u.spawners;
   spawnedNow_ = u.spawned;

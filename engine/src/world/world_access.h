@@ -33,9 +33,9 @@ struct WorldAccess {
   // The shapes' ids (world/shape_table.h), and the id of bodies()[index]'s child `child`.
   static const ShapeTable& shapeIds(const World& world) { return world.shapeIds_; }
   static ShapeId shapeIdOf(const World& world, std::size_t index, std::size_t child) {
-    return world.shapeIds_.idOf(world.slotOfBody_[index], child);
+    return world.shapeIds_.idOf(world.bodyKeys()[index], child);
   }
-  static BodyId bodyIdOfSlot(const World& world, std::uint32_t slot) { return {slot, world.slots_[slot].generation}; }
+  static BodyId bodyIdOfSlot(const World& world, std::uint32_t slot) { return {slot, world.bodyIds_.slots()[slot].generation}; }
   static const IdTable<JointId>& jointIds(const World& world) { return world.jointIds_; }
   static std::vector<KinematicMotion>& motions(World& world) { return world.motions_; }
   static const std::vector<KinematicMotion>& motions(const World& world) { return world.motions_; }

@@ -66,7 +66,7 @@ std::vector<T> readNaming(ByteReader& in, const World& world, std::size_t minByt
   return items;
 }
 
-// An IdTable (world/id_table.h): its slots, each item's slot, the free list's head.
+// An IdTable (body/id_table.h): its slots, each item's slot, the free list's head.
 template <typename Id>
 void writeIdTable(ByteWriter& out, const IdTable<Id>& table) {
   out.count(table.slots().size());
@@ -124,13 +124,7 @@ static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(Wo
 void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
   snapshot::write(out, w.settings_);
   saveBodies(w, out);
-  out.count(w.slots_.size());
-  for (const World::Slot& s : w.slots_) {
-    out.u32(s.index);
-    out.u32(s.generation);
-  }
-  for (std::uint32_t slot : w.slotOfBody_) out.u32(slot);
-  out.u32(w.freeSlot_);
+  writeIdTable(out, w.bodyIds_);
   writeShapeTable(out, w.shapeIds_);
   out.count(w.planes_.size());
   for (std::size_t p = 0; p < w.planes_.size(); ++p) {
@@ -141,7 +135,10 @@ void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
   writeAll(out, w.forces_, [](ByteWriter& o, const ScriptedForce& f) { snapshot::write(o, f); });
   writeAll(out, w.springs_, [](ByteWriter& o, const Spring& s) { snapshot::write(o, s); });
   writeIdTable(out, w.springIds_);
-  writeAll(out, w.joints_, [](ByteWriter& o, const Joint& j) { snapshot::write(o, j); });
+  writeAll(out, w.joints_, [&](ByteWriter& o, const Joint& j) {
+    const bool onWorld = j.def.bodyB == kWorldAnchor;
+    snapshot::write(o, j, w.bodyIds_.indexOf(j.def.bodyA), onWorld ? snapshot::kWorldInFile : w.bodyIds_.indexOf(j.def.bodyB));
+  });
   writeIdTable(out, w.jointIds_);
   writeAll(out, w.pendingEvents_, [](ByteWriter& o, const PoseEvent& e) { snapshot::write(o, e); });
   writeAll(out, w.motions_, [](ByteWriter& o, const KinematicMotion& m) { snapshot::write(o, m); });
@@ -181,31 +178,7 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
   const std::size_t n = w.bodies_.size();
   // The ids' table (bodies.cpp): every body's slot points back at it, and the free list runs
   // through the other slots exactly once.
-  std::vector<World::Slot> slots(in.count(8, "id slots"));
-  for (World::Slot& s : slots) {
-    s.index = in.u32();
-    s.generation = in.u32();
-  }
-  std::vector<std::uint32_t> slotOfBody(n);
-  std::vector<char> used(slots.size(), 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    slotOfBody[i] = in.u32();
-    if (slotOfBody[i] >= slots.size() || used[slotOfBody[i]] || slots[slotOfBody[i]].index != i) {
-      in.fail("body " + std::to_string(i) + "'s id slot " + std::to_string(slotOfBody[i]) + " does not name it");
-    }
-    used[slotOfBody[i]] = 1;
-  }
-  const std::uint32_t freeSlot = in.u32();
-  std::size_t freeCount = 0;
-  for (std::uint32_t s = freeSlot; s != UINT32_MAX; s = slots[s].index) {
-    if (s >= slots.size() || used[s]) in.fail("the free list of id slots reaches slot " + std::to_string(s));
-    used[s] = 1;
-    ++freeCount;
-  }
-  if (n + freeCount != slots.size()) in.fail("id slots neither a body's nor free");
-  w.slots_ = std::move(slots);
-  w.slotOfBody_ = std::move(slotOfBody);
-  w.freeSlot_ = freeSlot;
+  readIdTable(in, n, w.bodyIds_, "body ids");
   readShapeTable(in, version, w);
 
   const std::size_t planes = in.count(7 * 8, "planes");
@@ -225,8 +198,14 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
   readIdTable(in, w.springs_.size(), w.springIds_, "spring ids");
   std::vector<Joint> joints(in.count(8, "joints"));
   for (Joint& j : joints) {
-    j = snapshot::readJoint(in);
-    if (j.a >= n || (j.b != kWorldIndex && j.b >= n) || j.a == j.b) in.fail("joint '" + j.def.name + "': bodies out of range");
+    std::uint64_t a = 0, b = 0;
+    j = snapshot::readJoint(in, a, b);
+    // The ids name the bodies; the indices kept beside them must agree.
+    const bool onWorld = j.def.bodyB == kWorldAnchor;
+    if (!w.isValid(j.def.bodyA) || (!onWorld && !w.isValid(j.def.bodyB)) || j.def.bodyA == j.def.bodyB ||
+        a != w.indexOf(j.def.bodyA) || b != (onWorld ? snapshot::kWorldInFile : w.indexOf(j.def.bodyB))) {
+      in.fail("joint '" + j.def.name + "': its body ids and indices name no two bodies");
+    }
   }
   w.joints_ = std::move(joints);
   readIdTable(in, w.joints_.size(), w.jointIds_, "joint ids");
@@ -283,11 +262,11 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
 }
 
 void WorldSnapshotAccess::readShapeTable(ByteReader& in, std::uint32_t version, World& w) {
-  std::vector<std::size_t> shapeCounts(w.slots_.size(), 0);  // per body id slot
-  for (std::size_t i = 0; i < w.bodies_.size(); ++i) shapeCounts[w.slotOfBody_[i]] = shapeCountOf(w.bodies_[i]);
+  std::vector<std::size_t> shapeCounts(w.bodyIds_.slots().size(), 0);  // per body id slot
+  for (std::size_t i = 0; i < w.bodies_.size(); ++i) shapeCounts[w.bodyKeys()[i]] = shapeCountOf(w.bodies_[i]);
   if (version < kFirstWithShapeIds) {  // no table saved: made as adding the bodies in index order makes it
     w.shapeIds_ = ShapeTable();
-    for (std::size_t i = 0; i < w.bodies_.size(); ++i) w.shapeIds_.add(w.slotOfBody_[i], shapeCounts[w.slotOfBody_[i]]);
+    for (std::size_t i = 0; i < w.bodies_.size(); ++i) w.shapeIds_.add(w.bodyKeys()[i], shapeCounts[w.bodyKeys()[i]]);
     return;
   }
   std::vector<ShapeTable::Slot> slots(in.count(kShapeSlotBytes, "shape id slots"));

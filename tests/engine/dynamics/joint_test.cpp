@@ -190,9 +190,9 @@ TEST(Joints, ChainOfTenLinksHoldsItsJointsWithinAMillimetre) {
   while (world.time() < 5.0) {
     world.step();
     for (const Joint& j : world.joints()) {
-      const RigidBody& a = world.bodies()[j.a];
+      const RigidBody& a = world.bodies()[world.indexOf(j.def.bodyA)];
       const Vec3 onA = a.bodyToWorld(j.localAnchorMoving);
-      const Vec3 onB = j.b == kWorldIndex ? j.localAnchorBase : world.bodies()[j.b].bodyToWorld(j.localAnchorBase);
+      const Vec3 onB = j.def.bodyB == kWorldAnchor ? j.localAnchorBase : world.bodies()[world.indexOf(j.def.bodyB)].bodyToWorld(j.localAnchorBase);
       worst = std::max(worst, (onA - onB).norm());
     }
   }

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -246,10 +245,10 @@ TEST(LcpSolver, ABoxOnASlopeMeetsSeed001sConditionsAndStaysAtRest) {
       std::vector<RigidBody> copy = world.bodies();
       const std::vector<Material> bodyMaterials(copy.size()), planeMaterials(world.planes().size());
       std::vector<Joint> joints;
-      std::vector<std::uint32_t> keys(copy.size());  // none removed: each body's key is its index
-      std::iota(keys.begin(), keys.end(), 0u);
       LcpSolver solver;
-      solver.solve({copy, world.contacts(), joints, bodyMaterials, planeMaterials, world.settings(), true, keys});
+      IdTable<BodyId> ids;  // none removed: each body's key is its index
+      for (std::size_t i = 0; i < copy.size(); ++i) ids.add();
+      solver.solve({copy, world.contacts(), joints, ids, bodyMaterials, planeMaterials, world.settings()});
       EXPECT_LT(solver.lastFrictionPasses(), kMaxLcpFrictionPasses / 2) << what;
       // The normal impulses carry the weight's normal part, friction the rest (exactly, at rest).
       double normalSum = 0.0;

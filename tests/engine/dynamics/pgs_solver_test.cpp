@@ -160,8 +160,10 @@ TEST(PgsSolver, InelasticImpulsesNeverAddKineticEnergy) {
     PgsSolver solver;
     std::vector<Joint> joints;
     const std::vector<Contact> contacts{contact};
-    const std::vector<std::uint32_t> keys{0, 1};
-    solver.solve({bodies, contacts, joints, materials, {}, settings, true, keys});
+    IdTable<BodyId> ids;
+    ids.add();
+    ids.add();
+    solver.solve({bodies, contacts, joints, ids, materials, {}, settings});
     for (const RigidBody& b : bodies) after += b.kineticEnergy();
     EXPECT_LE(after, before * (1.0 + 1e-12)) << "trial " << trial << ", mu_s = " << m.staticFriction;
   }

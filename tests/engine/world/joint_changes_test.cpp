@@ -111,7 +111,7 @@ TEST_P(JointChanges, RemovedJointLetsTheBodyFallFreely) {
   removeJoint(world, first);
   ASSERT_EQ(world.joints().size(), 1u);
   EXPECT_EQ(world.joints()[0].def.name, "second");
-  EXPECT_EQ(world.joints()[0].a, world.indexOf(second));
+  EXPECT_TRUE(world.joints()[0].def.bodyA == second);
   const double y0 = world.body(id).position().y(), v0 = world.body(id).velocity().y();
   const int steps = static_cast<int>(0.5 / dt());
   for (int i = 0; i < steps; ++i) world.step();

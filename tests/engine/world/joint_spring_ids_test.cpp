@@ -1,4 +1,4 @@
-// Joint and spring ids of a generation (world/item_ids.h, world/id_table.h; issue 58, as Box2D
+// Joint and spring ids of a generation (world/item_ids.h, body/id_table.h; issue 58, as Box2D
 // v3's b2JointId): an id names its joint or spring while others come and go; a removed one's id,
 // by hand or with its body, is refused with the World unchanged, even once its slot is reused; a
 // World read back from a snapshot keeps the ids. At dt = 1/60 and 1/240 s.

@@ -75,8 +75,8 @@ TEST_P(PresetSpawning, BurstsOfRagdollsComeAndGoWithTheirJoints) {
     EXPECT_EQ(w.bodies().size(), figures * kBoneCount) << "at " << t;
     EXPECT_EQ(w.joints().size(), figures * (kBoneCount - 1)) << "at " << t;
     for (const Joint& j : w.joints()) {
-      const std::string& a = w.bodies()[j.a].name();
-      const std::string& b = w.bodies()[j.b].name();
+      const std::string& a = w.bodies()[w.indexOf(j.def.bodyA)].name();
+      const std::string& b = w.bodies()[w.indexOf(j.def.bodyB)].name();
       EXPECT_EQ(a.substr(0, a.find('_', 5)), b.substr(0, b.find('_', 5))) << a << " joined to " << b;
     }
   }

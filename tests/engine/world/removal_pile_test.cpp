@@ -107,7 +107,7 @@ struct NamedJoint {
 
 std::vector<NamedJoint> namedJoints(const World& world) {
   std::vector<NamedJoint> out;
-  for (const Joint& j : world.joints()) out.push_back({world.idAt(j.a), j.b == kWorldIndex ? kWorldAnchor : world.idAt(j.b)});
+  for (const Joint& j : world.joints()) out.push_back({j.def.bodyA, j.def.bodyB});
   return out;
 }
 

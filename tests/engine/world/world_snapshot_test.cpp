@@ -277,6 +277,47 @@ TEST(WorldSnapshotInput, WhatCannotBeSavedOrMatchedIsRefusedByName) {
   EXPECT_THROW(saveWorldSnapshot(World(lcp)), std::invalid_argument);
 }
 
+TEST(WorldSnapshotInput, AJointWhoseIndicesDisagreeWithItsBodyIdsIsRefusedByName) {
+  // A joint names its bodies by id; the file keeps their indices beside the ids (the format of
+  // before), and a load refuses a joint whose indices name other bodies than its ids do.
+  const auto jointed = [] {
+    World world = smallWorld();
+    BodyDef third = shapeBodyDef(Shape::sphere(0.25), 1.0, "third");
+    third.position = Vec3(2.0, 2.0, 0.0);
+    JointDef rope;
+    rope.name = "rope";
+    rope.bodyA = world.addBody(third);  // index 2
+    rope.bodyB = world.idAt(1);         // the ball
+    rope.anchor = Vec3(1.0, 2.0, 0.0);
+    world.addJoint(rope);
+    return world;
+  };
+  const World world = jointed();
+  const std::vector<std::uint8_t> bytes = saveWorldSnapshot(world);
+  EXPECT_NO_THROW(loadWorldSnapshot(bytes, jointed()));
+  // After the name, the ids (slot, generation as u32 each) and then the indices (u64 each) read
+  // as the same 16 bytes for ids of generation 0: the second such run is the indices.
+  std::vector<std::uint8_t> pair(16, 0);
+  pair[0] = 2;
+  pair[8] = 1;
+  const std::uint8_t name[] = {'r', 'o', 'p', 'e'};
+  auto at = std::search(bytes.begin(), bytes.end(), std::begin(name), std::end(name));
+  ASSERT_NE(at, bytes.end());
+  at = std::search(at, bytes.end(), pair.begin(), pair.end());
+  ASSERT_NE(at, bytes.end());
+  at = std::search(at + 16, bytes.end(), pair.begin(), pair.end());
+  ASSERT_NE(at, bytes.end());
+  std::vector<std::uint8_t> forged = bytes;
+  forged[static_cast<std::size_t>(at - bytes.begin())] = 0;  // index 0: the box, a body, but not A
+  reseal(forged);
+  try {
+    loadWorldSnapshot(forged, jointed());
+    ADD_FAILURE() << "a joint whose index names another body was read";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("joint 'rope'"), std::string::npos) << e.what();
+  }
+}
+
 TEST(WorldSnapshotInput, AFailedReadLeavesTheBaseAsItWas) {
   World world = smallWorld();
   stepN(world, 10);

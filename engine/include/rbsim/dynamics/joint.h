@@ -10,8 +10,6 @@
 // (dynamics/soft_step_joints.cpp, dynamics/joints/), as Box2D v3 solves its joints (src/joint.c,
 // revolute_joint.c, prismatic_joint.c, weld_joint.c) and Box3D its spherical joint
 // (src/spherical_joint.c: cone and twist).
-#include <cstddef>
-#include <limits>
 #include <string>
 
 #include "rbsim/body/body_id.h"
@@ -21,8 +19,6 @@ namespace rbsim {
 
 // body_b of a joint held by the world: the id of no body.
 inline constexpr BodyId kWorldAnchor{};
-// Joint::b of a joint held by the world.
-inline constexpr std::size_t kWorldIndex = std::numeric_limits<std::size_t>::max();
 
 struct JointDef {
   enum class Type { Ball, Hinge, Prismatic, Weld };
@@ -67,13 +63,11 @@ struct JointDef {
 // The joint as the World keeps it: its definition, the anchor and axis carried by each side, and
 // the impulses of its last substep (the warm start of the next step). Side "base" is body B or
 // the world, side "moving" body A, so the hinge angle and the motor speed are A's turning
-// relative to B.
+// relative to B. The bodies are def.bodyA and def.bodyB, by id: whoever needs their indices
+// resolves them through the World's id table when it reads them (the soft step once per step, as
+// Box2D v3's b2PrepareJointsTask resolves a joint's body ids), so a removal renumbers nothing here.
 struct Joint {
   JointDef def;
-  // The bodies' indices in World::bodies() now (World::destroyBody keeps them up to date), for
-  // the solver; b is kWorldIndex for the world.
-  std::size_t a = 0;
-  std::size_t b = kWorldIndex;
   Vec3 localAnchorBase = Vec3::Zero();    // base's body frame, from its centre of mass; world frame for the world [m]
   Vec3 localAnchorMoving = Vec3::Zero();  // body A's frame, from its centre of mass [m]
   Vec3 localAxisBase = Vec3::UnitZ();     // unit, base's frame
@@ -91,12 +85,15 @@ struct Joint {
   Vec3 springImpulse = Vec3::Zero();
   Vec3 frictionImpulse = Vec3::Zero();
 };
-// 544 bytes, 8.5 cache lines of 64: the def (264, its name a 32-byte std::string), the indices
-// (16), anchors and axes (96), the reference rotation aligned to 16 (40), then the warm-start
-// impulses (128, bytes 416 to 543), which the soft step's sweeps read and write every substep: two
-// lines and a half (the sweep of a plain ball joint reads only these, soft_step_solver.h
-// JointConstraint). Checked where std::string is 32 bytes (libstdc++, MSVC's release library).
-static_assert(sizeof(std::string) != 32 || sizeof(Joint) == 544, "Joint's size: see the comment above");
+// 528 bytes, 8.25 cache lines of 64 (measured with offsetof): the def (264, its name a 32-byte
+// std::string, its body ids 16), anchors and axes (96), the reference rotation aligned to 16 (40),
+// then the warm-start impulses (128, bytes 400 to 527), which the soft step's sweeps read and
+// write every substep (the sweep of a plain ball joint reads only these, soft_step_solver.h
+// JointConstraint): in an array that starts on a line, joint k's start 16 (k + 1) mod 64 bytes
+// into one, so they span three lines for three joints in four and two for the fourth (2.75 on
+// average; 2.5 at 544 bytes, when Joint kept the bodies' indices beside their ids). Checked where
+// std::string is 32 bytes (libstdc++, MSVC's release library).
+static_assert(sizeof(std::string) != 32 || sizeof(Joint) == 528, "Joint's size: see the comment above");
 
 // The hinge angle of A relative to the base about the base's axis [rad], in (-pi, pi]: the twist
 // of q_base^-1 q_A q_ref^-1 about the base's local axis.

@@ -16,7 +16,7 @@
 #include "rbsim/dynamics/step_listener.h"
 #include "rbsim/body/body_id.h"
 #include "rbsim/world/contact_events.h"
-#include "rbsim/world/id_table.h"
+#include "rbsim/body/id_table.h"
 #include "rbsim/world/item_ids.h"
 #include "rbsim/world/kinematic_motion.h"
 #include "rbsim/world/query_cache.h"
@@ -248,19 +248,13 @@ class World {
 
   Settings settings_;
   std::vector<RigidBody> bodies_;
-  // Ids (body/body_id.h): per slot the body's index in bodies_ (or, for a free slot, the next
-  // free slot) and its generation; per body its slot.
-  struct Slot {
-    std::uint32_t index = 0;
-    std::uint32_t generation = 0;
-  };
-  std::vector<Slot> slots_;
-  std::vector<std::uint32_t> slotOfBody_;
-  std::uint32_t freeSlot_ = UINT32_MAX;  // head of the free list
+  // Ids (body/body_id.h): per slot the body's index in bodies_ and its generation, per body its
+  // slot; the joints name their bodies by id and the solver resolves them through it.
+  IdTable<BodyId> bodyIds_;
   ShapeTable shapeIds_;  // the bodies' shapes' ids, by body id slot (world/shape_table.h)
   // Per body index, its stable key (its slot): what pairs and warm starts are named by, so that a
   // removal, which moves bodies to new indices, renames none of them.
-  const std::vector<std::uint32_t>& bodyKeys() const { return slotOfBody_; }
+  const std::vector<std::uint32_t>& bodyKeys() const { return bodyIds_.slotOfItem(); }
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
   IdTable<SpringId> springIds_;  // springs_'s ids (world/spring.h)
@@ -319,7 +313,7 @@ class World {
     // and the last step's lists of made and removed bodies.
     bool spawnsSaved = false;
     std::size_t bodyCount = 0;
-    std::vector<Slot> slots;
+    std::vector<IdTable<BodyId>::Slot> slots;
     std::uint32_t freeSlot = UINT32_MAX;
     ShapeTable shapeIds;
     std::vector<Spawner> spawners;

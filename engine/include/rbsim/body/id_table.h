@@ -1,7 +1,6 @@
 #pragma once
-// Ids of a generation for items kept in a dense array (the World's joints and springs,
-// world/item_ids.h), the scheme World keeps for its bodies (world/bodies.cpp; Box2D v3's id pool
-// with generation-checked ids): per slot the item's index in the array (or, for a free slot, the
+// Ids of a generation for items kept in a dense array (the World's bodies, body/body_id.h, and its
+// joints and springs, world/item_ids.h; Box2D v3's id pool with generation-checked ids): per slot the item's index in the array (or, for a free slot, the
 // next free slot) and its generation; per item its slot. Removing an item moves its slot's
 // generation on and puts the slot on the free list, so an id kept past the removal is stale even
 // once the slot names a new item.
@@ -82,6 +81,24 @@ class IdTable {
       slots_[slot].index = freeSlot_;
       freeSlot_ = slot;
     }
+  }
+
+  // Retires a valid id whose item the caller swap-removes from its array (World::destroyBodies:
+  // the last item takes the removed one's index): the slot's generation moves on and the slot
+  // joins the free list; the last item keeps its slot, which now points at the returned index.
+  // Returns the removed item's index; the last item's was size() after the call.
+  std::uint32_t swapRemove(Id id) {
+    const std::uint32_t removed = slots_[id.slot].index;
+    const std::uint32_t last = static_cast<std::uint32_t>(slotOfItem_.size() - 1);
+    ++slots_[id.slot].generation;
+    slots_[id.slot].index = freeSlot_;
+    freeSlot_ = id.slot;
+    if (removed != last) {
+      slotOfItem_[removed] = slotOfItem_[last];
+      slots_[slotOfItem_[removed]].index = removed;
+    }
+    slotOfItem_.pop_back();
+    return removed;
   }
 
   // Erases items[index] (later items move down one), retiring its id.
