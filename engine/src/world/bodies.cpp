@@ -105,7 +105,6 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   std::vector<std::size_t> touched;
   std::vector<Contact> reached;
   collision_->removeBodies(removal, touched, reached);
-  contactEvents_->bodiesRemoved(removal, reached);
   for (const std::size_t partner : touched) wakeBody(partner);
   // Their shapes' ids go stale, body after body as one destroyBody after another retires them.
   for (const BodyId id : ids) shapeIds_.retire(id.slot);

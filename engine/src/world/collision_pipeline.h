@@ -48,8 +48,8 @@ class CollisionPipeline {
   // Bodies were destroyed (World::destroyBodies, body/body_removal.h): their contacts go, the
   // moved bodies' are renumbered, and the last step's impacts are forgotten. `touched` gets the
   // bodies (indices before the removal) that a removed body touched, to be woken; `reached` the
-  // sleeping islands' contacts of the bodies the removal reached, as they were (their warm starts
-  // follow them: ContactSolver::bodiesRemoved). A sleeping island's contacts are visited only
+  // sleeping islands' contacts of the bodies the removal reached, as they were (the removed
+  // bodies' name the warm starts kept aside that go with them: ContactSolver::bodiesRemoved). A sleeping island's contacts are visited only
   // when a reached body holds them; the step's, all (a step visits them anyway).
   void removeBodies(const BodyRemoval& removal, std::vector<std::size_t>& touched, std::vector<Contact>& reached);
   // The sleeping islands' contacts of these bodies (indices), each once, in key order.
@@ -124,6 +124,7 @@ class CollisionPipeline {
   const std::vector<ProxyId>& broadPhaseAwake() const { return broad_->awakeAtUpdate(); }  // the awake proxies
   std::size_t bodyOfProxy(ProxyId proxy) const { return bodyOfProxy_.at(proxy); }
   ProxyId proxyOf(std::size_t body) const { return proxies_[body]; }  // kept while the body lives
+  std::size_t bodyCount() const { return proxies_.size(); }
   // This step's contacts: those of the awake bodies, the solver's (then those of islands woken
   // after the narrow phase).
   const std::vector<Contact>& contacts() const { return contacts_; }

@@ -1,8 +1,8 @@
 #include "world/contact_event_tracker.h"
 
 #include <algorithm>
+#include <string>
 
-#include "body/body_removal.h"
 #include "math/byte_stream.h"
 #include "rbsim/world/world.h"
 #include "world/collision_pipeline.h"
@@ -53,7 +53,7 @@ ContactEventTracker::Entry ContactEventTracker::keyOf(const Contact& c, const Co
   Entry e;
   if (c.kind == Contact::Kind::PlaneBody) {
     e.hi = kPlaneBit | std::uint64_t{c.a};
-    e.lo = secondAndChildren(c.b, c.childA, c.childB);
+    e.lo = secondAndChildren(collision.proxyOf(c.b), c.childA, c.childB);
     return e;
   }
   const std::uint64_t pa = collision.proxyOf(c.a), pb = collision.proxyOf(c.b);
@@ -67,7 +67,7 @@ ContactPair ContactEventTracker::pairOf(const Entry& e, const World& world, cons
   ContactPair pair;
   const auto first = static_cast<std::uint16_t>((e.lo >> 16) & kChildMask);
   const auto second = static_cast<std::uint16_t>(e.lo & kChildMask);
-  const std::size_t secondIndex = static_cast<std::size_t>(e.lo >> 32);
+  const std::size_t secondIndex = collision.bodyOfProxy(static_cast<ProxyId>(e.lo >> 32));
   if ((e.hi & kPlaneBit) != 0) {
     pair.plane = static_cast<std::int64_t>(e.hi & ~kPlaneBit);
     pair.bodyB = world.idAt(secondIndex);
@@ -77,7 +77,7 @@ ContactPair ContactEventTracker::pairOf(const Entry& e, const World& world, cons
     return pair;
   }
   const std::size_t lowIndex = collision.bodyOfProxy(static_cast<ProxyId>(e.hi));
-  const std::size_t highIndex = collision.bodyOfProxy(static_cast<ProxyId>(secondIndex));
+  const std::size_t highIndex = secondIndex;
   const BodyId low = world.idAt(lowIndex);
   const BodyId high = world.idAt(highIndex);
   pair.bodyA = e.swapped ? high : low;
@@ -91,10 +91,9 @@ ContactPair ContactEventTracker::pairOf(const Entry& e, const World& world, cons
 
 bool ContactEventTracker::asleep(const Entry& e, const World& world, const CollisionPipeline& collision) const {
   const std::vector<RigidBody>& bodies = world.bodies();
-  const std::size_t second = static_cast<std::size_t>(e.lo >> 32);
+  const std::size_t second = collision.bodyOfProxy(static_cast<ProxyId>(e.lo >> 32));
   if ((e.hi & kPlaneBit) != 0) return !bodies[second].awake();
-  return !bodies[collision.bodyOfProxy(static_cast<ProxyId>(e.hi))].awake() &&
-         !bodies[collision.bodyOfProxy(static_cast<ProxyId>(second))].awake();
+  return !bodies[collision.bodyOfProxy(static_cast<ProxyId>(e.hi))].awake() && !bodies[second].awake();
 }
 
 void ContactEventTracker::beginStep() {
@@ -186,11 +185,9 @@ void ContactEventTracker::takeWhere(std::vector<Entry>& list, const CollisionPip
                                     std::vector<Entry>& taken) {
   std::size_t kept = 0;
   for (const Entry& e : list) {
-    const std::size_t second = static_cast<std::size_t>(e.lo >> 32);
+    const std::size_t second = collision.bodyOfProxy(static_cast<ProxyId>(e.lo >> 32));
     const bool plane = (e.hi & kPlaneBit) != 0;
-    const bool named = plane ? names(second)
-                             : names(collision.bodyOfProxy(static_cast<ProxyId>(e.hi))) ||
-                                   names(collision.bodyOfProxy(static_cast<ProxyId>(second)));
+    const bool named = names(second) || (!plane && names(collision.bodyOfProxy(static_cast<ProxyId>(e.hi))));
     if (named) {
       taken.push_back(e);
     } else {
@@ -228,52 +225,6 @@ void ContactEventTracker::bodiesRemoving(const World& world, const CollisionPipe
   }
   std::sort(ending.begin(), ending.end());  // in key order, as the pairs are listed
   for (const Entry& e : ending) queuedEnds_.push_back({pairOf(e, world, collision)});
-}
-
-void ContactEventTracker::bodiesRemoved(const BodyRemoval& removal, const std::vector<Contact>& keptReached) {
-  // Only the plane pairs of moved bodies change key (proxies stay). Each plane's pairs are sorted
-  // by body index, so a moved body's are found by binary search, taken out, renamed and merged
-  // back: no pass over every pair, no sort of them all. The
-  // keys are unique, so this is the order a sort of the renamed list gave.
-  const auto moved = [&](std::uint32_t body) {
-    const std::uint32_t to = removal.newIndex(body);
-    return to != BodyRemoval::kGone && to != body;
-  };
-  const auto rename = [&](Entry e) {
-    e.lo = (std::uint64_t{removal.newIndex(e.lo >> 32)} << 32) | (e.lo & 0xffffffffull);
-    return e;
-  };
-  std::vector<Entry> renamed;
-  for (std::size_t k = 0; k < removal.involvedCount(); ++k) {
-    const std::uint32_t body = removal.involvedBody(k);
-    if (!moved(body)) continue;
-    auto plane = std::lower_bound(touching_.begin(), touching_.end(), Entry{kPlaneBit, 0});
-    while (plane != touching_.end()) {
-      const std::uint64_t hi = plane->hi;
-      const auto first = std::lower_bound(plane, touching_.end(), Entry{hi, std::uint64_t{body} << 32});
-      auto last = first;
-      while (last != touching_.end() && last->hi == hi && (last->lo >> 32) == body) renamed.push_back(rename(*last++));
-      const auto after = touching_.erase(first, last);  // before end() is read: erase moves it
-      plane = std::upper_bound(after, touching_.end(), Entry{hi, ~std::uint64_t{0}});
-    }
-  }
-  // The asleep pairs, found from the kept contacts of the moved bodies: taken out first, then
-  // put back renamed, so that a renamed key never meets one not yet taken.
-  std::vector<Entry> renamedAsleep;
-  for (const Contact& c : keptReached) {
-    if (c.kind != Contact::Kind::PlaneBody || !moved(static_cast<std::uint32_t>(c.b))) continue;
-    const Entry key{kPlaneBit | std::uint64_t{c.a}, secondAndChildren(c.b, c.childA, c.childB)};
-    const auto at = asleep_.find({key.hi, key.lo});
-    if (at == asleep_.end()) continue;  // a further manifold of the pair, or not touching
-    renamedAsleep.push_back(rename(at->second));
-    asleep_.erase(at);
-  }
-  for (const Entry& e : renamedAsleep) asleep_[{e.hi, e.lo}] = e;
-  if (renamed.empty()) return;
-  std::sort(renamed.begin(), renamed.end());
-  const std::size_t kept = touching_.size();
-  touching_.insert(touching_.end(), renamed.begin(), renamed.end());
-  std::inplace_merge(touching_.begin(), touching_.begin() + static_cast<std::ptrdiff_t>(kept), touching_.end());
 }
 
 void ContactEventTracker::commit() {
@@ -340,7 +291,7 @@ void ContactEventTracker::save(ByteWriter& out) const {
   }
 }
 
-void ContactEventTracker::load(ByteReader& in) {
+void ContactEventTracker::load(ByteReader& in, bool keyedByIndex, const CollisionPipeline& collision) {
   touching_.resize(in.count(8 + 8 + 4 + 1 + 1, "touching pairs"));
   for (Entry& e : touching_) {
     e.hi = in.u64();
@@ -351,6 +302,15 @@ void ContactEventTracker::load(ByteReader& in) {
   }
   // afterNarrowPhase merges against them in key order.
   if (!std::is_sorted(touching_.begin(), touching_.end())) in.fail("the touching pairs are not in key order");
+  if (keyedByIndex) {
+    for (Entry& e : touching_) {
+      if ((e.hi & kPlaneBit) == 0) continue;
+      const std::uint64_t index = e.lo >> 32;
+      if (index >= collision.bodyCount()) in.fail("a touching pair naming a body past the " + std::to_string(collision.bodyCount()));
+      e.lo = (std::uint64_t{collision.proxyOf(index)} << 32) | (e.lo & 0xffffffffull);
+    }
+    std::sort(touching_.begin(), touching_.end());
+  }
   events_ = {};
   queuedEnds_.clear();
   asleep_.clear();

@@ -4,12 +4,12 @@
 // that started or stopped touching in its narrow phase (physics_world.c b3UpdateContacts); and
 // the hits the solver reports (ContactSolver::hits).
 //
-// A pair is keyed by what stays put from step to step: two bodies by their broad-phase proxies
-// (which outlive the index changes of destroyBody), a plane and a body by the plane and the body's
-// index (renumbered when bodies are removed). The narrow phase lists its contacts in the broad
-// phase's pair order, then plane by plane and body by body, which is the keys' order: each step's
-// keys come sorted (a sort is the fallback), and the comparison is one merge, O(contacts), with no
-// table. A pair both of whose sides are asleep keeps touching whatever the narrow phase says (a
+// A pair is keyed by what stays put from step to step: its bodies by their broad-phase proxies
+// (which outlive the index changes of destroyBody, so a removal renames no pair), a plane by its
+// index. The narrow phase lists its contacts in the broad phase's pair order, then plane by plane
+// and body by body, which is the keys' order until a removal has moved bodies: each step's keys
+// mostly come sorted (a sort is the fallback), and the comparison is one merge, O(contacts), with
+// no table. A pair both of whose sides are asleep keeps touching whatever the narrow phase says (a
 // sleeping pair of grid bodies is not collided, and an island asleep is not apart).
 #include <cstddef>
 #include <cstdint>
@@ -25,7 +25,6 @@ namespace rbsim {
 
 class World;
 class CollisionPipeline;
-class BodyRemoval;
 class ByteWriter;  // math/byte_stream.h
 class ByteReader;
 
@@ -47,10 +46,6 @@ class ContactEventTracker {
   // Bodies are destroyed (World::destroyBodies), before their ids go stale: `gone`, their
   // indices, sorted. Their pairs end, with this step's events or, between steps, the next step's.
   void bodiesRemoving(const World& world, const CollisionPipeline& collision, const std::vector<std::uint32_t>& gone);
-  // After the removal: the plane pairs follow their bodies' new indices. `keptReached`: the
-  // sleeping islands' contacts of the bodies the removal reached, as they were
-  // (CollisionPipeline::removeBodies), which name the asleep pairs to rename.
-  void bodiesRemoved(const BodyRemoval& removal, const std::vector<Contact>& keptReached);
   // These contacts' island woke (World::wakeIslandsOf): their pairs, kept aside while asleep,
   // touch on among this step's (or, before its narrow phase, the last step's).
   void contactsWoke(const std::vector<Contact>& contacts, const CollisionPipeline& collision);
@@ -65,7 +60,9 @@ class ContactEventTracker {
   // that a World read back reports the same events from its next step on. The last step's events
   // and the ends queued by removals between steps are not saved: a World read back has none.
   void save(ByteWriter& out) const;
-  void load(ByteReader& in);
+  // `keyedByIndex`: a snapshot before version 6, whose plane pairs name their body by index: they
+  // are renamed to its proxy (`collision` read back first).
+  void load(ByteReader& in, bool keyedByIndex, const CollisionPipeline& collision);
 
  private:
   struct Entry {

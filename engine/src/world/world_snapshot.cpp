@@ -249,7 +249,7 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
   w.updateJointFilter();
   w.collision_->load(in, w.bodies_, w.planes_.size());
   w.solver_->load(in, w.bodyKeys(), version < kFirstWithSlotKeys);
-  w.contactEvents_->load(in);
+  w.contactEvents_->load(in, version < kFirstWithSlotKeys, *w.collision_);
   // Each contact point names its contact (World::contactPoints, read by index).
   for (const SolvedContactPoint& point : w.solver_->points()) {
     if (point.contact >= w.collision_->contacts().size()) in.fail("a contact point of a contact past the last");
