@@ -16,15 +16,15 @@ namespace rbsim {
 
 void World::rebuildAwake() {
   awakeList_.clear();
-  listed_.assign(bodies_.size(), 0);
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (!bodies_[i].awake()) continue;
-    listed_[i] = 1;
+  table_->listed.assign(table_->bodies.size(), 0);
+  for (std::size_t i = 0; i < table_->bodies.size(); ++i) {
+    if (!table_->bodies[i].awake()) continue;
+    table_->listed[i] = 1;
     awakeList_.push_back(static_cast<std::uint32_t>(i));
   }
   awakeSorted_ = true;
   awakeStale_ = false;
-  awakeScanned_ = bodies_.size();
+  awakeScanned_ = table_->bodies.size();
 }
 
 void World::refreshAwake() {
@@ -33,18 +33,18 @@ void World::refreshAwake() {
     return;
   }
   // Bodies added since: appended, each at the end of the table (a removal makes the list stale).
-  if (listed_.size() < bodies_.size()) listed_.resize(bodies_.size(), 0);
-  for (std::size_t i = awakeScanned_; i < bodies_.size(); ++i) {
-    if (bodies_[i].awake()) listAwake(i);
+  if (table_->listed.size() < table_->bodies.size()) table_->listed.resize(table_->bodies.size(), 0);
+  for (std::size_t i = awakeScanned_; i < table_->bodies.size(); ++i) {
+    if (table_->bodies[i].awake()) listAwake(i);
   }
-  awakeScanned_ = bodies_.size();
+  awakeScanned_ = table_->bodies.size();
   // Those listed but not awake (handed out by body(id) and left asleep, or put to sleep) leave.
   std::size_t kept = 0;
   for (const std::uint32_t i : awakeList_) {
-    if (bodies_[i].awake()) {
+    if (table_->bodies[i].awake()) {
       awakeList_[kept++] = i;
     } else {
-      listed_[i] = 0;
+      table_->listed[i] = 0;
     }
   }
   awakeList_.resize(kept);
@@ -54,15 +54,15 @@ void World::refreshAwake() {
 
 void World::wakeBody(std::size_t index) {
   listAwake(index);  // first: a step's undo keeps the body as it was
-  bodies_[index].wake();
+  table_->bodies[index].wake();
 }
 
 void World::wakeIslandsOf(const std::vector<std::size_t>& seeds, bool solveNow) {
   std::vector<std::size_t> woken;
   std::vector<Contact> contacts;
-  collision_->takeIslands(seeds, bodies_, woken, contacts);
+  collision_->takeIslands(seeds, table_->bodies, woken, contacts);
   for (const std::size_t i : woken) {
-    if (!bodies_[i].awake() && !bodies_[i].isStatic()) wakeBody(i);
+    if (!table_->bodies[i].awake() && !table_->bodies[i].isStatic()) wakeBody(i);
   }
   if (!contacts.empty()) {
     solver_->contactsWoke(contacts, bodyKeys());
@@ -88,9 +88,9 @@ void World::wakeTouchedIslands() {
   // layer a step, each newly woken body fell a step with nothing under it, and woke the next.
   std::vector<std::size_t> seeds;
   for (const Contact& c : collision_->contacts()) {
-    if (c.kind != Contact::Kind::BodyBody || bodies_[c.a].isStatic() || bodies_[c.b].isStatic()) continue;
-    if (bodies_[c.a].awake() == bodies_[c.b].awake()) continue;
-    seeds.push_back(bodies_[c.a].awake() ? c.b : c.a);
+    if (c.kind != Contact::Kind::BodyBody || table_->bodies[c.a].isStatic() || table_->bodies[c.b].isStatic()) continue;
+    if (table_->bodies[c.a].awake() == table_->bodies[c.b].awake()) continue;
+    seeds.push_back(table_->bodies[c.a].awake() ? c.b : c.a);
   }
   if (!seeds.empty()) wakeIslandsOf(seeds, /*solveNow=*/true);
 }
@@ -101,9 +101,9 @@ void World::updateSleep() {
   const double dt = settings_.timeStep;
   refreshAwake();
   const std::size_t m = awakeList_.size();
-  localIndex_.resize(bodies_.size());
+  localIndex_.resize(table_->bodies.size());
   for (std::size_t k = 0; k < m; ++k) {
-    RigidBody& body = bodies_[awakeList_[k]];
+    RigidBody& body = table_->bodies[awakeList_[k]];
     localIndex_[awakeList_[k]] = static_cast<std::uint32_t>(k);
     // A kinematic body that moves at all is never at rest: sleeping would stop it.
     const bool still = !body.isKinematic() || (body.velocity().isZero(0.0) && body.angularVelocity().isZero(0.0));
@@ -119,27 +119,27 @@ void World::updateSleep() {
   };
   DisjointSets islands(m);
   for (const Contact& contact : collision_->contacts()) {
-    if (contact.kind != Contact::Kind::BodyBody || bodies_[contact.a].isStatic() || bodies_[contact.b].isStatic()) continue;
+    if (contact.kind != Contact::Kind::BodyBody || table_->bodies[contact.a].isStatic() || table_->bodies[contact.b].isStatic()) continue;
     const std::size_t a = local(contact.a), b = local(contact.b);
     if (a < m && b < m) islands.link(a, b);
   }
   for (const Joint& joint : joints_) {  // jointed bodies sleep together (Box2D's b2LinkJoint)
     if (joint.def.bodyB == kWorldAnchor) continue;
-    const std::size_t indexB = bodyIds_.indexOf(joint.def.bodyB);
-    if (bodies_[indexB].isStatic()) continue;
-    const std::size_t a = local(bodyIds_.indexOf(joint.def.bodyA)), b = local(indexB);
+    const std::size_t indexB = table_->ids.indexOf(joint.def.bodyB);
+    if (table_->bodies[indexB].isStatic()) continue;
+    const std::size_t a = local(table_->ids.indexOf(joint.def.bodyA)), b = local(indexB);
     if (a < m && b < m) islands.link(a, b);
   }
   std::vector<double>& rested = islandRestingTime_;
   rested.assign(m, std::numeric_limits<double>::infinity());
   for (std::size_t k = 0; k < m; ++k) {
     double& least = rested[islands.find(k)];
-    least = std::min(least, bodies_[awakeList_[k]].restingTime());
+    least = std::min(least, table_->bodies[awakeList_[k]].restingTime());
   }
   bool slept = false;
   for (std::size_t k = 0; k < m; ++k) {
     if (rested[islands.find(k)] >= settings_.timeToSleep) {
-      bodies_[awakeList_[k]].sleep();
+      table_->bodies[awakeList_[k]].sleep();
       slept = true;
     }
   }
@@ -154,7 +154,7 @@ void World::updateSleep() {
 void World::sleepContacts() {
   static_assert(CollisionPipeline::kNoContact == ContactSolver::kDroppedContact, "one mark for a contact that slept");
   std::vector<std::uint32_t> newIndex;
-  collision_->sleepContacts(bodies_, newIndex);
+  collision_->sleepContacts(table_->bodies, newIndex);
   if (collision_->sleptNow().empty()) return;
   solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
   solver_->contactsReindexed(newIndex);

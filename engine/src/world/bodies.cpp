@@ -1,7 +1,6 @@
-// World's bodies as a dense array with ids of a generation (body/body_id.h, as Box2D v3's
-// b2BodyId): adding and destroying bodies, and keeping every per-body array in step with
-// bodies_ (the materials, shapes, fracture patterns, the collision pipeline's data, and the
-// scripts, springs and emitters that name a body by its index).
+// World's bodies as a dense table with ids of a generation (world/body_table.h; body/body_id.h,
+// as Box2D v3's b2BodyId): adding and destroying bodies, and what names a body (contacts, warm
+// starts, scripts, springs, joints, the step listeners' emitters) following a removal.
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -31,7 +30,7 @@ void World::removeStale(std::vector<T>& items) const {
 }
 
 BodyId World::addBody(const BodyDef& def) {
-  if (bodies_.size() >= kMaxBodies) {
+  if (table_->bodies.size() >= kMaxBodies) {
     throw std::invalid_argument("body '" + def.name + "': a World holds at most " + std::to_string(kMaxBodies) + " bodies");
   }
   const std::string problem = checkMaterial(def.material);
@@ -40,31 +39,27 @@ BodyId World::addBody(const BodyDef& def) {
     const std::string misfit = checkFracturePattern(*def.fracture, def);
     if (!misfit.empty()) throw std::invalid_argument("body '" + def.name + "': fracture: " + misfit);
   }
-  bodies_.emplace_back(def);
+  // A row in every column (world/body_table.h), then the collision pipeline's measures of it.
+  const BodyId id = table_->add(def);
   ++geometryVersion_;
-  bodyMaterials_.push_back(def.material);
-  bodySolids_.push_back(bodySolidOf(def));
-  fracturePatterns_.push_back(def.fracture);
   if (def.fracture) ++breakableBodies_;
-  collision_->addBody(bodies_.back(), bodySolids_.back());
-  const BodyId id = bodyIds_.add();
-  shapeIds_.add(id.slot, shapeCountOf(bodies_.back()));  // its shapes' ids, in child order
+  collision_->addBody(table_->size() - 1);
   return id;
 }
 
-bool World::isValid(BodyId id) const { return bodyIds_.isValid(id); }
+bool World::isValid(BodyId id) const { return table_->ids.isValid(id); }
 
 std::size_t World::indexOf(BodyId id) const {
   if (!isValid(id)) {
     throw std::invalid_argument("body id (slot " + std::to_string(id.slot) + ", generation " +
                                 std::to_string(id.generation) + ") names no body: destroyed, or never made here");
   }
-  return bodyIds_.indexOf(id);
+  return table_->ids.indexOf(id);
 }
 
 BodyId World::idAt(std::size_t index) const {
-  if (index >= bodies_.size()) throw std::invalid_argument("idAt: no body at index " + std::to_string(index));
-  return bodyIds_.idAt(index);
+  if (index >= table_->bodies.size()) throw std::invalid_argument("idAt: no body at index " + std::to_string(index));
+  return table_->ids.idAt(index);
 }
 
 void World::destroyBody(BodyId id) { destroyBodies({id}); }
@@ -85,20 +80,15 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   // Their touching pairs end, named while the ids are still valid.
   std::vector<std::uint32_t> gone;
   gone.reserve(ids.size());
-  for (const BodyId id : ids) gone.push_back(static_cast<std::uint32_t>(bodyIds_.indexOf(id)));
+  for (const BodyId id : ids) gone.push_back(static_cast<std::uint32_t>(table_->ids.indexOf(id)));
   std::sort(gone.begin(), gone.end());
   contactEvents_->bodiesRemoving(*this, *collision_, gone);
   ++geometryVersion_;
-  // The ids, as destroyBody one after another: each slot's generation moves on (every copy of the
-  // id is now stale) and the slot joins the free list; the last body moves into the removed
-  // one's index, keeping its slot, which now points there.
-  std::vector<BodyRemoval::Step> steps;
-  steps.reserve(ids.size());
-  for (const BodyId id : ids) {
-    const std::uint32_t removed = bodyIds_.swapRemove(id);
-    steps.push_back({removed, static_cast<std::uint32_t>(bodyIds_.size())});
-  }
-  const BodyRemoval removal(bodies_.size(), std::move(steps));
+  // The ids (and their shapes' ids), as destroyBody one after another: each slot's generation
+  // moves on (every copy of the id is now stale) and the slot joins the free list; the last body
+  // moves into the removed one's row, keeping its slot, which now points there. The rows stay
+  // where they were until the table's gather below: every part reads its own first.
+  const BodyRemoval removal = table_->retire(ids);
   // Whatever rested on a removed body must notice it is gone (as Box2D's b2DestroyBody wakes its
   // contacts); the contacts follow their bodies. Woken through wakeBody, indices before the
   // removal: the awake list is renumbered with the rest below.
@@ -106,8 +96,6 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
   std::vector<Contact> reached;
   collision_->removeBodies(removal, touched, reached);
   for (const std::size_t partner : touched) wakeBody(partner);
-  // Their shapes' ids go stale, body after body as one destroyBody after another retires them.
-  for (const BodyId id : ids) shapeIds_.retire(id.slot);
   // What names a removed body goes with it (every id these name was valid before the batch).
   removeStale(forces_);
   // A spring or joint goes with its body; their ids go stale, their slots freed in the order one
@@ -161,12 +149,10 @@ void World::destroyBodies(const std::vector<BodyId>& ids) {
     for (const std::unique_ptr<StepListener>& listener : listeners_) listener->bodyRemoved(s.removed, s.last, s.removed);
   }
   for (const std::uint32_t gone : removal.removed()) {
-    if (fracturePatterns_[gone]) --breakableBodies_;
+    if (table_->fracturePatterns[gone]) --breakableBodies_;
   }
-  removal.gather(bodies_);
-  removal.gather(bodyMaterials_);
-  removal.gather(bodySolids_);
-  removal.gather(fracturePatterns_);
+  // Every column at once, the collision pipeline's included (world/body_table.h).
+  table_->gather(removal);
   renumberAwake(removal);
   for (const BodyId partner : partners) wakeBody(indexOf(partner));
   updateJointFilter();
@@ -183,23 +169,21 @@ void World::renumberAwake(const BodyRemoval& removal) {
     awakeList_[kept++] = to;
   }
   awakeList_.resize(kept);
-  if (listed_.size() < removal.before()) listed_.resize(removal.before(), 0);
-  removal.gather(listed_);
   // A body refreshAwake has not looked at yet (added since) may have moved below the mark.
   for (const auto& [to, from] : removal.moves()) {
-    if (from >= awakeScanned_ && bodies_[to].awake()) listAwake(to);
+    if (from >= awakeScanned_ && table_->bodies[to].awake()) listAwake(to);
   }
   awakeScanned_ = std::min(awakeScanned_, removal.after());
 }
 
 void World::restore(std::uint64_t stepCount, const std::vector<BodyState>& states, const std::vector<char>& awake) {
-  if (states.size() != bodies_.size() || awake.size() != bodies_.size()) {
+  if (states.size() != table_->bodies.size() || awake.size() != table_->bodies.size()) {
     throw std::invalid_argument("World::restore: " + std::to_string(states.size()) + " states and " +
-                                std::to_string(awake.size()) + " awake flags for " + std::to_string(bodies_.size()) +
+                                std::to_string(awake.size()) + " awake flags for " + std::to_string(table_->bodies.size()) +
                                 " bodies");
   }
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    RigidBody& body = bodies_[i];
+  for (std::size_t i = 0; i < table_->bodies.size(); ++i) {
+    RigidBody& body = table_->bodies[i];
     body.setState(states[i]);
     // A sleeping body's momenta are zero (RigidBody::sleep); sleep() keeps what was recorded.
     if (awake[i] != 0) {

@@ -76,29 +76,24 @@ SweptBody sweptOf(const RigidBody& body, const BodyState& start, double radius) 
 
 }  // namespace
 
-CollisionPipeline::CollisionPipeline(const Settings& settings)
-    : settings_(settings), broad_(std::make_unique<SplitBroadPhase>(settings.broadPhase)), log_(settings.queryLogCapacity) {}
+CollisionPipeline::CollisionPipeline(const Settings& settings, BodyTable& table)
+    : settings_(settings),
+      table_(&table),
+      broad_(std::make_unique<SplitBroadPhase>(settings.broadPhase)),
+      sleeping_(table.keptContacts),
+      log_(settings.queryLogCapacity) {}
 
-CollisionPipeline::CollisionPipeline(const CollisionPipeline& other)
+CollisionPipeline::CollisionPipeline(const CollisionPipeline& other, BodyTable& table)
     : settings_(other.settings_),
+      table_(&table),
       broad_(std::make_unique<SplitBroadPhase>(*other.broad_)),
-      proxies_(other.proxies_),
       bodyOfProxy_(other.bodyOfProxy_),
-      radius_(other.radius_),
-      thickness_(other.thickness_),
-      reach_(other.reach_),
-      start_(other.start_),
-      fast_(other.fast_),
       fastList_(other.fastList_),
-      hasGrid_(other.hasGrid_),
-      meshGround_(other.meshGround_),
-      gap_(other.gap_),
       haveStart_(other.haveStart_),
-      boxes_(other.boxes_),
       ignored_(other.ignored_),
       ignoredSorted_(other.ignoredSorted_),
       contacts_(other.contacts_),
-      sleeping_(other.sleeping_),
+      sleeping_(other.sleeping_, table.keptContacts),
       sleptNow_(other.sleptNow_),
       pairSlots_(other.pairSlots_),
       planeSlots_(other.planeSlots_),
@@ -124,16 +119,16 @@ bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, co
 
 void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake) {
   // A sleeping body does not move in the step: its start is where it is (continuous reads it so).
-  for (const std::uint32_t i : awake) start_[i] = bodies[i].state();
+  for (const std::uint32_t i : awake) table_->start[i] = bodies[i].state();
   haveStart_ = true;
 }
 
-bool CollisionPipeline::isFast(std::size_t body) const { return fast_[body] != 0; }
+bool CollisionPipeline::isFast(std::size_t body) const { return table_->fast[body] != 0; }
 
 void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
                                    const std::vector<Plane>& planes, const std::vector<char>* solved) {
   impacts_.clear();
-  for (const std::size_t i : fastList_) fast_[i] = 0;
+  for (const std::size_t i : fastList_) table_->fast[i] = 0;
   fastList_.clear();
   for (const std::size_t i : awake) {
     const RigidBody& body = bodies[i];
@@ -145,9 +140,9 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     // Stopping a body the solver moved would undo its speculative contacts, which already hold
     // it at the surfaces it can reach this step (and hold it still, again, every step after).
     if (solved != nullptr && i < solved->size() && (*solved)[i] != 0) continue;
-    const double motion = motionBound(sweptOf(body, start_[i], radius_[i]));
-    if (motion > settings_.ccdMotionFraction * thickness_[i]) {
-      fast_[i] = 1;
+    const double motion = motionBound(sweptOf(body, table_->start[i], table_->radius[i]));
+    if (motion > settings_.ccdMotionFraction * table_->thickness[i]) {
+      table_->fast[i] = 1;
       fastList_.push_back(i);
     }
   }
@@ -160,12 +155,12 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   // inside both bodies' boxes. A sleeping or static body's is its box.
   stepBoxes_.resize(bodies.size());
   for (const std::size_t j : awake) {
-    stepBoxes_[j] = boxes_[j];
+    stepBoxes_[j] = table_->boxes[j];
     stepBoxes_[j].grow(bodyBounds(bodies[j]));
   }
-  const auto stepBox = [&](std::size_t j) -> const Aabb& { return bodies[j].awake() ? stepBoxes_[j] : boxes_[j]; };
+  const auto stepBox = [&](std::size_t j) -> const Aabb& { return bodies[j].awake() ? stepBoxes_[j] : table_->boxes[j]; };
   for (const std::size_t i : fastList_) {
-    const SweptBody swept = sweptOf(bodies[i], start_[i], radius_[i]);
+    const SweptBody swept = sweptOf(bodies[i], table_->start[i], table_->radius[i]);
     double first = 1.0;
     for (const Plane& plane : planes) {
       if (const auto s = timeOfImpact(swept, plane)) first = std::min(first, *s);
@@ -174,8 +169,8 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     sweep.grow(boundsAt(swept, 1.0));
     nearSweep(sweep, bodies, awake, near_);
     for (const std::size_t j : near_) {
-      if (j == i || hasGrid_[j] || !sweep.overlaps(stepBox(j))) continue;
-      const SweptBody partner = sweptOf(bodies[j], bodies[j].awake() ? start_[j] : bodies[j].state(), radius_[j]);
+      if (j == i || table_->hasGrid[j] || !sweep.overlaps(stepBox(j))) continue;
+      const SweptBody partner = sweptOf(bodies[j], bodies[j].awake() ? table_->start[j] : bodies[j].state(), table_->radius[j]);
       if (const auto s = timeOfImpact(swept, partner)) first = std::min(first, *s);
     }
     if (first < 1.0) {
@@ -191,25 +186,25 @@ void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies, const s
   parallelFor(awake.size(), settings_.threads, [&](std::size_t k) {
     const std::size_t i = awake[k];
     Aabb box = bodyBounds(bodies[i]);
-    if (isFast(i)) box.grow(boundsAt(sweptOf(bodies[i], start_[i], radius_[i]), 0.0));
+    if (isFast(i)) box.grow(boundsAt(sweptOf(bodies[i], table_->start[i], table_->radius[i]), 0.0));
     const double dt = settings_.timeStep;
-    reach_[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * radius_[i] +
+    table_->reach[i] = dt * (bodies[i].velocity().norm() + bodies[i].angularVelocity().norm() * table_->radius[i] +
                       dt * settings_.gravity.norm());
-    boxes_[i] = box.inflated(settings_.contactMargin + gap_[i] + reach_[i]);
+    table_->boxes[i] = box.inflated(settings_.contactMargin + table_->gap[i] + table_->reach[i]);
   });
   for (const std::size_t i : awake) {
     // A finite state can still have a box that is not (a vertex R p + x or a reach dt |v|
     // overflows): that is the body diverging, reported as such rather than as a broad-phase fault.
-    if (!boxes_[i].min.allFinite() || !boxes_[i].max.allFinite()) {
+    if (!table_->boxes[i].min.allFinite() || !table_->boxes[i].max.allFinite()) {
       std::ostringstream message;
       message << "body '" << bodies[i].name() << "': its bounding box stopped being finite (|x| = "
               << bodies[i].position().stableNorm() << " m, |v| = " << bodies[i].velocity().stableNorm() << " m/s)";
       throw SimulationError(message.str());
     }
-    broad_->move(proxies_[i], boxes_[i]);
+    broad_->move(table_->proxies[i], table_->boxes[i]);
   }
   awakeProxies_.clear();
-  for (const std::size_t i : awake) awakeProxies_.push_back(proxies_[i]);
+  for (const std::size_t i : awake) awakeProxies_.push_back(table_->proxies[i]);
   broad_->update(awakeProxies_);
 }
 
@@ -250,7 +245,7 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
   const RigidBody& b = bodies[pair.b];
   // A compound's children are filtered one by one (compound_contacts.h, mesh_ground_contacts.h).
   const bool compound = a.isCompound() || b.isCompound();
-  const bool ground = meshGround_[pair.a] || meshGround_[pair.b];
+  const bool ground = table_->meshGround[pair.a] || table_->meshGround[pair.b];
   if (!compound && !ground && !shouldCollide(a.filter(), b.filter())) return Later::Nothing;
   // Both asleep (a pair the broad phase listed before they slept): their contact is kept apart
   // with their island's (keepSleeping).
@@ -262,7 +257,7 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
   if (ground) return Later::MeshGround;
   if (shapes[pair.a].sdf || shapes[pair.b].sdf) return Later::Grid;
   if (compound) return Later::Compound;
-  const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+  const double margin = settings_.contactMargin + table_->reach[pair.a] + table_->reach[pair.b];
   if (a.shape().isRound() || b.shape().isRound()) {
     const ContactManifold m = collideRoundPair(posed(a), posed(b), margin);
     if (settings_.logQueries) log_.record(summarize(QueryKind::Round, pair.a, pair.b, m, 0.0, time));
@@ -352,7 +347,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       continue;
     }
     const ProxyPair pair = bodiesOf(pairs[k], keys);
-    const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+    const double margin = settings_.contactMargin + table_->reach[pair.a] + table_->reach[pair.b];
     const BodySolid& sa = shapes[pair.a];
     const BodySolid& sb = shapes[pair.b];
     const bool triangles = settings_.meshContact == Settings::MeshContact::Triangles && sa.triangles && sb.triangles;
@@ -381,10 +376,10 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     if (!bodies[i].isDynamic()) return;
     const bool compound = bodies[i].isCompound();
     if (compound) compoundPlaneSlots_[k].clear();
-    if (!aabbNearPlane(boxes_[i], planes[p], 0.0)) return;
-    const double margin = settings_.contactMargin + reach_[i];
+    if (!aabbNearPlane(table_->boxes[i], planes[p], 0.0)) return;
+    const double margin = settings_.contactMargin + table_->reach[i];
     if (compound) {
-      collidePlaneCompound(planes[p], p, bodies[i], i, margin, reach_[i] + kPlaneSupportSlack, compoundPlaneSlots_[k]);
+      collidePlaneCompound(planes[p], p, bodies[i], i, margin, table_->reach[i] + kPlaneSupportSlack, compoundPlaneSlots_[k]);
       return;
     }
     if (!shouldCollide(planeFilter, bodies[i].filter())) return;
@@ -402,7 +397,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
     const ContactManifold m =
         round ? collidePlaneShape(planes[p], posed(bodies[i]), margin)
               : collidePlaneConvex(planes[p], shapes[i].implicit ? implicitPlaneCandidates(bodies[i], shapes[i], planes[p]) : bodies[i].worldVertices(),
-                                   margin, reach_[i] + kPlaneSupportSlack);
+                                   margin, table_->reach[i] + kPlaneSupportSlack);
     if (settings_.logQueries) {
       log_.record(summarize(round ? QueryKind::PlaneRound : QueryKind::PlaneConvex, static_cast<std::uint32_t>(p),
                             static_cast<std::uint32_t>(i), m, 0.0, time));

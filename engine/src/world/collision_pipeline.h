@@ -16,6 +16,7 @@
 #include "rbsim/collision/impact.h"
 #include "rbsim/collision/narrowphase/query_log.h"
 #include "rbsim/settings/settings.h"
+#include "rbsim/world/body_table.h"
 #include "math/key_index.h"
 #include "world/contact_recycling.h"
 #include "world/sleeping_contacts.h"
@@ -34,19 +35,24 @@ class ByteReader;
 
 class CollisionPipeline {
  public:
-  explicit CollisionPipeline(const Settings& settings);
-  // A deep copy (World's copy): its broad phase, contacts and kept sleeping contacts too.
-  CollisionPipeline(const CollisionPipeline& other);
+  // Its per-body columns live in `table` (world/body_table.h: the proxies, reach, boxes, ...),
+  // which it fills as bodies are added and which the table keeps in step with the bodies; the
+  // table must outlive it (the World holds both).
+  CollisionPipeline(const Settings& settings, BodyTable& table);
+  // A deep copy (World's copy): its broad phase, contacts and kept sleeping contacts too, over
+  // `table`, the copy of other's table.
+  CollisionPipeline(const CollisionPipeline& other, BodyTable& table);
   CollisionPipeline& operator=(const CollisionPipeline&) = delete;
   // World::setSettings: every setting but the broad phase method, which the World refuses to change.
   void setSettings(const Settings& settings) { settings_ = settings; }
 
-  // Bodies are added in World order (each the last of the World's bodies), with their solids
-  // (a body with a grid, BodySolid::sdf, is not its convex hull; an implicit body's display mesh
-  // lies up to a cell inside its exact surface).
-  void addBody(const RigidBody& body, const BodySolid& solid);
-  // Bodies were destroyed (World::destroyBodies, body/body_removal.h): their contacts go, the
-  // moved bodies' are renumbered, and the last step's impacts are forgotten. `touched` gets the
+  // Body `index`, the table's last row, was added (BodyTable::add): its measures, box and proxy
+  // from its body and solid (a body with a grid, BodySolid::sdf, is not its convex hull; an
+  // implicit body's display mesh lies up to a cell inside its exact surface).
+  void addBody(std::size_t index);
+  // Bodies are being destroyed (World::destroyBodies, body/body_removal.h), the table's rows not
+  // yet gathered: their proxies and contacts go, the moved bodies' are renumbered, and the last
+  // step's impacts are forgotten. `touched` gets the
   // bodies (indices before the removal) that a removed body touched, to be woken; `reached` the
   // sleeping islands' contacts of the bodies the removal reached, as they were (the removed
   // bodies' name the warm starts kept aside that go with them: ContactSolver::bodiesRemoved). A sleeping island's contacts are visited only
@@ -54,9 +60,9 @@ class CollisionPipeline {
   void removeBodies(const BodyRemoval& removal, std::vector<std::size_t>& touched, std::vector<Contact>& reached);
   // The sleeping islands' contacts of these bodies (indices), each once, in key order.
   void keptContactsOf(const std::vector<std::uint32_t>& bodies, std::vector<Contact>& out) const { sleeping_.of(bodies, out); }
-  // Body `index` was replaced by another (a piece of it, after fracture): its proxy, box and
-  // bounds are rebuilt, and it may have stopped being static.
-  void replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid);
+  // Body `index` was replaced in the table by another (a piece of it, after fracture): its proxy,
+  // box and bounds are rebuilt, and it may have stopped being static.
+  void replaceBody(std::size_t index);
 
   // A World snapshot (world/world_snapshot.h; collision_pipeline_snapshot.cpp): what the next
   // step reads of the last one, that the bodies alone do not give: the proxies' ids and boxes,
@@ -123,8 +129,8 @@ class CollisionPipeline {
   const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
   const std::vector<ProxyId>& broadPhaseAwake() const { return broad_->awakeAtUpdate(); }  // the awake proxies
   std::size_t bodyOfProxy(ProxyId proxy) const { return bodyOfProxy_.at(proxy); }
-  ProxyId proxyOf(std::size_t body) const { return proxies_[body]; }  // kept while the body lives
-  std::size_t bodyCount() const { return proxies_.size(); }
+  ProxyId proxyOf(std::size_t body) const { return table_->proxies[body]; }  // kept while the body lives
+  std::size_t bodyCount() const { return table_->proxies.size(); }
   // This step's contacts: those of the awake bodies, the solver's (then those of islands woken
   // after the narrow phase).
   const std::vector<Contact>& contacts() const { return contacts_; }
@@ -134,7 +140,7 @@ class CollisionPipeline {
   // Of this step's contacts, how many were recycled rather than collided (Box3D's profile count).
   std::size_t recycledCount() const { return recycledCount_; }
   const std::vector<Impact>& impacts() const { return impacts_; }
-  const std::vector<Aabb>& boxes() const { return boxes_; }  // per body, as last given to the broad phase
+  const std::vector<Aabb>& boxes() const { return table_->boxes; }  // per body, as last given to the broad phase
   const QueryLog& queryLog() const { return log_; }
 
  private:
@@ -159,7 +165,7 @@ class CollisionPipeline {
   // compoundSlots_.
   void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
                         const std::vector<BodySolid>& shapes, const std::vector<std::uint32_t>& keys, int threads);
-  void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // radius_, thickness_, boxes_ of a body
+  void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // a row's radius, thickness, box, ...
   static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
   // The last step's contacts whose bodies all sleep now go to sleeping_ (and sleptNow_).
   void keepSleeping(const std::vector<RigidBody>& bodies);
@@ -171,43 +177,20 @@ class CollisionPipeline {
   // gets the frame the contact now carries.
   std::optional<ContactManifold> recycled(Contact::Kind kind, std::size_t a, std::size_t b, const RecyclePose& poseA,
                                           const RecyclePose& poseB, RecycleFrame& frame) const;
-  RecyclePose poseOf(const RigidBody& body, std::size_t index) const { return {body.position(), body.orientation(), radius_[index]}; }
+  RecyclePose poseOf(const RigidBody& body, std::size_t index) const { return {body.position(), body.orientation(), table_->radius[index]}; }
   // The frames of this step's recyclable contacts, indexed by key, for the next step.
   void keepFrames();
 
   Settings settings_;
+  BodyTable* table_;  // the World's: the per-body columns this pipeline keeps there
   std::unique_ptr<SplitBroadPhase> broad_;  // the awake proxies' pairs, with the resting ones
   std::vector<ProxyId> awakeProxies_;       // broadPhase's scratch
-  std::vector<ProxyId> proxies_;        // per body
   std::vector<std::size_t> bodyOfProxy_;  // per broad-phase proxy id: its body's index
-  std::vector<double> radius_;          // per body: farthest vertex from the centre of mass [m]
-  std::vector<double> thickness_;       // per body: smallest extent of its body-frame bounds [m]
-  // Per body: how far its points may move in the coming step, dt (|v| + |omega| radius + dt |g|).
-  // Added to the contact margin, so that a contact is known (speculative, depth < 0) before the
-  // surfaces meet (as Bepu's and Jolt's speculative contacts) [m]. PGS, which detects contacts
-  // after it moved the bodies, needs them as much: a box tumbling at 20 rad/s swings a corner
-  // 10 cm a step, continuous collision stopped it at the corner's impact every step, and with
-  // no contact to take its speed the box gained g dt of it each step (5 kJ in
-  // examples/python/falling_stack.py).
-  std::vector<double> reach_;
-  std::vector<BodyState> start_;        // per body, before Integrate
-  std::vector<char> fast_;              // per body: swept this step
-  std::vector<std::size_t> fastList_;   // the bodies fast_ marks, in order
+  std::vector<std::size_t> fastList_;   // the bodies the table's fast column marks, in order
   std::vector<Aabb> stepBoxes_;         // continuous's scratch, per awake body: its box over the step
   std::vector<std::size_t> near_;       // continuous's scratch: the bodies near a sweep, in order
   mutable std::vector<ProxyId> restingNear_;  // nearSweep's scratch
-  // Per body: shaped by a grid, or compound. Continuous collision sweeps convex hulls, so it leaves
-  // such bodies and their partners alone (a hull would stop a body at a bowl's rim, above its
-  // cavity, or at a table's hull, under its top).
-  std::vector<char> hasGrid_;
-  // Per body: a static triangle-mesh ground (world/mesh_ground_contacts.h), also marked in
-  // hasGrid_: its convex hull would stop a body above its valleys.
-  std::vector<char> meshGround_;
-  // Per body: how far its solid may reach beyond its display mesh's vertices [m] (an implicit
-  // body's: a cell's diagonal), added to its box.
-  std::vector<double> gap_;
-  bool haveStart_ = false;              // start_ holds this step's start (rememberStart ran)
-  std::vector<Aabb> boxes_;
+  bool haveStart_ = false;              // the table's start column holds this step's (rememberStart ran)
   std::vector<std::uint64_t> ignored_;  // sorted keys (lower index << 32 | higher index)
   bool ignoredSorted_ = true;           // false after ignorePair until the next narrow phase
   std::vector<Contact> contacts_;

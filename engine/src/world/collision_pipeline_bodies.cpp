@@ -20,9 +20,9 @@ Aabb bodyBounds(const RigidBody& body) {
 }
 
 void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const BodySolid& solid) {
-  meshGround_[index] = isMeshGround(body, solid) ? 1 : 0;
-  hasGrid_[index] = solid.sdf || body.isCompound() || meshGround_[index] ? 1 : 0;
-  gap_[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;
+  table_->meshGround[index] = isMeshGround(body, solid) ? 1 : 0;
+  table_->hasGrid[index] = solid.sdf || body.isCompound() || table_->meshGround[index] ? 1 : 0;
+  table_->gap[index] = solid.implicit ? std::sqrt(3.0) * solid.sdf->cellSize() : 0.0;
   // The collision shape's, not the display mesh's (a round shape's is inscribed in it, and a body
   // built in C++ may carry any mesh): continuous collision sweeps the shape with this radius.
   double radius = body.shape().boundingRadius();
@@ -32,47 +32,40 @@ void CollisionPipeline::measure(std::size_t index, const RigidBody& body, const 
     radius = compoundRadius(body);
     local = compoundBounds(body);
   }
-  radius_[index] = radius;
-  thickness_[index] = local.extents().minCoeff();
-  boxes_[index] = bodyBounds(body).inflated(settings_.contactMargin + gap_[index]);
+  table_->radius[index] = radius;
+  table_->thickness[index] = local.extents().minCoeff();
+  table_->boxes[index] = bodyBounds(body).inflated(settings_.contactMargin + table_->gap[index]);
 }
 
-void CollisionPipeline::addBody(const RigidBody& body, const BodySolid& solid) {
-  const std::size_t index = proxies_.size();
-  hasGrid_.push_back(0);
-  meshGround_.push_back(0);
-  gap_.push_back(0.0);
-  radius_.push_back(0.0);
-  thickness_.push_back(0.0);
-  reach_.push_back(0.0);
-  boxes_.emplace_back();
-  measure(index, body, solid);
-  proxies_.push_back(broad_->add(boxes_[index]));
-  if (bodyOfProxy_.size() <= proxies_.back()) bodyOfProxy_.resize(proxies_.back() + 1);
-  bodyOfProxy_[proxies_.back()] = index;
-  start_.push_back(body.state());
-  fast_.push_back(0);
+void CollisionPipeline::addBody(std::size_t index) {
+  const RigidBody& body = table_->bodies[index];
+  measure(index, body, table_->solids[index]);
+  table_->proxies[index] = broad_->add(table_->boxes[index]);
+  if (bodyOfProxy_.size() <= table_->proxies[index]) bodyOfProxy_.resize(table_->proxies[index] + 1);
+  bodyOfProxy_[table_->proxies[index]] = index;
+  table_->start[index] = body.state();
 }
 
-void CollisionPipeline::replaceBody(std::size_t index, const RigidBody& body, const BodySolid& solid) {
-  measure(index, body, solid);
+void CollisionPipeline::replaceBody(std::size_t index) {
+  const RigidBody& body = table_->bodies[index];
+  measure(index, body, table_->solids[index]);
   recycle_.clear();  // the piece is another shape: its pairs are collided afresh
   // Removed and added again, since the piece may be dynamic where the body was static; the pool
   // hands back the smallest free id, which is this one.
-  broad_->remove(proxies_[index]);
-  proxies_[index] = broad_->add(boxes_[index]);
-  if (bodyOfProxy_.size() <= proxies_[index]) bodyOfProxy_.resize(proxies_[index] + 1);
-  bodyOfProxy_[proxies_[index]] = index;
-  start_[index] = body.state();
-  fast_[index] = 0;
+  broad_->remove(table_->proxies[index]);
+  table_->proxies[index] = broad_->add(table_->boxes[index]);
+  if (bodyOfProxy_.size() <= table_->proxies[index]) bodyOfProxy_.resize(table_->proxies[index] + 1);
+  bodyOfProxy_[table_->proxies[index]] = index;
+  table_->start[index] = body.state();
+  table_->fast[index] = 0;
 }
 
 void CollisionPipeline::removeBodies(const BodyRemoval& removal, std::vector<std::size_t>& touched,
                                      std::vector<Contact>& reached) {
-  for (const std::uint32_t gone : removal.removed()) broad_->remove(proxies_[gone]);
+  for (const std::uint32_t gone : removal.removed()) broad_->remove(table_->proxies[gone]);
   recycle_.clear();  // keyed by body index, which the moves change: collided afresh next step
-  for (const auto& [to, from] : removal.moves()) bodyOfProxy_[proxies_[from]] = to;
-  // The swept bodies' list follows them (read before fast_ moves); it stays in index order.
+  for (const auto& [to, from] : removal.moves()) bodyOfProxy_[table_->proxies[from]] = to;
+  // The swept bodies' list follows them (read before table_->fast moves); it stays in index order.
   std::size_t keptFast = 0;
   for (const std::size_t i : fastList_) {
     const std::uint32_t to = removal.newIndex(i);
@@ -80,16 +73,6 @@ void CollisionPipeline::removeBodies(const BodyRemoval& removal, std::vector<std
   }
   fastList_.resize(keptFast);
   std::sort(fastList_.begin(), fastList_.end());
-  removal.gather(proxies_);
-  removal.gather(radius_);
-  removal.gather(thickness_);
-  removal.gather(reach_);
-  removal.gather(start_);
-  removal.gather(fast_);
-  removal.gather(hasGrid_);
-  removal.gather(meshGround_);
-  removal.gather(gap_);
-  removal.gather(boxes_);
   // The contacts follow the bodies to their new indices (contact_renumbering.h): a removed body's
   // go, waking its partner, and the others take their bodies' new indices in the same order (a
   // pair is ordered by its bodies' keys, which stay), so that sleeping pairs keep theirs.

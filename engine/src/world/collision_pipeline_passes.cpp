@@ -76,9 +76,9 @@ void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, co
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) return;  // kept apart with their island's (keepSleeping)
-    const double margin = settings_.contactMargin + reach_[pair.a] + reach_[pair.b];
+    const double margin = settings_.contactMargin + table_->reach[pair.a] + table_->reach[pair.b];
     if (later_[k] == Later::MeshGround) {
-      const bool groundIsA = meshGround_[pair.a] != 0;
+      const bool groundIsA = table_->meshGround[pair.a] != 0;
       const std::size_t ig = groundIsA ? pair.a : pair.b, io = groundIsA ? pair.b : pair.a;
       collideMeshGround(bodies[ig], ig, *shapes[ig].triangles, bodies[io], io, groundIsA, margin, out);
       return;

@@ -12,9 +12,9 @@ bool CollisionPipeline::keptAsleep(const Contact& c, const std::vector<RigidBody
   if (bodies[c.b].awake() || (!plane && bodies[c.a].awake())) return false;
   // A pair with a compound or a mesh ground keeps all its contacts, one per part; a pair with a
   // grid, whose several manifolds are found afresh, none (both as before issue 58).
-  const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || meshGround_[c.a] || meshGround_[c.b]));
+  const bool several = bodies[c.b].isCompound() || (!plane && (bodies[c.a].isCompound() || table_->meshGround[c.a] || table_->meshGround[c.b]));
   if (c.part != 0 && !several) return false;
-  return plane || several || (hasGrid_[c.a] == 0 && hasGrid_[c.b] == 0);
+  return plane || several || (table_->hasGrid[c.a] == 0 && table_->hasGrid[c.b] == 0);
 }
 
 void CollisionPipeline::keepSleeping(const std::vector<RigidBody>& bodies) {
@@ -57,7 +57,7 @@ void CollisionPipeline::takeIslands(const std::vector<std::size_t>& seeds, const
   sleeping_.takeIslands(seeds, bodies, islandBodies, contacts);
   // A body woken now has not moved in this step: its start is where it is (rememberStart may
   // have run before it woke).
-  for (std::size_t k = first; k < islandBodies.size(); ++k) start_[islandBodies[k]] = bodies[islandBodies[k]].state();
+  for (std::size_t k = first; k < islandBodies.size(); ++k) table_->start[islandBodies[k]] = bodies[islandBodies[k]].state();
   reportedStale_ = true;
 }
 

@@ -153,12 +153,12 @@ std::vector<RecycleFrame> loadFrames(ByteReader& in) {
 }  // namespace
 
 void CollisionPipeline::save(ByteWriter& out) const {
-  out.count(proxies_.size());
-  for (std::size_t i = 0; i < proxies_.size(); ++i) {
-    out.u32(proxies_[i]);
-    out.f64(reach_[i]);
-    saveBox(out, boxes_[i]);
-    saveState(out, start_[i]);
+  out.count(table_->proxies.size());
+  for (std::size_t i = 0; i < table_->proxies.size(); ++i) {
+    out.u32(table_->proxies[i]);
+    out.f64(table_->reach[i]);
+    saveBox(out, table_->boxes[i]);
+    saveState(out, table_->start[i]);
   }
   out.count(bodyOfProxy_.size());  // one past the largest proxy id the broad phase handed out
   out.boolean(haveStart_);
@@ -182,7 +182,7 @@ void CollisionPipeline::save(ByteWriter& out) const {
 
 void CollisionPipeline::load(ByteReader& in, const std::vector<RigidBody>& bodies, std::size_t planes) {
   const std::size_t n = in.count(kBodyBytes, "bodies in the collision stages");
-  if (n != bodies.size() || n != proxies_.size()) {
+  if (n != bodies.size() || n != table_->proxies.size()) {
     in.fail("collision stages of " + std::to_string(n) + " bodies for " + std::to_string(bodies.size()));
   }
   std::vector<ProxyId> proxies(n);
@@ -244,15 +244,15 @@ void CollisionPipeline::load(ByteReader& in, const std::vector<RigidBody>& bodie
   for (std::size_t& body : bodyOfProxy) body = body == kNoBody ? 0 : body;
 
   broad_ = std::move(broad);
-  proxies_ = std::move(proxies);
+  table_->proxies = std::move(proxies);
   bodyOfProxy_ = std::move(bodyOfProxy);
-  reach_ = std::move(reach);
-  boxes_ = std::move(boxes);
-  start_ = std::move(start);
-  fast_.assign(n, 0);
+  table_->reach = std::move(reach);
+  table_->boxes = std::move(boxes);
+  table_->start = std::move(start);
+  table_->fast.assign(n, 0);
   haveStart_ = haveStart;
   contacts_ = std::move(contacts);
-  sleeping_ = SleepingContacts();
+  sleeping_.clear();
   sleptNow_.clear();
   fastList_.clear();
   reportedStale_ = true;

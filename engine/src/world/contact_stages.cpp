@@ -15,17 +15,17 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
   // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
   // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
   // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
-  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, awakeList_, planes_), [&] {
-    if (settings_.detectCollisions) collision_->broadPhase(bodies_, awakeList_);
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(table_->bodies, awakeList_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(table_->bodies, awakeList_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(bodies_, awakeList_, bodyKeys(), bodySolids_, planes_, time());
+    collision_->narrowPhase(table_->bodies, awakeList_, bodyKeys(), table_->solids, planes_, time());
     if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   const bool sweeping = settings_.continuousCollision && collides && awake;
-  if (sweeping) collision_->rememberStart(bodies_, awakeList_);
+  if (sweeping) collision_->rememberStart(table_->bodies, awakeList_);
   solver_->clearAdvanced();
   // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
   // are contacts between sleeping bodies, which receive nothing.
@@ -35,23 +35,23 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
     if (contactsToSolve || !joints_.empty()) solveContacts(withGravity);
   });
   runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, awakeList_, planes_, &solver_->advancedFlags()); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(table_->bodies, awakeList_, planes_, &solver_->advancedFlags()); });
 }
 
 void World::stepIntegrateFirst(bool withGravity, bool awake, bool collides) {
   // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
   const bool sweeping = settings_.continuousCollision && collides && awake;
   runStage(Stage::Integrate, awake, [&] {
-    if (sweeping) collision_->rememberStart(bodies_, awakeList_);
+    if (sweeping) collision_->rememberStart(table_->bodies, awakeList_);
     integrateBodies(withGravity);
   });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(bodies_, awakeList_, planes_); });
-  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(bodies_, awakeList_, planes_), [&] {
-    if (settings_.detectCollisions) collision_->broadPhase(bodies_, awakeList_);
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(table_->bodies, awakeList_, planes_); });
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(table_->bodies, awakeList_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(table_->bodies, awakeList_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(bodies_, awakeList_, bodyKeys(), bodySolids_, planes_, time());
+    collision_->narrowPhase(table_->bodies, awakeList_, bodyKeys(), table_->solids, planes_, time());
     if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });
@@ -65,14 +65,14 @@ void World::solveContacts(bool withGravity) {
   if (solver_->solvesJoints()) wakeJointed();  // and the islands of the bodies it wakes
   static const std::vector<Contact> kNoContacts;
   const std::vector<Contact>& contacts = settings_.respondToContacts ? collision_->contacts() : kNoContacts;
-  solver_->solve({bodies_, contacts, joints_, bodyIds_, bodyMaterials_, planeMaterials_, settings_, withGravity});
+  solver_->solve({table_->bodies, contacts, joints_, table_->ids, table_->materials, planeMaterials_, settings_, withGravity});
   contactEvents_->afterSolve(*this, *collision_, contacts, *solver_, settings_.hitEventSpeed);
   checkFinite(solver_->advancedBodies());
 }
 
 void World::checkFinite(const std::vector<std::size_t>& bodies) const {
   for (std::size_t i : bodies) {
-    if (!isFinite(bodies_[i].state())) reportDivergence(bodies_[i], bodies_[i].state());
+    if (!isFinite(table_->bodies[i].state())) reportDivergence(table_->bodies[i], table_->bodies[i].state());
   }
 }
 

@@ -24,8 +24,8 @@ JointId World::addJoint(const JointDef& def) {
   if (!world && !isValid(def.bodyB)) throw std::invalid_argument(who + ": body_b names no body");
   if (def.bodyA == def.bodyB) throw std::invalid_argument(who + ": body_a and body_b are the same body");
   const std::size_t ia = indexOf(def.bodyA), ib = world ? 0 : indexOf(def.bodyB);  // ib: B's, when a body
-  if (!bodies_[ia].isDynamic()) {
-    throw std::invalid_argument(who + ": body_a '" + bodies_[ia].name() + "' must be dynamic (neither static nor kinematic)");
+  if (!table_->bodies[ia].isDynamic()) {
+    throw std::invalid_argument(who + ": body_a '" + table_->bodies[ia].name() + "' must be dynamic (neither static nor kinematic)");
   }
   if (!def.anchor.allFinite() || !def.axis.allFinite() || !(def.axis.norm() > 0.0)) {
     throw std::invalid_argument(who + ": expected a finite anchor and a finite, non-zero axis");
@@ -66,9 +66,9 @@ JointId World::addJoint(const JointDef& def) {
   Joint joint;
   joint.def = def;
   joint.def.axis = def.axis.normalized();
-  const RigidBody& a = bodies_[ia];
-  const Quat baseOrientation = world ? Quat::Identity() : bodies_[ib].orientation();
-  const Vec3 basePosition = world ? Vec3::Zero() : bodies_[ib].position();
+  const RigidBody& a = table_->bodies[ia];
+  const Quat baseOrientation = world ? Quat::Identity() : table_->bodies[ib].orientation();
+  const Vec3 basePosition = world ? Vec3::Zero() : table_->bodies[ib].position();
   joint.localAnchorBase = baseOrientation.conjugate() * (def.anchor - basePosition);
   joint.localAxisBase = baseOrientation.conjugate() * joint.def.axis;
   joint.localAnchorMoving = a.orientation().conjugate() * (def.anchor - a.position());
@@ -89,9 +89,9 @@ void World::wakeJointed() {
     std::vector<std::size_t> seeds;
     for (const Joint& joint : joints_) {
       if (joint.def.bodyB == kWorldAnchor) continue;
-      const std::size_t a = bodyIds_.indexOf(joint.def.bodyA), b = bodyIds_.indexOf(joint.def.bodyB);
-      if (bodies_[b].isStatic() || bodies_[a].awake() == bodies_[b].awake()) continue;
-      seeds.push_back(bodies_[a].awake() ? b : a);
+      const std::size_t a = table_->ids.indexOf(joint.def.bodyA), b = table_->ids.indexOf(joint.def.bodyB);
+      if (table_->bodies[b].isStatic() || table_->bodies[a].awake() == table_->bodies[b].awake()) continue;
+      seeds.push_back(table_->bodies[a].awake() ? b : a);
       wakeBody(a);
       wakeBody(b);
       woke = true;
@@ -104,7 +104,7 @@ void World::updateJointFilter() {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const Joint& joint : joints_) {
     if (joint.def.bodyB != kWorldAnchor && !joint.def.collideConnected) {
-      pairs.emplace_back(bodyIds_.indexOf(joint.def.bodyA), bodyIds_.indexOf(joint.def.bodyB));
+      pairs.emplace_back(table_->ids.indexOf(joint.def.bodyA), table_->ids.indexOf(joint.def.bodyB));
     }
   }
   collision_->setIgnoredPairs(pairs);

@@ -15,6 +15,14 @@ bool keptBefore(const Contact& x, const Contact& y) {
   return key(x) < key(y);
 }
 
+void SleepingContacts::clear() {
+  slots_.clear();
+  used_.clear();
+  free_.clear();
+  for (std::vector<std::uint32_t>& list : *of_) list.clear();
+  live_ = 0;
+}
+
 void SleepingContacts::add(const Contact& contact, const std::vector<RigidBody>& bodies) {
   std::uint32_t slot;
   if (free_.empty()) {
@@ -30,8 +38,7 @@ void SleepingContacts::add(const Contact& contact, const std::vector<RigidBody>&
   ++live_;
   const auto file = [&](std::size_t body) {
     if (bodies[body].isStatic()) return;
-    if (of_.size() <= body) of_.resize(bodies.size());
-    of_[body].push_back(slot);
+    (*of_)[body].push_back(slot);
   };
   file(contact.b);
   if (contact.kind == Contact::Kind::BodyBody) file(contact.a);
@@ -49,8 +56,8 @@ void SleepingContacts::takeIslands(const std::vector<std::size_t>& seeds, const 
   // Breadth first over the island: every body reached is one of it.
   for (std::size_t next = firstBody; next < islandBodies.size(); ++next) {
     const std::size_t body = islandBodies[next];
-    if (body >= of_.size()) continue;
-    for (const std::uint32_t slot : of_[body]) {
+    if (body >= of_->size()) continue;
+    for (const std::uint32_t slot : (*of_)[body]) {
       if (used_[slot] == 0) continue;  // taken from the other body's list
       const Contact& c = slots_[slot];
       contacts.push_back(c);
@@ -63,7 +70,7 @@ void SleepingContacts::takeIslands(const std::vector<std::size_t>& seeds, const 
       seen_[other] = 1;
       islandBodies.push_back(other);
     }
-    of_[body].clear();
+    (*of_)[body].clear();
   }
   for (std::size_t k = firstBody; k < islandBodies.size(); ++k) seen_[islandBodies[k]] = 0;
   std::sort(contacts.begin() + static_cast<std::ptrdiff_t>(firstContact), contacts.end(), keptBefore);
@@ -86,8 +93,8 @@ std::vector<std::uint32_t> SleepingContacts::slotsOf(const std::uint32_t* first,
   std::vector<std::uint32_t> slots;
   for (std::size_t k = 0; k < count; ++k) {
     const std::uint32_t body = first[k];
-    if (body >= of_.size()) continue;
-    for (const std::uint32_t slot : of_[body]) {
+    if (body >= of_->size()) continue;
+    for (const std::uint32_t slot : (*of_)[body]) {
       if (used_[slot] != 0) slots.push_back(slot);
     }
   }
@@ -119,8 +126,8 @@ void SleepingContacts::bodiesRemoved(const BodyRemoval& removal, std::vector<std
     // It goes: out of the lists of its bodies as they were (a body staying keeps its list).
     const Contact& was = reached.back();
     const auto unfile = [&](std::size_t body) {
-      if (body >= of_.size()) return;
-      std::vector<std::uint32_t>& list = of_[body];
+      if (body >= of_->size()) return;
+      std::vector<std::uint32_t>& list = (*of_)[body];
       list.erase(std::remove(list.begin(), list.end(), slot), list.end());
     };
     unfile(was.b);
@@ -128,16 +135,7 @@ void SleepingContacts::bodiesRemoved(const BodyRemoval& removal, std::vector<std
     release(slot);
   }
   std::sort(reached.begin() + static_cast<std::ptrdiff_t>(firstReached), reached.end(), keptBefore);
-  // The lists follow their bodies, as BodyRemoval::gather moves any per-body array; a body past
-  // of_'s end has none.
-  for (const auto& [to, from] : removal.moves()) {
-    if (from < of_.size()) {
-      of_[to] = std::move(of_[from]);
-    } else if (to < of_.size()) {
-      of_[to].clear();
-    }
-  }
-  if (of_.size() > removal.after()) of_.resize(removal.after());
+  // The lists themselves follow their bodies when the World gathers its table (BodyTable::gather).
 }
 
 }  // namespace rbsim

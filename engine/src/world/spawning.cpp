@@ -140,8 +140,8 @@ double World::spawnDueTime() const { return time() + 0.5 * settings_.timeStep; }
 // A static body never leaves the volume, so never goes: a ground whose centre lies outside it
 // was removed at the first step (issue 56, item 5).
 bool World::outsideKillVolume(std::size_t i) const {
-  const Vec3& x = bodies_[i].position();
-  return !killVolume_.empty() && !bodies_[i].isStatic() &&
+  const Vec3& x = table_->bodies[i].position();
+  return !killVolume_.empty() && !table_->bodies[i].isStatic() &&
          !((x.array() >= killVolume_.min.array()).all() && (x.array() <= killVolume_.max.array()).all());
 }
 
@@ -157,7 +157,7 @@ bool World::removalDue() const {
   for (const Spawner& spawner : spawners_) {
     if (!spawner.alive.empty() && spawner.alive.front().time + spawner.def.lifetime <= due) return true;
   }
-  for (std::size_t i = 0; i < bodies_.size() && !killVolume_.empty(); ++i) {
+  for (std::size_t i = 0; i < table_->bodies.size() && !killVolume_.empty(); ++i) {
     if (outsideKillVolume(i)) return true;
   }
   return false;
@@ -175,9 +175,9 @@ void World::spawnAndRemove() {
     }
   }
   if (!killVolume_.empty()) {
-    std::vector<char> listed(bodies_.size(), 0);
+    std::vector<char> listed(table_->bodies.size(), 0);
     for (const BodyId id : expired) listed[indexOf(id)] = 1;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    for (std::size_t i = 0; i < table_->bodies.size(); ++i) {
       if (!listed[i] && outsideKillVolume(i)) expired.push_back(idAt(i));
     }
   }

@@ -26,7 +26,7 @@ void World::saveUndo() {
   // and those it wakes, saved as listAwake lists them. A step listener may wake any body unseen.
   u.all = std::any_of(listeners_.begin(), listeners_.end(), [](const auto& l) { return !l->idle(); });
   if (u.all) {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) saveUndoOf(i);
+    for (std::size_t i = 0; i < table_->bodies.size(); ++i) saveUndoOf(i);
   } else {
     refreshAwake();
     for (const std::uint32_t i : awakeList_) saveUndoOf(i);
@@ -40,7 +40,7 @@ void World::saveUndo() {
 
 void World::saveUndoOf(std::size_t i) {
   StepUndo& u = undo_;
-  const RigidBody& body = bodies_[i];
+  const RigidBody& body = table_->bodies[i];
   u.index.push_back(static_cast<std::uint32_t>(i));
   u.states.push_back(body.state());
   u.awake.push_back(body.awake() ? 1 : 0);
@@ -56,8 +56,8 @@ void World::undoStep() {
   // The bodies are those saved: the stages after SpawnAndRemove add and remove none. Latest saved
   // first, so that a body saved twice (asleep, woken, asleep and woken again) ends as it began.
   for (std::size_t k = u.index.size(); k-- > 0;) {
-    if (u.index[k] >= bodies_.size()) continue;
-    RigidBody& body = bodies_[u.index[k]];
+    if (u.index[k] >= table_->bodies.size()) continue;
+    RigidBody& body = table_->bodies[u.index[k]];
     if (k < u.rotations.size()) {
       body.setState(u.states[k], u.rotations[k]);
     } else {
@@ -83,10 +83,10 @@ void World::undoStep() {
 void World::saveSpawns() {
   StepUndo& u = undo_;
   u.spawnsSaved = true;
-  u.bodyCount = bodies_.size();
-  u.slots = bodyIds_.slots();
-  u.freeSlot = bodyIds_.freeSlot();
-  u.shapeIds = shapeIds_;
+  u.bodyCount = table_->bodies.size();
+  u.slots = table_->ids.slots();
+  u.freeSlot = table_->ids.freeSlot();
+  u.shapeIds = table_->shapeIds;
   u.spawners = spawners_;
   u.spawned = spawnedNow_;
   u.removed = removedNow_;
@@ -98,11 +98,11 @@ void World::undoSpawns() {
   // destroyBodies pops them off the ends of every per-body array with their joints; the ids'
   // table then goes back to what it was, the generations those slots moved on to included.
   std::vector<BodyId> made;
-  for (std::size_t i = u.bodyCount; i < bodies_.size(); ++i) made.push_back(idAt(i));
+  for (std::size_t i = u.bodyCount; i < table_->bodies.size(); ++i) made.push_back(idAt(i));
   destroyBodies(made);
   // The bodies it made are gone, so the table's items are those before it, each in its slot.
-  bodyIds_.assign(u.slots, bodyIds_.slotOfItem(), u.freeSlot);
-  shapeIds_ = u.shapeIds;
+  table_->ids.assign(u.slots, table_->ids.slotOfItem(), u.freeSlot);
+  table_->shapeIds = u.shapeIds;
   spawners_ = u.spawners;
   spawnedNow_ = u.spawned;
   removedNow_ = u.removed;

@@ -64,7 +64,8 @@ const Settings& checked(const Settings& settings) {
 
 World::World(const Settings& settings)
     : settings_(checked(settings)),
-      collision_(std::make_unique<CollisionPipeline>(settings_)),
+      table_(std::make_unique<BodyTable>()),
+      collision_(std::make_unique<CollisionPipeline>(settings_, *table_)),
       solver_(makeContactSolver(settings_.solver)),
       contactEvents_(std::make_unique<ContactEventTracker>()) {}
 World::~World() = default;
@@ -93,32 +94,26 @@ std::vector<std::unique_ptr<StepListener>> cloned(const std::vector<std::unique_
 // bytes of padding after the ids' free list head are inside IdTable, where no member can hide.
 // Checked where the standard library lays out vectors in 3 pointers of 8 bytes (libstdc++, libc++
 // and MSVC's release library on every 64-bit target the engine builds for, docs/ci.md).
-constexpr std::size_t kWorldBytesCopied = 1808;
+constexpr std::size_t kWorldBytesCopied = 1584;
 static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(World) == kWorldBytesCopied,
               "a member was added to or removed from World: see the comment above World's copy constructor");
 World::World(const World& other)
     : settings_(other.settings_),
-      bodies_(other.bodies_),
-      bodyIds_(other.bodyIds_),
-      shapeIds_(other.shapeIds_),
+      table_(std::make_unique<BodyTable>(*other.table_)),
       forces_(other.forces_),
       springs_(other.springs_),
       springIds_(other.springIds_),
       planes_(other.planes_),
-      bodyMaterials_(other.bodyMaterials_),
       planeMaterials_(other.planeMaterials_),
       listeners_(cloned(other.listeners_)),
-      bodySolids_(other.bodySolids_),
-      fracturePatterns_(other.fracturePatterns_),
       breakableBodies_(other.breakableBodies_),
       receivedImpulse_(other.receivedImpulse_),
       fractureEvents_(other.fractureEvents_),
-      collision_(std::make_unique<CollisionPipeline>(*other.collision_)),
+      collision_(std::make_unique<CollisionPipeline>(*other.collision_, *table_)),
       solver_(other.solver_->clone()),
       contactEvents_(std::make_unique<ContactEventTracker>(*other.contactEvents_)),
       islandRestingTime_(other.islandRestingTime_),
       awakeList_(other.awakeList_),
-      listed_(other.listed_),
       awakeSorted_(other.awakeSorted_),
       awakeStale_(other.awakeStale_),
       awakeScanned_(other.awakeScanned_),
@@ -272,7 +267,7 @@ void World::advance() {
   if (posed || pushed) refreshAwake();
   const bool anyAwakeNow = !awakeList_.empty();
   wakeListedIslands();
-  const bool collides = settings_.detectCollisions && (!planes_.empty() || bodies_.size() >= 2);
+  const bool collides = settings_.detectCollisions && (!planes_.empty() || table_->bodies.size() >= 2);
   try {
     if (solver_->order() == ContactSolver::Order::IntegrateFirst) {
       stepIntegrateFirst(!otherForces, anyAwakeNow, collides);
@@ -291,7 +286,7 @@ void World::advance() {
   runStage(Stage::UpdateSleep, settings_.allowSleep && anyAwakeNow, [&] { updateSleep(); });
   const bool systemsBusy = std::any_of(listeners_.begin(), listeners_.end(), [](const auto& l) { return !l->idle(); });
   runStage(Stage::StepSystems, systemsBusy, [&] {
-    const StepContext context{t, stepCount_, settings_, bodies_, bodySolids_, bodyMaterials_, planes_, planeMaterials_};
+    const StepContext context{t, stepCount_, settings_, table_->bodies, table_->solids, table_->materials, planes_, planeMaterials_};
     for (const std::unique_ptr<StepListener>& listener : listeners_) listener->step(context);
     awakeStale_ = true;  // a listener may wake bodies (soft contacts do), unseen by listAwake
   });
@@ -320,7 +315,7 @@ void World::accumulateForces(bool withGravity) {
   if (withGravity) {
     refreshAwake();  // the forces above may have woken bodies
     for (const std::uint32_t i : awakeList_) {
-      RigidBody& body = bodies_[i];
+      RigidBody& body = table_->bodies[i];
       if (body.isDynamic()) body.applyForce(body.mass() * settings_.gravity);
     }
   }
@@ -369,9 +364,9 @@ void World::integrateBodies(bool withGravity) {
       }
     };
     for (std::size_t k = first; k < end; ++k) {
-      if (k + kPrefetchAhead < count) StepPrefetch::fetch(bodies_[awakeList_[k + kPrefetchAhead]]);
+      if (k + kPrefetchAhead < count) StepPrefetch::fetch(table_->bodies[awakeList_[k + kPrefetchAhead]]);
       const std::size_t i = awakeList_[k];
-      RigidBody& body = bodies_[i];
+      RigidBody& body = table_->bodies[i];
       if (!body.awake() || (i < advanced.size() && advanced[i] != 0)) continue;
       if (body.isKinematic()) {
         next[n] = integrateKinematic(body.state(), body.stepInputs(), dt);
@@ -394,7 +389,7 @@ void World::integrateBodies(bool withGravity) {
 std::uint64_t World::stateHash() const {
   std::uint64_t hash = kFnvOffsetBasis;
   auto mix = [&hash](double value) { hash = fnvMix(hash, value); };
-  for (const RigidBody& body : bodies_) {
+  for (const RigidBody& body : table_->bodies) {
     const BodyState& s = body.state();
     for (int i = 0; i < 3; ++i) mix(s.position[i]);
     for (int i = 0; i < 4; ++i) mix(s.orientation.coeffs()[i]);

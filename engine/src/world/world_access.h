@@ -16,12 +16,14 @@ struct WorldAccess {
   static QueryTreeCache& queryCache(const World& world) { return world.queryCache_.cache(); }
   static const ContactEventTracker& contactEvents(const World& world) { return *world.contactEvents_; }
 
+  // Every per-body column and the ids (world/body_table.h).
+  static const BodyTable& table(const World& world) { return *world.table_; }
   // What the free functions change (and read).
-  static std::vector<RigidBody>& bodies(World& world) { return world.bodies_; }
-  static std::vector<Material>& bodyMaterials(World& world) { return world.bodyMaterials_; }
-  static const std::vector<Material>& bodyMaterials(const World& world) { return world.bodyMaterials_; }
+  static std::vector<RigidBody>& bodies(World& world) { return world.table_->bodies; }
+  static std::vector<Material>& bodyMaterials(World& world) { return world.table_->materials; }
+  static const std::vector<Material>& bodyMaterials(const World& world) { return world.table_->materials; }
   static const std::vector<Material>& planeMaterials(const World& world) { return world.planeMaterials_; }
-  static const std::vector<BodySolid>& bodySolids(const World& world) { return world.bodySolids_; }
+  static const std::vector<BodySolid>& bodySolids(const World& world) { return world.table_->solids; }
   static const std::vector<FractureEvent>& fractureEvents(const World& world) { return world.fractureEvents_; }
   static const std::vector<ScriptedForce>& forces(const World& world) { return world.forces_; }
   static std::vector<Spring>& springs(World& world) { return world.springs_; }
@@ -31,11 +33,11 @@ struct WorldAccess {
   static const IdTable<SpringId>& springIds(const World& world) { return world.springIds_; }
   static IdTable<JointId>& jointIds(World& world) { return world.jointIds_; }
   // The shapes' ids (world/shape_table.h), and the id of bodies()[index]'s child `child`.
-  static const ShapeTable& shapeIds(const World& world) { return world.shapeIds_; }
+  static const ShapeTable& shapeIds(const World& world) { return world.table_->shapeIds; }
   static ShapeId shapeIdOf(const World& world, std::size_t index, std::size_t child) {
-    return world.shapeIds_.idOf(world.bodyKeys()[index], child);
+    return world.table_->shapeIds.idOf(world.bodyKeys()[index], child);
   }
-  static BodyId bodyIdOfSlot(const World& world, std::uint32_t slot) { return {slot, world.bodyIds_.slots()[slot].generation}; }
+  static BodyId bodyIdOfSlot(const World& world, std::uint32_t slot) { return {slot, world.table_->ids.slots()[slot].generation}; }
   static const IdTable<JointId>& jointIds(const World& world) { return world.jointIds_; }
   static std::vector<KinematicMotion>& motions(World& world) { return world.motions_; }
   static const std::vector<KinematicMotion>& motions(const World& world) { return world.motions_; }

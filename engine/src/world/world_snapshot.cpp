@@ -112,20 +112,21 @@ void writeShapeTable(ByteWriter& out, const ShapeTable& table) {
 // (world.cpp), and check the same figure: a member added to world.h fails the build here until it
 // is written and read below (or listed here as left out), and the figure is updated in both
 // places. Left out, each for a reason: listeners_ (saveWorldSnapshot refuses step listeners);
-// bodySolids_, fracturePatterns_, breakableBodies_ (addBody rebuilds them from the base's bodies,
-// loadBodies); receivedImpulse_, islandRestingTime_, undo_ (a step's scratch); geometryVersion_,
-// queryCache_ (the queries rebuild their tree); stats_, stageClock_ (timing, not state);
-// awakeList_, listed_, awakeSorted_, awakeStale_, awakeScanned_ (the awake list, rebuilt from the
-// bodies' flags after a load), localIndex_, undoOpen_ (a step's scratch).
-constexpr std::size_t kWorldBytesSaved = 1808;
+// of table_ (world/body_table.h), the solids and fracture patterns, with breakableBodies_ (addBody
+// rebuilds them from the base's bodies, loadBodies), the listed column (the awake list's, below) and
+// the collision pipeline's columns (its own load); receivedImpulse_, islandRestingTime_, undo_ (a
+// step's scratch); geometryVersion_, queryCache_ (the queries rebuild their tree); stats_,
+// stageClock_ (timing, not state); awakeList_, awakeSorted_, awakeStale_, awakeScanned_ (the awake
+// list, rebuilt from the bodies' flags after a load), localIndex_, undoOpen_ (a step's scratch).
+constexpr std::size_t kWorldBytesSaved = 1584;
 static_assert(sizeof(void*) != 8 || sizeof(std::vector<char>) != 24 || sizeof(World) == kWorldBytesSaved,
               "a member was added to or removed from World: see the comment above WorldSnapshotAccess::save");
 
 void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
   snapshot::write(out, w.settings_);
   saveBodies(w, out);
-  writeIdTable(out, w.bodyIds_);
-  writeShapeTable(out, w.shapeIds_);
+  writeIdTable(out, w.table_->ids);
+  writeShapeTable(out, w.table_->shapeIds);
   out.count(w.planes_.size());
   for (std::size_t p = 0; p < w.planes_.size(); ++p) {
     out.vec3(w.planes_[p].normal);
@@ -137,7 +138,7 @@ void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
   writeIdTable(out, w.springIds_);
   writeAll(out, w.joints_, [&](ByteWriter& o, const Joint& j) {
     const bool onWorld = j.def.bodyB == kWorldAnchor;
-    snapshot::write(o, j, w.bodyIds_.indexOf(j.def.bodyA), onWorld ? snapshot::kWorldInFile : w.bodyIds_.indexOf(j.def.bodyB));
+    snapshot::write(o, j, w.table_->ids.indexOf(j.def.bodyA), onWorld ? snapshot::kWorldInFile : w.table_->ids.indexOf(j.def.bodyB));
   });
   writeIdTable(out, w.jointIds_);
   writeAll(out, w.pendingEvents_, [](ByteWriter& o, const PoseEvent& e) { snapshot::write(o, e); });
@@ -175,10 +176,10 @@ void WorldSnapshotAccess::save(const World& w, ByteWriter& out) {
 World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t version) {
   World w(snapshot::readSettings(in));
   loadBodies(in, base, w);
-  const std::size_t n = w.bodies_.size();
+  const std::size_t n = w.table_->bodies.size();
   // The ids' table (bodies.cpp): every body's slot points back at it, and the free list runs
   // through the other slots exactly once.
-  readIdTable(in, n, w.bodyIds_, "body ids");
+  readIdTable(in, n, w.table_->ids, "body ids");
   readShapeTable(in, version, w);
 
   const std::size_t planes = in.count(7 * 8, "planes");
@@ -247,7 +248,7 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
   w.stepsAtOrigin_ = in.u64();
   if (w.stepsAtOrigin_ > w.stepCount_) in.fail("the time step changed after the step count");
   w.updateJointFilter();
-  w.collision_->load(in, w.bodies_, w.planes_.size());
+  w.collision_->load(in, w.table_->bodies, w.planes_.size());
   w.solver_->load(in, w.bodyKeys(), version < kFirstWithSlotKeys);
   w.contactEvents_->load(in, version < kFirstWithSlotKeys, *w.collision_);
   // Each contact point names its contact (World::contactPoints, read by index).
@@ -262,11 +263,11 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
 }
 
 void WorldSnapshotAccess::readShapeTable(ByteReader& in, std::uint32_t version, World& w) {
-  std::vector<std::size_t> shapeCounts(w.bodyIds_.slots().size(), 0);  // per body id slot
-  for (std::size_t i = 0; i < w.bodies_.size(); ++i) shapeCounts[w.bodyKeys()[i]] = shapeCountOf(w.bodies_[i]);
+  std::vector<std::size_t> shapeCounts(w.table_->ids.slots().size(), 0);  // per body id slot
+  for (std::size_t i = 0; i < w.table_->bodies.size(); ++i) shapeCounts[w.bodyKeys()[i]] = shapeCountOf(w.table_->bodies[i]);
   if (version < kFirstWithShapeIds) {  // no table saved: made as adding the bodies in index order makes it
-    w.shapeIds_ = ShapeTable();
-    for (std::size_t i = 0; i < w.bodies_.size(); ++i) w.shapeIds_.add(w.bodyKeys()[i], shapeCounts[w.bodyKeys()[i]]);
+    w.table_->shapeIds = ShapeTable();
+    for (std::size_t i = 0; i < w.table_->bodies.size(); ++i) w.table_->shapeIds.add(w.bodyKeys()[i], shapeCounts[w.bodyKeys()[i]]);
     return;
   }
   std::vector<ShapeTable::Slot> slots(in.count(kShapeSlotBytes, "shape id slots"));
@@ -277,7 +278,7 @@ void WorldSnapshotAccess::readShapeTable(ByteReader& in, std::uint32_t version, 
     s.next = in.u32();
   }
   const std::uint32_t freeSlot = in.u32();
-  const std::string problem = w.shapeIds_.assign(std::move(slots), freeSlot, shapeCounts);
+  const std::string problem = w.table_->shapeIds.assign(std::move(slots), freeSlot, shapeCounts);
   if (!problem.empty()) in.fail("shape ids: " + problem);
 }
 

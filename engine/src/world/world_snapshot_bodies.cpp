@@ -131,25 +131,25 @@ std::uint64_t shapeFingerprint(const RigidBody& body, const BodySolid& solid) {
 }
 
 void WorldSnapshotAccess::saveBodies(const World& world, ByteWriter& out) {
-  out.count(world.bodies_.size());
+  out.count(world.table_->bodies.size());
   // Which bodies share one mesh object (a spawned figure's bones share their figure's, a scene's
   // copies their block's): the renderer draws the bodies of one mesh as instances of it, in
   // batches of first appearance, so a World read back draws the same batches only when its
   // bodies share as these did (a replay of a recording is drawn bit for bit).
   std::unordered_map<const Mesh*, std::size_t> firstWithMesh;
-  for (std::size_t i = 0; i < world.bodies_.size(); ++i) {
-    const RigidBody& b = world.bodies_[i];
-    out.u64(shapeFingerprint(b, world.bodySolids_[i]));
+  for (std::size_t i = 0; i < world.table_->bodies.size(); ++i) {
+    const RigidBody& b = world.table_->bodies[i];
+    out.u64(shapeFingerprint(b, world.table_->solids[i]));
     out.u64(firstWithMesh.emplace(b.sharedMesh().get(), i).first->second);
     const BodyId id = world.idAt(i);
     out.u32(id.slot);
     out.u32(id.generation);
     out.text(b.name());
-    snapshot::write(out, world.bodyMaterials_[i]);
+    snapshot::write(out, world.table_->materials[i]);
     snapshot::write(out, b.filter());
     out.boolean(b.isStatic());
     out.boolean(b.isKinematic());
-    out.boolean(world.fracturePatterns_[i] != nullptr);
+    out.boolean(world.table_->fracturePatterns[i] != nullptr);
     const BodyState& s = b.state();
     out.vec3(s.position);
     out.quat(s.orientation);
@@ -167,8 +167,8 @@ void WorldSnapshotAccess::saveBodies(const World& world, ByteWriter& out) {
 
 void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& world) {
   Catalogue shapes;
-  for (std::size_t i = 0; i < base.bodies_.size(); ++i) {
-    catalogue(shapes, defOf(base.bodies_[i], base.bodySolids_[i], base.fracturePatterns_[i], base.bodyMaterials_[i]));
+  for (std::size_t i = 0; i < base.table_->bodies.size(); ++i) {
+    catalogue(shapes, defOf(base.table_->bodies[i], base.table_->solids[i], base.table_->fracturePatterns[i], base.table_->materials[i]));
   }
   // A spawner's copies share its prototype's mesh object, and so do those it makes after the read.
   std::unordered_map<std::uint64_t, std::shared_ptr<const Mesh>> prototypeMeshes;
@@ -182,8 +182,8 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
     // A figure's bones, as a burst makes them: the drawn pose moves them, their shapes stay.
     World figure(base.settings_);
     static_cast<void>(addRagdoll(figure, *spawner.def.ragdoll));
-    for (std::size_t i = 0; i < figure.bodies_.size(); ++i) {
-      catalogue(shapes, defOf(figure.bodies_[i], figure.bodySolids_[i], nullptr, figure.bodyMaterials_[i]));
+    for (std::size_t i = 0; i < figure.table_->bodies.size(); ++i) {
+      catalogue(shapes, defOf(figure.table_->bodies[i], figure.table_->solids[i], nullptr, figure.table_->materials[i]));
     }
   }
   // The fewest bytes a body record takes: fingerprint, mesh group, id, an empty name, 32 doubles,
@@ -204,7 +204,7 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
               "shape (a World built from another scene)");
     }
     BodyDef def = found->second;
-    if (group > i || (group < i && !sameMesh(*world.bodies_[group].sharedMesh(), *def.mesh))) {
+    if (group > i || (group < i && !sameMesh(*world.table_->bodies[group].sharedMesh(), *def.mesh))) {
       in.fail("body " + std::to_string(i) + " '" + name + "': shares the mesh of body " + std::to_string(group) +
               ", which is not an earlier body with its mesh");
     }
@@ -213,7 +213,7 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
     // prototype's, or has a copy of its own; the later ones of the group share it.
     const auto prototype = prototypeMeshes.find(fingerprint);
     if (group < i) {
-      def.mesh = world.bodies_[group].sharedMesh();
+      def.mesh = world.table_->bodies[group].sharedMesh();
     } else if (base.isValid(id) && sameMesh(base.body(id).mesh(), *def.mesh)) {
       def.mesh = base.body(id).sharedMesh();
     } else if (prototype != prototypeMeshes.end() && sameMesh(*prototype->second, *def.mesh)) {
@@ -239,7 +239,7 @@ void WorldSnapshotAccess::loadBodies(ByteReader& in, const World& base, World& w
     if (!isFinite(state) || !rotation.allFinite()) in.fail("body '" + name + "': a state that is not finite");
     const bool awake = in.boolean();
     world.addBody(def);
-    RigidBody& body = world.bodies_.back();
+    RigidBody& body = world.table_->bodies.back();
     if (awake) {
       body.wake();
     } else if (!body.isStatic()) {

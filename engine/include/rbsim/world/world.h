@@ -21,6 +21,7 @@
 #include "rbsim/world/kinematic_motion.h"
 #include "rbsim/world/query_cache.h"
 #include "rbsim/world/scripts.h"
+#include "rbsim/world/body_table.h"
 #include "rbsim/world/shape_table.h"
 #include "rbsim/world/spawner.h"
 #include "rbsim/world/spring.h"
@@ -128,9 +129,9 @@ class World {
     ++geometryVersion_;
     const std::size_t index = indexOf(id);
     listAwake(index);  // it may be woken through the reference: the next step looks at it
-    return bodies_[index];
+    return table_->bodies[index];
   }
-  const RigidBody& body(BodyId id) const { return bodies_[indexOf(id)]; }
+  const RigidBody& body(BodyId id) const { return table_->bodies[indexOf(id)]; }
   void addForce(const ScriptedForce& force);
   void addPoseEvent(const PoseEvent& event);
   // Static and infinite; throws unless the normal is unit and the material valid.
@@ -177,7 +178,7 @@ class World {
     return timeOrigin_ + static_cast<double>(stepCount_ - stepsAtOrigin_) * settings_.timeStep;
   }
   std::uint64_t stepCount() const { return stepCount_; }
-  const std::vector<RigidBody>& bodies() const { return bodies_; }
+  const std::vector<RigidBody>& bodies() const { return table_->bodies; }
   const std::vector<Plane>& planes() const { return planes_; }
   // The contact manifolds of the last narrow phase, and every contact point of the last step
   // with the impulse the solver gave it. contacts() lists the step's (those of awake bodies, then
@@ -225,10 +226,9 @@ class World {
   void wakeIslandsOf(const std::vector<std::size_t>& seeds, bool solveNow);
   void wakeListedIslands();            // before the collision stages: islands of bodies woken since
   void listAwake(std::size_t index) {  // body(id)'s and every wake's: the next pass visits it
-    if (index >= listed_.size()) listed_.resize(bodies_.size(), 0);
-    if (listed_[index] != 0) return;
+    if (table_->listed[index] != 0) return;
     if (undoOpen_) saveUndoOf(index);  // before the step changes it
-    listed_[index] = 1;
+    table_->listed[index] = 1;
     if (!awakeList_.empty() && awakeList_.back() > index) awakeSorted_ = false;
     awakeList_.push_back(static_cast<std::uint32_t>(index));
   }
@@ -247,23 +247,19 @@ class World {
   void undoSpawns();  // removes the bodies the step made
 
   Settings settings_;
-  std::vector<RigidBody> bodies_;
-  // Ids (body/body_id.h): per slot the body's index in bodies_ and its generation, per body its
-  // slot; the joints name their bodies by id and the solver resolves them through it.
-  IdTable<BodyId> bodyIds_;
-  ShapeTable shapeIds_;  // the bodies' shapes' ids, by body id slot (world/shape_table.h)
+  // Every per-body column and the ids that name the rows (world/body_table.h), on the heap so
+  // that the collision pipeline, which reads and writes its own columns there, keeps its address
+  // when the World moves.
+  std::unique_ptr<BodyTable> table_;
   // Per body index, its stable key (its slot): what pairs and warm starts are named by, so that a
   // removal, which moves bodies to new indices, renames none of them.
-  const std::vector<std::uint32_t>& bodyKeys() const { return bodyIds_.slotOfItem(); }
+  const std::vector<std::uint32_t>& bodyKeys() const { return table_->keys(); }
   std::vector<ScriptedForce> forces_;
   std::vector<Spring> springs_;
   IdTable<SpringId> springIds_;  // springs_'s ids (world/spring.h)
   std::vector<Plane> planes_;
-  std::vector<Material> bodyMaterials_;   // per body
   std::vector<Material> planeMaterials_;  // per plane
   std::vector<std::unique_ptr<StepListener>> listeners_;
-  std::vector<BodySolid> bodySolids_;     // per body
-  std::vector<std::shared_ptr<const FracturePattern>> fracturePatterns_;  // per body; null: unbreakable
   std::size_t breakableBodies_ = 0;      // bodies with a pattern that have not broken yet
   std::vector<double> receivedImpulse_;  // BreakBodies' scratch, per body [N s]
   std::vector<FractureEvent> fractureEvents_;
@@ -273,10 +269,9 @@ class World {
   std::vector<double> islandRestingTime_;  // UpdateSleep's scratch, per island root [s]
   // The awake bodies (issue 58, "no scan of every body"; Box2D's awake solver set): every awake
   // body's index, plus those body(id) handed out or a stage woke since the last refreshAwake();
-  // every per-step pass visits these alone. listed_ per body: in awakeList_. awakeStale_: the
+  // every per-step pass visits these alone. The table's listed column: in awakeList_. awakeStale_: the
   // indices changed (removal, a load, an undo): rebuilt from a scan before the next step.
   std::vector<std::uint32_t> awakeList_;
-  std::vector<char> listed_;
   bool awakeSorted_ = true;
   bool awakeStale_ = true;
   std::size_t awakeScanned_ = 0;  // bodies refreshAwake has looked at; those past it are new
