@@ -60,7 +60,7 @@ void World::wakeBody(std::size_t index) {
 void World::wakeIslandsOf(const std::vector<std::size_t>& seeds, bool solveNow) {
   std::vector<std::size_t> woken;
   std::vector<Contact> contacts;
-  collision_->takeIslands(seeds, table_->bodies, woken, contacts);
+  collision_->takeIslands(seeds, woken, contacts);
   for (const std::size_t i : woken) {
     if (!table_->bodies[i].awake() && !table_->bodies[i].isStatic()) wakeBody(i);
   }
@@ -154,7 +154,7 @@ void World::updateSleep() {
 void World::sleepContacts() {
   static_assert(CollisionPipeline::kNoContact == ContactSolver::kDroppedContact, "one mark for a contact that slept");
   std::vector<std::uint32_t> newIndex;
-  collision_->sleepContacts(table_->bodies, newIndex);
+  collision_->sleepContacts(newIndex);
   if (collision_->sleptNow().empty()) return;
   solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
   solver_->contactsReindexed(newIndex);

@@ -111,13 +111,13 @@ CollisionPipeline::CollisionPipeline(const CollisionPipeline& other, BodyTable& 
       impacts_(other.impacts_),
       log_(other.log_) {}
 
-bool CollisionPipeline::needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                                        const std::vector<Plane>& planes) const {
-  if (bodies.size() < 2 && planes.empty()) return false;
+bool CollisionPipeline::needsBroadPhase(const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes) const {
+  if (table_->size() < 2 && planes.empty()) return false;
   return !awake.empty();
 }
 
-void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake) {
+void CollisionPipeline::rememberStart(const std::vector<std::uint32_t>& awake) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
   // A sleeping body does not move in the step: its start is where it is (continuous reads it so).
   for (const std::uint32_t i : awake) table_->start[i] = bodies[i].state();
   haveStart_ = true;
@@ -125,8 +125,9 @@ void CollisionPipeline::rememberStart(const std::vector<RigidBody>& bodies, cons
 
 bool CollisionPipeline::isFast(std::size_t body) const { return table_->fast[body] != 0; }
 
-void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                                   const std::vector<Plane>& planes, const std::vector<char>* solved) {
+void CollisionPipeline::continuous(const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes,
+                                   const std::vector<char>* solved) {
+  std::vector<RigidBody>& bodies = table_->bodies;  // a fast body is moved back to its impact
   impacts_.clear();
   for (const std::size_t i : fastList_) table_->fast[i] = 0;
   fastList_.clear();
@@ -167,7 +168,7 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
     }
     Aabb sweep = boundsAt(swept, 0.0);
     sweep.grow(boundsAt(swept, 1.0));
-    nearSweep(sweep, bodies, awake, near_);
+    nearSweep(sweep, awake, near_);
     for (const std::size_t j : near_) {
       if (j == i || table_->hasGrid[j] || !sweep.overlaps(stepBox(j))) continue;
       const SweptBody partner = sweptOf(bodies[j], bodies[j].awake() ? table_->start[j] : bodies[j].state(), table_->radius[j]);
@@ -181,7 +182,8 @@ void CollisionPipeline::continuous(std::vector<RigidBody>& bodies, const std::ve
   haveStart_ = false;
 }
 
-void CollisionPipeline::broadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake) {
+void CollisionPipeline::broadPhase(const std::vector<std::uint32_t>& awake) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
   // Each awake body's box on any thread, then into the broad phase in body order.
   parallelFor(awake.size(), settings_.threads, [&](std::size_t k) {
     const std::size_t i = awake[k];
@@ -224,19 +226,20 @@ void CollisionPipeline::ignorePair(std::size_t a, std::size_t b) {
   ignoredSorted_ = false;
 }
 
-ProxyPair CollisionPipeline::bodiesOf(const ProxyPair& proxies, const std::vector<std::uint32_t>& keys) const {
+ProxyPair CollisionPipeline::bodiesOf(const ProxyPair& proxies) const {
+  const std::vector<std::uint32_t>& keys = table_->keys();
   // A destroyed body's index goes to the last body, whose proxy id stays as it was.
   ProxyPair pair{static_cast<ProxyId>(bodyOfProxy_[proxies.a]), static_cast<ProxyId>(bodyOfProxy_[proxies.b])};
   if (keys[pair.a] > keys[pair.b]) std::swap(pair.a, pair.b);
   return pair;
 }
 
-CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies,
-                                                       const std::vector<BodySolid>& shapes,
-                                                       const std::vector<std::uint32_t>& keys, double time, Contact& out,
+CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies, double time, Contact& out,
                                                        RecycleFrame& frame) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
+  const std::vector<BodySolid>& shapes = table_->solids;
   out.manifold.count = 0;
-  const ProxyPair pair = bodiesOf(proxies, keys);
+  const ProxyPair pair = bodiesOf(proxies);
   if (!ignored_.empty() && std::binary_search(ignored_.begin(), ignored_.end(),
                                               (std::uint64_t{std::min(pair.a, pair.b)} << 32) | std::max(pair.a, pair.b))) {
     return Later::Nothing;
@@ -295,10 +298,10 @@ CollisionPipeline::Later CollisionPipeline::collidePair(const ProxyPair& proxies
   return Later::Nothing;
 }
 
-void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                                    const std::vector<std::uint32_t>& keys, const std::vector<BodySolid>& shapes,
-                                    const std::vector<Plane>& planes, double time) {
-  keepSleeping(bodies);
+void CollisionPipeline::narrowPhase(const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes, double time) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
+  const std::vector<BodySolid>& shapes = table_->solids;
+  keepSleeping();
   contacts_.clear();
   reportedStale_ = true;
   recycleTolerance_ = recycleDistance(settings_);
@@ -324,9 +327,9 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
   later_.assign(pairs.size(), Later::Nothing);
   parallelFor(pairs.size(), threads, [&](std::size_t k) {
     pairFrames_[k].count = 0;
-    later_[k] = collidePair(pairs[k], bodies, shapes, keys, time, pairSlots_[k], pairFrames_[k]);
+    later_[k] = collidePair(pairs[k], time, pairSlots_[k], pairFrames_[k]);
   });
-  collideCompounds(pairs, bodies, shapes, keys, threads);
+  collideCompounds(pairs, threads);
   // A pair of compounds gives a contact per pair of children (up to 128^2): the contacts are
   // bounded with the pairs, before the list grows past what a step may hold.
   const auto admit = [&](std::size_t more) {
@@ -346,7 +349,7 @@ void CollisionPipeline::narrowPhase(const std::vector<RigidBody>& bodies, const 
       contacts_.insert(contacts_.end(), compoundSlots_[k].begin(), compoundSlots_[k].end());
       continue;
     }
-    const ProxyPair pair = bodiesOf(pairs[k], keys);
+    const ProxyPair pair = bodiesOf(pairs[k]);
     const double margin = settings_.contactMargin + table_->reach[pair.a] + table_->reach[pair.b];
     const BodySolid& sa = shapes[pair.a];
     const BodySolid& sb = shapes[pair.b];

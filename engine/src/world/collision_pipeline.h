@@ -67,11 +67,11 @@ class CollisionPipeline {
   // A World snapshot (world/world_snapshot.h; collision_pipeline_snapshot.cpp): what the next
   // step reads of the last one, that the bodies alone do not give: the proxies' ids and boxes,
   // the reach and start of each body, this step's contacts, the recycling frames and their index.
-  // load() reads into a pipeline holding the same bodies, added in order (their measures), and
-  // rebuilds the broad phase with the same ids: its pairs are those of the boxes, whatever path
-  // its updates took (broad_phase.h).
+  // load() reads into a pipeline whose table holds the same bodies, added in order (their
+  // measures), and rebuilds the broad phase with the same ids: its pairs are those of the boxes,
+  // whatever path its updates took (broad_phase.h). `planes`: how many the World has.
   void save(ByteWriter& out) const;
-  void load(ByteReader& in, const std::vector<RigidBody>& bodies, std::size_t planes);
+  void load(ByteReader& in, std::size_t planes);
 
   // Pairs of bodies that never collide (jointed bodies without collide_connected): body indices,
   // either order. The narrow phase skips them.
@@ -80,41 +80,40 @@ class CollisionPipeline {
   // so adding n joints costs n log n, not n^2 (a 100 x 100 joint grid loaded in 5 s).
   void ignorePair(std::size_t a, std::size_t b);
 
-  // The passes below visit the `awake` bodies (World's awakeList_: indices in order) and the
-  // sleeping or static bodies their boxes meet, never every body (issue 58).
+  // The passes below read and write the table's bodies (table_->bodies, its solids and keys); they
+  // visit the `awake` bodies (World's awakeList_: indices in order) and the sleeping or static
+  // bodies their boxes meet, never every body (issue 58).
   // The state of every awake body before Integrate, kept for the continuous stage.
-  void rememberStart(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake);
+  void rememberStart(const std::vector<std::uint32_t>& awake);
   // Stage ContinuousCollision: fast bodies that would pass through a plane or a body this step
   // are moved back to their time of impact. Returns the impacts of this step.
   // `solved`: per body, nonzero when a contact solver already moved it through speculative
   // contacts this step (soft step); those are left alone. Null: none was.
-  void continuous(std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes,
+  void continuous(const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes,
                   const std::vector<char>* solved = nullptr);
   // Stage BroadPhase: every moved body's AABB (inflated by the contact margin; swept for fast
   // bodies) into the broad phase, then the candidate pairs.
-  void broadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake);
+  void broadPhase(const std::vector<std::uint32_t>& awake);
   // Stage NarrowPhase: contacts of candidate pairs and of awake bodies against planes. Sleeping
   // bodies are not collided with each other or with planes: the last step's contacts whose bodies
   // all sleep now are kept apart (sleeping_; listed in sleptNow()), as they were (nothing of
   // theirs has moved since), until their island wakes (takeIslands).
-  // `shapes` are per body (bodySolids in world/queries.h): pairs with a signed distance grid use them.
-  // `keys`: per body its stable key (World's bodyKeys), which orders each pair (bodiesOf).
-  void narrowPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                   const std::vector<std::uint32_t>& keys, const std::vector<BodySolid>& shapes,
-                   const std::vector<Plane>& planes, double time);
+  // Pairs with a signed distance grid use the table's solids; the table's keys (World's
+  // bodyKeys) order each pair (bodiesOf).
+  void narrowPhase(const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes, double time);
   const std::vector<Contact>& sleptNow() const { return sleptNow_; }  // the last narrow phase's
   // Islands fell asleep at the end of a step (World::updateSleep): their contacts leave the step's
   // for sleeping_ now (listed in sleptNow()), as Box2D v3's b2TrySleepIsland moves an island's
   // contacts into its solver set, so that nothing after the step (a removal, the next step) visits
   // them. `newIndex` gets, per contact of the step before, its index after, or kNoContact.
   static constexpr std::uint32_t kNoContact = UINT32_MAX;
-  void sleepContacts(const std::vector<RigidBody>& bodies, std::vector<std::uint32_t>& newIndex);
+  void sleepContacts(std::vector<std::uint32_t>& newIndex);
   // Whether body `index` has kept contacts (it sleeps, or woke since and its island has not).
   bool keepsContactsOf(std::size_t index) const { return sleeping_.holds(index); }
   // The islands of `seeds` (SleepingContacts::takeIslands): their bodies, to be woken, and their
   // kept contacts, which leave.
-  void takeIslands(const std::vector<std::size_t>& seeds, const std::vector<RigidBody>& bodies,
-                   std::vector<std::size_t>& islandBodies, std::vector<Contact>& contacts);
+  void takeIslands(const std::vector<std::size_t>& seeds, std::vector<std::size_t>& islandBodies,
+                   std::vector<Contact>& contacts);
   // Contacts of an island woken after the narrow phase, solved with this step's.
   void appendContacts(const std::vector<Contact>& more) {
     contacts_.insert(contacts_.end(), more.begin(), more.end());
@@ -123,8 +122,7 @@ class CollisionPipeline {
 
   // Something awake and something to meet: two bodies, or a body and a plane. The stage also
   // refreshes boxes(), which the plane tests of the narrow phase read.
-  bool needsBroadPhase(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                       const std::vector<Plane>& planes) const;
+  bool needsBroadPhase(const std::vector<std::uint32_t>& awake, const std::vector<Plane>& planes) const;
   // Broad-phase proxy ids: the bodies' indices until a body is destroyed, bodyOfProxy after.
   const std::vector<ProxyPair>& candidatePairs() const { return broad_->pairs(); }
   const std::vector<ProxyId>& broadPhaseAwake() const { return broad_->awakeAtUpdate(); }  // the awake proxies
@@ -147,31 +145,29 @@ class CollisionPipeline {
   bool isFast(std::size_t body) const;
   // Into `out`, in index order: the bodies whose box may meet `box` (every awake body, and the
   // sleeping and static ones whose box does).
-  void nearSweep(const Aabb& box, const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& awake,
-                 std::vector<std::size_t>& out) const;
+  void nearSweep(const Aabb& box, const std::vector<std::uint32_t>& awake, std::vector<std::size_t>& out) const;
   // What collidePair left for later: nothing, a pair with a grid (collided on the calling
   // thread: it gives several manifolds), a pair with a compound body or a body on a mesh ground
   // (both into compoundSlots_, several contacts a pair).
   enum class Later : char { Nothing, Grid, Compound, MeshGround };
   // The convex or round contact of candidate pair `proxies` into `out` (count 0: none, or a pair
   // to skip), or what is left for later.
-  Later collidePair(const ProxyPair& proxies, const std::vector<RigidBody>& bodies, const std::vector<BodySolid>& shapes,
-                   const std::vector<std::uint32_t>& keys, double time, Contact& out, RecycleFrame& frame);
+  Later collidePair(const ProxyPair& proxies, double time, Contact& out, RecycleFrame& frame);
   // A candidate pair's bodies (indices) in the order its contacts name them: the lower stable key
-  // first (`keys`, World's bodyKeys: the BodyId slots). A removal moves bodies to new indices but
-  // leaves their keys, so it never turns a pair round (Box2D v3 orders a contact's shapes by id).
-  ProxyPair bodiesOf(const ProxyPair& proxies, const std::vector<std::uint32_t>& keys) const;
+  // first (the table's keys, World's bodyKeys: the BodyId slots). A removal moves bodies to new
+  // indices but leaves their keys, so it never turns a pair round (Box2D v3 orders a contact's
+  // shapes by id).
+  ProxyPair bodiesOf(const ProxyPair& proxies) const;
   // The pairs collidePair left to the compound and mesh-ground pass, on `threads` threads into
   // compoundSlots_.
-  void collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
-                        const std::vector<BodySolid>& shapes, const std::vector<std::uint32_t>& keys, int threads);
+  void collideCompounds(const std::vector<ProxyPair>& pairs, int threads);
   void measure(std::size_t index, const RigidBody& body, const BodySolid& solid);  // a row's radius, thickness, box, ...
   static std::uint64_t keptKey(Contact::Kind kind, std::size_t a, std::size_t b);
   // The last step's contacts whose bodies all sleep now go to sleeping_ (and sleptNow_).
-  void keepSleeping(const std::vector<RigidBody>& bodies);
+  void keepSleeping();
   // Whether contact `c` is kept apart while its bodies sleep: they all sleep, and it comes back
   // whole when they wake (a grid pair's manifolds are found afresh instead).
-  bool keptAsleep(const Contact& c, const std::vector<RigidBody>& bodies) const;
+  bool keptAsleep(const Contact& c) const;
   // Contact recycling (world/contact_recycling.h): the manifold of the pair (kind, a, b) rebuilt
   // from the frame it was computed in, if it had one and has moved little enough since; `frame`
   // gets the frame the contact now carries.

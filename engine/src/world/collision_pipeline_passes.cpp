@@ -59,9 +59,9 @@ void CollisionPipeline::keepFrames() {
   keptPlaneFrames_.swap(planeFrames_);
 }
 
-void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, const std::vector<RigidBody>& bodies,
-                                         const std::vector<BodySolid>& shapes, const std::vector<std::uint32_t>& keys,
-                                         int threads) {
+void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, int threads) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
+  const std::vector<BodySolid>& shapes = table_->solids;
   compoundWork_.clear();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     if (later_[k] == Later::Compound || later_[k] == Later::MeshGround) compoundWork_.push_back(k);
@@ -72,7 +72,7 @@ void CollisionPipeline::collideCompounds(const std::vector<ProxyPair>& pairs, co
     const std::size_t k = compoundWork_[w];
     std::vector<Contact>& out = compoundSlots_[k];
     out.clear();
-    const ProxyPair pair = bodiesOf(pairs[k], keys);
+    const ProxyPair pair = bodiesOf(pairs[k]);
     const RigidBody& a = bodies[pair.a];
     const RigidBody& b = bodies[pair.b];
     if (!a.awake() && !b.awake()) return;  // kept apart with their island's (keepSleeping)

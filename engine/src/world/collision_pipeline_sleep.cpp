@@ -7,7 +7,8 @@
 
 namespace rbsim {
 
-bool CollisionPipeline::keptAsleep(const Contact& c, const std::vector<RigidBody>& bodies) const {
+bool CollisionPipeline::keptAsleep(const Contact& c) const {
+  const std::vector<RigidBody>& bodies = table_->bodies;
   const bool plane = c.kind == Contact::Kind::PlaneBody;
   if (bodies[c.b].awake() || (!plane && bodies[c.a].awake())) return false;
   // A pair with a compound or a mesh ground keeps all its contacts, one per part; a pair with a
@@ -17,22 +18,23 @@ bool CollisionPipeline::keptAsleep(const Contact& c, const std::vector<RigidBody
   return plane || several || (table_->hasGrid[c.a] == 0 && table_->hasGrid[c.b] == 0);
 }
 
-void CollisionPipeline::keepSleeping(const std::vector<RigidBody>& bodies) {
+void CollisionPipeline::keepSleeping() {
   sleptNow_.clear();
   for (const Contact& c : contacts_) {
-    if (!keptAsleep(c, bodies)) continue;
-    sleeping_.add(c, bodies);
+    if (!keptAsleep(c)) continue;
+    sleeping_.add(c, table_->bodies);
     sleptNow_.push_back(c);
   }
 }
 
-void CollisionPipeline::sleepContacts(const std::vector<RigidBody>& bodies, std::vector<std::uint32_t>& newIndex) {
+void CollisionPipeline::sleepContacts(std::vector<std::uint32_t>& newIndex) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
   sleptNow_.clear();
   newIndex.resize(contacts_.size());
   std::size_t kept = 0;
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
     const Contact& c = contacts_[i];
-    if (keptAsleep(c, bodies)) {
+    if (keptAsleep(c)) {
       sleeping_.add(c, bodies);
       sleptNow_.push_back(c);
       newIndex[i] = kNoContact;
@@ -51,8 +53,9 @@ void CollisionPipeline::sleepContacts(const std::vector<RigidBody>& bodies, std:
   broad_->rest(asleep);
 }
 
-void CollisionPipeline::takeIslands(const std::vector<std::size_t>& seeds, const std::vector<RigidBody>& bodies,
-                                    std::vector<std::size_t>& islandBodies, std::vector<Contact>& contacts) {
+void CollisionPipeline::takeIslands(const std::vector<std::size_t>& seeds, std::vector<std::size_t>& islandBodies,
+                                    std::vector<Contact>& contacts) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
   const std::size_t first = islandBodies.size();
   sleeping_.takeIslands(seeds, bodies, islandBodies, contacts);
   // A body woken now has not moved in this step: its start is where it is (rememberStart may
@@ -71,9 +74,8 @@ const std::vector<Contact>& CollisionPipeline::reported() const {
   return reported_;
 }
 
-void CollisionPipeline::nearSweep(const Aabb& box, const std::vector<RigidBody>& bodies,
-                                  const std::vector<std::uint32_t>& awake, std::vector<std::size_t>& out) const {
-  (void)bodies;
+void CollisionPipeline::nearSweep(const Aabb& box, const std::vector<std::uint32_t>& awake,
+                                  std::vector<std::size_t>& out) const {
   out.assign(awake.begin(), awake.end());
   for (const ProxyId p : broad_->awakeAtUpdate()) out.push_back(bodyOfProxy_[p]);
   restingNear_.clear();

@@ -180,7 +180,8 @@ void CollisionPipeline::save(ByteWriter& out) const {
   }
 }
 
-void CollisionPipeline::load(ByteReader& in, const std::vector<RigidBody>& bodies, std::size_t planes) {
+void CollisionPipeline::load(ByteReader& in, std::size_t planes) {
+  const std::vector<RigidBody>& bodies = table_->bodies;
   const std::size_t n = in.count(kBodyBytes, "bodies in the collision stages");
   if (n != bodies.size() || n != table_->proxies.size()) {
     in.fail("collision stages of " + std::to_string(n) + " bodies for " + std::to_string(bodies.size()));

@@ -15,17 +15,17 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
   // Collision detection first, at the poses the last step left (Box2D v3's b2Collide before
   // b2Solve): the solver advances the bodies it finds in contact, the integrator the rest.
   // Speculative contacts (collision_pipeline.h) make up for the contacts of the step's motion.
-  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(table_->bodies, awakeList_, planes_), [&] {
-    if (settings_.detectCollisions) collision_->broadPhase(table_->bodies, awakeList_);
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(awakeList_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(awakeList_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(table_->bodies, awakeList_, bodyKeys(), table_->solids, planes_, time());
+    collision_->narrowPhase(awakeList_, planes_, time());
     if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });
   const bool sweeping = settings_.continuousCollision && collides && awake;
-  if (sweeping) collision_->rememberStart(table_->bodies, awakeList_);
+  if (sweeping) collision_->rememberStart(awakeList_);
   solver_->clearAdvanced();
   // Skipped narrow phases leave the last contacts in place for display: with nothing awake they
   // are contacts between sleeping bodies, which receive nothing.
@@ -35,23 +35,23 @@ void World::stepCollideFirst(bool withGravity, bool awake, bool collides) {
     if (contactsToSolve || !joints_.empty()) solveContacts(withGravity);
   });
   runStage(Stage::Integrate, awake, [&] { integrateBodies(withGravity); });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(table_->bodies, awakeList_, planes_, &solver_->advancedFlags()); });
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(awakeList_, planes_, &solver_->advancedFlags()); });
 }
 
 void World::stepIntegrateFirst(bool withGravity, bool awake, bool collides) {
   // Integrate first, then find and answer the contacts of the new poses (Catto, GDC 2005).
   const bool sweeping = settings_.continuousCollision && collides && awake;
   runStage(Stage::Integrate, awake, [&] {
-    if (sweeping) collision_->rememberStart(table_->bodies, awakeList_);
+    if (sweeping) collision_->rememberStart(awakeList_);
     integrateBodies(withGravity);
   });
-  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(table_->bodies, awakeList_, planes_); });
-  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(table_->bodies, awakeList_, planes_), [&] {
-    if (settings_.detectCollisions) collision_->broadPhase(table_->bodies, awakeList_);
+  runStage(Stage::ContinuousCollision, sweeping, [&] { collision_->continuous(awakeList_, planes_); });
+  runStage(Stage::BroadPhase, collides && collision_->needsBroadPhase(awakeList_, planes_), [&] {
+    if (settings_.detectCollisions) collision_->broadPhase(awakeList_);
   });
   runStage(Stage::NarrowPhase, collides && awake, [&] {
     if (!settings_.detectCollisions) return;
-    collision_->narrowPhase(table_->bodies, awakeList_, bodyKeys(), table_->solids, planes_, time());
+    collision_->narrowPhase(awakeList_, planes_, time());
     if (!collision_->sleptNow().empty()) solver_->contactsSlept(collision_->sleptNow(), bodyKeys());
     contactEvents_->afterNarrowPhase(*this, *collision_);
   });

@@ -248,7 +248,7 @@ World WorldSnapshotAccess::load(ByteReader& in, const World& base, std::uint32_t
   w.stepsAtOrigin_ = in.u64();
   if (w.stepsAtOrigin_ > w.stepCount_) in.fail("the time step changed after the step count");
   w.updateJointFilter();
-  w.collision_->load(in, w.table_->bodies, w.planes_.size());
+  w.collision_->load(in, w.planes_.size());
   w.solver_->load(in, w.bodyKeys(), version < kFirstWithSlotKeys);
   w.contactEvents_->load(in, version < kFirstWithSlotKeys, *w.collision_);
   // Each contact point names its contact (World::contactPoints, read by index).
