@@ -65,7 +65,8 @@ void CollisionPipeline::removeBodies(const BodyRemoval& removal, std::vector<std
   for (const std::uint32_t gone : removal.removed()) broad_->remove(table_->proxies[gone]);
   recycle_.clear();  // keyed by body index, which the moves change: collided afresh next step
   for (const auto& [to, from] : removal.moves()) bodyOfProxy_[table_->proxies[from]] = to;
-  // The swept bodies' list follows them (read before table_->fast moves); it stays in index order.
+  // The swept bodies' list follows them; it stays in index order. The rows themselves move when
+  // the World gathers its table (BodyTable::gather), after this.
   std::size_t keptFast = 0;
   for (const std::size_t i : fastList_) {
     const std::uint32_t to = removal.newIndex(i);
