@@ -1,6 +1,6 @@
 # Cross-compiling for 64-bit Windows with Debian's mingw-w64 (issue 57): the "posix" thread model
 # of g++-mingw-w64-x86-64-posix, whose libstdc++ has std::thread and std::mutex (the win32 model's
-# has not). .ci/windows uses it with cmake/windows-dependencies.cmake, which finds the header-only
+# has not). .ci/windows uses it with cmake/cross-dependencies.cmake, which finds the header-only
 # dependencies in Debian's /usr/include without putting glibc's C headers before mingw's.
 #   cmake -S . -B build-windows -DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64-x86_64.cmake ...
 set(CMAKE_SYSTEM_NAME Windows)
