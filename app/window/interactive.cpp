@@ -35,11 +35,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The drag is a damped spring from the pointer to the grabbed point (seed 000's spring, as Box2D's
-// mouse joint): stiffness per kilogram, so every body follows at the same angular frequency
-// sqrt(k/m) = 7 rad/s, damped at 0.7 of critical.
-constexpr double kDragStiffnessPerKg = 50.0;  // [N/(m kg)]
-constexpr double kDragDampingRatio = 0.7;     // [1] of critical damping 2 sqrt(k m)
 // Arrows of the drag: the force is drawn 1 m long per body weight m|g| (or per m * 9.81 N when
 // there is no gravity), the torque about the centre of mass 1 m per weight times metre.
 constexpr double kStandardGravity = 9.81;     // [m/s^2]
@@ -241,12 +236,7 @@ class Session {
     history_.clear();
     const RigidBody& body = world_->bodies()[pick->body];
     if (body.isStatic()) return;
-    Spring spring;
-    spring.body = world_->idAt(pick->body);
-    spring.anchor = pick->point;
-    spring.point = body.rotation().transpose() * (pick->point - body.position());
-    spring.stiffness = kDragStiffnessPerKg * body.mass();
-    spring.damping = kDragDampingRatio * 2.0 * std::sqrt(spring.stiffness * body.mass());
+    const Spring spring = dragSpring(world_->idAt(pick->body), body, pick->point);  // world/spring.h
     drag_ = Drag{addSpring(*world_, spring), pick->point, -ray.direction};
     moveSpringAnchor(*world_, drag_->spring, pick->point);  // wakes the body
   }

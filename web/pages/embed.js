@@ -14,7 +14,8 @@ const statusLine = document.getElementById("status");
 let resolveReady, rejectReady;
 window.rbsimHook = {ready: new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; })};
 
-// A camera looking at `target` from `eye`, y up: world point -> [pixel x, pixel y, depth].
+// A pinhole camera looking at `target` from `eye`, y up: project(x, y, z) gives [pixel x, pixel
+// y, depth]; ray(px, py) the world ray through a pixel, {origin, direction}.
 function makeCamera(eye, target) {
   const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
   const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
@@ -23,12 +24,19 @@ function makeCamera(eye, target) {
   const right = unit(cross(forward, [0, 1, 0]));
   const up = cross(right, forward);
   const focal = 0.5 * canvas.height / Math.tan(0.5 * 50 * Math.PI / 180);  // 50 degrees vertical field of view
-  return (x, y, z) => {
-    const d = [x - eye[0], y - eye[1], z - eye[2]];
-    const depth = d[0] * forward[0] + d[1] * forward[1] + d[2] * forward[2];
-    const u = d[0] * right[0] + d[1] * right[1] + d[2] * right[2];
-    const v = d[0] * up[0] + d[1] * up[1] + d[2] * up[2];
-    return [0.5 * canvas.width + focal * u / depth, 0.5 * canvas.height - focal * v / depth, depth];
+  return {
+    project(x, y, z) {
+      const d = [x - eye[0], y - eye[1], z - eye[2]];
+      const depth = d[0] * forward[0] + d[1] * forward[1] + d[2] * forward[2];
+      const u = d[0] * right[0] + d[1] * right[1] + d[2] * right[2];
+      const v = d[0] * up[0] + d[1] * up[1] + d[2] * up[2];
+      return [0.5 * canvas.width + focal * u / depth, 0.5 * canvas.height - focal * v / depth, depth];
+    },
+    ray(px, py) {
+      const u = px - 0.5 * canvas.width, v = 0.5 * canvas.height - py;
+      const direction = [0, 1, 2].map((k) => focal * forward[k] + u * right[k] + v * up[k]);
+      return {origin: eye, direction: unit(direction)};
+    },
   };
 }
 
@@ -54,12 +62,13 @@ function colourOf(i) {
 
 function draw(world, camera, triangles) {
   context.clearRect(0, 0, canvas.width, canvas.height);
+  context.lineWidth = 0.6;
   const light = [0.35, 0.85, 0.4];
   const faces = [];
   for (let i = 0; i < world.bodyCount(); ++i) {
     const p = world.vertices(i), t = triangles[i];
     const screen = [];
-    for (let k = 0; k < p.length; k += 3) screen.push(camera(p[k], p[k + 1], p[k + 2]));
+    for (let k = 0; k < p.length; k += 3) screen.push(camera.project(p[k], p[k + 1], p[k + 2]));
     for (let k = 0; k < t.length; k += 3) {
       const a = t[k], b = t[k + 1], c = t[k + 2];
       const sa = screen[a], sb = screen[b], sc = screen[c];
@@ -75,13 +84,14 @@ function draw(world, camera, triangles) {
   faces.sort((f, g) => g.depth - f.depth);
   for (const f of faces) {
     const [hue, saturation, lightness] = colourOf(f.body);
-    context.fillStyle = `hsl(${hue} ${saturation}% ${Math.round(lightness * (0.45 + 0.55 * f.shade))}%)`;
+    context.fillStyle = context.strokeStyle = `hsl(${hue} ${saturation}% ${Math.round(lightness * (0.45 + 0.55 * f.shade))}%)`;
     context.beginPath();
     context.moveTo(f.points[0][0], f.points[0][1]);
     context.lineTo(f.points[1][0], f.points[1][1]);
     context.lineTo(f.points[2][0], f.points[2][1]);
     context.closePath();
     context.fill();
+    context.stroke();  // over the antialiased seam between two triangles of one face
   }
 }
 
@@ -112,7 +122,7 @@ createRbsim().then((rbsim) => {
   setPlaying(playing);
   playButton.onclick = () => setPlaying(!playing);
   document.getElementById("step").onclick = () => { setPlaying(false); world.step(1); show(); };
-  document.getElementById("restart").onclick = () => { start(); show(); };
+  document.getElementById("restart").onclick = () => { dragPlane = null; start(); show(); };
   // One step an animation frame: the scene plays at its own dt per frame; a trace of it matches
   // the native program's step for step (the browser test compares them).
   const frame = () => {
@@ -120,7 +130,34 @@ createRbsim().then((rbsim) => {
     show();
     requestAnimationFrame(frame);
   };
+  // Dragging, as window mode does: a press on a body grabs it with a spring (World.grab), moving
+  // the pointer moves the spring's anchor in the plane through the grabbed point facing the
+  // camera, releasing ends it. A press on empty space does nothing.
+  let dragPlane = null;
+  const pointerRay = (event) => {
+    const box = canvas.getBoundingClientRect();
+    return camera.ray((event.clientX - box.left) * canvas.width / box.width, (event.clientY - box.top) * canvas.height / box.height);
+  };
+  canvas.addEventListener("pointerdown", (event) => {
+    const {origin, direction} = pointerRay(event);
+    if (world.grab(...origin, ...direction) < 0) return;
+    dragPlane = {point: Array.from(world.grabAnchor()), normal: direction};
+    canvas.setPointerCapture(event.pointerId);
+  });
+  canvas.addEventListener("pointermove", (event) => {
+    if (!dragPlane) return;
+    const {origin, direction} = pointerRay(event);
+    const n = dragPlane.normal;
+    const along = direction[0] * n[0] + direction[1] * n[1] + direction[2] * n[2];
+    if (Math.abs(along) < 1e-9) return;
+    const s = ((dragPlane.point[0] - origin[0]) * n[0] + (dragPlane.point[1] - origin[1]) * n[1] + (dragPlane.point[2] - origin[2]) * n[2]) / along;
+    world.moveGrab(origin[0] + s * direction[0], origin[1] + s * direction[1], origin[2] + s * direction[2]);
+  });
+  const endDrag = () => { if (dragPlane) { world.release(); dragPlane = null; } };
+  canvas.addEventListener("pointerup", endDrag);
+  canvas.addEventListener("pointercancel", endDrag);
   window.rbsimHook.show = show;
+  window.rbsimHook.camera = () => camera;
   show();
   resolveReady(world);
   requestAnimationFrame(frame);

@@ -14,6 +14,7 @@
 // the field and what was expected), and the World it came from is unchanged.
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,11 +23,16 @@
 #include <emscripten/val.h>
 
 #include "rbsim/scene/scene.h"
+#include "rbsim/world/ray_cast.h"
+#include "rbsim/world/spring.h"
 #include "rbsim/world/world.h"
 
 namespace {
 
 using emscripten::val;
+
+// How far a pointer's ray looks for a body to grab [m].
+constexpr double kMaxGrabDistance = 1e4;
 
 // Where the packaged files sit in Emscripten's virtual file system (--preload-file, web/CMakeLists.txt).
 const std::string kSceneFolder = "/assets/scenes";
@@ -109,6 +115,53 @@ class JsWorld {
     return copyToTypedArray("Uint32Array", t);
   }
 
+  // Starts dragging the body the ray origin + s direction meets first (the page's pointer), as
+  // window mode does: a drag spring (world/spring.h) from the point hit to an anchor that
+  // moveGrab moves. Returns the body's index, or -1 when the ray meets nothing, a plane or a body
+  // that forces do not move (static or kinematic).
+  int grab(double ox, double oy, double oz, double dx, double dy, double dz) {
+    release();
+    const std::optional<rbsim::WorldRayHit> hit =
+        guarded([&] { return rbsim::rayCast(world_, rbsim::Vec3(ox, oy, oz), rbsim::Vec3(dx, dy, dz), kMaxGrabDistance); });
+    if (!hit || hit->isPlane) return -1;
+    const std::size_t index = world_.indexOf(hit->body);
+    const rbsim::RigidBody& body = world_.bodies()[index];
+    if (!body.isDynamic()) return -1;
+    drag_ = rbsim::addSpring(world_, rbsim::dragSpring(hit->body, body, hit->point));
+    rbsim::moveSpringAnchor(world_, *drag_, hit->point);  // wakes the body
+    return static_cast<int>(index);
+  }
+
+  // Moves the drag's anchor to a world point [m]; nothing when no drag is on.
+  void moveGrab(double x, double y, double z) {
+    dropStaleDrag();
+    if (drag_) guarded([&] { rbsim::moveSpringAnchor(world_, *drag_, rbsim::Vec3(x, y, z)); return 0; });
+  }
+
+  // Ends the drag, if one is on.
+  void release() {
+    dropStaleDrag();
+    if (drag_) rbsim::removeSpring(world_, *drag_);
+    drag_.reset();
+  }
+
+  // The dragged body's index, or -1.
+  int grabbed() {
+    dropStaleDrag();
+    return drag_ ? static_cast<int>(world_.indexOf(rbsim::springs(world_)[rbsim::indexOf(world_, *drag_)].body)) : -1;
+  }
+
+  // The drag spring's anchor [m] (right after grab, the point hit), or an empty array.
+  val grabAnchor() {
+    dropStaleDrag();
+    std::vector<double> anchor;
+    if (drag_) {
+      const rbsim::Vec3& a = rbsim::springs(world_)[rbsim::indexOf(world_, *drag_)].anchor;
+      anchor = {a.x(), a.y(), a.z()};
+    }
+    return copyToTypedArray("Float64Array", anchor);
+  }
+
   // World::stateHash as 16 hex digits: the same number the native program computes for the same
   // scene, dt and step count when the two builds agree bit for bit.
   std::string stateHash() const {
@@ -139,6 +192,11 @@ class JsWorld {
     return strings;
   }
 
+  // The dragged body left the World (a kill volume, a lifetime) and took the spring with it.
+  void dropStaleDrag() {
+    if (drag_ && !rbsim::isValid(world_, *drag_)) drag_.reset();
+  }
+
   // Runs f, turning a C++ exception into a JavaScript Error with its message.
   template <typename F>
   static auto guarded(F&& f) -> decltype(f()) {
@@ -153,6 +211,7 @@ class JsWorld {
 
   rbsim::World world_;
   std::uint64_t sceneSteps_;
+  std::optional<rbsim::SpringId> drag_;
 };
 
 }  // namespace
@@ -174,5 +233,10 @@ EMSCRIPTEN_BINDINGS(rbsim) {
       .function("orientations", &JsWorld::orientations)
       .function("vertices", &JsWorld::vertices)
       .function("triangles", &JsWorld::triangles)
+      .function("grab", &JsWorld::grab)
+      .function("moveGrab", &JsWorld::moveGrab)
+      .function("release", &JsWorld::release)
+      .function("grabbed", &JsWorld::grabbed)
+      .function("grabAnchor", &JsWorld::grabAnchor)
       .function("stateHash", &JsWorld::stateHash);
 }

@@ -94,7 +94,12 @@ std::vector<Vec3> sitesInside(const Mesh& convex, int count, std::uint64_t seed)
   UniformRandom random(seed);
   std::vector<Vec3> sites;
   for (int draws = 0; static_cast<int>(sites.size()) < count;) {
-    const Vec3 p(random.between(lo.x(), hi.x()), random.between(lo.y(), hi.y()), random.between(lo.z(), hi.z()));
+    // z, y, x: one draw a statement, in the order GCC evaluated the three arguments this was
+    // (C++ leaves it unspecified; clang goes left to right): the same sites with every compiler.
+    const double z = random.between(lo.z(), hi.z());
+    const double y = random.between(lo.y(), hi.y());
+    const double x = random.between(lo.x(), hi.x());
+    const Vec3 p(x, y, z);
     bool inside = true;
     for (const HullPlane& plane : planes) inside = inside && plane.normal.dot(p) < plane.offset;
     if (inside) {

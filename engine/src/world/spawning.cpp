@@ -69,11 +69,19 @@ SpawnDraw drawPoint(Spawner& spawner) {
   const SpawnerDef& d = spawner.def;
   UniformRandom& random = spawner.random;
   SpawnDraw draw;
-  draw.position = Vec3(random.between(d.regionMin.x(), d.regionMax.x()), random.between(d.regionMin.y(), d.regionMax.y()),
-                       random.between(d.regionMin.z(), d.regionMax.z()));
+  // One draw a statement: C++ leaves the order of a call's arguments (and of a product's operands)
+  // unspecified, and GCC and clang differ, so each scene would spawn elsewhere with each compiler
+  // (issue 59: the browser build is clang's). The order is the one GCC gave the single
+  // expressions this replaced, right to left, so the native program's scenes are unchanged.
+  const double z = random.between(d.regionMin.z(), d.regionMax.z());
+  const double y = random.between(d.regionMin.y(), d.regionMax.y());
+  const double x = random.between(d.regionMin.x(), d.regionMax.x());
+  draw.position = Vec3(x, y, z);
   if (d.randomOrientation) draw.turn = random.rotation();
-  draw.velocity = random.between(d.speedMin, d.speedMax) * random.direction();
-  draw.angularVelocity = random.between(d.spinMin, d.spinMax) * random.direction();
+  const Vec3 direction = random.direction();
+  draw.velocity = random.between(d.speedMin, d.speedMax) * direction;
+  const Vec3 axis = random.direction();
+  draw.angularVelocity = random.between(d.spinMin, d.spinMax) * axis;
   return draw;
 }
 

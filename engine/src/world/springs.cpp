@@ -62,4 +62,14 @@ void removeSpring(World& world, SpringId spring) {
   WorldAccess::springIds(world).eraseAt(WorldAccess::springs(world), index);
 }
 
+Spring dragSpring(BodyId id, const RigidBody& body, const Vec3& worldPoint) {
+  Spring spring;
+  spring.body = id;
+  spring.anchor = worldPoint;
+  spring.point = body.rotation().transpose() * (worldPoint - body.position());
+  spring.stiffness = kDragStiffnessPerKg * body.mass();
+  spring.damping = kDragDampingRatio * 2.0 * std::sqrt(spring.stiffness * body.mass());
+  return spring;
+}
+
 }  // namespace rbsim

@@ -49,4 +49,12 @@ void moveSpringAnchor(World& world, SpringId spring, const Vec3& anchor);
 // Throws on a stale id, the World unchanged.
 void removeSpring(World& world, SpringId spring);
 
+// The drag of a pointer (window mode, the browser's pages): a damped spring from the pointer to
+// the grabbed point (seed 000's spring, as Box2D's mouse joint), its stiffness per kilogram, so
+// every body follows at the same angular frequency sqrt(k/m) = 7 rad/s, damped at 0.7 of critical.
+inline constexpr double kDragStiffnessPerKg = 50.0;  // [N/(m kg)]
+inline constexpr double kDragDampingRatio = 0.7;     // [1] of critical damping 2 sqrt(k m)
+// That spring on body `id` (`body` is its RigidBody) grabbed at `worldPoint`, anchored there.
+Spring dragSpring(BodyId id, const RigidBody& body, const Vec3& worldPoint);
+
 }  // namespace rbsim
