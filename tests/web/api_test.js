@@ -52,8 +52,20 @@ async function main() {
   check(overridden.positions()[1] === 2, "an override (the native --set) applies: no gravity, y stays 2 m");
   overridden.delete();
 
-  let message = throwsWith(() => rbsim.World.fromScene("contact_reference"), ["contact_reference.json", "compare", "unknown key"]);
-  check(message === "", `a compared scene is refused, naming the file and the key ${message}`);
+  let message = throwsWith(() => rbsim.World.fromScene("contact_solvers"), ["contact_solvers.json", "compare", "World.fromPhase"]);
+  check(message === "", `fromScene refuses a compared scene, naming the file and fromPhase ${message}`);
+  const labels = rbsim.World.phaseLabels("contact_solvers");
+  check(labels.length === 2 && labels[0] === "PGS" && labels[1] === "soft step", `a compared scene's Worlds: ${labels.join(", ")}`);
+  check(rbsim.World.phaseLabels("contact_response").length === 1, "a plain scene is one World");
+  const pgs = rbsim.World.fromPhase("contact_solvers", [], 0), soft = rbsim.World.fromPhase("contact_solvers", [], 1);
+  const sameStart = pgs.stateHash() === soft.stateHash();
+  pgs.step(120);
+  soft.step(120);
+  check(sameStart && pgs.stateHash() !== soft.stateHash(), "the two solvers' Worlds start alike and part as they step");
+  pgs.delete();
+  soft.delete();
+  message = throwsWith(() => rbsim.World.fromPhase("contact_solvers", [], 2), ["world 2 of 2"]);
+  check(message === "", `a World past the phase's last is refused ${message}`);
   message = throwsWith(() => rbsim.World.fromJson(ballScene, ["bodies.ball.mass=-1"]), ["mass"]);
   check(message === "", `a negative mass is refused, naming the field ${message}`);
   message = throwsWith(() => rbsim.World.fromScene("no_such_scene"), ["no_such_scene"]);

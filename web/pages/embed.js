@@ -8,6 +8,7 @@
 const params = new URLSearchParams(location.search);
 const sceneName = params.get("scene") || "contact_stacking";
 const overrides = params.getAll("set");
+const worldIndex = Number(params.get("world") || 0);  // of a scene that compares settings: which World
 const canvas = document.getElementById("view");
 const context = canvas.getContext("2d");
 const statusLine = document.getElementById("status");
@@ -99,7 +100,7 @@ createRbsim().then((rbsim) => {
   let world = null, camera = null, triangles = [], playing = params.get("paused") !== "1";
   const start = () => {
     if (world) world.delete();
-    world = rbsim.World.fromScene(sceneName, overrides);
+    world = rbsim.World.fromPhase(sceneName, overrides, worldIndex);
     triangles = [];
     for (let i = 0; i < world.bodyCount(); ++i) triangles.push(world.triangles(i));
     camera = frameBodies(world);
@@ -116,7 +117,8 @@ createRbsim().then((rbsim) => {
     rejectReady(error);
     return;
   }
-  document.getElementById("title").textContent = `rbsim: ${sceneName}`;
+  const label = rbsim.World.phaseLabels(sceneName, overrides)[worldIndex];
+  document.getElementById("title").textContent = `rbsim: ${sceneName}${label ? ` (${label})` : ""}`;
   const playButton = document.getElementById("play");
   const setPlaying = (on) => { playing = on; playButton.textContent = on ? "Pause" : "Play"; };
   setPlaying(playing);

@@ -11,7 +11,9 @@
 //   world.delete();                  // embind objects live in the wasm heap until deleted
 //
 // A bad scene or key throws a JavaScript Error whose message is the native program's (the file,
-// the field and what was expected), and the World it came from is unchanged.
+// the field and what was expected), and the World it came from is unchanged. A scene that
+// compares several settings side by side ("compare") is one World per value: phaseLabels names
+// them, fromPhase builds each.
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -23,6 +25,7 @@
 #include <emscripten/val.h>
 
 #include "rbsim/scene/scene.h"
+#include "run/phase.h"
 #include "rbsim/world/ray_cast.h"
 #include "rbsim/world/spring.h"
 #include "rbsim/world/world.h"
@@ -52,13 +55,45 @@ val copyToTypedArray(const char* type, const std::vector<T>& values) {
 class JsWorld {
  public:
   // A shipped scene by name ("contact_stacking"), or a path in the packaged file system.
-  // `overrides`: an array of "key=value" strings, the native --set's (optional).
+  // `overrides`: an array of "key=value" strings, the native --set's (optional). A scene with a
+  // "compare" block is several Worlds: fromPhase builds each.
   static JsWorld fromScene(const std::string& nameOrPath, const val& overrides) {
-    const std::string path = nameOrPath.find('/') == std::string::npos ? kSceneFolder + "/" + nameOrPath + ".json" : nameOrPath;
     const std::vector<std::string> assignments = toStrings(overrides);
-    return guarded([&] { return JsWorld(rbsim::loadScene(path, assignments)); });
+    return guarded([&] {
+      const rbsim::app::Phase phase = rbsim::app::loadPhase(scenePath(nameOrPath), assignments);
+      if (phase.compared()) {
+        throw std::invalid_argument(phase.file + ": compare: it compares " + std::to_string(phase.worlds.size()) + " Worlds (" +
+                                    phase.compareKey + "); World.phaseLabels(scene) names them and World.fromPhase(scene, overrides, k) builds the k-th");
+      }
+      return JsWorld(phase.scene());
+    });
   }
   static JsWorld fromSceneName(const std::string& nameOrPath) { return fromScene(nameOrPath, val::array()); }
+
+  // World k of a scene's phase (app/run/phase.h): of a compared scene, the one with the k-th
+  // value of its "compare" block applied; of a plain scene, k = 0 is the scene.
+  static JsWorld fromPhase(const std::string& nameOrPath, const val& overrides, int k) {
+    const std::vector<std::string> assignments = toStrings(overrides);
+    return guarded([&] {
+      const rbsim::app::Phase phase = rbsim::app::loadPhase(scenePath(nameOrPath), assignments);
+      if (k < 0 || static_cast<std::size_t>(k) >= phase.worlds.size()) {
+        throw std::invalid_argument(phase.file + ": World.fromPhase: world " + std::to_string(k) + " of " +
+                                    std::to_string(phase.worlds.size()) + " (0 to " + std::to_string(phase.worlds.size() - 1) + " expected)");
+      }
+      return JsWorld(phase.worlds[static_cast<std::size_t>(k)].scene);
+    });
+  }
+
+  // The captions of a phase's Worlds, as the video's panes show them ("PGS", "soft step"); one
+  // empty label for a plain scene.
+  static val phaseLabels(const std::string& nameOrPath, const val& overrides) {
+    const std::vector<std::string> assignments = toStrings(overrides);
+    const rbsim::app::Phase phase = guarded([&] { return rbsim::app::loadPhase(scenePath(nameOrPath), assignments); });
+    val labels = val::array();
+    for (const rbsim::app::PhaseWorld& w : phase.worlds) labels.call<void>("push", w.label);
+    return labels;
+  }
+  static val phaseLabelsOf(const std::string& nameOrPath) { return phaseLabels(nameOrPath, val::array()); }
 
   // A scene's JSON text; its mesh paths are relative to the shipped scenes' folder.
   static JsWorld fromJson(const std::string& text, const val& overrides) {
@@ -181,6 +216,11 @@ class JsWorld {
     return world_.bodies()[static_cast<std::size_t>(i)];
   }
 
+  // A shipped scene's name, or a path in the packaged file system as it is.
+  static std::string scenePath(const std::string& nameOrPath) {
+    return nameOrPath.find('/') == std::string::npos ? kSceneFolder + "/" + nameOrPath + ".json" : nameOrPath;
+  }
+
   static std::vector<std::string> toStrings(const val& array) {
     if (!val::global("Array").call<bool>("isArray", array)) throwJsError("World: the overrides must be an array of \"key=value\" strings");
     std::vector<std::string> strings;
@@ -220,6 +260,9 @@ EMSCRIPTEN_BINDINGS(rbsim) {
   emscripten::class_<JsWorld>("World")
       .class_function("fromScene", &JsWorld::fromScene)
       .class_function("fromScene", &JsWorld::fromSceneName)
+      .class_function("fromPhase", &JsWorld::fromPhase)
+      .class_function("phaseLabels", &JsWorld::phaseLabels)
+      .class_function("phaseLabels", &JsWorld::phaseLabelsOf)
       .class_function("fromJson", &JsWorld::fromJson)
       .class_function("fromJson", &JsWorld::fromJsonText)
       .function("step", &JsWorld::step)
